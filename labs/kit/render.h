@@ -1,0 +1,33 @@
+/*
+ * render.h - the renderer's main loop: every pixel through Parts 1 to 3b.
+ *
+ *     image_plane_size(fov, nx / ny, d, &w, &h)          once   (Part 1)
+ *     s = pixel_coordinates(i, j, nx, ny, w, h, d)       per pixel (Part 2)
+ *     ray = camera_ray(scene->eye, s)                    per pixel (Part 3b)
+ *     colour = ray_color(scene, &ray)                    per pixel (Part 3b)
+ */
+#ifndef KIT_RENDER_H
+#define KIT_RENDER_H
+
+#include <stdbool.h>
+#include "../raytracer.h"
+#include "image.h"
+
+typedef struct {
+    int threads;         /* worker threads; 0 = one per core                  */
+    bool progress;       /* show a progress line on stderr if it is a terminal
+                            and the render takes more than a second          */
+} RenderOptions;
+
+typedef struct {
+    double seconds;          /* wall-clock time of the render                */
+    double rays_per_second;  /* nx * ny / seconds                            */
+    int threads;             /* threads actually used                        */
+} RenderStats;
+
+/* Renders scene into img, which must be scene->nx x scene->ny.
+ * Returns 0, or -1 with a reason in err (e.g. threads could not start). */
+int render_scene(const Scene *scene, Image *img, const RenderOptions *opt,
+                 RenderStats *stats, char *err, size_t errlen);
+
+#endif

@@ -1,0 +1,33 @@
+/*
+ * scene.h - reading a scene file.
+ *
+ * The format (one item per line, '#' starts a comment, blank lines ignored):
+ *
+ *     image       nx ny            image size in pixels, 1 .. IMAGE_MAX_SIDE
+ *     fov         degrees          vertical field of view, 0 < fov < 180
+ *     distance    d                eye to image plane, d > 0    (default 1)
+ *     background  r g b            colour in [0, 1]             (default 0 0 0)
+ *     sphere      cx cy cz R r g b centre, radius R > 0, colour in [0, 1]
+ *
+ * image and fov are required; each keyword but sphere appears at most once.
+ * Numbers are decimal (or C hex floats); NaN and infinity are refused.
+ */
+#ifndef KIT_SCENE_H
+#define KIT_SCENE_H
+
+#include <stddef.h>
+#include "../raytracer.h"
+
+#define SCENE_MAX_SPHERES 100000
+
+/* Loads path into scene (eye at the origin).  Returns 0, or -1 with a
+ * message "path:line: reason" (or "path: reason") in err.  On failure the
+ * scene holds nothing that needs freeing. */
+int scene_load(Scene *scene, const char *path, char *err, size_t errlen);
+
+/* The same, from a string already in memory; name is used in messages. */
+int scene_parse(Scene *scene, const char *text, const char *name, char *err, size_t errlen);
+
+void scene_free(Scene *scene);
+
+#endif

@@ -1,0 +1,124 @@
+/*
+ * check.h - the kit's own unit-test runner, in one header.
+ *
+ *     #include "check.h"
+ *     static void test_dot(void) { CHECK_EQ_DOUBLE(vec3_dot(a, b), 32.0); }
+ *     static const CheckTest tests[] = { CHECK_TEST(test_dot), ... };
+ *     int main(int argc, char **argv) { return check_main(argc, argv, tests, CHECK_COUNT(tests)); }
+ *
+ * Each test runs in its own child process, so a crash or a hang fails that
+ * test alone.  A failed check prints "file:line: what" and the test goes on.
+ * Messages appear only on failure; the last line is "N passed, N failed".
+ * An argument runs only the tests whose names contain it.
+ * Include it before any other header: it sets _POSIX_C_SOURCE.
+ */
+#ifndef CHECK_H
+#define CHECK_H
+
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#ifndef CHECK_TIMEOUT_SECONDS
+#define CHECK_TIMEOUT_SECONDS 120
+#endif
+
+typedef struct {
+    const char *name;
+    void (*fn)(void);
+} CheckTest;
+
+#define CHECK_TEST(fn) { #fn, fn }
+#define CHECK_COUNT(array) ((int)(sizeof(array) / sizeof((array)[0])))
+
+static int check_failures_;
+
+static void check_fail_(const char *file, int line, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+#include <stdarg.h>
+static void check_fail_(const char *file, int line, const char *fmt, ...)
+{
+    va_list ap;
+    check_failures_++;
+    fprintf(stdout, "    %s:%d: ", file, line);
+    va_start(ap, fmt);
+    vfprintf(stdout, fmt, ap);
+    va_end(ap);
+    fputc('\n', stdout);
+    fflush(stdout);
+}
+
+#define CHECK(cond)                                                         \
+    do { if (!(cond)) check_fail_(__FILE__, __LINE__, "CHECK(%s) failed", #cond); } while (0)
+
+#define CHECK_MSG(cond, ...)                                                \
+    do { if (!(cond)) check_fail_(__FILE__, __LINE__, __VA_ARGS__); } while (0)
+
+#define CHECK_EQ_INT(got, want)                                             \
+    do { long long g_ = (long long)(got), w_ = (long long)(want);           \
+         if (g_ != w_) check_fail_(__FILE__, __LINE__, "%s is %lld, want %lld", #got, g_, w_); } while (0)
+
+/* Bitwise-equal doubles (or both NaN), printed as hex floats on failure. */
+#define CHECK_EQ_DOUBLE(got, want)                                          \
+    do { double g_ = (got), w_ = (want);                                    \
+         if (!(g_ == w_ || (isnan(g_) && isnan(w_))))                       \
+             check_fail_(__FILE__, __LINE__, "%s is %a (%.17g), want %a (%.17g)", #got, g_, g_, w_, w_); } while (0)
+
+/* |got - want| <= tol, printed on failure. */
+#define CHECK_NEAR(got, want, tol)                                          \
+    do { double g_ = (got), w_ = (want), t_ = (tol);                        \
+         if (!(fabs(g_ - w_) <= t_))                                        \
+             check_fail_(__FILE__, __LINE__, "%s is %.17g, want %.17g within %.3g (off by %.3g)", \
+                         #got, g_, w_, t_, fabs(g_ - w_)); } while (0)
+
+#define CHECK_STR_CONTAINS(haystack, needle)                                \
+    do { const char *h_ = (haystack), *n_ = (needle);                       \
+         if (!h_ || !strstr(h_, n_))                                        \
+             check_fail_(__FILE__, __LINE__, "%s is \"%s\", want it to contain \"%s\"", #haystack, h_ ? h_ : "(null)", n_); } while (0)
+
+static int check_main(int argc, char **argv, const CheckTest *tests, int ntests)
+{
+    const char *suite = strrchr(argv[0], '/') ? strrchr(argv[0], '/') + 1 : argv[0];
+    int passed = 0, failed = 0;
+    for (int k = 0; k < ntests; k++) {
+        if (argc > 1 && !strstr(tests[k].name, argv[1]))
+            continue;
+        fflush(stdout);
+        pid_t pid = fork();
+        if (pid < 0) {
+            perror("fork");
+            return 2;
+        }
+        if (pid == 0) {
+            alarm(CHECK_TIMEOUT_SECONDS);
+            check_failures_ = 0;
+            tests[k].fn();
+            fflush(stdout);
+            _exit(check_failures_ ? 1 : 0);
+        }
+        int status;
+        while (waitpid(pid, &status, 0) < 0)
+            ;
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+            passed++;
+        } else {
+            failed++;
+            if (WIFSIGNALED(status))
+                printf("FAIL %s: %s: killed by signal %d%s\n", suite, tests[k].name, WTERMSIG(status),
+                       WTERMSIG(status) == SIGALRM ? " (timed out)" : "");
+            else
+                printf("FAIL %s: %s\n", suite, tests[k].name);
+        }
+    }
+    printf("%s: %d passed, %d failed\n", suite, passed, failed);
+    return failed ? 1 : 0;
+}
+
+#endif
