@@ -122,6 +122,27 @@ $(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(ASAN)/kit/libkit.a $(REF_AS
 	@mkdir -p $(@D)
 	$(CC) $(SANFLAGS) $(THREADS) -Ilabs $< $(REF_ASAN) $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
 
+# ---- the oracle: independent double-double answers (tests/oracle) ----------
+ORACLE_SRC = $(wildcard tests/oracle/*.c)
+ORACLE_OBJ = $(ORACLE_SRC:tests/oracle/%.c=$(BUILD)/oracle/%.o)
+$(BUILD)/oracle/%.o: tests/oracle/%.c $(wildcard tests/oracle/*.h) $(KIT_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+$(BUILD)/oracle/liboracle.a: $(ORACLE_OBJ)
+	rm -f $@ && ar rcs $@ $^
+
+# ---- instructor tools: archives (zip, tar.gz) and JSON (tests/tools) -------
+TOOLS_SRC  = $(filter-out tests/tools/pack_main.c,$(wildcard tests/tools/*.c))
+TOOLS_OBJ  = $(TOOLS_SRC:tests/tools/%.c=$(BUILD)/tools/%.o)
+$(BUILD)/tools/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) $(KIT_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+$(BUILD)/tools/libtools.a: $(TOOLS_OBJ)
+	rm -f $@ && ar rcs $@ $^
+$(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+
 # ---- the kit's own tests ---------------------------------------------------
 test: all $(UNIT_ASAN)
 	@sh tests/run.sh

@@ -17,7 +17,7 @@ suite() {   # suite NAME COMMAND...: run, show its output, add its counts
     status=$?
     cat out/tests/suite.out
     cat out/tests/suite.out >>"$log"
-    counts=$(tail -n 1 out/tests/suite.out | sed -n 's/^.*[^0-9]\{0,1\}\([0-9]\{1,\}\) passed, \([0-9]\{1,\}\) failed.*$/\1 \2/p')
+    counts=$(tail -n 1 out/tests/suite.out | sed -n 's/^\(.*[^0-9]\)\{0,1\}\([0-9][0-9]*\) passed, \([0-9][0-9]*\) failed.*$/\2 \3/p')
     if [ -z "$counts" ]; then
         echo "   $name printed no count (exit $status): counted as 1 failed"
         failed=$((failed + 1))
