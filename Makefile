@@ -105,6 +105,37 @@ compare: $(SUB_BUILD)/render $(BUILD)/bin/compare $(if $(HAVE_SOLUTIONS),$(BUILD
 	$(BUILD)/bin/compare out/compare/$(SCENE_NAME)-submission.png $(REF_IMAGE) \
 	    -o out/compare/$(SCENE_NAME).png
 
+# ---- the oracle: independent double-double answers (tests/oracle) ----------
+ORACLE_SRC = $(wildcard tests/oracle/*.c)
+ORACLE_OBJ = $(ORACLE_SRC:tests/oracle/%.c=$(BUILD)/oracle/%.o)
+$(BUILD)/oracle/%.o: tests/oracle/%.c $(wildcard tests/oracle/*.h) $(KIT_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+$(ASAN)/oracle/%.o: tests/oracle/%.c $(wildcard tests/oracle/*.h) $(KIT_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
+$(BUILD)/oracle/liboracle.a: $(ORACLE_OBJ)
+	rm -f $@ && ar rcs $@ $^
+$(ASAN)/oracle/liboracle.a: $(ORACLE_SRC:tests/oracle/%.c=$(ASAN)/oracle/%.o)
+	rm -f $@ && ar rcs $@ $^
+
+# ---- instructor tools: archives (zip, tar.gz) and JSON (tests/tools) -------
+TOOLS_SRC  = $(filter-out tests/tools/pack_main.c,$(wildcard tests/tools/*.c))
+TOOLS_OBJ  = $(TOOLS_SRC:tests/tools/%.c=$(BUILD)/tools/%.o)
+$(BUILD)/tools/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) $(KIT_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+$(ASAN)/tools/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) $(KIT_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
+$(BUILD)/tools/libtools.a: $(TOOLS_OBJ)
+	rm -f $@ && ar rcs $@ $^
+$(ASAN)/tools/libtools.a: $(TOOLS_SRC:tests/tools/%.c=$(ASAN)/tools/%.o)
+	rm -f $@ && ar rcs $@ $^
+$(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+
 # ---- unit tests of the framework (tests/unit) ------------------------------
 UNIT_SRC   = $(wildcard tests/unit/test_*.c)
 UNIT_BIN   = $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)
@@ -115,33 +146,14 @@ unit-tests: $(UNIT_BIN)
 $(ASAN)/sub/solutions/%.o: solutions/%.c $(KIT_HDR)
 	@mkdir -p $(@D)
 	$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/tests/%: tests/unit/%.c tests/unit/check.h $(BUILD)/kit/libkit.a $(REF_OBJ)
+UNIT_LIBS  = $(BUILD)/oracle/liboracle.a $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
+UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
+$(BUILD)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS)
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) $(THREADS) -Ilabs $< $(REF_OBJ) $(BUILD)/kit/libkit.a -o $@ $(LDLIBS)
-$(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(ASAN)/kit/libkit.a $(REF_ASAN)
+	$(CC) $(CFLAGS) $(THREADS) -Ilabs $< $(REF_OBJ) $(UNIT_LIBS) -o $@ $(LDLIBS)
+$(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN)
 	@mkdir -p $(@D)
-	$(CC) $(SANFLAGS) $(THREADS) -Ilabs $< $(REF_ASAN) $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
-
-# ---- the oracle: independent double-double answers (tests/oracle) ----------
-ORACLE_SRC = $(wildcard tests/oracle/*.c)
-ORACLE_OBJ = $(ORACLE_SRC:tests/oracle/%.c=$(BUILD)/oracle/%.o)
-$(BUILD)/oracle/%.o: tests/oracle/%.c $(wildcard tests/oracle/*.h) $(KIT_HDR)
-	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/oracle/liboracle.a: $(ORACLE_OBJ)
-	rm -f $@ && ar rcs $@ $^
-
-# ---- instructor tools: archives (zip, tar.gz) and JSON (tests/tools) -------
-TOOLS_SRC  = $(filter-out tests/tools/pack_main.c,$(wildcard tests/tools/*.c))
-TOOLS_OBJ  = $(TOOLS_SRC:tests/tools/%.c=$(BUILD)/tools/%.o)
-$(BUILD)/tools/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) $(KIT_HDR)
-	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/tools/libtools.a: $(TOOLS_OBJ)
-	rm -f $@ && ar rcs $@ $^
-$(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
-	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+	$(CC) $(SANFLAGS) $(THREADS) -Ilabs $< $(REF_ASAN) $(UNIT_LIBS_ASAN) -o $@ $(LDLIBS)
 
 # ---- the kit's own tests ---------------------------------------------------
 test: all $(UNIT_ASAN)
