@@ -1,0 +1,227 @@
+/*
+ * render.c - the renderer's main loop: every pixel through Parts 1 to 3b.
+ *
+ * Part 1 runs once; then worker threads, one per core unless told
+ * otherwise, take rows in chunks from a shared atomic counter until none
+ * are left, so a thread that drew cheap rows simply takes more of them.
+ * Every pixel depends only on (i, j), so the image is the same whatever the
+ * number of threads.  The calling thread waits, and in a terminal shows how
+ * far the render has got once it has taken more than a second.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "render.h"
+
+#include <pthread.h>
+#include <stdarg.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#define RENDER_MAX_THREADS   256
+#define RENDER_CHUNK_PIXELS  2048   /* a chunk is at least one row, else about this many pixels */
+#define RENDER_PROGRESS_AFTER 1.0   /* seconds before the progress line appears */
+#define RENDER_PROGRESS_EVERY 0.25  /* seconds between its updates */
+
+/* What the threads share: the inputs, and the counters of rows taken and drawn. */
+typedef struct {
+    const Scene *scene;
+    Image *img;
+    double w, h;                 /* the image plane's size (Part 1)           */
+    int rows_per_chunk;
+    atomic_int next_row;         /* the first row no thread has taken yet     */
+    atomic_int rows_done;        /* rows drawn, for the progress line         */
+    pthread_mutex_t lock;        /* guards running, and signals finished      */
+    pthread_cond_t finished;
+    int running;                 /* worker threads not yet finished           */
+} RenderJob;
+
+/* Writes a one-line reason, formatted as by printf, into err (if any).
+ * Never fails. */
+static void render_error(char *err, size_t errlen, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+static void render_error(char *err, size_t errlen, const char *fmt, ...)
+{
+    if (!err || errlen == 0)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err, errlen, fmt, ap);
+    va_end(ap);
+}
+
+/* The monotonic clock in seconds (its origin is arbitrary). */
+static double render_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* The number of cores online, at least 1. */
+static int render_cores(void)
+{
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    if (n < 1)
+        return 1;
+    return n > RENDER_MAX_THREADS ? RENDER_MAX_THREADS : (int)n;
+}
+
+/* Draws rows j0 .. j1 - 1 of the image: for each pixel, its centre
+ * (Part 2), the ray from the eye through it and the colour the ray sees
+ * (Part 3b), stored as three bytes.  Never fails. */
+static void render_rows(const RenderJob *job, int j0, int j1)
+{
+    const Scene *scene = job->scene;
+    const int nx = scene->nx, ny = scene->ny;
+    const double w = job->w, h = job->h, d = scene->d;
+    const Vec3 e = scene->eye;
+    for (int j = j0; j < j1; j++) {
+        unsigned char *px = job->img->rgb + (size_t)3 * nx * (size_t)j;
+        for (int i = 0; i < nx; i++) {
+            Vec3 s = pixel_coordinates(i, j, nx, ny, w, h, d);
+            Ray ray = camera_ray(e, s);
+            Vec3 color = ray_color(scene, &ray);
+            px[0] = image_channel(color.x);
+            px[1] = image_channel(color.y);
+            px[2] = image_channel(color.z);
+            px += 3;
+        }
+    }
+}
+
+/* A worker thread: takes chunks of rows until none are left, then says it
+ * has finished.  Returns NULL. */
+static void *render_worker(void *arg)
+{
+    RenderJob *job = arg;
+    const int ny = job->scene->ny;
+    for (;;) {
+        int j0 = atomic_fetch_add(&job->next_row, job->rows_per_chunk);
+        if (j0 >= ny)
+            break;
+        int j1 = ny - j0 < job->rows_per_chunk ? ny : j0 + job->rows_per_chunk;
+        render_rows(job, j0, j1);
+        atomic_fetch_add(&job->rows_done, j1 - j0);
+    }
+    pthread_mutex_lock(&job->lock);
+    job->running--;
+    pthread_cond_signal(&job->finished);
+    pthread_mutex_unlock(&job->lock);
+    return NULL;
+}
+
+/* Waits until every worker has finished.  With show set, writes
+ * "\r  rendering  43%" to stderr a few times a second once the render has
+ * run for more than a second, and clears the line at the end.  Never fails. */
+static void render_wait(RenderJob *job, bool show, double start)
+{
+    bool shown = false;
+    double last = 0;
+    pthread_mutex_lock(&job->lock);
+    while (job->running > 0) {
+        if (!show) {
+            pthread_cond_wait(&job->finished, &job->lock);
+            continue;
+        }
+        /* The wake-up time is on the real-time clock, the only one
+         * pthread_cond_timedwait takes everywhere; a jump of that clock
+         * only changes when the next update is drawn. */
+        struct timespec until;
+        clock_gettime(CLOCK_REALTIME, &until);
+        until.tv_nsec += (long)(RENDER_PROGRESS_EVERY * 1e9);
+        if (until.tv_nsec >= 1000000000L) {
+            until.tv_sec += 1;
+            until.tv_nsec -= 1000000000L;
+        }
+        pthread_cond_timedwait(&job->finished, &job->lock, &until);
+        double now = render_now();
+        if (job->running > 0 && now - start > RENDER_PROGRESS_AFTER
+            && now - last >= RENDER_PROGRESS_EVERY * 0.9) {
+            int percent = (int)(100.0 * atomic_load(&job->rows_done) / job->scene->ny);
+            fprintf(stderr, "\r  rendering %3d%%", percent);
+            fflush(stderr);
+            shown = true;
+            last = now;
+        }
+    }
+    pthread_mutex_unlock(&job->lock);
+    if (shown) {
+        fprintf(stderr, "\r                  \r");
+        fflush(stderr);
+    }
+}
+
+/* Renders scene into img (see render.h).  Returns 0, or -1 with a reason
+ * in err when the image does not match the scene or no thread could start. */
+int render_scene(const Scene *scene, Image *img, const RenderOptions *opt,
+                 RenderStats *stats, char *err, size_t errlen)
+{
+    const int nx = scene->nx, ny = scene->ny;
+    if (nx < 1 || ny < 1 || !img->rgb || img->width != nx || img->height != ny) {
+        render_error(err, errlen, "render: the image is %dx%d but the scene is %dx%d",
+                     img->width, img->height, nx, ny);
+        return -1;
+    }
+    double start = render_now();
+
+    RenderJob job;
+    job.scene = scene;
+    job.img = img;
+    image_plane_size(scene->fov_degrees, (double)nx / ny, scene->d, &job.w, &job.h);
+    job.rows_per_chunk = nx >= RENDER_CHUNK_PIXELS ? 1 : RENDER_CHUNK_PIXELS / nx;
+    atomic_init(&job.next_row, 0);
+    atomic_init(&job.rows_done, 0);
+    job.running = 0;
+
+    int chunks = (ny + job.rows_per_chunk - 1) / job.rows_per_chunk;
+    int nthreads = opt && opt->threads > 0 ? opt->threads : render_cores();
+    if (nthreads > RENDER_MAX_THREADS)
+        nthreads = RENDER_MAX_THREADS;
+    if (nthreads > chunks)
+        nthreads = chunks;            /* a thread with no rows would only cost */
+
+    if (pthread_mutex_init(&job.lock, NULL) != 0) {
+        render_error(err, errlen, "render: cannot create a mutex");
+        return -1;
+    }
+    if (pthread_cond_init(&job.finished, NULL) != 0) {
+        pthread_mutex_destroy(&job.lock);
+        render_error(err, errlen, "render: cannot create a condition variable");
+        return -1;
+    }
+    pthread_t threads[RENDER_MAX_THREADS];
+    int started = 0, status = 0;
+    pthread_mutex_lock(&job.lock);
+    for (; started < nthreads; started++) {
+        status = pthread_create(&threads[started], NULL, render_worker, &job);
+        if (status != 0)
+            break;                    /* the threads already started share the rows */
+        job.running++;
+    }
+    pthread_mutex_unlock(&job.lock);
+
+    if (started == 0) {
+        render_error(err, errlen, "render: cannot start a thread: %s", strerror(status));
+    } else {
+        bool show = opt && opt->progress && isatty(STDERR_FILENO);
+        render_wait(&job, show, start);
+        for (int k = 0; k < started; k++)
+            pthread_join(threads[k], NULL);
+    }
+    pthread_cond_destroy(&job.finished);
+    pthread_mutex_destroy(&job.lock);
+    if (started == 0)
+        return -1;
+
+    double seconds = render_now() - start;
+    if (!(seconds > 0))
+        seconds = 1e-9;               /* a clock too coarse to see the render */
+    if (stats) {
+        stats->seconds = seconds;
+        stats->rays_per_second = (double)nx * ny / seconds;
+        stats->threads = started;
+    }
+    return 0;
+}

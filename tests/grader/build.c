@@ -1,0 +1,277 @@
+/*
+ * build.c - see build.h.
+ */
+#define _XOPEN_SOURCE 700
+#include "build.h"
+#include "grader.h"
+#include "sandbox.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#define SOURCE_MAX (1 << 20)        /* a stage file larger than 1 MiB is refused */
+
+const char *const stage_names[4] = {
+    "part1_image_plane", "part2_pixel_coordinates", "part3a_sphere_intersect", "part3b_ray_color",
+};
+
+int build_tempdir(char *dir, size_t len, char *err, size_t errlen)
+{
+    const char *base = getenv("TMPDIR");
+    if (!base || !*base || access(base, W_OK) != 0)
+        base = "/tmp";
+    snprintf(dir, len, "%s/rtgrade.XXXXXX", base);
+    if (!mkdtemp(dir)) {
+        snprintf(err, errlen, "cannot make a temporary directory in %s: %s", base, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+void build_rmtree(const char *path)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0)
+        return;
+    if (S_ISDIR(st.st_mode)) {
+        chmod(path, 0700);
+        DIR *d = opendir(path);
+        if (d) {
+            struct dirent *e;
+            while ((e = readdir(d))) {
+                if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
+                    continue;
+                char sub[PATH_MAX];
+                snprintf(sub, sizeof sub, "%s/%s", path, e->d_name);
+                build_rmtree(sub);
+            }
+            closedir(d);
+        }
+        rmdir(path);
+    } else {
+        unlink(path);
+    }
+}
+
+/* Copies src to dst (at most max bytes; larger is an error), mode 0644. */
+static int copy_file(const char *src, const char *dst, size_t max, char *err, size_t errlen)
+{
+    int in = open(src, O_RDONLY);
+    if (in < 0) {
+        snprintf(err, errlen, "%s: %s", src, strerror(errno));
+        return -1;
+    }
+    struct stat st;
+    if (fstat(in, &st) != 0 || !S_ISREG(st.st_mode) || (size_t)st.st_size > max) {
+        snprintf(err, errlen, "%s: not a regular file of at most %zu bytes", src, max);
+        close(in);
+        return -1;
+    }
+    int out = open(dst, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (out < 0) {
+        snprintf(err, errlen, "%s: %s", dst, strerror(errno));
+        close(in);
+        return -1;
+    }
+    char buf[65536];
+    ssize_t n;
+    int status = 0;
+    while ((n = read(in, buf, sizeof buf)) > 0)
+        if (write(out, buf, (size_t)n) != n)
+            status = -1;
+    if (n < 0 || close(out) != 0)
+        status = -1;
+    close(in);
+    if (status)
+        snprintf(err, errlen, "copying %s: %s", src, strerror(errno));
+    return status;
+}
+
+/* Runs the compiler in the sandbox in b->dir/src; 0 if it succeeded. */
+static int run_cc(const BuildConfig *cfg, Build *b, char **argv, char *err, size_t errlen)
+{
+    char src[600];
+    snprintf(src, sizeof src, "%s/src", b->dir);
+    SandboxSpec spec = {
+        .argv = argv, .workdir = src, .timeout = 60, .answer_max = 0,
+        .output_max = 16384, .memory_mb = 4096, .max_procs = -1,
+        .max_file_mb = 256, .inherit_path = true,
+    };
+    SandboxResult res;
+    (void)cfg;
+    if (sandbox_run(&spec, &res, err, errlen) != 0)
+        return -1;
+    size_t old = b->messages ? strlen(b->messages) : 0;
+    char *m = realloc(b->messages, old + res.output_len + 64);
+    if (m) {
+        memcpy(m + old, res.output, res.output_len + 1);
+        if (res.timed_out)
+            strcpy(m + old + res.output_len, "the compiler took more than 60 s\n");
+        b->messages = m;
+    }
+    int ok = res.exit_code == 0;
+    sandbox_result_free(&res);
+    return ok ? 0 : 1;
+}
+
+/* Where the compiler says it looked: refuse any file inside the kit (the
+ * reference, the hidden tests).  Returns 0, or 1 with a message. */
+static int check_dependencies(const BuildConfig *cfg, Build *b, const char *depfile)
+{
+    FILE *f = fopen(depfile, "r");
+    if (!f)
+        return 0;
+    char root[PATH_MAX];
+    if (!realpath(cfg->root, root)) {
+        fclose(f);
+        return 0;
+    }
+    size_t rootlen = strlen(root);
+    char word[PATH_MAX];
+    int status = 0;
+    while (fscanf(f, "%4095s", word) == 1) {
+        if (strchr(word, ':') || strcmp(word, "\\") == 0)
+            continue;
+        char path[PATH_MAX + 700], real[PATH_MAX];
+        if (word[0] == '/')
+            snprintf(path, sizeof path, "%s", word);
+        else
+            snprintf(path, sizeof path, "%s/src/%s", b->dir, word);
+        if (realpath(path, real) && strncmp(real, root, rootlen) == 0 &&
+            (real[rootlen] == '/' || real[rootlen] == '\0')) {
+            size_t old = b->messages ? strlen(b->messages) : 0;
+            char *m = realloc(b->messages, old + strlen(word) + 120);
+            if (m) {
+                sprintf(m + old, "refused: the file includes %s, which is part of the grader\n", word);
+                b->messages = m;
+            }
+            status = 1;
+        }
+    }
+    fclose(f);
+    return status;
+}
+
+int build_part(const BuildConfig *cfg, int part, const char *submission, Build *b,
+               char *err, size_t errlen)
+{
+    memset(b, 0, sizeof *b);
+    b->messages = calloc(1, 1);
+    if (build_tempdir(b->dir, sizeof b->dir, err, errlen))
+        return -1;
+    char src[600], path[PATH_MAX];
+    snprintf(src, sizeof src, "%s/src", b->dir);
+    snprintf(b->rundir, sizeof b->rundir, "%s/run", b->dir);
+    snprintf(b->runner, sizeof b->runner, "%s/src/runner", b->dir);
+    chmod(b->dir, 0711);
+    if (mkdir(src, 0700) || mkdir(b->rundir, 0700) || sandbox_give(src) || sandbox_give(b->rundir)) {
+        snprintf(err, errlen, "%s: %s", b->dir, strerror(errno));
+        return -1;
+    }
+
+    /* The headers the students see, and the harness. */
+    static const char *headers[] = { "raytracer.h", "vec3.h" };
+    for (int k = 0; k < 2; k++) {
+        char from[PATH_MAX], to[PATH_MAX + 700];
+        snprintf(from, sizeof from, "%s/labs/%s", cfg->root, headers[k]);
+        snprintf(to, sizeof to, "%s/%s", src, headers[k]);
+        if (copy_file(from, to, SOURCE_MAX, err, errlen))
+            return -1;
+    }
+    char to[PATH_MAX + 700];
+    snprintf(path, sizeof path, "%s/harness_%d.o", cfg->objdir, part + 1);
+    snprintf(to, sizeof to, "%s/harness.o", src);
+    if (copy_file(path, to, 16 << 20, err, errlen))
+        return -1;
+
+    /* The student's files: this part's, and in the student kit Part 3a for 3b. */
+    int parts[2] = { part, -1 };
+    if (part == PART3B && !cfg->reference)
+        parts[1] = PART3A;
+    char *link[16];
+    int nlink = 0;
+    static char names[16][96];
+    link[nlink++] = (char *)cfg->cc;
+    link[nlink++] = "harness.o";
+    for (int k = 0; k < 2 && parts[k] >= 0; k++) {
+        const char *stage = stage_names[parts[k]];
+        snprintf(path, sizeof path, "%s/%s.c", submission, stage);
+        snprintf(to, sizeof to, "%s/%s.c", src, stage);
+        if (access(path, F_OK) != 0) {
+            size_t old = strlen(b->messages);
+            char *m = realloc(b->messages, old + 200);
+            if (m) {
+                sprintf(m + old, "missing: the submission has no %s.c\n", stage);
+                b->messages = m;
+            }
+            return 0;
+        }
+        char cerr[512];
+        if (copy_file(path, to, SOURCE_MAX, cerr, sizeof cerr)) {
+            size_t old = strlen(b->messages);
+            char *m = realloc(b->messages, old + strlen(cerr) + 2);
+            if (m) {
+                sprintf(m + old, "%s\n", cerr);
+                b->messages = m;
+            }
+            return 0;
+        }
+        char cfile[80], ofile[80], dfile[80];
+        snprintf(cfile, sizeof cfile, "%s.c", stage);
+        snprintf(ofile, sizeof ofile, "%s.o", stage);
+        snprintf(dfile, sizeof dfile, "%s.d", stage);
+        char *argv[] = { (char *)cfg->cc, "-std=c11", "-O1", "-ffp-contract=off", "-Wall", "-Wextra",
+                         "-I.", "-MD", "-MF", dfile, "-c", cfile, "-o", ofile, NULL };
+        int rc = run_cc(cfg, b, argv, err, errlen);
+        if (rc < 0)
+            return -1;
+        if (rc > 0)
+            return 0;
+        char dpath[PATH_MAX + 700];
+        snprintf(dpath, sizeof dpath, "%s/%s", src, dfile);
+        if (check_dependencies(cfg, b, dpath))
+            return 0;
+        snprintf(names[nlink], sizeof names[nlink], "%s", ofile);
+        link[nlink] = names[nlink];
+        nlink++;
+    }
+    /* In the instructor's kit: the reference for every other part. */
+    if (cfg->reference) {
+        for (int p = 0; p < NPARTS; p++) {
+            if (p == part)
+                continue;
+            snprintf(path, sizeof path, "%s/ref_%s.o", cfg->objdir, stage_names[p]);
+            snprintf(names[nlink], sizeof names[nlink], "ref_%d.o", p);
+            snprintf(to, sizeof to, "%s/%s", src, names[nlink]);
+            if (copy_file(path, to, 16 << 20, err, errlen))
+                return -1;
+            link[nlink] = names[nlink];
+            nlink++;
+        }
+    }
+    link[nlink++] = "-lm";
+    link[nlink++] = "-o";
+    link[nlink++] = "runner";
+    link[nlink] = NULL;
+    int rc = run_cc(cfg, b, link, err, errlen);
+    if (rc < 0)
+        return -1;
+    b->ok = rc == 0;
+    return 0;
+}
+
+void build_remove(Build *b)
+{
+    if (b->dir[0])
+        build_rmtree(b->dir);
+    free(b->messages);
+    b->messages = NULL;
+    b->dir[0] = '\0';
+}

@@ -1,0 +1,47 @@
+/*
+ * build.h - compiling the program that runs one part's tests.
+ *
+ * The program for Part k is the harness for Part k, the submission's file
+ * for Part k and, for the parts it may call, the reference (in the
+ * instructor's kit) or the submission's own files (in the student kit).
+ * It is built in a private temporary directory, by the compiler running in
+ * the sandbox (as "nobody" when the grader is root), from copies of the
+ * files it needs, so that nothing else of the kit is within its reach.
+ */
+#ifndef BUILD_H
+#define BUILD_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+typedef struct {
+    const char *root;          /* the kit's root directory (absolute)          */
+    const char *cc;            /* the compiler                                  */
+    const char *objdir;        /* prebuilt harness_<k>.o and, if any,
+                                  the reference objects ref_<stage>.o          */
+    bool reference;            /* reference objects exist for the other parts  */
+} BuildConfig;
+
+typedef struct {
+    char dir[512];             /* the temporary directory                       */
+    char runner[600];          /* the program, when ok                          */
+    char rundir[600];          /* the empty working directory for its runs      */
+    bool ok;
+    char *messages;            /* the compiler's output (malloc'd, may be "")   */
+} Build;
+
+extern const char *const stage_names[4];   /* "part1_image_plane", ...      */
+
+/* Builds the program for part from the submission directory.  Returns 0
+ * when the grader could do its job (b->ok says whether the student's code
+ * compiled), -1 when it could not (err says why). */
+int build_part(const BuildConfig *cfg, int part, const char *submission, Build *b,
+               char *err, size_t errlen);
+void build_remove(Build *b);
+
+/* Makes a private temporary directory; 0 on success. */
+int build_tempdir(char *dir, size_t len, char *err, size_t errlen);
+/* rm -rf path (no symlinks followed). */
+void build_rmtree(const char *path);
+
+#endif

@@ -1,0 +1,300 @@
+/*
+ * cases.c - tests in memory, and the text format of the test files.
+ *
+ *     # comment
+ *     test 1 plane core 1                  part, kind, group (core|hard), weight
+ *     name Part 1: the worked example      the rest of the line
+ *     note what the test is about          (optional)
+ *     background r g b                     (color and image tests)
+ *     sphere cx cy cz R r g b              (color and image tests, repeated)
+ *     nx 32                                (image tests: the image's width)
+ *     case IN... | WANT... | TOL... | ALT... | FLAGS
+ *     hint OUT... | what the mistake is
+ *     end
+ *
+ * Numbers are C99 hex floats (%a), so they survive the round trip exactly.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "grader.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *kind_names[NKINDS] = { "plane", "pixel", "sphere", "camera", "color", "image" };
+static const int kind_in[NKINDS] = { 3, 7, 10, 6, 6, 3 };
+static const int kind_out[NKINDS] = { 2, 3, 2, 6, 3, 3 };
+
+int kind_nin(Kind kind) { return kind_in[kind]; }
+int kind_nout(Kind kind) { return kind_out[kind]; }
+
+static const char *labels[NPARTS] = { "1", "2", "3a", "3b" };
+static const char *titles[NPARTS] = {
+    "Part 1: the image plane's size",
+    "Part 2: pixel coordinates",
+    "Part 3a: ray/sphere intersection",
+    "Part 3b: camera rays and colours",
+};
+
+const char *part_label(int part) { return labels[part]; }
+const char *part_title(int part) { return titles[part]; }
+
+int part_from_label(const char *label)
+{
+    for (int p = 0; p < NPARTS; p++)
+        if (strcmp(label, labels[p]) == 0)
+            return p;
+    return -1;
+}
+
+static void *xrealloc(void *p, size_t n)
+{
+    void *q = realloc(p, n);
+    if (!q) {
+        fprintf(stderr, "grade: out of memory\n");
+        exit(2);
+    }
+    return q;
+}
+
+Test *testlist_add(TestList *list, int part, Kind kind, const char *name)
+{
+    if (list->n == list->cap) {
+        list->cap = list->cap ? 2 * list->cap : 32;
+        list->tests = xrealloc(list->tests, (size_t)list->cap * sizeof *list->tests);
+    }
+    Test *t = &list->tests[list->n++];
+    memset(t, 0, sizeof *t);
+    t->part = part;
+    t->kind = kind;
+    t->weight = 1;
+    snprintf(t->name, sizeof t->name, "%s", name);
+    return t;
+}
+
+Case *test_add_case(Test *test)
+{
+    if (test->ncases == test->cap) {
+        test->cap = test->cap ? 2 * test->cap : 16;
+        test->cases = xrealloc(test->cases, (size_t)test->cap * sizeof *test->cases);
+    }
+    Case *c = &test->cases[test->ncases++];
+    memset(c, 0, sizeof *c);
+    return c;
+}
+
+void test_add_sphere(Test *test, const double c[3], double R, const double color[3])
+{
+    test->spheres = xrealloc(test->spheres, (size_t)(test->nspheres + 1) * sizeof *test->spheres);
+    TestSphere *s = &test->spheres[test->nspheres++];
+    memcpy(s->c, c, sizeof s->c);
+    s->R = R;
+    memcpy(s->color, color, sizeof s->color);
+}
+
+void testlist_free(TestList *list)
+{
+    for (int k = 0; k < list->n; k++) {
+        free(list->tests[k].cases);
+        free(list->tests[k].spheres);
+    }
+    free(list->tests);
+    memset(list, 0, sizeof *list);
+}
+
+/* ---- writing ------------------------------------------------------------ */
+
+static void put_numbers(FILE *f, const double *v, int n)
+{
+    for (int k = 0; k < n; k++)
+        fprintf(f, " %a", v[k]);
+}
+
+int tests_write(const TestList *list, const char *path, const char *header, char *err, size_t errlen)
+{
+    char tmp[4096];
+    snprintf(tmp, sizeof tmp, "%s.tmp", path);
+    FILE *f = fopen(tmp, "w");
+    if (!f) {
+        snprintf(err, errlen, "%s: %s", tmp, strerror(errno));
+        return -1;
+    }
+    fprintf(f, "%s", header);
+    for (int k = 0; k < list->n; k++) {
+        const Test *t = &list->tests[k];
+        int nin = kind_in[t->kind], nout = kind_out[t->kind];
+        fprintf(f, "\ntest %s %s %s %.17g\n", labels[t->part], kind_names[t->kind],
+                t->hard ? "hard" : "core", t->weight);
+        fprintf(f, "name %s\n", t->name);
+        if (t->note[0])
+            fprintf(f, "note %s\n", t->note);
+        if (t->kind == KIND_COLOR || t->kind == KIND_IMAGE) {
+            fprintf(f, "background");
+            put_numbers(f, t->background, 3);
+            fprintf(f, "\n");
+            for (int s = 0; s < t->nspheres; s++) {
+                fprintf(f, "sphere");
+                put_numbers(f, t->spheres[s].c, 3);
+                put_numbers(f, &t->spheres[s].R, 1);
+                put_numbers(f, t->spheres[s].color, 3);
+                fprintf(f, "\n");
+            }
+        }
+        if (t->kind == KIND_IMAGE)
+            fprintf(f, "nx %d\n", t->image_nx);
+        for (int c = 0; c < t->ncases; c++) {
+            const Case *cs = &t->cases[c];
+            fprintf(f, "case");
+            put_numbers(f, cs->in, nin);
+            fprintf(f, " |");
+            put_numbers(f, cs->want, nout);
+            fprintf(f, " |");
+            put_numbers(f, cs->tol, nout);
+            fprintf(f, " |");
+            put_numbers(f, cs->alt, nout);
+            fprintf(f, " | %u\n", cs->flags);
+            for (int h = 0; h < cs->nhints; h++) {
+                fprintf(f, "hint");
+                put_numbers(f, cs->hints[h].out, nout);
+                fprintf(f, " | %s\n", cs->hints[h].text);
+            }
+        }
+        fprintf(f, "end\n");
+    }
+    if (ferror(f) | fclose(f)) {
+        snprintf(err, errlen, "%s: write failed", tmp);
+        remove(tmp);
+        return -1;
+    }
+    if (rename(tmp, path) != 0) {
+        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        remove(tmp);
+        return -1;
+    }
+    return 0;
+}
+
+/* ---- reading ------------------------------------------------------------ */
+
+/* Reads n numbers from *p, then expects '|' or the end; 0 on success. */
+static int get_numbers(char **p, double *v, int n)
+{
+    for (int k = 0; k < n; k++) {
+        char *end;
+        errno = 0;
+        v[k] = strtod(*p, &end);
+        if (end == *p)
+            return -1;
+        *p = end;
+    }
+    while (**p == ' ' || **p == '\t')
+        (*p)++;
+    if (**p == '|') {
+        (*p)++;
+        return 0;
+    }
+    return **p == '\0' || **p == '\n' ? 0 : -1;
+}
+
+static char *rest_of_line(char *s)
+{
+    while (*s == ' ')
+        s++;
+    s[strcspn(s, "\n")] = '\0';
+    return s;
+}
+
+int tests_read(TestList *list, const char *path, bool hidden, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        return -1;
+    }
+    char *line = NULL;
+    size_t cap = 0;
+    int lineno = 0, status = 0;
+    Test *t = NULL;
+    Case *last = NULL;
+#define BAD(msg) do { snprintf(err, errlen, "%s:%d: %s", path, lineno, msg); status = -1; goto done; } while (0)
+    while (getline(&line, &cap, f) > 0) {
+        lineno++;
+        char *p = line;
+        while (*p == ' ')
+            p++;
+        if (*p == '#' || *p == '\n' || *p == '\0')
+            continue;
+        if (strncmp(p, "test ", 5) == 0) {
+            char part[8], kind[16], group[8];
+            double weight;
+            if (t)
+                BAD("test inside a test (missing end)");
+            if (sscanf(p + 5, "%7s %15s %7s %lf", part, kind, group, &weight) != 4)
+                BAD("test needs: part kind group weight");
+            int pt = part_from_label(part), kd = -1;
+            for (int k = 0; k < NKINDS; k++)
+                if (strcmp(kind, kind_names[k]) == 0)
+                    kd = k;
+            if (pt < 0 || kd < 0 || (strcmp(group, "core") && strcmp(group, "hard")) || !(weight > 0))
+                BAD("bad part, kind, group or weight");
+            t = testlist_add(list, pt, (Kind)kd, "");
+            t->hard = strcmp(group, "hard") == 0;
+            t->hidden = hidden;
+            t->weight = weight;
+            last = NULL;
+            continue;
+        }
+        if (!t)
+            BAD("expected 'test'");
+        if (strncmp(p, "name ", 5) == 0) {
+            snprintf(t->name, sizeof t->name, "%s", rest_of_line(p + 5));
+        } else if (strncmp(p, "note ", 5) == 0) {
+            snprintf(t->note, sizeof t->note, "%s", rest_of_line(p + 5));
+        } else if (strncmp(p, "background", 10) == 0) {
+            p += 10;
+            if (get_numbers(&p, t->background, 3))
+                BAD("background needs 3 numbers");
+        } else if (strncmp(p, "sphere", 6) == 0) {
+            double v[7];
+            p += 6;
+            if (get_numbers(&p, v, 7))
+                BAD("sphere needs 7 numbers");
+            test_add_sphere(t, v, v[3], v + 4);
+        } else if (strncmp(p, "nx ", 3) == 0) {
+            t->image_nx = atoi(p + 3);
+        } else if (strncmp(p, "case", 4) == 0) {
+            int nin = kind_in[t->kind], nout = kind_out[t->kind];
+            last = test_add_case(t);
+            p += 4;
+            double flags;
+            if (get_numbers(&p, last->in, nin) || get_numbers(&p, last->want, nout) ||
+                get_numbers(&p, last->tol, nout) || get_numbers(&p, last->alt, nout) ||
+                get_numbers(&p, &flags, 1))
+                BAD("case needs: inputs | wanted | tolerances | alternatives | flags");
+            last->flags = (unsigned)flags;
+        } else if (strncmp(p, "hint", 4) == 0) {
+            if (!last || last->nhints == CASE_MAX_HINTS)
+                BAD("hint without a case, or too many hints");
+            Hint *h = &last->hints[last->nhints++];
+            p += 4;
+            if (get_numbers(&p, h->out, kind_out[t->kind]))
+                BAD("hint needs the mistake's outputs, then | and its text");
+            snprintf(h->text, sizeof h->text, "%s", rest_of_line(p));
+        } else if (strncmp(p, "end", 3) == 0) {
+            if (t->ncases == 0)
+                BAD("a test without cases");
+            t = NULL;
+        } else {
+            BAD("unknown line");
+        }
+    }
+    if (t)
+        BAD("missing end at the end of the file");
+done:
+#undef BAD
+    free(line);
+    fclose(f);
+    return status;
+}

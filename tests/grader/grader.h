@@ -1,0 +1,108 @@
+/*
+ * grader.h - the autograder's model: parts, tests, cases and their results.
+ *
+ * A test is one run of a fresh child process built from the submission's
+ * file for one part; it holds many cases and passes only when every case
+ * does.  Expected values come from outside that process: from the test
+ * files under tests/public and tests/hidden (written by tests/oracle), or,
+ * in the instructor's kit, from the oracle at grading time.
+ */
+#ifndef GRADER_H
+#define GRADER_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+enum { PART1, PART2, PART3A, PART3B, NPARTS };
+
+/* What a test's child computes for each case. */
+typedef enum {
+    KIND_PLANE,       /* Part 1:  in fov aspect d           -> w h          */
+    KIND_PIXEL,       /* Part 2:  in i j nx ny w h d        -> x y z        */
+    KIND_SPHERE,      /* Part 3a: in cx cy cz R ex ey ez rx ry rz -> hit t  */
+    KIND_CAMERA,      /* Part 3b: in eye(3) pixel(3)        -> origin(3) direction(3) */
+    KIND_COLOR,       /* Part 3b: in ray origin(3) dir(3)   -> colour(3), with the test's scene */
+    KIND_IMAGE,       /* Part 3b: in pixel centre(3)        -> colour(3), eye at the origin,
+                         through the child's camera_ray and ray_color            */
+    NKINDS
+} Kind;
+
+#define CASE_MAX_IN   10
+#define CASE_MAX_OUT  6
+#define CASE_MAX_HINTS 8
+
+/* Case flags */
+#define CASE_EITHER_HIT 1u     /* 3a: hit or miss both acceptable (rounding) */
+
+typedef struct {
+    char text[96];                 /* the known mistake, as told to the student */
+    double out[CASE_MAX_OUT];      /* what that mistake produces                */
+} Hint;
+
+typedef struct {
+    double in[CASE_MAX_IN];
+    double want[CASE_MAX_OUT];     /* expected outputs                          */
+    double tol[CASE_MAX_OUT];      /* accepted |got - want| per output           */
+    double alt[CASE_MAX_OUT];      /* KIND_COLOR/IMAGE: another acceptable colour
+                                      when the flag CASE_EITHER_HIT is set       */
+    unsigned flags;
+    int nhints;
+    Hint hints[CASE_MAX_HINTS];
+} Case;
+
+typedef struct {
+    double c[3], R, color[3];
+} TestSphere;
+
+typedef struct {
+    char name[128];                /* starts with "Part 1: " etc.               */
+    int part;
+    Kind kind;
+    bool hard;                     /* the hard-case group (tag "hard")          */
+    bool hidden;                   /* visibility after_published                */
+    double weight;                 /* share of the part's (or group's) points   */
+    char note[160];                /* what the test is about, shown on failure  */
+    /* KIND_COLOR and KIND_IMAGE: the scene */
+    double background[3];
+    int nspheres;
+    TestSphere *spheres;
+    int image_nx;                  /* KIND_IMAGE: image width, for messages     */
+    int ncases, cap;
+    Case *cases;
+} Test;
+
+typedef struct {
+    int n, cap;
+    Test *tests;
+} TestList;
+
+/* Number of numbers in and out for a kind. */
+int kind_nin(Kind kind);
+int kind_nout(Kind kind);
+const char *part_label(int part);        /* "1", "2", "3a", "3b"         */
+const char *part_title(int part);        /* "Part 1: image plane size"   */
+int part_from_label(const char *label);  /* -1 if unknown                */
+
+Test *testlist_add(TestList *list, int part, Kind kind, const char *name);
+Case *test_add_case(Test *test);
+void test_add_sphere(Test *test, const double c[3], double R, const double color[3]);
+void testlist_free(TestList *list);
+
+/* Reads or writes the test files' text format (see cases.c). */
+int tests_read(TestList *list, const char *path, bool hidden, char *err, size_t errlen);
+int tests_write(const TestList *list, const char *path, const char *header, char *err, size_t errlen);
+
+/* The outcome of one test. */
+typedef struct {
+    bool passed;
+    double score, max_score;
+    char *output;                  /* what the student is told (malloc'd)      */
+    double seconds;
+} TestResult;
+
+/* Checks a child's answers against the test.  answers holds one line per
+ * case ("%a ..." numbers) and the final "end N" line.  Returns true when
+ * every case is right; out receives the message for the student. */
+bool check_answers(const Test *test, const char *answers, size_t len, char **out);
+
+#endif

@@ -1,0 +1,120 @@
+/*
+ * harness.c - the child side of a test: the only grader code that shares a
+ * process with student code.  Built once per part (-DHARNESS_PART=1, 2, 3
+ * for 3a, 4 for 3b) and linked with that part's student file; it calls no
+ * other part's function itself.
+ *
+ * Reads from stdin:   KIND N
+ *                     [background r g b] [spheres M, then M lines cx cy cz R r g b]
+ *                     N lines of inputs (numbers)
+ * Writes to fd 3:     one line of outputs (%a) per case, then "end N".
+ * It knows nothing of the expected answers: the parent judges.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "raytracer.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static FILE *answers;
+
+static void put(const double *v, int n)
+{
+    for (int k = 0; k < n; k++)
+        fprintf(answers, k ? " %a" : "%a", v[k]);
+    fputc('\n', answers);
+}
+
+static int get(double *v, int n)
+{
+    for (int k = 0; k < n; k++)
+        if (scanf("%lf", &v[k]) != 1)
+            return -1;
+    return 0;
+}
+
+int main(void)
+{
+    char kind[16];
+    int n;
+    answers = fdopen(3, "w");
+    if (!answers || scanf("%15s %d", kind, &n) != 2 || n < 0)
+        return 3;
+    static char buf[1 << 16];
+    setvbuf(answers, buf, _IOFBF, sizeof buf);
+
+#if HARNESS_PART == 4
+    static Scene scene;
+    if (strcmp(kind, "color") == 0 || strcmp(kind, "image") == 0) {
+        double bg[3];
+        int m;
+        if (scanf(" background %lf %lf %lf", &bg[0], &bg[1], &bg[2]) != 3 ||
+            scanf(" spheres %d", &m) != 1 || m < 0)
+            return 3;
+        scene.background = vec3(bg[0], bg[1], bg[2]);
+        scene.spheres = calloc((size_t)m + 1, sizeof *scene.spheres);
+        scene.nspheres = m;
+        for (int s = 0; s < m; s++) {
+            double v[7];
+            if (get(v, 7))
+                return 3;
+            scene.spheres[s].center = vec3(v[0], v[1], v[2]);
+            scene.spheres[s].radius = v[3];
+            scene.spheres[s].color = vec3(v[4], v[5], v[6]);
+        }
+    }
+#endif
+    for (int c = 0; c < n; c++) {
+        double in[10], out[6];
+#if HARNESS_PART == 1
+        if (get(in, 3))
+            return 3;
+        image_plane_size(in[0], in[1], in[2], &out[0], &out[1]);
+        put(out, 2);
+#elif HARNESS_PART == 2
+        if (get(in, 7))
+            return 3;
+        Vec3 p = pixel_coordinates((int)in[0], (int)in[1], (int)in[2], (int)in[3], in[4], in[5], in[6]);
+        out[0] = p.x, out[1] = p.y, out[2] = p.z;
+        put(out, 3);
+#elif HARNESS_PART == 3
+        if (get(in, 10))
+            return 3;
+        Sphere s = { vec3(in[0], in[1], in[2]), in[3], vec3(1, 1, 1) };
+        Ray r = { vec3(in[4], in[5], in[6]), vec3(in[7], in[8], in[9]) };
+        double t = 0;
+        bool hit = sphere_intersect(&s, &r, &t);
+        out[0] = hit ? 1 : 0;
+        out[1] = hit ? t : 0;
+        put(out, 2);
+#elif HARNESS_PART == 4
+        if (strcmp(kind, "camera") == 0) {
+            if (get(in, 6))
+                return 3;
+            Ray r = camera_ray(vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]));
+            out[0] = r.origin.x, out[1] = r.origin.y, out[2] = r.origin.z;
+            out[3] = r.direction.x, out[4] = r.direction.y, out[5] = r.direction.z;
+            put(out, 6);
+        } else if (strcmp(kind, "color") == 0) {
+            if (get(in, 6))
+                return 3;
+            Ray r = { vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]) };
+            Vec3 col = ray_color(&scene, &r);
+            out[0] = col.x, out[1] = col.y, out[2] = col.z;
+            put(out, 3);
+        } else {
+            if (get(in, 3))
+                return 3;
+            Ray r = camera_ray(vec3(0, 0, 0), vec3(in[0], in[1], in[2]));
+            Vec3 col = ray_color(&scene, &r);
+            out[0] = col.x, out[1] = col.y, out[2] = col.z;
+            put(out, 3);
+        }
+#else
+#error "HARNESS_PART must be 1, 2, 3 (Part 3a) or 4 (Part 3b)"
+#endif
+    }
+    fprintf(answers, "end %d\n", n);
+    return fflush(answers) == 0 ? 0 : 3;
+}

@@ -1,0 +1,267 @@
+/*
+ * sandbox.c - see sandbox.h.  POSIX only: fork, setpgid, setrlimit, poll.
+ */
+#define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE         /* setgroups, on glibc */
+#define _DARWIN_C_SOURCE        /* setgroups, on macOS */
+#include "sandbox.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <grp.h>
+#include <poll.h>
+#include <pwd.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+double sandbox_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+bool sandbox_drops_privileges(void)
+{
+    return geteuid() == 0;
+}
+
+static void nobody_ids(uid_t *uid, gid_t *gid)
+{
+    struct passwd *pw = getpwnam("nobody");
+    *uid = pw ? pw->pw_uid : 65534;
+    *gid = pw ? pw->pw_gid : 65534;
+}
+
+int sandbox_give(const char *path)
+{
+    if (!sandbox_drops_privileges())
+        return 0;
+    uid_t uid;
+    gid_t gid;
+    nobody_ids(&uid, &gid);
+    return chown(path, uid, gid);
+}
+
+static void limit(int resource, rlim_t value)
+{
+    struct rlimit rl = { value, value };
+    setrlimit(resource, &rl);       /* best effort: macOS ignores some */
+}
+
+/* In the child, after fork: never returns. */
+static void child(const SandboxSpec *spec, int in_r, int ans_w, int out_w)
+{
+    setpgid(0, 0);
+    signal(SIGPIPE, SIG_DFL);
+    if (dup2(in_r, 0) < 0 || dup2(out_w, 1) < 0 || dup2(out_w, 2) < 0 || dup2(ans_w, 3) < 0)
+        _exit(126);
+    long maxfd = sysconf(_SC_OPEN_MAX);
+    if (maxfd < 0 || maxfd > 65536)
+        maxfd = 65536;
+    for (long fd = 4; fd < maxfd; fd++)
+        close((int)fd);
+    if (chdir(spec->workdir) != 0)
+        _exit(126);
+
+    limit(RLIMIT_CORE, 0);
+    limit(RLIMIT_CPU, (rlim_t)(spec->timeout + 2));
+    if (spec->memory_mb > 0)
+        limit(RLIMIT_AS, (rlim_t)spec->memory_mb << 20);
+    limit(RLIMIT_FSIZE, (rlim_t)spec->max_file_mb << 20);
+    if (sandbox_drops_privileges()) {
+        uid_t uid;
+        gid_t gid;
+        nobody_ids(&uid, &gid);
+        if (setgroups(0, NULL) != 0 || setgid(gid) != 0 || setuid(uid) != 0 || setuid(0) == 0)
+            _exit(126);
+    }
+    if (spec->max_procs >= 0)
+        limit(RLIMIT_NPROC, (rlim_t)spec->max_procs);
+
+    static char path_env[4096];
+    const char *path = spec->inherit_path && getenv("PATH") ? getenv("PATH") : "/usr/bin:/bin";
+    snprintf(path_env, sizeof path_env, "PATH=%s", path);
+    char *envp[] = { path_env, "LC_ALL=C", "HOME=/nonexistent", NULL };
+    static char tmp_env[4200];
+    if (spec->inherit_path) {      /* the compiler wants a TMPDIR it can write */
+        snprintf(tmp_env, sizeof tmp_env, "TMPDIR=%s", spec->workdir);
+        envp[2] = tmp_env;
+    }
+    execve(spec->argv[0], spec->argv, envp);
+    _exit(127);
+}
+
+/* Appends what fd has to (buf, len), keeping at most max bytes; returns 0 at
+ * end of file, 1 if it read or would block, -1 on error. */
+static int pump(int fd, char **buf, size_t *len, size_t *cap, size_t max, bool *truncated)
+{
+    char chunk[65536];
+    ssize_t n = read(fd, chunk, sizeof chunk);
+    if (n == 0)
+        return 0;
+    if (n < 0)
+        return errno == EAGAIN || errno == EINTR ? 1 : -1;
+    size_t keep = (size_t)n;
+    if (*len + keep > max) {
+        keep = max > *len ? max - *len : 0;
+        *truncated = true;
+    }
+    if (keep) {
+        if (*len + keep + 1 > *cap) {
+            size_t ncap = (*len + keep + 1) * 2;
+            char *nb = realloc(*buf, ncap);
+            if (!nb)
+                return -1;
+            *buf = nb;
+            *cap = ncap;
+        }
+        memcpy(*buf + *len, chunk, keep);
+        *len += keep;
+    }
+    return 1;
+}
+
+int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t errlen)
+{
+    int in_p[2], ans_p[2], out_p[2];
+    memset(res, 0, sizeof *res);
+    if (errlen)
+        err[0] = '\0';
+    signal(SIGPIPE, SIG_IGN);
+    if (pipe(in_p) != 0)
+        goto fail_pipe0;
+    if (pipe(ans_p) != 0)
+        goto fail_pipe1;
+    if (pipe(out_p) != 0)
+        goto fail_pipe2;
+
+    double start = sandbox_now();
+    pid_t pid = fork();
+    if (pid < 0) {
+        snprintf(err, errlen, "fork: %s", strerror(errno));
+        close(out_p[0]);
+        close(out_p[1]);
+        goto fail_pipe2;
+    }
+    if (pid == 0)
+        child(spec, in_p[0], ans_p[1], out_p[1]);
+    setpgid(pid, pid);              /* also here, so killpg cannot race it */
+    close(in_p[0]);
+    close(ans_p[1]);
+    close(out_p[1]);
+    fcntl(in_p[1], F_SETFL, O_NONBLOCK);
+    fcntl(ans_p[0], F_SETFL, O_NONBLOCK);
+    fcntl(out_p[0], F_SETFL, O_NONBLOCK);
+
+    size_t in_off = 0, ans_cap = 0, out_cap = 0;
+    int in_fd = spec->input_len ? in_p[1] : -1, ans_fd = ans_p[0], out_fd = out_p[0];
+    if (in_fd < 0)
+        close(in_p[1]);
+    int status = 0;
+    bool exited = false;
+    double deadline = start + spec->timeout;
+
+    while (!exited) {
+        struct pollfd pf[3];
+        int n = 0;
+        if (in_fd >= 0)
+            pf[n++] = (struct pollfd){ in_fd, POLLOUT, 0 };
+        if (ans_fd >= 0)
+            pf[n++] = (struct pollfd){ ans_fd, POLLIN, 0 };
+        if (out_fd >= 0)
+            pf[n++] = (struct pollfd){ out_fd, POLLIN, 0 };
+        poll(pf, (nfds_t)n, 20);
+        if (in_fd >= 0) {
+            ssize_t w = write(in_fd, spec->input + in_off, spec->input_len - in_off);
+            if (w > 0)
+                in_off += (size_t)w;
+            if ((w < 0 && errno != EAGAIN && errno != EINTR) || in_off == spec->input_len) {
+                close(in_fd);
+                in_fd = -1;
+            }
+        }
+        if (ans_fd >= 0 && pump(ans_fd, &res->answer, &res->answer_len, &ans_cap,
+                                spec->answer_max, &res->answer_truncated) <= 0) {
+            close(ans_fd);
+            ans_fd = -1;
+        }
+        if (out_fd >= 0 && pump(out_fd, &res->output, &res->output_len, &out_cap,
+                                spec->output_max, &res->output_truncated) <= 0) {
+            close(out_fd);
+            out_fd = -1;
+        }
+        if (waitpid(pid, &status, WNOHANG) == pid)
+            exited = true;
+        else if (sandbox_now() > deadline) {
+            res->timed_out = true;
+            kill(-pid, SIGKILL);
+            kill(pid, SIGKILL);
+            waitpid(pid, &status, 0);
+            exited = true;
+        }
+    }
+    /* The child is gone: kill whatever it left in its group, then take what
+     * is already in the pipes without waiting for anyone to close them. */
+    kill(-pid, SIGKILL);
+    for (int round = 0; round < 64 && (ans_fd >= 0 || out_fd >= 0); round++) {
+        if (ans_fd >= 0 && pump(ans_fd, &res->answer, &res->answer_len, &ans_cap,
+                                spec->answer_max, &res->answer_truncated) <= 0) {
+            close(ans_fd);
+            ans_fd = -1;
+        }
+        if (out_fd >= 0 && pump(out_fd, &res->output, &res->output_len, &out_cap,
+                                spec->output_max, &res->output_truncated) <= 0) {
+            close(out_fd);
+            out_fd = -1;
+        }
+        if (ans_fd >= 0 || out_fd >= 0) {
+            struct pollfd pf[2] = { { ans_fd, POLLIN, 0 }, { out_fd, POLLIN, 0 } };
+            if (poll(pf, 2, round < 4 ? 5 : 0) == 0)
+                break;
+        }
+    }
+    if (in_fd >= 0)
+        close(in_fd);
+    if (ans_fd >= 0)
+        close(ans_fd);
+    if (out_fd >= 0)
+        close(out_fd);
+
+    res->seconds = sandbox_now() - start;
+    res->exit_code = WIFEXITED(status) && !res->timed_out ? WEXITSTATUS(status) : -1;
+    res->signal = WIFSIGNALED(status) && !res->timed_out ? WTERMSIG(status) : 0;
+    if (!res->answer && !(res->answer = calloc(1, 1)))
+        return -1;
+    if (!res->output && !(res->output = calloc(1, 1)))
+        return -1;
+    res->answer[res->answer_len] = '\0';
+    res->output[res->output_len] = '\0';
+    return 0;
+
+fail_pipe2:
+    close(ans_p[0]);
+    close(ans_p[1]);
+fail_pipe1:
+    close(in_p[0]);
+    close(in_p[1]);
+fail_pipe0:
+    if (!err[0])
+        snprintf(err, errlen, "pipe: %s", strerror(errno));
+    return -1;
+}
+
+void sandbox_result_free(SandboxResult *res)
+{
+    free(res->answer);
+    free(res->output);
+    memset(res, 0, sizeof *res);
+}

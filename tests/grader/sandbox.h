@@ -1,0 +1,59 @@
+/*
+ * sandbox.h - running untrusted student code in a child process.
+ *
+ * The child gets its own process group, an empty working directory, a small
+ * environment, no file descriptors but stdin, stdout/stderr (one pipe) and
+ * the answer pipe on fd 3, and resource limits: CPU time, memory, no new
+ * processes, no file output.  When the grader runs as root the child runs
+ * as the unprivileged user "nobody".  The parent enforces the wall-clock
+ * limit by killing the whole process group -- nothing the child does (alarm,
+ * signals, exit, fork, closing descriptors) can stall it or forge a result.
+ */
+#ifndef SANDBOX_H
+#define SANDBOX_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+typedef struct {
+    char *const *argv;         /* argv[0] is the program's path               */
+    const char *workdir;       /* the child's working directory               */
+    const char *input;         /* bytes written to the child's stdin          */
+    size_t input_len;
+    double timeout;            /* wall-clock seconds before the group is killed */
+    size_t answer_max;         /* bytes kept from fd 3 (the rest is dropped)  */
+    size_t output_max;         /* bytes kept from stdout and stderr           */
+    long memory_mb;            /* address-space limit; 0 = none              */
+    int max_procs;             /* -1: no limit (the compiler needs its own);
+                                  0: the child may not create processes       */
+    long max_file_mb;          /* largest file the child may write; 0 = none  */
+    bool inherit_path;         /* pass the caller's PATH (for the compiler)   */
+} SandboxSpec;
+
+typedef struct {
+    char *answer;              /* NUL-terminated; what the child wrote on fd 3 */
+    size_t answer_len;
+    bool answer_truncated;
+    char *output;              /* NUL-terminated; stdout and stderr, merged   */
+    size_t output_len;
+    bool output_truncated;
+    bool timed_out;
+    int exit_code;             /* the exit status, or -1 when killed          */
+    int signal;                /* the signal that ended it, or 0             */
+    double seconds;
+} SandboxResult;
+
+/* Runs spec's program.  Returns 0 when it ran (whatever it did), or -1 when
+ * the sandbox itself failed, with a reason in err. */
+int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t errlen);
+void sandbox_result_free(SandboxResult *res);
+
+/* True when the grader runs as root and so drops children to "nobody". */
+bool sandbox_drops_privileges(void);
+/* Makes path owned by the unprivileged user (when root); 0 on success. */
+int sandbox_give(const char *path);
+
+/* Seconds on a monotonic clock. */
+double sandbox_now(void);
+
+#endif
