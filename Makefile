@@ -106,7 +106,7 @@ compare: $(SUB_BUILD)/render $(BUILD)/bin/compare $(if $(HAVE_SOLUTIONS),$(BUILD
 	    -o out/compare/$(SCENE_NAME).png
 
 # ---- the oracle: independent double-double answers (tests/oracle) ----------
-ORACLE_SRC = $(wildcard tests/oracle/*.c)
+ORACLE_SRC = $(filter-out %_main.c,$(wildcard tests/oracle/*.c))
 ORACLE_OBJ = $(ORACLE_SRC:tests/oracle/%.c=$(BUILD)/oracle/%.o)
 $(BUILD)/oracle/%.o: tests/oracle/%.c $(wildcard tests/oracle/*.h) $(KIT_HDR)
 	@mkdir -p $(@D)

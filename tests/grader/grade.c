@@ -1,0 +1,231 @@
+/*
+ * grade.c - grading one submission: for each part, build its program, run
+ * each test in a fresh sandboxed child, judge the answers here, and add up
+ * the points.  A part that does not build, crashes or hangs loses only its
+ * own points.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "grade.h"
+#include "sandbox.h"
+
+#include <signal.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define OUTPUT_SHOWN 1500     /* bytes of the student's own printing shown */
+
+static const char *kind_word[NKINDS] = { "plane", "pixel", "sphere", "camera", "color", "image" };
+
+static char *xasprintf(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+static char *xasprintf(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    char *s = malloc((size_t)(n > 0 ? n : 0) + 1);
+    if (!s)
+        return NULL;
+    va_start(ap, fmt);
+    vsnprintf(s, (size_t)n + 1, fmt, ap);
+    va_end(ap);
+    return s;
+}
+
+/* What the child reads on stdin for a test. */
+static char *test_input(const Test *t, size_t *len)
+{
+    size_t cap = 256 + (size_t)t->ncases * 26 * CASE_MAX_IN + (size_t)t->nspheres * 26 * 7;
+    char *s = malloc(cap);
+    if (!s)
+        return NULL;
+    size_t n = (size_t)snprintf(s, cap, "%s %d\n", kind_word[t->kind], t->ncases);
+    if (t->kind == KIND_COLOR || t->kind == KIND_IMAGE) {
+        n += (size_t)snprintf(s + n, cap - n, "background %a %a %a\nspheres %d\n",
+                              t->background[0], t->background[1], t->background[2], t->nspheres);
+        for (int k = 0; k < t->nspheres; k++) {
+            const TestSphere *sp = &t->spheres[k];
+            n += (size_t)snprintf(s + n, cap - n, "%a %a %a %a %a %a %a\n", sp->c[0], sp->c[1],
+                                  sp->c[2], sp->R, sp->color[0], sp->color[1], sp->color[2]);
+        }
+    }
+    int nin = kind_nin(t->kind);
+    for (int c = 0; c < t->ncases; c++) {
+        for (int k = 0; k < nin; k++)
+            n += (size_t)snprintf(s + n, cap - n, k ? " %a" : "%a", t->cases[c].in[k]);
+        n += (size_t)snprintf(s + n, cap - n, "\n");
+    }
+    *len = n;
+    return s;
+}
+
+static const char *signal_story(int sig)
+{
+    switch (sig) {
+    case SIGSEGV: return " (SIGSEGV: a bad pointer, or an array index out of range)";
+    case SIGBUS:  return " (SIGBUS: a bad pointer)";
+    case SIGFPE:  return " (SIGFPE: an integer division by zero)";
+    case SIGABRT: return " (SIGABRT: abort() or a failed assert)";
+    case SIGXCPU: return " (SIGXCPU: too much CPU time)";
+    case SIGXFSZ: return " (SIGXFSZ: it tried to write a file; tests may not)";
+    case SIGKILL: return " (SIGKILL)";
+    default:      return "";
+    }
+}
+
+/* Runs one test in the sandbox and judges it. */
+static void run_test(const GradeOptions *opt, const Build *b, const Test *t, TestResult *r)
+{
+    size_t len;
+    char *input = test_input(t, &len);
+    char *argv[] = { (char *)b->runner, NULL };
+    SandboxSpec spec = {
+        .argv = argv, .workdir = b->rundir, .input = input, .input_len = len,
+        .timeout = opt->cfg->timeout, .answer_max = 512 + (size_t)t->ncases * 160,
+        .output_max = 64 * 1024, .memory_mb = 1024, .max_procs = 0, .max_file_mb = 0,
+    };
+    SandboxResult res;
+    char err[256];
+    if (!input || sandbox_run(&spec, &res, err, sizeof err) != 0) {
+        r->output = xasprintf("the grader could not run this test: %s", input ? err : "out of memory");
+        free(input);
+        return;
+    }
+    free(input);
+    r->seconds = res.seconds;
+
+    char *verdict = NULL;
+    bool ok = check_answers(t, res.answer, res.answer_len, &verdict);
+    const char *why = "";
+    char whybuf[200] = "";
+    if (res.timed_out) {
+        snprintf(whybuf, sizeof whybuf, "  it did not finish within %g s: an endless loop?\n", opt->cfg->timeout);
+    } else if (res.signal) {
+        snprintf(whybuf, sizeof whybuf, "  it crashed: signal %d%s\n", res.signal, signal_story(res.signal));
+    } else if (res.exit_code != 0) {
+        snprintf(whybuf, sizeof whybuf, "  it exited with status %d before the test finished "
+                 "(does your code call exit?)\n", res.exit_code);
+    }
+    why = whybuf;
+    ok = ok && res.exit_code == 0 && !res.timed_out;
+    r->passed = ok;
+    r->score = ok ? r->max_score : 0;
+
+    char shown[OUTPUT_SHOWN + 1];
+    size_t ns = res.output_len < OUTPUT_SHOWN ? res.output_len : OUTPUT_SHOWN;
+    memcpy(shown, res.output, ns);
+    shown[ns] = '\0';
+    r->output = xasprintf("%s%s%s%s%s%s%s", ok ? "" : t->note[0] ? "  about: " : "",
+                          ok ? "" : t->note, ok || !t->note[0] ? "" : "\n",
+                          ok ? "" : why, ok ? "" : verdict,
+                          ns && !ok ? "  your code printed:\n" : "",
+                          ns && !ok ? shown : "");
+    if (ns && !ok && (res.output_truncated || res.output_len > OUTPUT_SHOWN)) {
+        char *more = xasprintf("%s\n  [... more output cut]\n", r->output);
+        free(r->output);
+        r->output = more;
+    }
+    free(verdict);
+    sandbox_result_free(&res);
+}
+
+int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
+                     char *err, size_t errlen)
+{
+    memset(g, 0, sizeof *g);
+    g->tests = tests;
+    g->results = calloc((size_t)tests->n + 1, sizeof *g->results);
+    if (!g->results) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    double start = sandbox_now();
+    const GradeConfig *cfg = opt->cfg;
+
+    /* Points: each group's points shared by its tests' weights. */
+    double wsum[NPARTS][2] = { { 0 } };
+    for (int k = 0; k < tests->n; k++)
+        wsum[tests->tests[k].part][tests->tests[k].hard] += tests->tests[k].weight;
+    for (int k = 0; k < tests->n; k++) {
+        const Test *t = &tests->tests[k];
+        double pts = t->hard ? cfg->hard[t->part] : cfg->core[t->part];
+        g->results[k].max_score = pts * t->weight / wsum[t->part][t->hard];
+    }
+
+    for (int p = 0; p < NPARTS; p++) {
+        if (!opt->parts[p])
+            continue;
+        g->graded[p] = true;
+        if (opt->verbose)
+            fprintf(stderr, "  building Part %s ...\n", part_label(p));
+        Build b;
+        if (build_part(opt->build, p, opt->submission, &b, err, errlen) != 0) {
+            build_remove(&b);
+            return -1;
+        }
+        g->build_messages[p] = b.messages;
+        b.messages = NULL;
+        int timeouts = 0;
+        bool first = true;
+        for (int k = 0; k < tests->n; k++) {
+            const Test *t = &tests->tests[k];
+            TestResult *r = &g->results[k];
+            if (t->part != p)
+                continue;
+            if (!b.ok) {
+                r->output = xasprintf(first ? "  your %s.c did not build, so this part scores 0:\n%s"
+                                            : "  your %s.c did not build (see the first test of this part)%s",
+                                      stage_names[p], first ? g->build_messages[p] : "");
+            } else if (timeouts >= 2) {
+                r->output = xasprintf("  not run: two earlier tests of this part did not finish in time");
+            } else {
+                if (opt->verbose)
+                    fprintf(stderr, "  %s\n", t->name);
+                run_test(opt, &b, t, r);
+                if (!r->passed && r->seconds >= cfg->timeout)
+                    timeouts++;
+            }
+            first = false;
+        }
+        build_remove(&b);
+    }
+    for (int k = 0; k < tests->n; k++) {
+        const Test *t = &tests->tests[k];
+        const TestResult *r = &g->results[k];
+        if (!g->graded[t->part])
+            continue;
+        if (t->hard) {
+            g->hard[t->part] += r->score;
+            g->hard_max[t->part] += r->max_score;
+        } else {
+            g->core[t->part] += r->score;
+            g->core_max[t->part] += r->max_score;
+        }
+    }
+    for (int p = 0; p < NPARTS; p++) {
+        g->total += g->core[p];
+        g->total_max += g->core_max[p];
+        if (cfg->hard_is_bonus) {
+            g->bonus += g->hard[p];
+            g->bonus_max += g->hard_max[p];
+        } else {
+            g->total += g->hard[p];
+            g->total_max += g->hard_max[p];
+        }
+    }
+    g->seconds = sandbox_now() - start;
+    return 0;
+}
+
+void grade_free(Grade *g)
+{
+    if (g->results)
+        for (int k = 0; k < g->tests->n; k++)
+            free(g->results[k].output);
+    free(g->results);
+    for (int p = 0; p < NPARTS; p++)
+        free(g->build_messages[p]);
+    memset(g, 0, sizeof *g);
+}

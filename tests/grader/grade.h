@@ -1,0 +1,36 @@
+/*
+ * grade.h - grading one submission: every part on its own.
+ */
+#ifndef GRADE_H
+#define GRADE_H
+
+#include "build.h"
+#include "config.h"
+#include "grader.h"
+
+typedef struct {
+    const char *submission;    /* directory holding some or all stage files   */
+    bool parts[NPARTS];        /* which parts to grade                        */
+    const GradeConfig *cfg;
+    const BuildConfig *build;
+    bool verbose;              /* progress on stderr                          */
+} GradeOptions;
+
+typedef struct {
+    const TestList *tests;
+    TestResult *results;       /* one per test; max_score 0 where not graded  */
+    bool graded[NPARTS];
+    char *build_messages[NPARTS];
+    double core[NPARTS], core_max[NPARTS];
+    double hard[NPARTS], hard_max[NPARTS];
+    double total, total_max;   /* core, plus hard when it is not a bonus      */
+    double bonus, bonus_max;   /* hard points when they are a bonus           */
+    double seconds;
+} Grade;
+
+/* Grades; 0 on success, -1 when the grader itself could not run. */
+int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
+                     char *err, size_t errlen);
+void grade_free(Grade *g);
+
+#endif

@@ -1,0 +1,340 @@
+/*
+ * grade - the autograder's command line.
+ *
+ *   grade [--submission DIR] [--part 1|2|3a|3b] [--results FILE] [--quiet]
+ *       grades one submission; exit 0 for full marks, 1 when points are
+ *       lost, 2 when the grader itself could not run.
+ *   grade --all DIR [--out DIR] [--jobs N]
+ *       grades every subdirectory of DIR, in parallel; writes
+ *       OUT/gradebook.csv and OUT/<submission>.json.
+ *
+ * Run it from the kit's root (make does).  Student code never runs in this
+ * process: each test runs in a fresh sandboxed child (sandbox.c).
+ */
+#define _XOPEN_SOURCE 700
+#include "build.h"
+#include "config.h"
+#include "grade.h"
+#include "grader.h"
+#include "report.h"
+#include "sandbox.h"
+#ifdef GRADER_ORACLE
+#include "../oracle/testgen.h"
+#endif
+
+#include <dirent.h>
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+static void usage(void)
+{
+    fprintf(stderr,
+            "usage: grade [--submission DIR] [--part 1|2|3a|3b] [--results FILE] [--quiet]\n"
+            "       grade --all DIR [--out DIR] [--jobs N]\n"
+            "exit status: 0 full marks, 1 points lost, 2 the grader could not run\n");
+    exit(2);
+}
+
+static int fail(const char *results, const char *fmt, const char *what)
+{
+    char msg[1024], err[512];
+    snprintf(msg, sizeof msg, fmt, what);
+    fprintf(stderr, "grade: %s\n", msg);
+    if (results && report_json_error(results, msg, err, sizeof err) != 0)
+        fprintf(stderr, "grade: %s\n", err);
+    return 2;
+}
+
+#ifdef GRADER_ORACLE
+/* FNV-1a of the submission's stage files: the seed of its random cases,
+ * so a regrade of the same files draws the same cases. */
+static uint64_t submission_hash(const char *dir)
+{
+    uint64_t h = 0xcbf29ce484222325u;
+    for (int p = 0; p < NPARTS; p++) {
+        char path[PATH_MAX];
+        snprintf(path, sizeof path, "%s/%s.c", dir, stage_names[p]);
+        FILE *f = fopen(path, "rb");
+        int ch;
+        if (!f)
+            continue;
+        while ((ch = getc(f)) != EOF)
+            h = (h ^ (uint64_t)ch) * 0x100000001b3u;
+        fclose(f);
+    }
+    return h;
+}
+#endif
+
+static int load_tests(TestList *list, const GradeConfig *cfg, const char *submission,
+                      char *err, size_t errlen)
+{
+    for (int p = 0; p < NPARTS; p++) {
+        char path[256];
+        snprintf(path, sizeof path, "tests/public/part%s.tests", part_label(p));
+        if (tests_read(list, path, false, err, errlen) != 0)
+            return -1;
+    }
+#ifdef GRADER_ORACLE
+    struct stat st;
+    if (stat("tests/hidden", &st) == 0)
+        testgen_hidden(list, cfg->seed ^ submission_hash(submission));
+#else
+    (void)cfg;
+    (void)submission;
+#endif
+    return 0;
+}
+
+static int grade_one(const char *submission, const char *part, const char *results,
+                     bool quiet, bool summary)
+{
+    char err[1024];
+    GradeConfig cfg;
+    if (config_read(&cfg, "tests/weights.conf", err, sizeof err) != 0)
+        return fail(results, "%s", err);
+    struct stat st;
+    if (stat(submission, &st) != 0 || !S_ISDIR(st.st_mode))
+        return fail(results, "%s is not a directory", submission);
+
+    char root[PATH_MAX];
+    if (!getcwd(root, sizeof root))
+        return fail(results, "getcwd: %s", strerror(errno));
+    const char *cc = getenv("CC") && *getenv("CC") ? getenv("CC") : "cc";
+    char ccpath[PATH_MAX];
+    /* The sandbox runs programs by path: find the compiler on PATH. */
+    if (!strchr(cc, '/')) {
+        const char *path = getenv("PATH") ? getenv("PATH") : "/usr/bin:/bin";
+        char *copy = strdup(path), *save = NULL;
+        ccpath[0] = '\0';
+        for (char *dir = strtok_r(copy, ":", &save); dir; dir = strtok_r(NULL, ":", &save)) {
+            snprintf(ccpath, sizeof ccpath, "%s/%s", dir, cc);
+            if (access(ccpath, X_OK) == 0)
+                break;
+            ccpath[0] = '\0';
+        }
+        free(copy);
+        if (!ccpath[0])
+            return fail(results, "no C compiler: %s is not on PATH", cc);
+        cc = ccpath;
+    }
+    char objdir[PATH_MAX + 32], ref[PATH_MAX + 64];
+    snprintf(objdir, sizeof objdir, "%s/out/build/grader", root);
+    snprintf(ref, sizeof ref, "%s/ref_part1_image_plane.o", objdir);
+    BuildConfig bc = { .root = root, .cc = cc, .objdir = objdir, .reference = access(ref, R_OK) == 0 };
+
+    TestList tests = { 0 };
+    if (load_tests(&tests, &cfg, submission, err, sizeof err) != 0)
+        return fail(results, "%s", err);
+
+    GradeOptions opt = { .submission = submission, .cfg = &cfg, .build = &bc };
+    for (int p = 0; p < NPARTS; p++)
+        opt.parts[p] = !part || !*part || part_from_label(part) == p;
+    Grade g;
+    if (grade_submission(&opt, &tests, &g, err, sizeof err) != 0) {
+        testlist_free(&tests);
+        return fail(results, "%s", err);
+    }
+    if (!quiet)
+        report_table(stdout, &g, &cfg, submission);
+    int status = g.total < g.total_max || g.bonus < g.bonus_max ? 1 : 0;
+    if (results && report_json(results, &g, &cfg, submission, err, sizeof err) != 0) {
+        fprintf(stderr, "grade: %s\n", err);
+        status = 2;
+    }
+    if (summary) {
+        printf("summary");
+        for (int p = 0; p < NPARTS; p++)
+            printf(" %.6g", g.core[p]);
+        double hard = 0;
+        for (int p = 0; p < NPARTS; p++)
+            hard += g.hard[p];
+        printf(" %.6g %.6g %d\n", hard, g.total + g.bonus, status);
+    }
+    fflush(stdout);
+    grade_free(&g);
+    testlist_free(&tests);
+    return status;
+}
+
+/* ---- grade --all ----------------------------------------------------------- */
+
+typedef struct {
+    char name[256];
+    pid_t pid;
+    int fd;                     /* the child's stdout */
+    char line[512];
+    size_t len;
+    int status;
+} Job;
+
+static int by_name(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+static void csv_field(FILE *f, const char *s)
+{
+    if (strpbrk(s, ",\"\n\r")) {
+        fputc('"', f);
+        for (; *s; s++) {
+            if (*s == '"')
+                fputc('"', f);
+            fputc(*s, f);
+        }
+        fputc('"', f);
+    } else {
+        fputs(s, f);
+    }
+}
+
+static int grade_all(const char *self, const char *dir, const char *out, int jobs)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        return fail(NULL, "%s: cannot open the submissions directory", dir);
+    char **names = NULL;
+    int n = 0;
+    struct dirent *e;
+    while ((e = readdir(d))) {
+        char path[PATH_MAX];
+        struct stat st;
+        if (e->d_name[0] == '.')
+            continue;
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
+            names = realloc(names, (size_t)(n + 1) * sizeof *names);
+            names[n++] = strdup(e->d_name);
+        }
+    }
+    closedir(d);
+    qsort(names, (size_t)n, sizeof *names, by_name);
+    if (mkdir(out, 0755) != 0 && errno != EEXIST)
+        return fail(NULL, "%s: cannot make the output directory", out);
+
+    Job *all = calloc((size_t)n + 1, sizeof *all);
+    int next = 0, running = 0, done = 0;
+    while (done < n) {
+        while (running < jobs && next < n) {
+            Job *j = &all[next];
+            snprintf(j->name, sizeof j->name, "%s", names[next]);
+            char sub[PATH_MAX], res[PATH_MAX];
+            snprintf(sub, sizeof sub, "%s/%s", dir, names[next]);
+            snprintf(res, sizeof res, "%s/%s.json", out, names[next]);
+            int p[2];
+            if (pipe(p) != 0)
+                return fail(NULL, "pipe: %s", strerror(errno));
+            j->pid = fork();
+            if (j->pid == 0) {
+                dup2(p[1], 1);
+                close(p[0]);
+                close(p[1]);
+                execl(self, self, "--submission", sub, "--results", res, "--quiet", "--summary", (char *)NULL);
+                _exit(2);
+            }
+            close(p[1]);
+            j->fd = p[0];
+            next++;
+            running++;
+        }
+        /* Wait for any child; read its summary line. */
+        int status;
+        pid_t pid = wait(&status);
+        if (pid < 0)
+            break;
+        for (int k = 0; k < next; k++) {
+            Job *j = &all[k];
+            if (j->pid != pid)
+                continue;
+            ssize_t r;
+            while ((r = read(j->fd, j->line + j->len, sizeof j->line - 1 - j->len)) > 0)
+                j->len += (size_t)r;
+            j->line[j->len] = '\0';
+            close(j->fd);
+            j->status = WIFEXITED(status) ? WEXITSTATUS(status) : 2;
+            j->pid = 0;
+            running--;
+            done++;
+        }
+        fprintf(stderr, "\r  graded %d of %d submissions", done, n);
+    }
+    fprintf(stderr, "\n");
+
+    char csv[PATH_MAX], tmp[PATH_MAX + 8];
+    snprintf(csv, sizeof csv, "%s/gradebook.csv", out);
+    snprintf(tmp, sizeof tmp, "%s.tmp", csv);
+    FILE *f = fopen(tmp, "w");
+    if (!f)
+        return fail(NULL, "%s: cannot write", tmp);
+    fprintf(f, "submission,part1,part2,part3a,part3b,hard,total,status\n");
+    int worst = 0;
+    for (int k = 0; k < n; k++) {
+        Job *j = &all[k];
+        double v[6];
+        int st = 2;
+        char *s = strstr(j->line, "summary ");
+        bool ok = s && sscanf(s, "summary %lf %lf %lf %lf %lf %lf %d", &v[0], &v[1], &v[2], &v[3],
+                              &v[4], &v[5], &st) == 7;
+        csv_field(f, j->name);
+        if (ok)
+            fprintf(f, ",%g,%g,%g,%g,%g,%g,%s\n", v[0], v[1], v[2], v[3], v[4], v[5],
+                    st == 0 ? "full marks" : "points lost");
+        else
+            fprintf(f, ",,,,,,,grader error (see %s.json)\n", j->name);
+        if (!ok)
+            worst = 2;
+        free(names[k]);
+    }
+    free(names);
+    free(all);
+    if (fclose(f) != 0 || rename(tmp, csv) != 0)
+        return fail(NULL, "%s: cannot write", csv);
+    printf("graded %d submissions: wrote %s and one .json each\n", n, csv);
+    return worst;
+}
+
+int main(int argc, char **argv)
+{
+    const char *submission = "labs", *part = NULL, *results = NULL, *all = NULL, *out = "out/grades";
+    bool quiet = false, summary = false;
+    long jobs = sysconf(_SC_NPROCESSORS_ONLN);
+    for (int k = 1; k < argc; k++) {
+        const char *a = argv[k];
+        const char *v = k + 1 < argc ? argv[k + 1] : NULL;
+        if (!strcmp(a, "--submission") && v)
+            submission = v, k++;
+        else if (!strcmp(a, "--part") && v)
+            part = v, k++;
+        else if (!strcmp(a, "--results") && v)
+            results = *v ? v : NULL, k++;
+        else if (!strcmp(a, "--all") && v)
+            all = v, k++;
+        else if (!strcmp(a, "--out") && v)
+            out = *v ? v : out, k++;
+        else if (!strcmp(a, "--jobs") && v)
+            jobs = atol(v), k++;
+        else if (!strcmp(a, "--quiet"))
+            quiet = true;
+        else if (!strcmp(a, "--summary"))
+            summary = true;
+        else
+            usage();
+    }
+    if (part && *part && part_from_label(part) < 0) {
+        fprintf(stderr, "grade: PART must be 1, 2, 3a or 3b, not '%s'\n", part);
+        return 2;
+    }
+    if (all) {
+        char self[PATH_MAX];
+        if (!realpath(argv[0], self))
+            return fail(NULL, "cannot find this program: %s", argv[0]);
+        return grade_all(self, all, out, jobs > 0 ? (int)jobs : 1);
+    }
+    return grade_one(submission, part, results, quiet, summary);
+}

@@ -1,0 +1,49 @@
+/*
+ * report_table.c - the grader's table for humans, in the manner of xv6's
+ * `make grade`: per part a subtotal, each test PASS or FAIL, and under each
+ * failure what went wrong.
+ */
+#include "report.h"
+
+#include <string.h>
+
+static void print_indented(FILE *f, const char *text)
+{
+    /* text is already indented by two spaces per line; keep it tidy */
+    const char *p = text;
+    while (*p) {
+        const char *nl = strchr(p, '\n');
+        size_t n = nl ? (size_t)(nl - p) : strlen(p);
+        fprintf(f, "    %.*s\n", (int)n, p);
+        p += n + (nl ? 1 : 0);
+    }
+}
+
+void report_table(FILE *f, const Grade *g, const GradeConfig *cfg, const char *submission)
+{
+    fprintf(f, "Grading %s\n", submission);
+    for (int p = 0; p < NPARTS; p++) {
+        if (!g->graded[p])
+            continue;
+        fprintf(f, "\n%s   %g / %g", part_title(p), g->core[p], g->core_max[p]);
+        if (g->hard_max[p] > 0)
+            fprintf(f, "   (hard cases: %g / %g%s)", g->hard[p], g->hard_max[p],
+                    cfg->hard_is_bonus ? " bonus" : "");
+        fprintf(f, "\n");
+        for (int group = 0; group < 2; group++)
+            for (int k = 0; k < g->tests->n; k++) {
+                const Test *t = &g->tests->tests[k];
+                const TestResult *r = &g->results[k];
+                if (t->part != p || t->hard != group)
+                    continue;
+                fprintf(f, "  %s  %s%s%s\n", r->passed ? "PASS" : "FAIL", t->name,
+                        t->hard ? "  [hard]" : "", t->hidden ? "  [hidden]" : "");
+                if (!r->passed && r->output && *r->output)
+                    print_indented(f, r->output);
+            }
+    }
+    fprintf(f, "\nScore: %g / %g", g->total, g->total_max);
+    if (g->bonus_max > 0)
+        fprintf(f, "   hard-case bonus: %g / %g", g->bonus, g->bonus_max);
+    fprintf(f, "   (%.1f s)\n", g->seconds);
+}

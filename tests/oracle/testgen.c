@@ -1,0 +1,317 @@
+/*
+ * testgen.c - the public tests and the building blocks of every test.
+ *
+ * Expected values come from the oracle (double-double, oracle.c); hints are
+ * what a known mistake computes from the same inputs, written here in plain
+ * double as a student would write them.  Tolerances: core tests accept any
+ * correct double formula (relative 1e-9, or the oracle's conditioning bound
+ * for t when that is larger); hard tests accept a few units of roundoff
+ * times the problem's condition number (see oracle.h).
+ */
+#include "testgen.h"
+#include "oracle.h"
+#include "../../labs/kit/scene.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define U ORACLE_U
+#define CORE_REL 1e-9           /* core tests: relative tolerance */
+
+static void add_hint(Case *c, const char *text, const double *out, int n)
+{
+    if (c->nhints == CASE_MAX_HINTS)
+        return;
+    Hint *h = &c->hints[c->nhints++];
+    snprintf(h->text, sizeof h->text, "%s", text);
+    memcpy(h->out, out, (size_t)n * sizeof *out);
+}
+
+/* ---- Part 1 ---------------------------------------------------------------- */
+
+void tg_plane(Test *t, double fov, double aspect, double d)
+{
+    Case *c = test_add_case(t);
+    c->in[0] = fov, c->in[1] = aspect, c->in[2] = d;
+    oracle_image_plane(fov, aspect, d, &c->want[0], &c->want[1]);
+    double rel = t->hard ? 8 * U : CORE_REL;
+    c->tol[0] = rel * fabs(c->want[0]);
+    c->tol[1] = rel * fabs(c->want[1]);
+
+    double rad = fov * M_PI / 180, h, v[2];
+    h = 2 * d * tan(fov / 2);
+    v[0] = aspect * h, v[1] = h;
+    add_hint(c, "tan takes radians: convert the field of view from degrees (times pi / 180)", v, 2);
+    h = 2 * d * tan(rad);
+    v[0] = aspect * h, v[1] = h;
+    add_hint(c, "use half the field of view: h = 2 d tan(alpha / 2)", v, 2);
+    h = d * tan(rad / 2);
+    v[0] = aspect * h, v[1] = h;
+    add_hint(c, "the factor 2 is missing: h = 2 d tan(alpha / 2)", v, 2);
+    h = 2 * tan(rad / 2);
+    v[0] = aspect * h, v[1] = h;
+    add_hint(c, "d is missing: h = 2 d tan(alpha / 2) grows with the distance d", v, 2);
+    h = 2 * d * tan(rad / 2);
+    v[0] = h / aspect, v[1] = h;
+    add_hint(c, "the aspect ratio is inverted: w = aspect h, with aspect = nx / ny", v, 2);
+    v[0] = h, v[1] = aspect * h;
+    add_hint(c, "w and h are swapped", v, 2);
+    v[0] = h, v[1] = h / aspect;
+    add_hint(c, "the field of view is the VERTICAL one: it gives h, then w = aspect h", v, 2);
+}
+
+/* ---- Part 2 ---------------------------------------------------------------- */
+
+void tg_pixel(Test *t, int i, int j, int nx, int ny, double w, double h, double d)
+{
+    Case *c = test_add_case(t);
+    double in[7] = { i, j, nx, ny, w, h, d };
+    memcpy(c->in, in, sizeof in);
+    Vec3 p = oracle_pixel(i, j, nx, ny, w, h, d);
+    c->want[0] = p.x, c->want[1] = p.y, c->want[2] = p.z;
+    double rel = t->hard ? 8 * U : CORE_REL;
+    c->tol[0] = rel * w;
+    c->tol[1] = rel * h;
+    c->tol[2] = 0;
+
+    double x = -w / 2 + w * (i + 0.5) / nx, y = -h / 2 + h * (ny - 0.5 - j) / ny, v[3];
+    v[0] = -w / 2 + w * i / nx, v[1] = -h / 2 + h * (ny - j) / ny, v[2] = -d;
+    add_hint(c, "that is a pixel's corner: the centre is at i + 0.5 (and ny - 0.5 - j)", v, 3);
+    v[0] = -w / 2 + w * i / nx, v[1] = -h / 2 + h * (ny - 1 - j) / ny;
+    add_hint(c, "that is a pixel's corner: the centre is at i + 0.5 (and ny - 0.5 - j)", v, 3);
+    v[0] = x, v[1] = -h / 2 + h * (j + 0.5) / ny;
+    add_hint(c, "y is upside down: row j = 0 is the TOP of the image, where y = +h/2", v, 3);
+    v[0] = x, v[1] = y, v[2] = d;
+    add_hint(c, "z has the wrong sign: the eye looks down -z, so the plane is at z = -d", v, 3);
+    v[0] = x, v[1] = -h / 2 + h * (ny - 0.5 - j) / nx, v[2] = -d;
+    add_hint(c, "y divides by nx: rows are counted by ny", v, 3);
+    v[0] = -h / 2 + h * (i + 0.5) / nx, v[1] = -w / 2 + w * (ny - 0.5 - j) / ny;
+    add_hint(c, "w and h are swapped: x spans the width w, y the height h", v, 3);
+    v[0] = w * (i + 0.5) / nx, v[1] = h * (ny - 0.5 - j) / ny;
+    add_hint(c, "the plane is centred on the axis: x runs from -w/2 to w/2, not 0 to w", v, 3);
+    v[0] = -w / 2, v[1] = -h / 2;
+    add_hint(c, "an integer division: in C, (2 * i + 1) / (2 * nx) is 0 for ints -- use 0.5 or a double", v, 3);
+}
+
+/* ---- Part 3a ---------------------------------------------------------------- */
+
+/* The mistakes, in the lecture's notation with f = e - c. */
+typedef struct { double A, B, C, disc; } Quad;
+
+static Quad quad(const double c[3], double R, const double e[3], const double r[3])
+{
+    double f[3] = { e[0] - c[0], e[1] - c[1], e[2] - c[2] };
+    Quad q;
+    q.A = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+    q.B = f[0] * r[0] + f[1] * r[1] + f[2] * r[2];
+    q.C = f[0] * f[0] + f[1] * f[1] + f[2] * f[2] - R * R;
+    q.disc = q.B * q.B - q.A * q.C;
+    return q;
+}
+
+static void hint_t(Case *c, const char *text, bool hit, double t)
+{
+    double v[2] = { hit ? 1 : 0, hit ? t : 0 };
+    if (v[0] != c->want[0] || (hit && fabs(t - c->want[1]) > 1e-6 * fabs(c->want[1])))
+        add_hint(c, text, v, 2);
+}
+
+void tg_sphere(Test *t, const double c3[3], double R, const double e[3], const double r[3])
+{
+    Case *c = test_add_case(t);
+    Sphere s = { vec3(c3[0], c3[1], c3[2]), R, vec3(1, 1, 1) };
+    Ray ray = { vec3(e[0], e[1], e[2]), vec3(r[0], r[1], r[2]) };
+    memcpy(c->in, c3, 3 * sizeof *c3);
+    c->in[3] = R;
+    memcpy(c->in + 4, e, 3 * sizeof *e);
+    memcpy(c->in + 7, r, 3 * sizeof *r);
+    OracleHit o = oracle_sphere(&s, &ray);
+    c->want[0] = o.hit ? 1 : 0;
+    c->want[1] = o.hit ? o.t : 0;
+    if (o.ambiguous)
+        c->flags |= CASE_EITHER_HIT;
+    if (o.hit) {
+        double tol = oracle_sphere_t_tolerance(&s, &ray, &o);
+        c->tol[1] = t->hard ? tol : fmax(tol, CORE_REL * o.t);
+    }
+
+    Quad q = quad(c3, R, e, r);
+    if (!(q.disc >= 0) || !(q.A > 0))
+        return;
+    double sq = sqrt(q.disc);
+    double tn = (-q.B - sq) / q.A, tf = (-q.B + sq) / q.A;
+    hint_t(c, "the far root: the first hit is the smaller t > 0, (-B - sqrt(B^2 - A C)) / A", tf > 0, tf);
+    hint_t(c, "a hit behind the eye: only roots t > 0 are ahead of the ray", true, tn);
+    if (q.C < 0)
+        hint_t(c, "from inside the sphere (C < 0) the near root is behind: the hit is the far root", false, 0);
+    if (q.disc == 0)
+        hint_t(c, "a tangent ray (B^2 - A C = 0) touches the sphere: that is a hit", false, 0);
+    double d1 = q.B * q.B - q.C;
+    if (d1 >= 0) {
+        double t1 = -q.B - sqrt(d1);
+        hint_t(c, "A is not 1: the direction need not have unit length, so A = r.r", t1 > 0, t1);
+    }
+    double tb = (q.B - sq) / q.A;
+    hint_t(c, "the sign of B: with f = e - c, B = f.r and t = (-B -+ sqrt(B^2 - A C)) / A",
+           tb > 0, tb);
+    hint_t(c, "t is halved: with B = f.r (not 2 f.r) the roots are (-B -+ sqrt(B^2 - A C)) / A",
+           tn / 2 > 0, tn / 2);
+    double d4 = q.B * q.B - 4 * q.A * q.C;
+    if (d4 >= 0) {
+        double t4 = (-q.B - sqrt(d4)) / (2 * q.A);
+        hint_t(c, "B^2 - 4 A C mixes two forms: with B = f.r the discriminant is B^2 - A C", t4 > 0, t4);
+    }
+}
+
+/* ---- Part 3b ---------------------------------------------------------------- */
+
+void tg_camera(Test *t, const double eye[3], const double pixel[3])
+{
+    Case *c = test_add_case(t);
+    memcpy(c->in, eye, 3 * sizeof *eye);
+    memcpy(c->in + 3, pixel, 3 * sizeof *pixel);
+    Vec3 dir = { pixel[0] - eye[0], pixel[1] - eye[1], pixel[2] - eye[2] };
+    Vec3 u = oracle_unit(vec3(pixel[0] - eye[0], pixel[1] - eye[1], pixel[2] - eye[2]));
+    double want[6] = { eye[0], eye[1], eye[2], u.x, u.y, u.z };
+    memcpy(c->want, want, sizeof want);
+    for (int k = 3; k < 6; k++)
+        c->tol[k] = t->hard ? 8 * U : CORE_REL;
+
+    double v[6] = { eye[0], eye[1], eye[2], dir.x, dir.y, dir.z };
+    add_hint(c, "the direction must have unit length: divide s - e by |s - e|", v, 6);
+    double v2[6] = { eye[0], eye[1], eye[2], -u.x, -u.y, -u.z };
+    add_hint(c, "the direction is reversed: it points from the eye TO the pixel, s - e", v2, 6);
+    double v3[6] = { pixel[0], pixel[1], pixel[2], u.x, u.y, u.z };
+    add_hint(c, "the ray starts at the eye, not at the pixel", v3, 6);
+}
+
+static void colour_of(const Test *t, int k, double out[3])
+{
+    memcpy(out, k < 0 ? t->background : t->spheres[k].color, 3 * sizeof *out);
+}
+
+static Scene scene_of(const Test *t, Sphere *spheres)
+{
+    Scene s;
+    memset(&s, 0, sizeof s);
+    s.background = vec3(t->background[0], t->background[1], t->background[2]);
+    for (int k = 0; k < t->nspheres; k++) {
+        const TestSphere *ts = &t->spheres[k];
+        spheres[k] = (Sphere){ vec3(ts->c[0], ts->c[1], ts->c[2]), ts->R,
+                               vec3(ts->color[0], ts->color[1], ts->color[2]) };
+    }
+    s.spheres = spheres;
+    s.nspheres = t->nspheres;
+    return s;
+}
+
+/* Expected colour of a ray in t's scene, with the hints for its mistakes. */
+static void colour_case(Test *t, Case *c, const Scene *scene, Ray ray)
+{
+    bool ambiguous = false;
+    int alt = -1;
+    int k = oracle_closest(scene, &ray, &ambiguous, &alt);
+    colour_of(t, k, c->want);
+    if (ambiguous) {
+        c->flags |= CASE_EITHER_HIT;
+        colour_of(t, alt, c->alt);
+    }
+    for (int q = 0; q < 3; q++)
+        c->tol[q] = 1e-12;
+    /* The mistakes: the first sphere hit in list order, the farthest hit,
+     * black (not the background) for a miss. */
+    int first = -1, far = -1;
+    double tfar = 0;
+    for (int s = 0; s < scene->nspheres; s++) {
+        OracleHit o = oracle_sphere(&scene->spheres[s], &ray);
+        if (o.hit && !o.ambiguous) {
+            if (first < 0)
+                first = s;
+            if (o.t > tfar)
+                tfar = o.t, far = s;
+        }
+    }
+    double v[3];
+    if (!ambiguous && first != k && first >= 0) {
+        colour_of(t, first, v);
+        add_hint(c, "the first sphere hit is not the closest: keep the smallest t over all spheres", v, 3);
+    }
+    if (!ambiguous && far != k && far >= 0) {
+        colour_of(t, far, v);
+        add_hint(c, "that is the farthest hit: keep the SMALLEST t (tmin starts at infinity)", v, 3);
+    }
+    if (!ambiguous && k < 0) {
+        double black[3] = { 0, 0, 0 };
+        if (t->background[0] || t->background[1] || t->background[2])
+            add_hint(c, "a ray that hits nothing has the scene's background colour", black, 3);
+    }
+}
+
+void tg_color(Test *t, const double e[3], const double r[3])
+{
+    Case *c = test_add_case(t);
+    memcpy(c->in, e, 3 * sizeof *e);
+    memcpy(c->in + 3, r, 3 * sizeof *r);
+    Sphere *spheres = calloc((size_t)t->nspheres + 1, sizeof *spheres);
+    Scene scene = scene_of(t, spheres);
+    colour_case(t, c, &scene, (Ray){ vec3(e[0], e[1], e[2]), vec3(r[0], r[1], r[2]) });
+    free(spheres);
+}
+
+Test *tg_image(TestList *list, const char *name, const char *scene_path, int nx, int ny)
+{
+    Scene file;
+    char err[512];
+    if (scene_load(&file, scene_path, err, sizeof err) != 0) {
+        fprintf(stderr, "testgen: %s\n", err);
+        exit(2);
+    }
+    Test *t = testlist_add(list, PART3B, KIND_IMAGE, name);
+    t->image_nx = nx;
+    double bg[3] = { file.background.x, file.background.y, file.background.z };
+    memcpy(t->background, bg, sizeof bg);
+    for (int k = 0; k < file.nspheres; k++) {
+        const Sphere *s = &file.spheres[k];
+        double cc[3] = { s->center.x, s->center.y, s->center.z };
+        double col[3] = { s->color.x, s->color.y, s->color.z };
+        test_add_sphere(t, cc, s->radius, col);
+    }
+    double w, h;
+    oracle_image_plane(file.fov_degrees, (double)nx / ny, file.d, &w, &h);
+    for (int j = 0; j < ny; j++)
+        for (int i = 0; i < nx; i++) {
+            Vec3 p = oracle_pixel(i, j, nx, ny, w, h, file.d);
+            Case *c = test_add_case(t);
+            c->in[0] = p.x, c->in[1] = p.y, c->in[2] = p.z;
+            colour_case(t, c, &file, (Ray){ vec3(0, 0, 0), p });
+        }
+    scene_free(&file);
+    return t;
+}
+
+/* ---- random numbers ----------------------------------------------------------- */
+
+static uint64_t next(TgRandom *r)
+{
+    uint64_t z = (r->s += 0x9e3779b97f4a7c15u);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+    return z ^ (z >> 31);
+}
+
+double tg_uniform(TgRandom *r, double lo, double hi)
+{
+    return lo + (hi - lo) * ((double)(next(r) >> 11) * 0x1p-53);
+}
+
+double tg_log_uniform(TgRandom *r, double lo, double hi)
+{
+    return exp(tg_uniform(r, log(lo), log(hi)));
+}
+
+int tg_int(TgRandom *r, int lo, int hi)
+{
+    return lo + (int)(next(r) % (uint64_t)(hi - lo + 1));
+}
