@@ -520,6 +520,8 @@ static int inf_stored(Inflater *s)
         return inf_fail(s, "stored block length does not match its complement");
     if (len > s->n - s->pos)
         return inf_fail(s, "deflate data is truncated");
+    if (len == 0)
+        return 0;
     if (inf_room(s, len) != 0)
         return -1;
     memcpy(s->out->data + s->out->len, s->in + s->pos, len);
@@ -753,7 +755,8 @@ int kit_zlib_uncompress(const void *in, size_t n, size_t max_out, KitBuf *out,
     }
     uint32_t want = ((uint32_t)t[0] << 24) | ((uint32_t)t[1] << 16) |
                     ((uint32_t)t[2] << 8) | t[3];
-    uint32_t got = kit_adler32(1, out->data + old_len, out->len - old_len);
+    size_t got_len = out->len - old_len;
+    uint32_t got = kit_adler32(1, got_len ? out->data + old_len : NULL, got_len);
     if (got != want) {
         out->len = old_len;
         snprintf(err, errlen, "zlib data is corrupt (Adler-32 mismatch)");

@@ -1,0 +1,363 @@
+/*
+ * png.c - encoding and decoding PNG images in memory.  See png.h.
+ */
+#include "png.h"
+
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const unsigned char png_signature[PNG_SIGNATURE_SIZE] = {
+    0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+
+#define PNG_IDAT_MAX   32768u        /* bytes of zlib data per IDAT chunk written */
+#define PNG_CHUNK_MAX  0x7FFFFFFFu   /* the largest chunk length allowed */
+
+/* Whether the signature is there. */
+int png_has_signature(const void *data, size_t n)
+{
+    return n >= PNG_SIGNATURE_SIZE && memcmp(data, png_signature, PNG_SIGNATURE_SIZE) == 0;
+}
+
+/* ---- shared by both directions ------------------------------------------------ */
+
+/* The Paeth predictor: whichever of a (left), b (up), c (up-left) is
+ * closest to a + b - c, preferring a, then b. */
+static unsigned char png_paeth(unsigned char a, unsigned char b, unsigned char c)
+{
+    int p = (int)a + b - c;
+    int pa = abs(p - a), pb = abs(p - b), pc = abs(p - c);
+    if (pa <= pb && pa <= pc)
+        return a;
+    return pb <= pc ? b : c;
+}
+
+/* The prediction of byte k of a row under filter type (1..4), from the
+ * unfiltered bytes to its left (bpp bytes back) and above (prev). */
+static unsigned char png_predict(int type, const unsigned char *row, const unsigned char *prev,
+                                 size_t k, size_t bpp)
+{
+    unsigned char a = k >= bpp ? row[k - bpp] : 0;
+    unsigned char b = prev[k];
+    unsigned char c = k >= bpp ? prev[k - bpp] : 0;
+    switch (type) {
+    case 1: return a;
+    case 2: return b;
+    case 3: return (unsigned char)((a + b) / 2);
+    case 4: return png_paeth(a, b, c);
+    default: return 0;
+    }
+}
+
+/* Stores a 4-byte big-endian number. */
+static void png_put_be32(unsigned char *p, uint32_t v)
+{
+    p[0] = (unsigned char)(v >> 24);
+    p[1] = (unsigned char)(v >> 16);
+    p[2] = (unsigned char)(v >> 8);
+    p[3] = (unsigned char)v;
+}
+
+/* Reads a 4-byte big-endian number. */
+static uint32_t png_get_be32(const unsigned char *p)
+{
+    return ((uint32_t)p[0] << 24) | ((uint32_t)p[1] << 16) | ((uint32_t)p[2] << 8) | p[3];
+}
+
+/* ---- encoder -------------------------------------------------------------------- */
+
+/* Appends one chunk: length, type, data, CRC of type and data.
+ * Returns 0, or -1 if memory runs out. */
+static int png_put_chunk(KitBuf *out, const char *type, const unsigned char *data, size_t n)
+{
+    unsigned char head[8], tail[4];
+    png_put_be32(head, (uint32_t)n);
+    memcpy(head + 4, type, 4);
+    uint32_t crc = kit_crc32(kit_crc32(0, head + 4, 4), data, n);
+    png_put_be32(tail, crc);
+    if (kit_buf_append(out, head, 8) != 0 || kit_buf_append(out, data, n) != 0 ||
+        kit_buf_append(out, tail, 4) != 0)
+        return -1;
+    return 0;
+}
+
+/* Filters row (len bytes, above it prev) with filter type into dst and
+ * returns the sum of the absolute values of dst's bytes read as signed. */
+static size_t png_filter_row(int type, const unsigned char *row, const unsigned char *prev,
+                             size_t len, size_t bpp, unsigned char *dst)
+{
+    size_t sum = 0;
+    for (size_t k = 0; k < len; k++) {
+        unsigned char v = (unsigned char)(row[k] - png_predict(type, row, prev, k, bpp));
+        dst[k] = v;
+        sum += v < 128 ? v : 256u - v;
+    }
+    return sum;
+}
+
+/* Builds the filtered image data: each row starts with its filter type,
+ * chosen by the minimum sum of absolute differences.  Returns 0 or -1
+ * (out of memory). */
+static int png_filter_image(const Image *img, KitBuf *raw)
+{
+    size_t len = 3 * (size_t)img->width, rows = (size_t)img->height;
+    unsigned char *zero = calloc(len, 1), *trial = malloc(len);
+    if (!zero || !trial || kit_buf_reserve(raw, rows * (len + 1)) != 0) {
+        free(zero);
+        free(trial);
+        return -1;
+    }
+    for (size_t j = 0; j < rows; j++) {
+        const unsigned char *row = img->rgb + j * len;
+        const unsigned char *prev = j > 0 ? row - len : zero;
+        unsigned char *dst = raw->data + raw->len;
+        size_t best = png_filter_row(0, row, prev, len, 3, dst + 1);
+        dst[0] = 0;
+        for (int type = 1; type <= 4; type++) {
+            size_t sum = png_filter_row(type, row, prev, len, 3, trial);
+            if (sum < best) {
+                best = sum;
+                dst[0] = (unsigned char)type;
+                memcpy(dst + 1, trial, len);
+            }
+        }
+        raw->len += len + 1;
+    }
+    free(zero);
+    free(trial);
+    return 0;
+}
+
+/* Writes the signature, IHDR, the IDAT chunks and IEND.  Returns 0, or -1
+ * with a reason in err. */
+int png_encode(const Image *img, KitBuf *out, char *err, size_t errlen)
+{
+    if (!img->rgb || img->width < 1 || img->height < 1 ||
+        img->width > IMAGE_MAX_SIDE || img->height > IMAGE_MAX_SIDE) {
+        snprintf(err, errlen, "cannot encode an image of %d x %d pixels as PNG",
+                 img->width, img->height);
+        return -1;
+    }
+    size_t old_len = out->len;
+    KitBuf raw = {0}, z = {0};
+    unsigned char ihdr[13];
+    png_put_be32(ihdr, (uint32_t)img->width);
+    png_put_be32(ihdr + 4, (uint32_t)img->height);
+    ihdr[8] = 8;            /* bit depth */
+    ihdr[9] = 2;            /* colour type: RGB */
+    ihdr[10] = 0;           /* compression: deflate */
+    ihdr[11] = 0;           /* filter method: adaptive */
+    ihdr[12] = 0;           /* not interlaced */
+    int rc = png_filter_image(img, &raw) == 0 && kit_zlib_compress(raw.data, raw.len, &z) == 0 &&
+             kit_buf_append(out, png_signature, PNG_SIGNATURE_SIZE) == 0 &&
+             png_put_chunk(out, "IHDR", ihdr, sizeof ihdr) == 0 ? 0 : -1;
+    for (size_t at = 0; rc == 0 && at < z.len; at += PNG_IDAT_MAX) {
+        size_t n = z.len - at < PNG_IDAT_MAX ? z.len - at : PNG_IDAT_MAX;
+        rc = png_put_chunk(out, "IDAT", z.data + at, n);
+    }
+    if (rc == 0)
+        rc = png_put_chunk(out, "IEND", NULL, 0);
+    kit_buf_free(&raw);
+    kit_buf_free(&z);
+    if (rc != 0) {
+        out->len = old_len;
+        snprintf(err, errlen, "out of memory while encoding a PNG");
+    }
+    return rc;
+}
+
+/* ---- decoder -------------------------------------------------------------------- */
+
+typedef struct {
+    int width, height;
+    int channels;           /* 1 grey, 2 grey+alpha, 3 RGB, 4 RGBA */
+} PngHeader;
+
+/* Checks the 13 bytes of IHDR and fills h.  Returns 0, or -1 with a reason. */
+static int png_read_ihdr(const unsigned char *d, size_t n, PngHeader *h, char *err, size_t errlen)
+{
+    if (n != 13) {
+        snprintf(err, errlen, "PNG IHDR chunk has length %zu, not 13", n);
+        return -1;
+    }
+    uint32_t w = png_get_be32(d), ht = png_get_be32(d + 4);
+    unsigned depth = d[8], type = d[9];
+    if (w < 1 || ht < 1 || w > IMAGE_MAX_SIDE || ht > IMAGE_MAX_SIDE) {
+        snprintf(err, errlen, "PNG image is %lu x %lu pixels: each side must be 1 to %d",
+                 (unsigned long)w, (unsigned long)ht, IMAGE_MAX_SIDE);
+        return -1;
+    }
+    if (type != 0 && type != 2 && type != 4 && type != 6) {
+        snprintf(err, errlen, "PNG colour type %u is not supported (%s)", type,
+                 type == 3 ? "palette images are not; save as RGB" : "invalid");
+        return -1;
+    }
+    if (depth != 8) {
+        snprintf(err, errlen, "PNG bit depth %u is not supported (only 8 bits per channel)", depth);
+        return -1;
+    }
+    if (d[10] != 0 || d[11] != 0) {
+        snprintf(err, errlen, "PNG uses an unknown compression or filter method");
+        return -1;
+    }
+    if (d[12] == 1) {
+        snprintf(err, errlen, "interlaced PNG images are not supported: save it without interlacing");
+        return -1;
+    }
+    if (d[12] != 0) {
+        snprintf(err, errlen, "PNG interlace method %u is invalid", (unsigned)d[12]);
+        return -1;
+    }
+    static const int channels[7] = {1, 0, 3, 0, 2, 0, 4};
+    h->width = (int)w;
+    h->height = (int)ht;
+    h->channels = channels[type];
+    return 0;
+}
+
+/* Whether the 4 bytes of a chunk type are all ASCII letters. */
+static int png_valid_type(const unsigned char *t)
+{
+    for (int k = 0; k < 4; k++)
+        if (!((t[k] >= 'A' && t[k] <= 'Z') || (t[k] >= 'a' && t[k] <= 'z')))
+            return 0;
+    return 1;
+}
+
+/* Walks the chunks after the signature, checking each CRC: reads IHDR into
+ * h and gathers all IDAT data into idat, up to IEND.  Returns 0, or -1
+ * with a reason. */
+static int png_read_chunks(const unsigned char *p, size_t n, PngHeader *h, KitBuf *idat,
+                           char *err, size_t errlen)
+{
+    size_t at = PNG_SIGNATURE_SIZE;
+    int seen_ihdr = 0;
+    for (;;) {
+        if (n - at < 12) {
+            snprintf(err, errlen, "PNG data is truncated (no IEND chunk)");
+            return -1;
+        }
+        uint32_t len = png_get_be32(p + at);
+        const unsigned char *type = p + at + 4, *data = p + at + 8;
+        if (len > PNG_CHUNK_MAX || !png_valid_type(type)) {
+            snprintf(err, errlen, "PNG data is corrupt (bad chunk header at byte %zu)", at);
+            return -1;
+        }
+        if (len > n - at - 12) {
+            snprintf(err, errlen, "PNG data is truncated (in a %.4s chunk)", (const char *)type);
+            return -1;
+        }
+        if (kit_crc32(0, type, 4 + (size_t)len) != png_get_be32(data + len)) {
+            snprintf(err, errlen, "PNG data is corrupt (CRC mismatch in a %.4s chunk)",
+                     (const char *)type);
+            return -1;
+        }
+        at += 12 + (size_t)len;
+        if (!seen_ihdr) {
+            if (memcmp(type, "IHDR", 4) != 0) {
+                snprintf(err, errlen, "PNG data is corrupt (the first chunk is not IHDR)");
+                return -1;
+            }
+            if (png_read_ihdr(data, len, h, err, errlen) != 0)
+                return -1;
+            seen_ihdr = 1;
+        } else if (memcmp(type, "IDAT", 4) == 0) {
+            if (kit_buf_append(idat, data, len) != 0) {
+                snprintf(err, errlen, "out of memory while reading a PNG");
+                return -1;
+            }
+        } else if (memcmp(type, "IEND", 4) == 0) {
+            return 0;
+        } else if (memcmp(type, "IHDR", 4) == 0) {
+            snprintf(err, errlen, "PNG data is corrupt (a second IHDR chunk)");
+            return -1;
+        } else if (!(type[0] & 0x20) && memcmp(type, "PLTE", 4) != 0) {
+            snprintf(err, errlen, "PNG has a critical %.4s chunk this reader does not know",
+                     (const char *)type);
+            return -1;
+        }
+        /* other chunks (ancillary ones, and a suggested palette) are skipped */
+    }
+}
+
+/* Undoes the filter of every row of raw in place (each row: a filter type
+ * byte, then stride bytes).  Returns 0, or -1 with a reason. */
+static int png_unfilter(unsigned char *raw, size_t rows, size_t stride, size_t bpp,
+                        char *err, size_t errlen)
+{
+    unsigned char *zero = calloc(stride, 1);
+    if (!zero) {
+        snprintf(err, errlen, "out of memory while reading a PNG");
+        return -1;
+    }
+    for (size_t j = 0; j < rows; j++) {
+        unsigned char *line = raw + j * (stride + 1);
+        unsigned char *row = line + 1;
+        const unsigned char *prev = j > 0 ? row - (stride + 1) : zero;
+        int type = line[0];
+        if (type > 4) {
+            free(zero);
+            snprintf(err, errlen, "PNG data is corrupt (filter type %d in row %zu)", type, j);
+            return -1;
+        }
+        if (type != 0)
+            for (size_t k = 0; k < stride; k++)
+                row[k] = (unsigned char)(row[k] + png_predict(type, row, prev, k, bpp));
+    }
+    free(zero);
+    return 0;
+}
+
+/* Signature, chunks, inflate, unfilter, then conversion to RGB.
+ * Returns 0, or -1 with a reason. */
+int png_decode(const void *data, size_t n, Image *img, char *err, size_t errlen)
+{
+    const unsigned char *p = data;
+    PngHeader h = {0, 0, 0};
+    KitBuf idat = {0}, raw = {0};
+    img->width = img->height = 0;
+    img->rgb = NULL;
+    if (!png_has_signature(p, n)) {
+        snprintf(err, errlen, "not a PNG file (bad signature)");
+        return -1;
+    }
+    if (png_read_chunks(p, n, &h, &idat, err, errlen) != 0) {
+        kit_buf_free(&idat);
+        return -1;
+    }
+    if (idat.len == 0) {
+        kit_buf_free(&idat);
+        snprintf(err, errlen, "PNG data has no IDAT chunk");
+        return -1;
+    }
+    size_t stride = (size_t)h.width * (size_t)h.channels;
+    size_t rows = (size_t)h.height, want = rows * (stride + 1);
+    char why[200];
+    int rc = kit_zlib_uncompress(idat.data, idat.len, want, &raw, why, sizeof why);
+    kit_buf_free(&idat);
+    if (rc != 0 || raw.len != want) {
+        if (rc == 0)
+            snprintf(why, sizeof why, "%zu bytes of image data, not %zu", raw.len, want);
+        snprintf(err, errlen, "PNG image data is corrupt: %s", why);
+        kit_buf_free(&raw);
+        return -1;
+    }
+    if (png_unfilter(raw.data, rows, stride, (size_t)h.channels, err, errlen) != 0 ||
+        image_alloc(img, h.width, h.height, err, errlen) != 0) {
+        kit_buf_free(&raw);
+        return -1;
+    }
+    for (size_t j = 0; j < rows; j++) {
+        const unsigned char *src = raw.data + j * (stride + 1) + 1;
+        unsigned char *dst = img->rgb + j * 3 * (size_t)h.width;
+        for (size_t i = 0; i < (size_t)h.width; i++, src += h.channels, dst += 3) {
+            int grey = h.channels < 3;
+            dst[0] = src[0];
+            dst[1] = grey ? src[0] : src[1];
+            dst[2] = grey ? src[0] : src[2];
+        }
+    }
+    kit_buf_free(&raw);
+    return 0;
+}
