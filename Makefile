@@ -37,12 +37,12 @@ KIT_OBJ    = $(KIT_SRC:labs/kit/%.c=$(BUILD)/kit/%.o)
 KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
 
 .PHONY: all help render compare grade grade-all gradescope student-kit bench \
-        handouts test unit-tests clean
+        handouts test unit-tests clean grader public-tests
 .DELETE_ON_ERROR:
 .SECONDEXPANSION:
 
 all: $(BUILD)/kit/libkit.a $(BUILD)/bin/compare $(BUILD)/sub/labs/render \
-     $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render) unit-tests
+     $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render) grader unit-tests
 
 help:
 	@echo "make render  [SUBMISSION=dir] [SCENE=file] [SIZE=WxH] [OUT=file]"
@@ -136,17 +136,105 @@ $(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 
+# ---- the autograder (tests/grader) ------------------------------------------
+# In the instructor's kit the grader also draws the hidden tests with the
+# oracle (tests/oracle, tests/hidden); the student kit has neither.
+HAVE_ORACLE := $(wildcard tests/oracle/oracle.h)
+HAVE_HIDDEN := $(wildcard tests/hidden/hidden.c)
+GRADER_LIB_SRC = tests/grader/cases.c tests/grader/check.c tests/grader/sandbox.c \
+                 tests/grader/build.c tests/grader/config.c tests/grader/grade.c \
+                 tests/grader/report_table.c tests/grader/report_json.c
+GRADER_HDR = $(wildcard tests/grader/*.h) $(KIT_HDR)
+GRADER_OBJ = $(GRADER_LIB_SRC:tests/grader/%.c=$(BUILD)/grader/%.o)
+HARNESS    = $(BUILD)/grader/harness_1.o $(BUILD)/grader/harness_2.o \
+             $(BUILD)/grader/harness_3.o $(BUILD)/grader/harness_4.o
+GRADER_REF = $(if $(HAVE_SOLUTIONS),$(STAGES:%=$(BUILD)/grader/ref_%.o))
+GRADE_DEFS = $(if $(and $(HAVE_ORACLE),$(HAVE_HIDDEN)),-DGRADER_ORACLE)
+GRADE_EXTRA = $(if $(GRADE_DEFS),$(BUILD)/grader/hidden.o $(BUILD)/oracle/liboracle.a)
+
+$(BUILD)/grader/%.o: tests/grader/%.c $(GRADER_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+$(BUILD)/grader/harness_%.o: tests/grader/harness.c $(KIT_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -c $< -o $@
+$(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
+	cp $< $@
+$(BUILD)/grader/hidden.o: tests/hidden/hidden.c $(GRADER_HDR) $(wildcard tests/oracle/*.h)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+$(BUILD)/grader/libgrader.a: $(GRADER_OBJ)
+	rm -f $@ && ar rcs $@ $^
+$(BUILD)/grader/grade_main.o: tests/grader/grade_main.c $(GRADER_HDR) $(wildcard tests/oracle/*.h)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(GRADE_DEFS) -Ilabs -c $< -o $@
+$(BUILD)/bin/grade: $(BUILD)/grader/grade_main.o $(GRADE_EXTRA) $(BUILD)/grader/libgrader.a \
+                    $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $(HARNESS) $(GRADER_REF)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+$(BUILD)/bin/gentests: $(BUILD)/oracle/gentests_main.o $(BUILD)/oracle/liboracle.a \
+                       $(BUILD)/grader/libgrader.a $(BUILD)/kit/libkit.a
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+
+grader: $(BUILD)/bin/grade $(HARNESS) $(GRADER_REF)
+
+grade: grader
+	@$(BUILD)/bin/grade --submission "$(SUBMISSION)" $(if $(PART),--part $(PART)) \
+	    $(if $(RESULTS),--results "$(RESULTS)")
+
+grade-all: grader
+	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade-all SUBMISSIONS=dir [OUT=dir]"; exit 2; }
+	@$(BUILD)/bin/grade --all "$(SUBMISSIONS)" --out "$(if $(OUT),$(OUT),out/grades)"
+
+# The public tests' expected values, from the oracle (commit the result).
+public-tests: $(BUILD)/bin/gentests
+	$(BUILD)/bin/gentests tests/public
+
+# ---- releases: the Gradescope bundle and the student kit ------------------
+SCENES     = $(wildcard labs/scenes/*.scene)
+
+# autograder.zip: setup.sh and run_autograder at its root, beside the kit.
+gradescope: $(BUILD)/bin/pack
+	rm -rf out/gradescope/bundle && mkdir -p out/gradescope/bundle
+	cp -R Makefile labs solutions tests out/gradescope/bundle/
+	cp tests/gradescope/setup.sh tests/gradescope/run_autograder out/gradescope/bundle/
+	$(BUILD)/bin/pack zip out/gradescope/autograder.zip out/gradescope/bundle
+	@echo "wrote out/gradescope/autograder.zip"
+
+# The student kit: skeletons, framework, scenes and their reference renders,
+# the grader with the public tests, the handouts.  No solutions/, no hidden
+# tests, no oracle, and none of the instructor's test material.
+KIT_DIR    = out/student-kit
+student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
+	rm -rf $(KIT_DIR) && mkdir -p $(KIT_DIR)/tests/unit $(KIT_DIR)/labs/reference
+	cp -R Makefile labs handouts $(KIT_DIR)/
+	cp handouts/student-readme.md $(KIT_DIR)/README.md
+	cp -R tests/grader tests/public tests/tools tests/weights.conf tests/run.sh $(KIT_DIR)/tests/
+	cp tests/unit/check.h tests/unit/test_vec3.c tests/unit/test_png.c tests/unit/test_scene.c \
+	   $(KIT_DIR)/tests/unit/
+	for s in $(SCENES); do \
+	    $(BUILD)/sub/solutions/render $$s --quiet -o $(KIT_DIR)/labs/reference/$$(basename $$s .scene).png \
+	        || exit 1; \
+	done
+	$(BUILD)/bin/pack targz out/student-kit.tar.gz $(KIT_DIR) student-kit
+	@echo "wrote $(KIT_DIR)/ and out/student-kit.tar.gz"
+
 # ---- unit tests of the framework (tests/unit) ------------------------------
 UNIT_SRC   = $(wildcard tests/unit/test_*.c)
 UNIT_BIN   = $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)
 UNIT_ASAN  = $(UNIT_SRC:tests/unit/%.c=$(ASAN)/tests/%)
-REF_OBJ    = $(STAGES:%=$(BUILD)/sub/solutions/%.o)
-REF_ASAN   = $(STAGES:%=$(ASAN)/sub/solutions/%.o)
+REF_DIR    = $(if $(HAVE_SOLUTIONS),solutions,labs)
+REF_OBJ    = $(STAGES:%=$(BUILD)/sub/$(REF_DIR)/%.o)
+REF_ASAN   = $(STAGES:%=$(ASAN)/sub/$(REF_DIR)/%.o)
 unit-tests: $(UNIT_BIN)
 $(ASAN)/sub/solutions/%.o: solutions/%.c $(KIT_HDR)
 	@mkdir -p $(@D)
 	$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
-UNIT_LIBS  = $(BUILD)/oracle/liboracle.a $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
+$(ASAN)/sub/labs/%.o: labs/%.c $(KIT_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
+UNIT_LIBS  = $(if $(HAVE_ORACLE),$(BUILD)/oracle/liboracle.a) $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
 UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
 $(BUILD)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS)
 	@mkdir -p $(@D)
@@ -156,7 +244,12 @@ $(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN)
 	$(CC) $(SANFLAGS) $(THREADS) -Ilabs $< $(REF_ASAN) $(UNIT_LIBS_ASAN) -o $@ $(LDLIBS)
 
 # ---- the kit's own tests ---------------------------------------------------
-test: all $(UNIT_ASAN)
+# The renderer with the reference stages, sanitized (tests/suites/render_cli.sh).
+$(ASAN)/bin/render-solutions: $(ASAN)/kit/render_main.o $(REF_ASAN) $(ASAN)/kit/libkit.a
+	@mkdir -p $(@D)
+	$(CC) $(SANFLAGS) $(THREADS) $^ -o $@ $(LDLIBS)
+
+test: all $(UNIT_ASAN) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)
 	@sh tests/run.sh
 
 clean:

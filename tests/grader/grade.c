@@ -78,7 +78,7 @@ static const char *signal_story(int sig)
 /* Runs one test in the sandbox and judges it. */
 static void run_test(const GradeOptions *opt, const Build *b, const Test *t, TestResult *r)
 {
-    size_t len;
+    size_t len = 0;
     char *input = test_input(t, &len);
     char *argv[] = { (char *)b->runner, NULL };
     SandboxSpec spec = {

@@ -1,0 +1,110 @@
+/*
+ * hidden.c - the hidden tests (visibility "after_published"): a few fixed
+ * cases and cases drawn from a seed at grading time, with expected values
+ * from the oracle.  The instructor's kit only: never in the student kit.
+ * The seed comes from tests/weights.conf and the submission's own files, so
+ * a regrade of the same files draws the same cases.
+ */
+#include "../oracle/testgen.h"
+#include "../oracle/oracle.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#define V(x, y, z) ((const double[3]){ x, y, z })
+
+static Test *hidden_test(TestList *l, int part, Kind kind, const char *name, const char *note)
+{
+    Test *t = testlist_add(l, part, kind, name);
+    t->hidden = true;
+    snprintf(t->note, sizeof t->note, "%s", note);
+    return t;
+}
+
+/* A random direction of the given length, uniform on the sphere. */
+static void random_direction(TgRandom *g, double len, double r[3])
+{
+    double z = tg_uniform(g, -1, 1), phi = tg_uniform(g, 0, 2 * M_PI), s = sqrt(1 - z * z);
+    r[0] = len * s * cos(phi), r[1] = len * s * sin(phi), r[2] = len * z;
+}
+
+void testgen_hidden(TestList *l, uint64_t seed)
+{
+    TgRandom g = { seed };
+    Test *t;
+
+    t = hidden_test(l, PART1, KIND_PLANE, "Part 1: hidden: fixed cases",
+                    "a very wide image, a field of view near 180 and a tiny one");
+    tg_plane(t, 30, 10, 1);
+    tg_plane(t, 179, 1, 1);
+    tg_plane(t, 1, 0.1, 50);
+    t = hidden_test(l, PART1, KIND_PLANE, "Part 1: hidden: random fields of view, aspects and distances",
+                    "alpha from 1 to 179 degrees, aspect from 0.25 to 4, d from 0.1 to 10");
+    for (int k = 0; k < 30; k++)
+        tg_plane(t, tg_uniform(&g, 1, 179), tg_log_uniform(&g, 0.25, 4), tg_log_uniform(&g, 0.1, 10));
+
+    t = hidden_test(l, PART2, KIND_PIXEL, "Part 2: hidden: random pixels of random images",
+                    "images from 1 x 1 to 4000 x 3000, any pixel");
+    for (int k = 0; k < 40; k++) {
+        int nx = tg_int(&g, 1, 4000), ny = tg_int(&g, 1, 3000);
+        double h = tg_log_uniform(&g, 0.01, 100);
+        tg_pixel(t, tg_int(&g, 0, nx - 1), tg_int(&g, 0, ny - 1), nx, ny,
+                 h * nx / ny, h, tg_log_uniform(&g, 0.01, 100));
+    }
+
+    t = hidden_test(l, PART3A, KIND_SPHERE, "Part 3a: hidden: random rays at random spheres",
+                    "origins outside the sphere; about half the rays hit, some spheres are behind");
+    for (int k = 0; k < 120; k++) {
+        double R = tg_log_uniform(&g, 0.1, 10), D = R * tg_uniform(&g, 1.2, 30);
+        double dir[3], c[3], e[3] = { tg_uniform(&g, -5, 5), tg_uniform(&g, -5, 5), tg_uniform(&g, -5, 5) };
+        random_direction(&g, D, c);
+        for (int q = 0; q < 3; q++)
+            c[q] += e[q];
+        /* aim at a point near the sphere: a hit about half the time */
+        double aim[3];
+        random_direction(&g, R * tg_uniform(&g, 0, 2), aim);
+        for (int q = 0; q < 3; q++)
+            dir[q] = (c[q] + aim[q] - e[q]) * (k % 7 == 0 ? -1 : 1);
+        double len = tg_log_uniform(&g, 0.01, 100) / sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+        for (int q = 0; q < 3; q++)
+            dir[q] *= len;
+        tg_sphere(t, c, R, e, dir);
+    }
+    t = hidden_test(l, PART3A, KIND_SPHERE, "Part 3a: hidden: random rays from inside spheres",
+                    "every ray starts inside: the hit is where it leaves");
+    for (int k = 0; k < 40; k++) {
+        double R = tg_log_uniform(&g, 0.1, 100), c[3] = { 1, -2, 3 }, off[3], e[3], dir[3];
+        random_direction(&g, R * tg_uniform(&g, 0, 0.95), off);
+        for (int q = 0; q < 3; q++)
+            e[q] = c[q] + off[q];
+        random_direction(&g, tg_log_uniform(&g, 0.1, 10), dir);
+        tg_sphere(t, c, R, e, dir);
+    }
+
+    t = hidden_test(l, PART3B, KIND_CAMERA, "Part 3b: hidden: camera_ray through random pixels",
+                    "eyes anywhere, pixels anywhere: origin e, unit direction towards the pixel");
+    for (int k = 0; k < 20; k++) {
+        double e[3], p[3];
+        random_direction(&g, tg_uniform(&g, 0, 5) * (k % 2), e);
+        random_direction(&g, tg_log_uniform(&g, 0.01, 100), p);
+        for (int q = 0; q < 3; q++)
+            p[q] += e[q];
+        tg_camera(t, e, p);
+    }
+    t = hidden_test(l, PART3B, KIND_COLOR, "Part 3b: hidden: ray_color in a random scene of 8 spheres",
+                    "rays from the origin into overlapping spheres at random depths");
+    t->background[0] = 0.25, t->background[1] = 0.5, t->background[2] = 0.75;
+    for (int s = 0; s < 8; s++) {
+        double c[3] = { tg_uniform(&g, -3, 3), tg_uniform(&g, -3, 3), -tg_uniform(&g, 4, 20) };
+        double col[3] = { (s + 1) / 8.0, (s % 3) / 2.0, (7 - s) / 7.0 };
+        test_add_sphere(t, c, tg_uniform(&g, 0.5, 2.5), col);
+    }
+    for (int k = 0; k < 60; k++) {
+        double r[3] = { tg_uniform(&g, -0.3, 0.3), tg_uniform(&g, -0.3, 0.3), -1 };
+        tg_color(t, V(0, 0, 0), r);
+    }
+    Test *img = tg_image(l, "Part 3b: hidden: render the wide scene at 64 x 20", "labs/scenes/wide.scene", 64, 20);
+    img->hidden = true;
+    img = tg_image(l, "Part 3b: hidden: render the behind scene at 32 x 24", "labs/scenes/behind.scene", 32, 24);
+    img->hidden = true;
+}

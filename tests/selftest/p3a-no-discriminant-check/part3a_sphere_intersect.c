@@ -1,0 +1,16 @@
+/* Self-test of the grader: p3a-no-discriminant-check. */
+#include "raytracer.h"
+
+bool sphere_intersect(const Sphere *sphere, const Ray *ray, double *t)
+{
+    Vec3 f = vec3_sub(ray->origin, sphere->center);
+    double A = vec3_dot(ray->direction, ray->direction);
+    double B = vec3_dot(f, ray->direction);
+    double C = vec3_dot(f, f) - sphere->radius * sphere->radius;
+    double disc = B * B - A * C;
+    double t0 = (-B - sqrt(disc)) / A, t1 = (-B + sqrt(disc)) / A;
+    if (t0 > 0) { *t = t0; return true; }
+    if (t1 > 0) { *t = t1; return true; }
+    *t = t0;
+    return t0 == t0 ? false : true;
+}

@@ -1,0 +1,18 @@
+/* Self-test of the grader: p3b-first-hit. */
+#include "raytracer.h"
+
+Ray camera_ray(Vec3 eye, Vec3 pixel)
+{
+    Ray ray = { eye, vec3_normalize(vec3_sub(pixel, eye)) };
+    return ray;
+}
+
+Vec3 ray_color(const Scene *scene, const Ray *ray)
+{
+    for (int k = 0; k < scene->nspheres; k++) {
+        double t;
+        if (sphere_intersect(&scene->spheres[k], ray, &t))
+            return scene->spheres[k].color;
+    }
+    return scene->background;
+}
