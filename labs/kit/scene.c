@@ -20,15 +20,15 @@
 #include "image.h"
 
 #define SCENE_MAX_LINE   4096                 /* characters, without the newline */
-#define SCENE_MAX_WORDS  16                   /* a line never needs more than 8  */
+#define SCENE_MAX_WORDS  8                    /* the most a line needs: sphere's */
 #define SCENE_MAX_BYTES  (64L * 1024 * 1024)  /* a larger file is not a scene    */
 
 /* What one line holds once split: its keyword and its numbers. */
 typedef struct {
-    const char *name;            /* the file's name, for messages */
-    int line;                    /* 1-based line number           */
-    char *words[SCENE_MAX_WORDS];
-    int nwords;                  /* the keyword counts as a word  */
+    const char *name;              /* the file's name, for messages */
+    int line;                      /* 1-based line number           */
+    char *words[SCENE_MAX_WORDS];  /* the first words of the line  */
+    int nwords;                    /* all of them, the keyword too  */
 } SceneLine;
 
 /* The keywords that may appear once, and where they were first seen. */
@@ -55,6 +55,19 @@ static void scene_error(char *err, size_t errlen, const char *name, int line,
     va_end(ap);
 }
 
+/* Copies word into buf (SCENE_QUOTE_SIZE bytes) for a message: at most 40
+ * characters, "..." after a cut, and '?' for any byte that is not printable
+ * ASCII, so a binary file gives a readable message.  Returns buf. */
+#define SCENE_QUOTE_SIZE 44
+static const char *scene_quote(const char *word, char *buf)
+{
+    size_t n = 0;
+    for (; word[n] && n < SCENE_QUOTE_SIZE - 4; n++)
+        buf[n] = word[n] > ' ' && word[n] < 127 ? word[n] : '?';
+    strcpy(buf + n, word[n] ? "..." : "");
+    return buf;
+}
+
 /* True for the characters that separate words (a '\r' of a CRLF file too). */
 static int scene_is_space(char c)
 {
@@ -62,8 +75,9 @@ static int scene_is_space(char c)
 }
 
 /* Splits buf (one line, NUL-terminated, modified in place) into words,
- * dropping everything from '#' on.  Returns the number of words, or -1 when
- * there are more than SCENE_MAX_WORDS. */
+ * dropping everything from '#' on.  Stores the first SCENE_MAX_WORDS in
+ * words and returns how many there are in all, so that a line with too
+ * many is reported with its count. */
 static int scene_split(char *buf, char **words)
 {
     char *hash = strchr(buf, '#');
@@ -76,9 +90,9 @@ static int scene_split(char *buf, char **words)
             p++;
         if (!*p)
             return n;
-        if (n == SCENE_MAX_WORDS)
-            return -1;
-        words[n++] = p;
+        if (n < SCENE_MAX_WORDS)
+            words[n] = p;
+        n++;
         while (*p && !scene_is_space(*p))
             p++;
         if (*p)
@@ -92,22 +106,23 @@ static int scene_split(char *buf, char **words)
 static int scene_number(const SceneLine *ln, int k, double *value, char *err, size_t errlen)
 {
     const char *word = ln->words[k];
-    char *end;
+    char quoted[SCENE_QUOTE_SIZE], *end;
     errno = 0;
     double v = strtod(word, &end);
     if (end == word || *end != '\0') {
-        scene_error(err, errlen, ln->name, ln->line, "%s: '%.40s' is not a number",
-                    ln->words[0], word);
+        scene_error(err, errlen, ln->name, ln->line, "%s: '%s' is not a number",
+                    ln->words[0], scene_quote(word, quoted));
         return -1;
     }
     if (isnan(v)) {
-        scene_error(err, errlen, ln->name, ln->line, "%s: '%.40s' is not a number (NaN is refused)",
-                    ln->words[0], word);
+        scene_error(err, errlen, ln->name, ln->line, "%s: '%s' is not a number (NaN is refused)",
+                    ln->words[0], scene_quote(word, quoted));
         return -1;
     }
     if (isinf(v)) {
-        scene_error(err, errlen, ln->name, ln->line, "%s: '%.40s' is %s (numbers must be finite)",
-                    ln->words[0], word, errno == ERANGE ? "out of range" : "infinite");
+        scene_error(err, errlen, ln->name, ln->line, "%s: '%s' is %s (numbers must be finite)",
+                    ln->words[0], scene_quote(word, quoted),
+                    errno == ERANGE ? "out of range" : "infinite");
         return -1;
     }
     *value = v;
@@ -211,6 +226,7 @@ static int scene_line(Scene *scene, SceneSeen *seen, int *capacity, const SceneL
                       char *err, size_t errlen)
 {
     const char *key = ln->words[0];
+    char quoted[SCENE_QUOTE_SIZE];
     double v[7];
 
     if (strcmp(key, "image") == 0) {
@@ -261,8 +277,8 @@ static int scene_line(Scene *scene, SceneSeen *seen, int *capacity, const SceneL
             return -1;
     } else {
         scene_error(err, errlen, ln->name, ln->line,
-                    "unknown keyword '%.40s' (expected image, fov, distance, background or sphere)",
-                    key);
+                    "unknown keyword '%s' (expected image, fov, distance, background or sphere)",
+                    scene_quote(key, quoted));
         return -1;
     }
     return 0;
@@ -303,11 +319,6 @@ int scene_parse(Scene *scene, const char *text, const char *name, char *err, siz
         if (*p == '\n')
             p++;
         ln.nwords = scene_split(buf, ln.words);
-        if (ln.nwords < 0) {
-            scene_error(err, errlen, name, ln.line, "too many words on one line (at most %d)",
-                        SCENE_MAX_WORDS);
-            goto fail;
-        }
         if (ln.nwords > 0 && scene_line(scene, &seen, &capacity, &ln, err, errlen) < 0)
             goto fail;
     }

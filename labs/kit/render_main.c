@@ -1,0 +1,237 @@
+/*
+ * render_main.c - the `render` program: a scene file in, a PNG or PPM out.
+ *
+ *     render SCENE [--size WxH] [-o OUT] [--threads N] [--quiet]
+ *
+ * Prints the time taken and the rays per second.  Exit status: 0 on
+ * success, 1 when the scene or the output fails, 2 on bad usage.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <ctype.h>
+#include <errno.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "image.h"
+#include "render.h"
+#include "scene.h"
+
+#define RENDER_MAIN_MAX_THREADS 1024
+
+/* The command line, once read. */
+typedef struct {
+    const char *scene_path;
+    const char *out_path;        /* NULL: out/<scene name>.png */
+    int nx, ny;                  /* 0: the scene's own size    */
+    int threads;                 /* 0: one per core            */
+    bool quiet;
+} RenderArgs;
+
+/* Prints the usage to f. */
+static void render_usage(FILE *f)
+{
+    fprintf(f,
+            "usage: render SCENE [--size WxH] [-o OUT] [--threads N] [--quiet]\n"
+            "  renders the scene file SCENE with the stage files built in\n"
+            "  --size WxH   image size instead of the scene's, 1..%d each side\n"
+            "  -o OUT       output image, .png or .ppm (default out/<scene name>.png)\n"
+            "  --threads N  worker threads, 1..%d (default one per core)\n"
+            "  --quiet      print nothing but errors\n"
+            "exit status: 0 done, 1 bad scene or output, 2 bad usage\n",
+            IMAGE_MAX_SIDE, RENDER_MAIN_MAX_THREADS);
+}
+
+/* Reads a whole decimal number from text (digits only, no sign or space)
+ * in 1 .. max into *value, and stores where it stopped in *end.
+ * Returns 0, or -1 when there are no digits or the number is out of range. */
+static int render_main_count(const char *text, int max, int *value, const char **end)
+{
+    long n = 0;
+    const char *p = text;
+    while (*p >= '0' && *p <= '9') {
+        n = 10 * n + (*p - '0');
+        if (n > max)
+            return -1;
+        p++;
+    }
+    if (p == text || n < 1)
+        return -1;
+    *value = (int)n;
+    *end = p;
+    return 0;
+}
+
+/* Reads "WxH" into *nx, *ny, each 1 .. IMAGE_MAX_SIDE.
+ * Returns 0, or -1 when text is anything else. */
+static int render_main_size(const char *text, int *nx, int *ny)
+{
+    const char *p;
+    if (render_main_count(text, IMAGE_MAX_SIDE, nx, &p) < 0 || *p != 'x')
+        return -1;
+    if (render_main_count(p + 1, IMAGE_MAX_SIDE, ny, &p) < 0 || *p != '\0')
+        return -1;
+    return 0;
+}
+
+/* True when path ends in .png or .ppm, in any case: the names image_write
+ * takes, checked before a long render rather than after. */
+static bool render_main_image_name(const char *path)
+{
+    size_t len = strlen(path);
+    if (len < 5 || path[len - 4] != '.' || path[len - 5] == '/')
+        return false;
+    char ext[4];
+    for (int k = 0; k < 3; k++)
+        ext[k] = (char)tolower((unsigned char)path[len - 3 + k]);
+    ext[3] = '\0';
+    return strcmp(ext, "png") == 0 || strcmp(ext, "ppm") == 0;
+}
+
+/* Reads the command line into args.  Returns 0, or -1 after printing what
+ * is wrong and the usage to stderr.  "--help" prints the usage and exits. */
+static int render_main_args(int argc, char **argv, RenderArgs *args)
+{
+    RenderArgs none = { NULL, NULL, 0, 0, 0, false };
+    *args = none;
+    for (int k = 1; k < argc; k++) {
+        const char *a = argv[k];
+        const char *value = k + 1 < argc ? argv[k + 1] : NULL;
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            render_usage(stdout);
+            exit(0);
+        } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
+            args->quiet = true;
+        } else if (strcmp(a, "--size") == 0 || strcmp(a, "-o") == 0 || strcmp(a, "--threads") == 0) {
+            if (!value) {
+                fprintf(stderr, "render: %s needs a value\n", a);
+                goto usage;
+            }
+            k++;
+            const char *end;
+            if (strcmp(a, "-o") == 0) {
+                if (!render_main_image_name(value)) {
+                    fprintf(stderr, "render: -o wants a file name ending in .png or .ppm, "
+                            "got '%.40s'\n", value);
+                    goto usage;
+                }
+                args->out_path = value;
+            } else if (strcmp(a, "--size") == 0) {
+                if (render_main_size(value, &args->nx, &args->ny) < 0) {
+                    fprintf(stderr, "render: --size wants WxH, each a whole number from 1 to %d, "
+                            "got '%.40s'\n", IMAGE_MAX_SIDE, value);
+                    goto usage;
+                }
+            } else if (render_main_count(value, RENDER_MAIN_MAX_THREADS, &args->threads, &end) < 0
+                       || *end != '\0') {
+                fprintf(stderr, "render: --threads wants a whole number from 1 to %d, got '%.40s'\n",
+                        RENDER_MAIN_MAX_THREADS, value);
+                goto usage;
+            }
+        } else if (a[0] == '-' && a[1] != '\0') {
+            fprintf(stderr, "render: unknown option '%.40s'\n", a);
+            goto usage;
+        } else if (args->scene_path) {
+            fprintf(stderr, "render: one scene at a time ('%.40s' and '%.40s')\n",
+                    args->scene_path, a);
+            goto usage;
+        } else {
+            args->scene_path = a;
+        }
+    }
+    if (!args->scene_path) {
+        fprintf(stderr, "render: no scene file given\n");
+        goto usage;
+    }
+    return 0;
+usage:
+    render_usage(stderr);
+    return -1;
+}
+
+/* The file name of path without its directories: "labs/scenes/a.scene" -> "a.scene". */
+static const char *render_main_basename(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash ? slash + 1 : path;
+}
+
+/* Writes "out/<scene name>.png" into buf (the name without its last
+ * extension) and makes the directory out if it is missing.
+ * Returns 0, or -1 with a message in err. */
+static int render_main_default_out(const char *scene_path, char *buf, size_t len,
+                                   char *err, size_t errlen)
+{
+    const char *name = render_main_basename(scene_path);
+    const char *dot = strrchr(name, '.');
+    int stem = dot && dot != name ? (int)(dot - name) : (int)strlen(name);
+    int n = snprintf(buf, len, "out/%.*s.png", stem, name);
+    if (n < 0 || (size_t)n >= len) {
+        snprintf(err, errlen, "render: the scene's name is too long for an output name");
+        return -1;
+    }
+    if (mkdir("out", 0777) != 0 && errno != EEXIST) {
+        snprintf(err, errlen, "render: cannot make the directory out: %s", strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+/* Renders as the command line says.  Returns the exit status: 0 done,
+ * 1 bad scene or output, 2 bad usage. */
+int main(int argc, char **argv)
+{
+    RenderArgs args;
+    if (render_main_args(argc, argv, &args) < 0)
+        return 2;
+
+    char err[512], default_out[4096];
+    Scene scene;
+    if (scene_load(&scene, args.scene_path, err, sizeof err) < 0) {
+        fprintf(stderr, "render: %s\n", err);
+        return 1;
+    }
+    if (args.nx > 0) {
+        scene.nx = args.nx;
+        scene.ny = args.ny;
+    }
+    const char *out = args.out_path;
+    if (!out) {
+        if (render_main_default_out(args.scene_path, default_out, sizeof default_out,
+                                    err, sizeof err) < 0) {
+            fprintf(stderr, "%s\n", err);
+            scene_free(&scene);
+            return 1;
+        }
+        out = default_out;
+    }
+
+    Image img;
+    RenderStats stats;
+    RenderOptions opt = { args.threads, !args.quiet };
+    int status = 1;
+    if (image_alloc(&img, scene.nx, scene.ny, err, sizeof err) < 0) {
+        fprintf(stderr, "render: %s\n", err);
+    } else {
+        if (render_scene(&scene, &img, &opt, &stats, err, sizeof err) < 0) {
+            fprintf(stderr, "%s\n", err);
+        } else if (image_write(&img, out, err, sizeof err) < 0) {
+            fprintf(stderr, "render: %s\n", err);
+        } else {
+            status = 0;
+            if (!args.quiet) {
+                printf("rendered %s %dx%d with %d thread%s in %.3f s: "
+                       "%.1f million rays/s (%.1f million per thread)\n",
+                       render_main_basename(args.scene_path), scene.nx, scene.ny,
+                       stats.threads, stats.threads == 1 ? "" : "s", stats.seconds,
+                       stats.rays_per_second / 1e6, stats.rays_per_second / 1e6 / stats.threads);
+                printf("wrote %s\n", out);
+            }
+        }
+        image_free(&img);
+    }
+    scene_free(&scene);
+    return status;
+}

@@ -1,0 +1,379 @@
+#!/bin/sh
+# The render and compare programs run as a user runs them: every shipped
+# scene renders, every kind of bad scene or command line is refused with a
+# clear message and the right exit status (never a crash), nothing is left
+# half-written, and compare tells equal images from different ones.
+#
+# Usage: sh tests/suites/render_cli.sh     (from the kit's top directory,
+# after make; tests/run.sh does both).  The programs can be replaced with
+# RENDER=... RENDER_LABS=... RENDER_ASAN=... COMPARE=...
+# The last line is "N passed, N failed"; the exit status is 1 if any failed.
+set -u
+
+top=$(pwd)
+RENDER=${RENDER:-out/build/sub/solutions/render}
+RENDER_LABS=${RENDER_LABS:-out/build/sub/labs/render}
+RENDER_ASAN=${RENDER_ASAN:-out/asan/bin/render-solutions}
+COMPARE=${COMPARE:-out/build/bin/compare}
+
+passed=0
+failed=0
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/render_cli.XXXXXX") || {
+    echo "cannot make a temporary directory"
+    echo "0 passed, 1 failed"
+    exit 1
+}
+trap 'rm -rf "$tmp"' EXIT
+trap 'exit 1' HUP INT TERM
+
+# absolute PATH: prints PATH made absolute (relative to the top directory).
+absolute() {
+    case $1 in
+        /*) echo "$1" ;;
+        *) echo "$top/$1" ;;
+    esac
+}
+RENDER=$(absolute "$RENDER")
+RENDER_LABS=$(absolute "$RENDER_LABS")
+RENDER_ASAN=$(absolute "$RENDER_ASAN")
+COMPARE=$(absolute "$COMPARE")
+
+# pass / fail WHAT: counts a check; a failure is shown with what went wrong.
+pass() {
+    passed=$((passed + 1))
+}
+fail() {
+    failed=$((failed + 1))
+    echo "FAIL: $*"
+    if [ -s "$tmp/stderr" ]; then
+        sed -n '1,5s/^/    stderr: /p' "$tmp/stderr"
+    fi
+}
+
+# run PROGRAM ARGS...: runs it; sets status, keeps stdout and stderr in files.
+run() {
+    "$@" >"$tmp/stdout" 2>"$tmp/stderr"
+    status=$?
+}
+
+# crashed: true when the last run died of a signal or a sanitizer spoke.
+crashed() {
+    [ "$status" -ge 128 ] || grep -q -e 'Sanitizer' -e 'runtime error' -e 'LeakSanitizer' "$tmp/stderr"
+}
+
+# png_size FILE: prints "W H" from the PNG's header, or nothing if it is no PNG.
+png_size() {
+    [ -f "$1" ] || return 0
+    signature=$(od -An -tx1 -N8 "$1" | tr -d ' \n')
+    [ "$signature" = "89504e470d0a1a0a" ] || return 0
+    od -An -tu1 -j16 -N8 "$1" |
+        awk '{ print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4, $5 * 16777216 + $6 * 65536 + $7 * 256 + $8 }'
+}
+
+# scene_size FILE: prints "W H" from the scene's image line.
+scene_size() {
+    awk '$1 == "image" { print $2, $3 }' "$1"
+}
+
+# ---- every shipped scene renders, at its own size -------------------------
+for scene in labs/scenes/*.scene; do
+    name=$(basename "$scene" .scene)
+    out="$tmp/$name.png"
+    run "$RENDER" "$scene" -o "$out"
+    want=$(scene_size "$scene")
+    if crashed; then
+        fail "render $scene crashed (exit $status)"
+    elif [ "$status" -ne 0 ]; then
+        fail "render $scene: exit $status, want 0"
+    elif [ "$(png_size "$out")" != "$want" ]; then
+        fail "render $scene: $out is '$(png_size "$out")', want a PNG of $want"
+    elif ! grep -q "^rendered $name.scene $(echo "$want" | tr ' ' x) with [0-9]* threads* in [0-9.]* s: [0-9.]* million rays/s" "$tmp/stdout"; then
+        fail "render $scene: no summary line: $(head -n 1 "$tmp/stdout")"
+    elif ! grep -q "^wrote $out\$" "$tmp/stdout"; then
+        fail "render $scene: no 'wrote' line"
+    else
+        pass
+    fi
+done
+
+# The default output is out/<scene name>.png, made in the current directory.
+mkdir "$tmp/home"
+(cd "$tmp/home" && "$RENDER" "$top/labs/scenes/flip.scene" --quiet >"$tmp/stdout" 2>"$tmp/stderr")
+status=$?
+if [ "$status" -eq 0 ] && [ "$(png_size "$tmp/home/out/flip.png")" = "320 320" ] && [ ! -s "$tmp/stdout" ]; then
+    pass
+else
+    fail "render flip.scene --quiet without -o: exit $status, out/flip.png '$(png_size "$tmp/home/out/flip.png")'"
+fi
+
+# A PPM output when the name ends in .ppm.
+run "$RENDER" labs/scenes/flip.scene --size 16x8 --threads 1 -o "$tmp/flip.ppm"
+if [ "$status" -eq 0 ] && [ "$(head -c 2 "$tmp/flip.ppm" 2>/dev/null)" = "P6" ]; then
+    pass
+else
+    fail "render -o flip.ppm: exit $status, want a P6 file"
+fi
+
+# ---- --size overrides the scene's size ------------------------------------
+for size in 37x23 1x1 1x300 300x1; do
+    run "$RENDER" labs/scenes/default.scene --size "$size" -o "$tmp/sized.png"
+    if [ "$status" -eq 0 ] && [ "$(png_size "$tmp/sized.png")" = "$(echo "$size" | tr x ' ')" ] &&
+        grep -q "^rendered default.scene $size with" "$tmp/stdout"; then
+        pass
+    else
+        fail "render --size $size: exit $status, image '$(png_size "$tmp/sized.png")'"
+    fi
+    rm -f "$tmp/sized.png"
+done
+
+# The thread count is honoured and the image does not depend on it.
+run "$RENDER" labs/scenes/default.scene --size 160x120 --threads 1 -o "$tmp/t1.png"
+status1=$status
+run "$RENDER" labs/scenes/default.scene --size 160x120 --threads 3 -o "$tmp/t3.png"
+if [ "$status1" -eq 0 ] && [ "$status" -eq 0 ] && grep -q "with 3 threads" "$tmp/stdout" &&
+    cmp -s "$tmp/t1.png" "$tmp/t3.png"; then
+    pass
+else
+    fail "render --threads 1 and --threads 3: exits $status1 $status, or the images differ"
+fi
+
+# ---- bad command lines: exit 2 and the usage ------------------------------
+bad_usage() {   # bad_usage WHAT ARGS...
+    what=$1
+    shift
+    run "$RENDER" "$@"
+    if crashed; then
+        fail "render $what crashed (exit $status)"
+    elif [ "$status" -ne 2 ]; then
+        fail "render $what: exit $status, want 2"
+    elif ! grep -q "usage: render" "$tmp/stderr"; then
+        fail "render $what: no usage on stderr"
+    else
+        pass
+    fi
+}
+bad_usage "(no arguments)"
+bad_usage "--size 0x5" labs/scenes/default.scene --size 0x5 -o "$tmp/u.png"
+bad_usage "--size 5x" labs/scenes/default.scene --size 5x -o "$tmp/u.png"
+bad_usage "--size abc" labs/scenes/default.scene --size abc -o "$tmp/u.png"
+bad_usage "--size 99999x2" labs/scenes/default.scene --size 99999x2 -o "$tmp/u.png"
+bad_usage "--size 16385x1" labs/scenes/default.scene --size 16385x1 -o "$tmp/u.png"
+bad_usage "--size 5x5x5" labs/scenes/default.scene --size 5x5x5 -o "$tmp/u.png"
+bad_usage "--size -5x5" labs/scenes/default.scene --size -5x5 -o "$tmp/u.png"
+bad_usage "--size 99999999999999999999x5" labs/scenes/default.scene --size 99999999999999999999x5 -o "$tmp/u.png"
+bad_usage "--size (no value)" labs/scenes/default.scene --size
+bad_usage "--threads abc" labs/scenes/default.scene --threads abc -o "$tmp/u.png"
+bad_usage "--threads 0" labs/scenes/default.scene --threads 0 -o "$tmp/u.png"
+bad_usage "-o (no value)" labs/scenes/default.scene -o
+bad_usage "-o x.jpg" labs/scenes/default.scene -o "$tmp/u.jpg"
+bad_usage "--bogus" labs/scenes/default.scene --bogus
+bad_usage "(two scenes)" labs/scenes/default.scene labs/scenes/flip.scene
+if [ -e "$tmp/u.png" ] || [ -e "$tmp/u.jpg" ]; then
+    fail "a refused command line still wrote an image"
+else
+    pass
+fi
+
+# ---- bad scenes: exit 1, "file:line: reason", no image, never a crash -----
+# bad_scene PROGRAM NAME LINE WORD [LINES...]: writes the LINES to
+# NAME.scene and checks the render refuses it with a message holding
+# "NAME.scene:LINE:" (just "NAME.scene:" when LINE is -) and WORD.
+bad_scene() {
+    program=$1 name=$2 line=$3 word=$4
+    shift 4
+    file="$tmp/bad/$name.scene"
+    mkdir -p "$tmp/bad"
+    [ $# -gt 0 ] && printf '%s\n' "$@" >"$file"
+    [ -f "$file" ] || : >"$file"
+    check_bad_scene "$program" "$file" "$name.scene" "$line" "$word"
+}
+check_bad_scene() {   # check_bad_scene PROGRAM FILE NAME LINE WORD
+    rm -f "$tmp/bad-out.png"
+    run "$1" "$2" -o "$tmp/bad-out.png"
+    if [ "$4" = "-" ]; then where="$3: "; else where="$3:$4: "; fi
+    if crashed; then
+        fail "${1##*/} $3 crashed (exit $status)"
+    elif [ "$status" -ne 1 ]; then
+        fail "${1##*/} $3: exit $status, want 1"
+    elif ! grep -q -F "$where" "$tmp/stderr"; then
+        fail "${1##*/} $3: the message does not say '$where'"
+    elif ! grep -q -F -e "$5" "$tmp/stderr"; then
+        fail "${1##*/} $3: the message does not say '$5'"
+    elif [ "$(wc -l <"$tmp/stderr")" -ne 1 ]; then
+        fail "${1##*/} $3: the message is not one line"
+    elif [ -e "$tmp/bad-out.png" ]; then
+        fail "${1##*/} $3: an image was written"
+    else
+        pass
+    fi
+}
+
+# bad_scenes PROGRAM: every kind of bad scene against one renderer.
+bad_scenes() {
+    p=$1
+    rm -rf "$tmp/bad"
+    head='image 64 48'
+    fov='fov 60'
+    bad_scene "$p" short-sphere 3 "sphere needs 7 numbers: cx cy cz R r g b, got 5" "$head" "$fov" "sphere 0 0 -5 1 1"
+    bad_scene "$p" long-sphere 4 "got 8" "$head" "$fov" "# a comment" "sphere 0 0 -5 1 1 0 0 9"
+    bad_scene "$p" short-image 1 "image needs 2 numbers" "image 64" "$fov"
+    bad_scene "$p" empty-fov 2 "fov needs 1 number" "$head" "fov"
+    bad_scene "$p" unknown 3 "unknown keyword 'camera'" "$head" "$fov" "camera 0 0 0"
+    bad_scene "$p" garbage 3 "'1.5abc' is not a number" "$head" "$fov" "sphere 0 0 -5 1.5abc 1 0 0"
+    bad_scene "$p" word 2 "'sixty' is not a number" "$head" "fov sixty"
+    bad_scene "$p" nan 3 "'nan' is not a number" "$head" "$fov" "sphere 0 nan -5 1 1 0 0"
+    bad_scene "$p" inf 3 "infinite" "$head" "$fov" "sphere 0 0 -5 inf 1 0 0"
+    bad_scene "$p" overflow 3 "out of range" "$head" "$fov" "sphere 0 0 -1e999 1 1 0 0"
+    bad_scene "$p" fov-zero 2 "fov must be between 0 and 180" "$head" "fov 0"
+    bad_scene "$p" fov-180 2 "fov must be between 0 and 180" "$head" "fov 180"
+    bad_scene "$p" fov-negative 2 "fov must be" "$head" "fov -10"
+    bad_scene "$p" distance-zero 3 "distance d must be greater than 0" "$head" "$fov" "distance 0"
+    bad_scene "$p" distance-negative 3 "distance d must be greater than 0" "$head" "$fov" "distance -2"
+    bad_scene "$p" radius-zero 3 "radius R must be greater than 0" "$head" "$fov" "sphere 0 0 -5 0 1 0 0"
+    bad_scene "$p" radius-negative 3 "radius R must be greater than 0" "$head" "$fov" "sphere 0 0 -5 -1 1 0 0"
+    bad_scene "$p" colour-high 3 "colour r must be in [0, 1]" "$head" "$fov" "sphere 0 0 -5 1 1.2 0 0"
+    bad_scene "$p" colour-negative 3 "colour b must be in [0, 1]" "$head" "$fov" "background 0 0 -0.5"
+    bad_scene "$p" colour-255 3 "colour g must be in [0, 1]" "$head" "$fov" "sphere 0 0 -5 1 0 255 0"
+    bad_scene "$p" image-zero 1 "whole number from 1 to 16384" "image 0 48" "$fov"
+    bad_scene "$p" image-large 1 "whole number from 1 to 16384, got 16385" "image 16385 48" "$fov"
+    bad_scene "$p" image-fraction 1 "got 640.5" "image 640.5 480" "$fov"
+    bad_scene "$p" image-beyond-int 1 "whole number" "image 640 99999999999" "$fov"
+    bad_scene "$p" image-negative 1 "whole number" "image -640 480" "$fov"
+    bad_scene "$p" twice-image 3 "image given twice (first on line 1)" "$head" "$fov" "image 32 32"
+    bad_scene "$p" twice-fov 3 "fov given twice" "$head" "$fov" "fov 30"
+    bad_scene "$p" twice-background 4 "background given twice" "$head" "$fov" "background 0 0 0" "background 1 1 1"
+    bad_scene "$p" twice-distance 4 "distance given twice" "$head" "$fov" "distance 1" "distance 1"
+    bad_scene "$p" no-image - "no image line" "$fov" "sphere 0 0 -5 1 1 0 0"
+    bad_scene "$p" no-fov - "no fov line" "$head"
+    bad_scene "$p" empty - "no image line"
+    bad_scene "$p" long-line 3 "line is longer than 4096 characters" "$head" "$fov" \
+        "$(awk 'BEGIN { s = "sphere 0 0 -5 1 1 0 0 #"; while (length(s) < 5000) s = s "-"; print s }')"
+
+    # more than SCENE_MAX_SPHERES spheres: the first one too many is line 100003
+    { echo "$head"; echo "$fov"; awk 'BEGIN { for (k = 0; k <= 100000; k++) print "sphere 0 0 -5 1 1 0 0" }'; } \
+        >"$tmp/bad/many.scene"
+    check_bad_scene "$p" "$tmp/bad/many.scene" many.scene 100003 "too many spheres"
+
+    # a NUL byte on line 3
+    printf 'image 8 6\nfov 60\nsph\000ere 0 0 -5 1 1 0 0\n' >"$tmp/bad/nul.scene"
+    check_bad_scene "$p" "$tmp/bad/nul.scene" nul.scene 3 "NUL"
+
+    # a binary file: refused on its first line, the bytes shown as '?'
+    printf '\211PNG\r\n\032\n' >"$tmp/bad/binary.scene"
+    check_bad_scene "$p" "$tmp/bad/binary.scene" binary.scene 1 "unknown keyword '?PNG'"
+
+    # a missing file and a directory
+    check_bad_scene "$p" "$tmp/bad/missing.scene" missing.scene - "No such file or directory"
+    mkdir -p "$tmp/bad/dir.scene"
+    check_bad_scene "$p" "$tmp/bad/dir.scene" dir.scene - "directory"
+}
+bad_scenes "$RENDER"
+
+# ---- an output that cannot be written: exit 1 and no file, not even a part
+mkdir -p "$tmp/w/x.png"
+run "$RENDER" labs/scenes/flip.scene --size 40x40 -o "$tmp/w/x.png"
+left=$(ls -A "$tmp/w")
+if crashed; then
+    fail "render -o onto a directory crashed (exit $status)"
+elif [ "$status" -ne 1 ] || [ "$left" != "x.png" ] || [ ! -d "$tmp/w/x.png" ]; then
+    fail "render -o onto a directory: exit $status, left '$left'"
+elif ! grep -q "x.png" "$tmp/stderr"; then
+    fail "render -o onto a directory: the message does not name the file"
+else
+    pass
+fi
+run "$RENDER" labs/scenes/flip.scene --size 40x40 -o "$tmp/no/such/dir/x.png"
+if [ "$status" -eq 1 ] && [ ! -e "$tmp/no" ] && grep -q "x.png" "$tmp/stderr"; then
+    pass
+else
+    fail "render -o into a missing directory: exit $status"
+fi
+
+# ---- compare ---------------------------------------------------------------
+run "$RENDER" labs/scenes/default.scene --size 120x90 --quiet -o "$tmp/ref.png"
+run "$COMPARE" "$tmp/ref.png" "$tmp/ref.png"
+if [ "$status" -eq 0 ] && grep -q "identical" "$tmp/stdout"; then
+    pass
+else
+    fail "compare of an image with itself: exit $status, want 0 and 'identical'"
+fi
+
+# the same render as PPM compares identical with the PNG
+run "$RENDER" labs/scenes/default.scene --size 120x90 --quiet -o "$tmp/ref.ppm"
+run "$COMPARE" "$tmp/ref.ppm" "$tmp/ref.png" -o "$tmp/same-side.png"
+if [ "$status" -eq 0 ] && grep -q "identical" "$tmp/stdout" && [ -f "$tmp/same-side.png" ]; then
+    pass
+else
+    fail "compare of the PPM and the PNG of one render: exit $status, want 0"
+fi
+
+# the skeleton's render (the background only) against the reference's
+run "$RENDER_LABS" labs/scenes/default.scene --size 120x90 --quiet -o "$tmp/sub.png"
+run "$COMPARE" "$tmp/sub.png" "$tmp/ref.png" -o "$tmp/side.png"
+size=$(png_size "$tmp/side.png")
+width=${size% *}
+height=${size#* }
+if crashed; then
+    fail "compare of the skeleton's render crashed (exit $status)"
+elif [ "$status" -ne 1 ]; then
+    fail "compare of the skeleton's render with the reference: exit $status, want 1"
+elif ! grep -q "differ" "$tmp/stdout" || ! grep -q "PSNR" "$tmp/stdout" || ! grep -q "%" "$tmp/stdout"; then
+    fail "compare: no share of differing pixels or PSNR in: $(tr '\n' ' ' <"$tmp/stdout")"
+elif [ -z "$size" ] || [ "$height" -ne 90 ] || [ "$width" -le 360 ] || [ "$width" -gt $((360 + 2 * 16)) ] ||
+    [ $(((width - 360) % 2)) -ne 0 ]; then
+    fail "compare -o: the side-by-side image is '$size', want 3 x 120 plus two gaps by 90"
+else
+    pass
+fi
+
+# images of different sizes: a clear message, exit 1
+run "$RENDER" labs/scenes/default.scene --size 60x90 --quiet -o "$tmp/small.png"
+run "$COMPARE" "$tmp/small.png" "$tmp/ref.png"
+if [ "$status" -eq 1 ] && grep -q "size" "$tmp/stderr" && grep -q "60x90" "$tmp/stderr"; then
+    pass
+else
+    fail "compare of images of different sizes: exit $status, want 1 and a message"
+fi
+
+# errors and bad usage: exit 2
+compare_error() {   # compare_error WHAT ARGS...
+    what=$1
+    shift
+    run "$COMPARE" "$@"
+    if crashed; then
+        fail "compare $what crashed (exit $status)"
+    elif [ "$status" -ne 2 ]; then
+        fail "compare $what: exit $status, want 2"
+    else
+        pass
+    fi
+}
+compare_error "(no arguments)"
+compare_error "(one image)" "$tmp/ref.png"
+compare_error "(three images)" "$tmp/ref.png" "$tmp/ref.png" "$tmp/ref.png"
+compare_error "(a missing image)" "$tmp/ref.png" "$tmp/missing.png"
+compare_error "(a scene, not an image)" labs/scenes/default.scene "$tmp/ref.png"
+compare_error "(-o without a name)" "$tmp/ref.png" "$tmp/ref.png" -o
+compare_error "(unwritable -o)" "$tmp/ref.png" "$tmp/ref.png" -o "$tmp/no/such/side.png"
+run "$COMPARE"
+if grep -q "usage: compare" "$tmp/stderr" && grep -q "exit status: 0 identical, 1 .*differ, 2 error" "$tmp/stderr"; then
+    pass
+else
+    fail "compare: the usage does not explain the exit status"
+fi
+
+# ---- the same bad scenes against the address-sanitized renderer -----------
+if [ -x "$RENDER_ASAN" ]; then
+    run "$RENDER_ASAN" labs/scenes/default.scene --size 64x48 --threads 2 -o "$tmp/asan.png"
+    if crashed || [ "$status" -ne 0 ]; then
+        fail "sanitized render of default.scene: exit $status"
+    else
+        pass
+    fi
+    bad_scenes "$RENDER_ASAN"
+else
+    echo "note: no sanitized renderer at $RENDER_ASAN (make $RENDER_ASAN): its checks were skipped"
+fi
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,270 @@
+/* The renderer of labs/kit/render.c, end to end with the reference stage
+ * files (this test is linked with solutions/), on scenes whose pixels are
+ * known by construction. */
+#include "check.h"            /* first: it sets the POSIX feature level */
+#include "../../labs/kit/render.h"
+#include "../../labs/kit/scene.h"
+
+/* A scene of nx x ny pixels with the given spheres, eye at the origin. */
+static Scene make_scene(int nx, int ny, double fov, Vec3 background, Sphere *spheres, int n)
+{
+    Scene scene;
+    memset(&scene, 0, sizeof scene);
+    scene.nx = nx;
+    scene.ny = ny;
+    scene.fov_degrees = fov;
+    scene.d = 1;
+    scene.eye = vec3(0, 0, 0);
+    scene.background = background;
+    scene.spheres = spheres;
+    scene.nspheres = n;
+    return scene;
+}
+
+/* Renders scene into a fresh img with the given number of threads.
+ * Returns 0, or -1 after a failed check (img is then empty). */
+static int render_with(const Scene *scene, int threads, Image *img, RenderStats *stats)
+{
+    char err[256] = "";
+    RenderStats unused;
+    if (image_alloc(img, scene->nx, scene->ny, err, sizeof err) < 0) {
+        CHECK_MSG(0, "image_alloc: %s", err);
+        return -1;
+    }
+    RenderOptions opt = { threads, false };
+    int status = render_scene(scene, img, &opt, stats ? stats : &unused, err, sizeof err);
+    CHECK_MSG(status == 0, "render_scene returned %d: %s", status, err);
+    if (status != 0) {
+        image_free(img);
+        return -1;
+    }
+    return 0;
+}
+
+/* True when pixel (i, j) of img holds colour c as the kit stores it. */
+static int pixel_is(const Image *img, int i, int j, Vec3 c)
+{
+    const unsigned char *p = img->rgb + 3 * ((size_t)j * img->width + i);
+    return p[0] == image_channel(c.x) && p[1] == image_channel(c.y) && p[2] == image_channel(c.z);
+}
+
+/* Checks pixel (i, j) is colour c, naming the pixel on failure. */
+#define CHECK_PIXEL(img, i, j, c, what)                                        \
+    do { const unsigned char *p_ = (img)->rgb + 3 * ((size_t)(j) * (img)->width + (i)); \
+         CHECK_MSG(pixel_is((img), (i), (j), (c)),                             \
+                   "pixel (%d, %d) is (%d, %d, %d), want %s", (i), (j), p_[0], p_[1], p_[2], what); \
+    } while (0)
+
+/* The number of pixels of img in columns i0 .. i1-1, rows j0 .. j1-1 that are colour c. */
+static int count_color(const Image *img, int i0, int i1, int j0, int j1, Vec3 c)
+{
+    int n = 0;
+    for (int j = j0; j < j1; j++)
+        for (int i = i0; i < i1; i++)
+            n += pixel_is(img, i, j, c);
+    return n;
+}
+
+static const Vec3 BACKGROUND = { 0.1, 0.2, 0.3 };
+static const Vec3 RED = { 0.9, 0.2, 0.25 };
+static const Vec3 GREEN = { 0.2, 0.8, 0.4 };
+
+/* One sphere straight ahead: the centre pixel (on the axis, the image
+ * being odd-sized) is the sphere's colour, the four corners the background. */
+static void test_sphere_straight_ahead(void)
+{
+    Sphere sphere = { { 0, 0, -5 }, 1, RED };
+    Scene scene = make_scene(33, 25, 60, BACKGROUND, &sphere, 1);
+    Image img;
+    if (render_with(&scene, 2, &img, NULL) < 0)
+        return;
+    CHECK_PIXEL(&img, 16, 12, RED, "the sphere at the centre");
+    CHECK_PIXEL(&img, 0, 0, BACKGROUND, "the background at the top left");
+    CHECK_PIXEL(&img, 32, 0, BACKGROUND, "the background at the top right");
+    CHECK_PIXEL(&img, 0, 24, BACKGROUND, "the background at the bottom left");
+    CHECK_PIXEL(&img, 32, 24, BACKGROUND, "the background at the bottom right");
+    /* the disc is symmetric: as many sphere pixels left and right of the axis */
+    CHECK_EQ_INT(count_color(&img, 0, 16, 0, 25, RED), count_color(&img, 17, 33, 0, 25, RED));
+    CHECK_EQ_INT(count_color(&img, 0, 33, 0, 12, RED), count_color(&img, 0, 33, 13, 25, RED));
+    image_free(&img);
+}
+
+/* A sphere up and to the left lies wholly in the top-left quadrant: any
+ * flip of the image or mix-up of i and j moves it. */
+static void test_asymmetric_quadrant(void)
+{
+    /* seen from the eye, the sphere spans about 2 to 20 degrees left of
+     * and above the axis, so it stays clear of the central row and column */
+    Sphere sphere = { { -1, 1, -5 }, 0.8, GREEN };
+    Scene scene = make_scene(64, 48, 60, BACKGROUND, &sphere, 1);
+    Image img;
+    if (render_with(&scene, 3, &img, NULL) < 0)
+        return;
+    /* the pixel on the line of sight through the centre: x = y = 0.2 on the plane */
+    double h = 2 * tan(30 * M_PI / 180), w = h * 64 / 48;
+    int i = (int)((-0.2 + w / 2) / w * 64), j = (int)((h / 2 - 0.2) / h * 48);
+    CHECK_PIXEL(&img, i, j, GREEN, "the sphere in the top-left quadrant");
+    CHECK_PIXEL(&img, 63 - i, j, BACKGROUND, "the background (mirrored left-right)");
+    CHECK_PIXEL(&img, i, 47 - j, BACKGROUND, "the background (mirrored top-bottom)");
+    CHECK_PIXEL(&img, 63 - i, 47 - j, BACKGROUND, "the background (turned half round)");
+    CHECK(count_color(&img, 0, 32, 0, 24, GREEN) > 20);
+    CHECK_EQ_INT(count_color(&img, 32, 64, 0, 48, GREEN), 0);
+    CHECK_EQ_INT(count_color(&img, 0, 64, 24, 48, GREEN), 0);
+    image_free(&img);
+}
+
+/* Spheres wholly behind the eye never show, even with a wide field of view. */
+static void test_sphere_behind_eye(void)
+{
+    Sphere spheres[2] = {
+        { { 0, 0, 5 }, 1, RED },
+        { { 0.5, -0.5, 20 }, 15, GREEN },     /* spans z = 5 .. 35 */
+    };
+    Scene scene = make_scene(40, 30, 170, BACKGROUND, spheres, 2);
+    Image img;
+    if (render_with(&scene, 2, &img, NULL) < 0)
+        return;
+    CHECK_EQ_INT(count_color(&img, 0, 40, 0, 30, BACKGROUND), 40 * 30);
+    image_free(&img);
+}
+
+/* With the eye inside a sphere every ray meets its inside wall. */
+static void test_eye_inside_sphere(void)
+{
+    Sphere spheres[2] = {
+        { { 0, 0, 0 }, 10, RED },
+        { { 1, -2, 0.5 }, 50, GREEN },        /* around the first: farther wall */
+    };
+    Scene scene = make_scene(40, 30, 120, BACKGROUND, spheres, 2);
+    Image img;
+    if (render_with(&scene, 4, &img, NULL) < 0)
+        return;
+    CHECK_EQ_INT(count_color(&img, 0, 40, 0, 30, RED), 40 * 30);
+    image_free(&img);
+
+    scene.spheres = &spheres[1];
+    scene.nspheres = 1;
+    if (render_with(&scene, 1, &img, NULL) < 0)
+        return;
+    CHECK_EQ_INT(count_color(&img, 0, 40, 0, 30, GREEN), 40 * 30);
+    image_free(&img);
+}
+
+/* A 1x1 image looks straight ahead; a one-row and a one-column image work. */
+static void test_tiny_images(void)
+{
+    Sphere sphere = { { 0, 0, -5 }, 1, RED };
+    Scene scene = make_scene(1, 1, 60, BACKGROUND, &sphere, 1);
+    Image img;
+    if (render_with(&scene, 8, &img, NULL) < 0)
+        return;
+    CHECK_PIXEL(&img, 0, 0, RED, "the sphere");
+    image_free(&img);
+
+    scene = make_scene(101, 1, 60, BACKGROUND, &sphere, 1);
+    if (render_with(&scene, 2, &img, NULL) < 0)
+        return;
+    CHECK_PIXEL(&img, 50, 0, RED, "the sphere");
+    CHECK_PIXEL(&img, 0, 0, BACKGROUND, "the background");
+    image_free(&img);
+
+    scene = make_scene(1, 101, 60, BACKGROUND, &sphere, 1);
+    if (render_with(&scene, 2, &img, NULL) < 0)
+        return;
+    CHECK_PIXEL(&img, 0, 50, RED, "the sphere");
+    CHECK_PIXEL(&img, 0, 100, BACKGROUND, "the background");
+    image_free(&img);
+}
+
+/* Renders a shipped scene at nx x ny with 1 and with nthreads threads and
+ * checks the two images are byte for byte the same. */
+static void check_threads_agree(const char *path, int nx, int ny, int nthreads)
+{
+    Scene scene;
+    char err[512];
+    int status = scene_load(&scene, path, err, sizeof err);
+    CHECK_MSG(status == 0, "%s", err);
+    if (status != 0)
+        return;
+    scene.nx = nx;
+    scene.ny = ny;
+    Image one, many;
+    RenderStats stats;
+    if (render_with(&scene, 1, &one, &stats) == 0) {
+        CHECK_EQ_INT(stats.threads, 1);
+        if (render_with(&scene, nthreads, &many, &stats) == 0) {
+            CHECK_MSG(memcmp(one.rgb, many.rgb, (size_t)3 * nx * ny) == 0,
+                      "%s at %dx%d: 1 and %d threads give different images", path, nx, ny, nthreads);
+            CHECK(stats.threads >= 1 && (nthreads == 0 || stats.threads <= nthreads));
+            image_free(&many);
+        }
+        image_free(&one);
+    }
+    scene_free(&scene);
+}
+
+/* The image does not depend on the number of threads. */
+static void test_threads_byte_identical(void)
+{
+    check_threads_agree("labs/scenes/default.scene", 640, 480, 4);
+    check_threads_agree("labs/scenes/default.scene", 97, 61, 4);
+    check_threads_agree("labs/scenes/inside.scene", 480, 360, 4);
+    check_threads_agree("labs/scenes/wide.scene", 960, 300, 3);
+    check_threads_agree("labs/scenes/flip.scene", 320, 320, 0);
+}
+
+/* The statistics are positive and consistent. */
+static void test_stats(void)
+{
+    Sphere sphere = { { 0, 0, -5 }, 1, RED };
+    Scene scene = make_scene(200, 150, 60, BACKGROUND, &sphere, 1);
+    Image img;
+    RenderStats stats = { -1, -1, -1 };
+    if (render_with(&scene, 4, &img, &stats) < 0)
+        return;
+    CHECK(stats.seconds > 0);
+    CHECK(stats.rays_per_second > 0);
+    CHECK_NEAR(stats.rays_per_second * stats.seconds, 200.0 * 150.0, 1e-6 * 200 * 150);
+    CHECK_EQ_INT(stats.threads, 4);
+    image_free(&img);
+
+    stats.threads = -1;               /* 0 threads: one per core */
+    if (render_with(&scene, 0, &img, &stats) < 0)
+        return;
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    CHECK(stats.threads >= 1);
+    CHECK(cores < 1 || stats.threads <= cores);
+    image_free(&img);
+}
+
+/* An image of the wrong size is refused with a message. */
+static void test_wrong_image_size(void)
+{
+    Sphere sphere = { { 0, 0, -5 }, 1, RED };
+    Scene scene = make_scene(20, 10, 60, BACKGROUND, &sphere, 1);
+    Image img;
+    char err[256] = "";
+    CHECK_EQ_INT(image_alloc(&img, 10, 20, err, sizeof err), 0);
+    RenderOptions opt = { 1, false };
+    RenderStats stats;
+    CHECK_EQ_INT(render_scene(&scene, &img, &opt, &stats, err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, "10x20");
+    CHECK_STR_CONTAINS(err, "20x10");
+    image_free(&img);
+}
+
+static const CheckTest tests[] = {
+    CHECK_TEST(test_sphere_straight_ahead),
+    CHECK_TEST(test_asymmetric_quadrant),
+    CHECK_TEST(test_sphere_behind_eye),
+    CHECK_TEST(test_eye_inside_sphere),
+    CHECK_TEST(test_tiny_images),
+    CHECK_TEST(test_threads_byte_identical),
+    CHECK_TEST(test_stats),
+    CHECK_TEST(test_wrong_image_size),
+};
+
+int main(int argc, char **argv)
+{
+    return check_main(argc, argv, tests, CHECK_COUNT(tests));
+}

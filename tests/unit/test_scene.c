@@ -1,0 +1,421 @@
+/* The scene reader of labs/kit/scene.c: good scenes give the right values,
+ * every kind of bad scene gives -1 and a message saying where and what. */
+#include "check.h"            /* first: it sets the POSIX feature level */
+#include <dirent.h>
+#include <errno.h>
+#include "../../labs/kit/scene.h"
+#include "../../labs/kit/image.h"
+
+/* A bad scene, the "name:line:" its message must start with and a word it
+ * must contain. */
+typedef struct {
+    const char *text;
+    const char *where;
+    const char *word;
+} BadScene;
+
+#define GOOD_HEAD "image 64 48\nfov 60\n"
+
+static const BadScene bad_scenes[] = {
+    /* malformed lines */
+    { GOOD_HEAD "sphere 0 0 -5 1 1 0\n", "t.scene:3: ", "sphere needs 7 numbers: cx cy cz R r g b, got 6" },
+    { GOOD_HEAD "sphere 0 0 -5 1 1 0 0 1\n", "t.scene:3: ", "got 8" },
+    { GOOD_HEAD "sphere\n", "t.scene:3: ", "got 0" },
+    { "image 64\nfov 60\n", "t.scene:1: ", "image needs 2 numbers: nx ny, got 1" },
+    { "image 64 48\nfov\n", "t.scene:2: ", "fov needs 1 number: degrees, got 0" },
+    { "image 64 48\nfov 60 70\n", "t.scene:2: ", "got 2" },
+    { GOOD_HEAD "distance\n", "t.scene:3: ", "distance needs 1 number" },
+    { GOOD_HEAD "background 0 0\n", "t.scene:3: ", "background needs 3 numbers: r g b, got 2" },
+    /* unknown keywords */
+    { GOOD_HEAD "spere 0 0 -5 1 1 0 0\n", "t.scene:3: ", "unknown keyword 'spere'" },
+    { GOOD_HEAD "Sphere 0 0 -5 1 1 0 0\n", "t.scene:3: ", "unknown keyword" },
+    { GOOD_HEAD "0 0 -5 1 1 0 0\n", "t.scene:3: ", "unknown keyword '0'" },
+    /* not numbers, trailing garbage */
+    { GOOD_HEAD "sphere 0 0 -5 1 1 0 x\n", "t.scene:3: ", "'x' is not a number" },
+    { GOOD_HEAD "sphere 0 0 -5 1.5x 1 0 0\n", "t.scene:3: ", "'1.5x' is not a number" },
+    { GOOD_HEAD "sphere 0 0 -5 1 1,0 0 0\n", "t.scene:3: ", "'1,0' is not a number" },
+    { "image 64 48\nfov 60deg\n", "t.scene:2: ", "'60deg' is not a number" },
+    { "image 64 48\nfov 6O\n", "t.scene:2: ", "not a number" },
+    /* NaN, infinity, overflow */
+    { GOOD_HEAD "sphere nan 0 -5 1 1 0 0\n", "t.scene:3: ", "'nan' is not a number" },
+    { GOOD_HEAD "sphere 0 NAN(123) -5 1 1 0 0\n", "t.scene:3: ", "NaN" },
+    { GOOD_HEAD "sphere 0 0 -inf 1 1 0 0\n", "t.scene:3: ", "'-inf' is infinite" },
+    { GOOD_HEAD "sphere 0 0 -5 infinity 1 0 0\n", "t.scene:3: ", "infinite" },
+    { GOOD_HEAD "sphere 0 0 -1e999 1 1 0 0\n", "t.scene:3: ", "'-1e999' is out of range" },
+    { "image 64 48\nfov 1e999\n", "t.scene:2: ", "out of range" },
+    { GOOD_HEAD "distance inf\n", "t.scene:3: ", "infinite" },
+    /* field of view outside (0, 180) */
+    { "image 64 48\nfov 0\n", "t.scene:2: ", "fov must be between 0 and 180" },
+    { "image 64 48\nfov 180\n", "t.scene:2: ", "got 180" },
+    { "image 64 48\nfov -30\n", "t.scene:2: ", "fov must be" },
+    { "image 64 48\nfov 360\n", "t.scene:2: ", "fov must be" },
+    /* distance <= 0 */
+    { GOOD_HEAD "distance 0\n", "t.scene:3: ", "distance d must be greater than 0, got 0" },
+    { GOOD_HEAD "distance -1\n", "t.scene:3: ", "distance d must be greater than 0" },
+    /* radius <= 0 */
+    { GOOD_HEAD "sphere 0 0 -5 0 1 0 0\n", "t.scene:3: ", "radius R must be greater than 0, got 0" },
+    { GOOD_HEAD "sphere 0 0 -5 -1 1 0 0\n", "t.scene:3: ", "radius" },
+    { GOOD_HEAD "sphere 0 0 -5 -0 1 0 0\n", "t.scene:3: ", "radius" },
+    /* colours outside [0, 1] */
+    { GOOD_HEAD "sphere 0 0 -5 1 1.5 0 0\n", "t.scene:3: ", "sphere colour r must be in [0, 1], got 1.5" },
+    { GOOD_HEAD "sphere 0 0 -5 1 1 -0.1 0\n", "t.scene:3: ", "colour g" },
+    { GOOD_HEAD "sphere 0 0 -5 1 1 0 255\n", "t.scene:3: ", "colour b" },
+    { GOOD_HEAD "background 0.5 0.5 2\n", "t.scene:3: ", "background colour b must be in [0, 1]" },
+    /* image sizes */
+    { "image 0 48\nfov 60\n", "t.scene:1: ", "image width nx must be a whole number from 1 to 16384, got 0" },
+    { "image 64 0\nfov 60\n", "t.scene:1: ", "image height ny" },
+    { "image 16385 48\nfov 60\n", "t.scene:1: ", "got 16385" },
+    { "image 64 99999\nfov 60\n", "t.scene:1: ", "height" },
+    { "image 640.5 480\nfov 60\n", "t.scene:1: ", "whole number" },
+    { "image -640 480\nfov 60\n", "t.scene:1: ", "whole number" },
+    { "image 4294967360 480\nfov 60\n", "t.scene:1: ", "whole number" },
+    { "image 1e300 480\nfov 60\n", "t.scene:1: ", "whole number" },
+    /* duplicated keywords */
+    { "image 64 48\nfov 60\nimage 32 32\n", "t.scene:3: ", "image given twice (first on line 1)" },
+    { "image 64 48\nfov 60\nfov 30\n", "t.scene:3: ", "fov given twice (first on line 2)" },
+    { GOOD_HEAD "distance 1\ndistance 2\n", "t.scene:4: ", "distance given twice" },
+    { GOOD_HEAD "background 0 0 0\n\nbackground 1 1 1\n", "t.scene:5: ", "background given twice" },
+    /* missing image or fov */
+    { "fov 60\nsphere 0 0 -5 1 1 0 0\n", "t.scene: ", "no image line" },
+    { "image 64 48\nsphere 0 0 -5 1 1 0 0\n", "t.scene: ", "no fov line" },
+    { "", "t.scene: ", "no image line" },
+    { "# only a comment\n\n", "t.scene: ", "no image line" },
+    /* words that are not separated by white space */
+    { "image 64 48 fov 60\n", "t.scene:1: ", "got 4" },
+};
+
+/* Every bad scene above: -1, an empty scene, and a message that starts with
+ * the file's name and the line and contains the word. */
+static void test_bad_scenes(void)
+{
+    for (int k = 0; k < CHECK_COUNT(bad_scenes); k++) {
+        const BadScene *b = &bad_scenes[k];
+        Scene scene;
+        char err[256] = "unchanged";
+        int status = scene_parse(&scene, b->text, "t.scene", err, sizeof err);
+        CHECK_MSG(status == -1, "scene %d (\"%s\") returned %d, want -1", k, b->text, status);
+        CHECK_MSG(strncmp(err, b->where, strlen(b->where)) == 0,
+                  "scene %d: message \"%s\" does not start with \"%s\"", k, err, b->where);
+        CHECK_MSG(strstr(err, b->word) != NULL,
+                  "scene %d: message \"%s\" does not contain \"%s\"", k, err, b->word);
+        CHECK_MSG(strchr(err, '\n') == NULL, "scene %d: message \"%s\" is not one line", k, err);
+        CHECK(scene.spheres == NULL);
+        CHECK_EQ_INT(scene.nspheres, 0);
+        scene_free(&scene);           /* harmless on a failed scene */
+    }
+}
+
+/* A bad line after some spheres: the spheres read so far are freed (the
+ * sanitizer build would report a leak). */
+static void test_bad_line_after_spheres_frees_them(void)
+{
+    char *text = malloc(100 * 64 + 64);
+    CHECK(text != NULL);
+    if (!text)
+        return;
+    strcpy(text, GOOD_HEAD);
+    for (int k = 0; k < 100; k++)
+        strcat(text, "sphere 0 0 -5 1 1 0 0\n");
+    strcat(text, "sphere 0 0 -5 1 1 0\n");
+    Scene scene;
+    char err[256];
+    CHECK_EQ_INT(scene_parse(&scene, text, "many.scene", err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, "many.scene:103: sphere needs 7 numbers");
+    CHECK(scene.spheres == NULL);
+    free(text);
+}
+
+/* A scene holding every keyword gives exactly the values written. */
+static void test_good_scene_values(void)
+{
+    const char *text =
+        "# a comment line\n"
+        "   \n"
+        "image 640 480        # nx ny\n"
+        "fov\t60\n"
+        "distance 2.5\n"
+        "background 0.53 0.70 0.92\n"
+        "sphere 0 0 -6 1.5 0.9 0.2 0.2\n"
+        "sphere -2.4 -0.8 -8 1.2 0.25 0.35 0.90#no space before the comment\n"
+        "sphere 0x1p-2 1e2 -1E+3 0.5e-1 0 1 1\n";
+    Scene scene;
+    char err[256] = "";
+    CHECK_EQ_INT(scene_parse(&scene, text, "good.scene", err, sizeof err), 0);
+    CHECK_MSG(err[0] == '\0', "message \"%s\" on success", err);
+    CHECK_EQ_INT(scene.nx, 640);
+    CHECK_EQ_INT(scene.ny, 480);
+    CHECK_EQ_DOUBLE(scene.fov_degrees, 60);
+    CHECK_EQ_DOUBLE(scene.d, 2.5);
+    CHECK_EQ_DOUBLE(scene.eye.x, 0);
+    CHECK_EQ_DOUBLE(scene.eye.y, 0);
+    CHECK_EQ_DOUBLE(scene.eye.z, 0);
+    CHECK_EQ_DOUBLE(scene.background.x, 0.53);
+    CHECK_EQ_DOUBLE(scene.background.y, 0.70);
+    CHECK_EQ_DOUBLE(scene.background.z, 0.92);
+    CHECK_EQ_INT(scene.nspheres, 3);
+    if (scene.nspheres == 3) {
+        const Sphere *s = scene.spheres;
+        CHECK_EQ_DOUBLE(s[0].center.z, -6);
+        CHECK_EQ_DOUBLE(s[0].radius, 1.5);
+        CHECK_EQ_DOUBLE(s[0].color.x, 0.9);
+        CHECK_EQ_DOUBLE(s[1].center.x, -2.4);
+        CHECK_EQ_DOUBLE(s[1].center.y, -0.8);
+        CHECK_EQ_DOUBLE(s[1].radius, 1.2);
+        CHECK_EQ_DOUBLE(s[1].color.z, 0.90);
+        CHECK_EQ_DOUBLE(s[2].center.x, 0.25);
+        CHECK_EQ_DOUBLE(s[2].center.y, 100);
+        CHECK_EQ_DOUBLE(s[2].center.z, -1000);
+        CHECK_EQ_DOUBLE(s[2].radius, 0.05);
+        CHECK_EQ_DOUBLE(s[2].color.x, 0);
+        CHECK_EQ_DOUBLE(s[2].color.y, 1);
+    }
+    scene_free(&scene);
+    CHECK(scene.spheres == NULL);
+    CHECK_EQ_INT(scene.nspheres, 0);
+    scene_free(&scene);               /* twice is harmless */
+}
+
+/* Only image and fov are required: distance 1, a black background and no
+ * spheres by default; CRLF line ends and a last line without a newline. */
+static void test_defaults_crlf_and_edges(void)
+{
+    Scene scene;
+    char err[256];
+    CHECK_EQ_INT(scene_parse(&scene, "fov 179.5\r\nimage 1 16384\r\n", "min.scene", err, sizeof err), 0);
+    CHECK_EQ_INT(scene.nx, 1);
+    CHECK_EQ_INT(scene.ny, IMAGE_MAX_SIDE);
+    CHECK_EQ_DOUBLE(scene.fov_degrees, 179.5);
+    CHECK_EQ_DOUBLE(scene.d, 1);
+    CHECK_EQ_DOUBLE(scene.background.x, 0);
+    CHECK_EQ_DOUBLE(scene.background.y, 0);
+    CHECK_EQ_DOUBLE(scene.background.z, 0);
+    CHECK_EQ_INT(scene.nspheres, 0);
+    CHECK(scene.spheres == NULL);
+    scene_free(&scene);
+
+    /* colours at both ends of [0, 1], a tiny field of view, a whole number
+     * written with a fraction */
+    CHECK_EQ_INT(scene_parse(&scene, "image 16384.0 1\nfov 1e-5\nbackground 0 1 0\n"
+                             "sphere 0 0 -1 1e-300 1 0 1", "edge.scene", err, sizeof err), 0);
+    CHECK_EQ_INT(scene.nx, 16384);
+    CHECK_EQ_DOUBLE(scene.fov_degrees, 1e-5);
+    CHECK_EQ_INT(scene.nspheres, 1);
+    scene_free(&scene);
+}
+
+/* A line of 4096 characters is fine; one of 4097 is refused with its number. */
+static void test_long_lines(void)
+{
+    size_t size = 3 * 5000;
+    char *text = malloc(size);
+    CHECK(text != NULL);
+    if (!text)
+        return;
+    strcpy(text, GOOD_HEAD);
+    size_t len = strlen(text);
+    memset(text + len, ' ', 4096 - 1);       /* blank, then a comment mark */
+    text[len + 4095] = '#';
+    strcpy(text + len + 4096, "\n");
+    Scene scene;
+    char err[256];
+    CHECK_EQ_INT(scene_parse(&scene, text, "long.scene", err, sizeof err), 0);
+    scene_free(&scene);
+
+    memset(text + len, ' ', 4097);
+    strcpy(text + len + 4097, "\nsphere 0 0 -5 1 1 0 0\n");
+    CHECK_EQ_INT(scene_parse(&scene, text, "long.scene", err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, "long.scene:3: line is longer than 4096 characters");
+
+    /* a very long last line without a newline */
+    memset(text + len, '7', size - len - 1);
+    text[size - 1] = '\0';
+    CHECK_EQ_INT(scene_parse(&scene, text, "long.scene", err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, "long.scene:3: line is longer");
+    free(text);
+}
+
+/* Many words on a line are counted, not overflowed. */
+static void test_many_words(void)
+{
+    Scene scene;
+    char err[256];
+    CHECK_EQ_INT(scene_parse(&scene, GOOD_HEAD "sphere 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20\n",
+                             "words.scene", err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, "words.scene:3: sphere needs 7 numbers: cx cy cz R r g b, got 20");
+    CHECK_EQ_INT(scene_parse(&scene, "x 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20\n",
+                             "words.scene", err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, "words.scene:1: unknown keyword 'x'");
+}
+
+/* SCENE_MAX_SPHERES spheres load; one more is refused on its line. */
+static void test_sphere_limit(void)
+{
+    const char *line = "sphere 0 0 -5 1 1 0 0\n";
+    size_t n = SCENE_MAX_SPHERES + 1, len = strlen(line);
+    char *text = malloc(strlen(GOOD_HEAD) + n * len + 1);
+    CHECK(text != NULL);
+    if (!text)
+        return;
+    char *p = text;
+    p += sprintf(p, "%s", GOOD_HEAD);
+    for (size_t k = 0; k < n - 1; k++, p += len)
+        memcpy(p, line, len);
+    *p = '\0';
+    Scene scene;
+    char err[256];
+    CHECK_EQ_INT(scene_parse(&scene, text, "max.scene", err, sizeof err), 0);
+    CHECK_EQ_INT(scene.nspheres, SCENE_MAX_SPHERES);
+    scene_free(&scene);
+    memcpy(p, line, len + 1);
+    CHECK_EQ_INT(scene_parse(&scene, text, "max.scene", err, sizeof err), -1);
+    char where[64];
+    snprintf(where, sizeof where, "max.scene:%d: too many spheres", SCENE_MAX_SPHERES + 3);
+    CHECK_STR_CONTAINS(err, where);
+    CHECK(scene.spheres == NULL);
+    free(text);
+}
+
+/* A short err buffer is truncated safely; a NULL one is allowed. */
+static void test_small_error_buffers(void)
+{
+    Scene scene;
+    char err[8];
+    memset(err, 'x', sizeof err);
+    CHECK_EQ_INT(scene_parse(&scene, "fov 60\n", "a-long-name.scene", err, sizeof err), -1);
+    CHECK(memchr(err, '\0', sizeof err) != NULL);
+    CHECK_EQ_INT(scene_parse(&scene, "fov 60\n", "t.scene", NULL, 0), -1);
+    CHECK_EQ_INT(scene_parse(&scene, NULL, "t.scene", err, sizeof err), -1);
+}
+
+/* scene_load: the message names the file and says why it cannot be read. */
+static void test_load_errors(void)
+{
+    Scene scene;
+    char err[512];
+    CHECK_EQ_INT(scene_load(&scene, "no/such/file.scene", err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, "no/such/file.scene: ");
+    CHECK_STR_CONTAINS(err, strerror(ENOENT));
+    CHECK(scene.spheres == NULL);
+
+    CHECK_EQ_INT(scene_load(&scene, "labs/scenes", err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, "labs/scenes: ");
+    CHECK_STR_CONTAINS(err, strerror(EISDIR));
+}
+
+/* Writes text (len bytes) to a fresh temporary file whose name goes into
+ * path.  Returns 0, or -1 if it cannot. */
+static int write_temp_scene(char *path, size_t pathlen, const char *text, size_t len)
+{
+    snprintf(path, pathlen, "/tmp/test_scene_XXXXXX");
+    int fd = mkstemp(path);
+    if (fd < 0)
+        return -1;
+    ssize_t wrote = write(fd, text, len);
+    close(fd);
+    return wrote == (ssize_t)len ? 0 : -1;
+}
+
+/* scene_load of a file gives what scene_parse of its text gives; a NUL byte
+ * is refused with its line; a bad line is reported with the file's path. */
+static void test_load_files(void)
+{
+    char path[64], err[512], want[128];
+    Scene scene;
+    const char good[] = "image 8 4\nfov 45\nsphere 1 2 -3 0.5 0 0.5 1\n";
+    CHECK(write_temp_scene(path, sizeof path, good, sizeof good - 1) == 0);
+    CHECK_EQ_INT(scene_load(&scene, path, err, sizeof err), 0);
+    CHECK_EQ_INT(scene.nx, 8);
+    CHECK_EQ_INT(scene.nspheres, 1);
+    if (scene.nspheres == 1)
+        CHECK_EQ_DOUBLE(scene.spheres[0].color.y, 0.5);
+    scene_free(&scene);
+    unlink(path);
+
+    const char nul[] = "image 8 4\nfov 45\nsph\0ere 1 2 -3 0.5 0 0.5 1\n";
+    CHECK(write_temp_scene(path, sizeof path, nul, sizeof nul - 1) == 0);
+    CHECK_EQ_INT(scene_load(&scene, path, err, sizeof err), -1);
+    snprintf(want, sizeof want, "%s:3: ", path);
+    CHECK_STR_CONTAINS(err, want);
+    CHECK_STR_CONTAINS(err, "NUL");
+    unlink(path);
+
+    const char bad[] = "image 8 4\n\n\nfov 45\nsphere 1 2 -3 0.5 0 0.5\n";
+    CHECK(write_temp_scene(path, sizeof path, bad, sizeof bad - 1) == 0);
+    CHECK_EQ_INT(scene_load(&scene, path, err, sizeof err), -1);
+    snprintf(want, sizeof want, "%s:5: sphere needs 7 numbers", path);
+    CHECK_STR_CONTAINS(err, want);
+    unlink(path);
+}
+
+/* Every scene shipped in labs/scenes loads, with a size and a field of view
+ * in range. */
+static void test_shipped_scenes_load(void)
+{
+    DIR *dir = opendir("labs/scenes");
+    CHECK_MSG(dir != NULL, "cannot open labs/scenes (run from the kit's top directory)");
+    if (!dir)
+        return;
+    int count = 0;
+    struct dirent *entry;
+    while ((entry = readdir(dir)) != NULL) {
+        size_t len = strlen(entry->d_name);
+        if (len < 7 || strcmp(entry->d_name + len - 6, ".scene") != 0)
+            continue;
+        char path[512], err[512];
+        snprintf(path, sizeof path, "labs/scenes/%s", entry->d_name);
+        Scene scene;
+        int status = scene_load(&scene, path, err, sizeof err);
+        CHECK_MSG(status == 0, "%s: %s", path, err);
+        if (status == 0) {
+            CHECK(scene.nx >= 1 && scene.nx <= IMAGE_MAX_SIDE);
+            CHECK(scene.ny >= 1 && scene.ny <= IMAGE_MAX_SIDE);
+            CHECK(scene.fov_degrees > 0 && scene.fov_degrees < 180);
+            CHECK(scene.d > 0);
+            CHECK(scene.nspheres >= 1);
+            scene_free(&scene);
+        }
+        count++;
+    }
+    closedir(dir);
+    CHECK_MSG(count >= 6, "found %d scenes in labs/scenes, want at least 6", count);
+}
+
+/* The default scene holds what its file says. */
+static void test_default_scene_values(void)
+{
+    Scene scene;
+    char err[512];
+    CHECK_EQ_INT(scene_load(&scene, "labs/scenes/default.scene", err, sizeof err), 0);
+    CHECK_EQ_INT(scene.nx, 640);
+    CHECK_EQ_INT(scene.ny, 480);
+    CHECK_EQ_DOUBLE(scene.fov_degrees, 60);
+    CHECK_EQ_DOUBLE(scene.d, 1);
+    CHECK_EQ_DOUBLE(scene.background.y, 0.70);
+    CHECK_EQ_INT(scene.nspheres, 5);
+    if (scene.nspheres == 5) {
+        CHECK_EQ_DOUBLE(scene.spheres[3].center.y, -101);
+        CHECK_EQ_DOUBLE(scene.spheres[3].radius, 100);
+        CHECK_EQ_DOUBLE(scene.spheres[4].color.z, 0.15);
+    }
+    scene_free(&scene);
+}
+
+static const CheckTest tests[] = {
+    CHECK_TEST(test_bad_scenes),
+    CHECK_TEST(test_bad_line_after_spheres_frees_them),
+    CHECK_TEST(test_good_scene_values),
+    CHECK_TEST(test_defaults_crlf_and_edges),
+    CHECK_TEST(test_long_lines),
+    CHECK_TEST(test_many_words),
+    CHECK_TEST(test_sphere_limit),
+    CHECK_TEST(test_small_error_buffers),
+    CHECK_TEST(test_load_errors),
+    CHECK_TEST(test_load_files),
+    CHECK_TEST(test_shipped_scenes_load),
+    CHECK_TEST(test_default_scene_values),
+};
+
+int main(int argc, char **argv)
+{
+    return check_main(argc, argv, tests, CHECK_COUNT(tests));
+}
