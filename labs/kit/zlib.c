@@ -482,7 +482,7 @@ static int inf_decode(Inflater *s, const InfHuffman *h)
 {
     int code = 0, first = 0, index = 0;
     for (unsigned len = 1; len <= INF_MAX_BITS; len++) {
-        unsigned bit;
+        unsigned bit = 0;
         if (inf_bits(s, 1, &bit) != 0)
             return -1;
         code |= (int)bit;
@@ -511,7 +511,7 @@ static int inf_room(Inflater *s, size_t count)
 /* Copies a stored block's bytes to the output.  Returns 0 or -1. */
 static int inf_stored(Inflater *s)
 {
-    unsigned len, nlen;
+    unsigned len = 0, nlen = 0;
     s->bits = 0;            /* skip to the byte boundary */
     s->nbits = 0;
     if (inf_bits(s, 16, &len) != 0 || inf_bits(s, 16, &nlen) != 0)
@@ -549,7 +549,7 @@ static int inf_codes(Inflater *s, const InfHuffman *lit, const InfHuffman *dist)
         sym -= 257;
         if (sym >= 29)
             return inf_fail(s, "invalid length code %d in deflate data", sym + 257);
-        unsigned extra, length, distance;
+        unsigned extra = 0, length, distance;
         if (inf_bits(s, len_extra[sym], &extra) != 0)
             return -1;
         length = len_base[sym] + extra;
@@ -596,7 +596,7 @@ static int inf_read_lengths(Inflater *s, uint8_t *lengths, unsigned nlit, unsign
 {
     uint8_t clen[19] = {0};
     InfHuffman code;
-    unsigned v;
+    unsigned v = 0;
     for (unsigned k = 0; k < nclen; k++) {
         if (inf_bits(s, 3, &v) != 0)
             return -1;
@@ -644,7 +644,7 @@ static int inf_read_lengths(Inflater *s, uint8_t *lengths, unsigned nlit, unsign
 /* Decodes a block with codes described in its header.  Returns 0 or -1. */
 static int inf_dynamic(Inflater *s)
 {
-    unsigned hlit, hdist, hclen;
+    unsigned hlit = 0, hdist = 0, hclen = 0;
     if (inf_bits(s, 5, &hlit) != 0 || inf_bits(s, 5, &hdist) != 0 ||
         inf_bits(s, 4, &hclen) != 0)
         return -1;
@@ -671,7 +671,7 @@ int kit_inflate(const void *in, size_t n, size_t max_out, KitBuf *out,
 {
     Inflater s = {in, n, 0, 0, 0, out, out->len, 0, err, errlen};
     s.limit = max_out > SIZE_MAX - out->len ? SIZE_MAX : out->len + max_out;
-    unsigned final = 0, type;
+    unsigned final = 0, type = 0;
     int rc = 0;
     while (rc == 0 && !final) {
         if (inf_bits(&s, 1, &final) != 0 || inf_bits(&s, 2, &type) != 0) {

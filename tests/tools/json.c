@@ -1,0 +1,387 @@
+/*
+ * json.c - the streaming JSON writer.  See json.h.
+ */
+#define _POSIX_C_SOURCE 200809L
+
+#include "json.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <unistd.h>
+
+/* Makes w fail with reason why (the first failure is kept). */
+static void json_fail(JsonWriter *w, const char *why)
+{
+    if (!w->error)
+        w->error = why;
+}
+
+/* Appends n bytes, failing the writer if memory runs out. */
+static void json_put(JsonWriter *w, const void *s, size_t n)
+{
+    if (!w->error && kit_buf_append(&w->out, s, n) != 0)
+        json_fail(w, "out of memory");
+}
+
+/* Appends a NUL-terminated string. */
+static void json_puts(JsonWriter *w, const char *s)
+{
+    json_put(w, s, strlen(s));
+}
+
+/* A line break and the indentation of the current depth (nothing when
+ * writing on one line). */
+static void json_newline(JsonWriter *w)
+{
+    if (w->indent <= 0)
+        return;
+    json_put(w, "\n", 1);
+    for (int k = 0; k < w->depth * w->indent; k++)
+        json_put(w, " ", 1);
+}
+
+/* Starts an empty document. */
+void json_init(JsonWriter *w, int indent)
+{
+    memset(w, 0, sizeof *w);
+    kit_buf_init(&w->out);
+    w->indent = indent < 0 ? 0 : indent > 8 ? 8 : indent;
+}
+
+/* Frees the text; w may be used again after json_init. */
+void json_free(JsonWriter *w)
+{
+    kit_buf_free(&w->out);
+}
+
+/* Checks that a value may come now and writes the comma and line break
+ * before it.  Returns 0, or -1 (the writer then fails) if it may not. */
+static int json_before_value(JsonWriter *w)
+{
+    if (w->error)
+        return -1;
+    if (w->depth == 0) {
+        if (w->done) {
+            json_fail(w, "a second top-level value");
+            return -1;
+        }
+        return 0;
+    }
+    int level = w->depth - 1;
+    if (w->is_object[level]) {
+        if (!w->key_pending) {
+            json_fail(w, "a value in an object without a key");
+            return -1;
+        }
+        w->key_pending = false;
+        return 0;
+    }
+    if (w->has_items[level])
+        json_put(w, ",", 1);
+    json_newline(w);
+    return 0;
+}
+
+/* Notes that a value was completed at the current depth. */
+static void json_after_value(JsonWriter *w)
+{
+    if (w->depth == 0)
+        w->done = true;
+    else
+        w->has_items[w->depth - 1] = 1;
+}
+
+/* Opens an object (is_object) or array. */
+static void json_begin(JsonWriter *w, bool is_object)
+{
+    if (json_before_value(w) != 0)
+        return;
+    if (w->depth >= JSON_MAX_DEPTH) {
+        json_fail(w, "nested too deeply");
+        return;
+    }
+    json_put(w, is_object ? "{" : "[", 1);
+    w->is_object[w->depth] = is_object;
+    w->has_items[w->depth] = 0;
+    w->depth++;
+}
+
+/* Closes the innermost container, which must be an object (is_object) or
+ * an array as said. */
+static void json_end(JsonWriter *w, bool is_object)
+{
+    if (w->error)
+        return;
+    if (w->depth == 0 || w->is_object[w->depth - 1] != is_object || w->key_pending) {
+        json_fail(w, is_object ? "an object end that matches no object"
+                               : "an array end that matches no array");
+        return;
+    }
+    bool items = w->has_items[w->depth - 1];
+    w->depth--;
+    if (items)
+        json_newline(w);
+    json_put(w, is_object ? "}" : "]", 1);
+    json_after_value(w);
+}
+
+/* The four container calls of json.h; misuse makes the writer fail. */
+void json_begin_object(JsonWriter *w) { json_begin(w, true); }
+void json_end_object(JsonWriter *w) { json_end(w, true); }
+void json_begin_array(JsonWriter *w) { json_begin(w, false); }
+void json_end_array(JsonWriter *w) { json_end(w, false); }
+
+/* The length (2 to 4) of the valid UTF-8 sequence that starts s[0 .. n-1]
+ * with a lead byte of 0xC2 or more, or the length of its longest invalid
+ * start (the bytes one U+FFFD replaces) as a negative number. */
+static int json_utf8_sequence(const unsigned char *s, size_t n)
+{
+    unsigned char c = s[0];
+    int need;
+    unsigned char lo = 0x80, hi = 0xBF;     /* the range of the second byte */
+    if (c >= 0xC2 && c <= 0xDF) {
+        need = 2;
+    } else if (c >= 0xE0 && c <= 0xEF) {
+        need = 3;
+        if (c == 0xE0)
+            lo = 0xA0;                      /* no overlong forms */
+        if (c == 0xED)
+            hi = 0x9F;                      /* no surrogates */
+    } else if (c >= 0xF0 && c <= 0xF4) {
+        need = 4;
+        if (c == 0xF0)
+            lo = 0x90;                      /* no overlong forms */
+        if (c == 0xF4)
+            hi = 0x8F;                      /* nothing past U+10FFFF */
+    } else {
+        return -1;                          /* 0x80..0xC1, 0xF5..0xFF */
+    }
+    for (int k = 1; k < need; k++) {
+        if ((size_t)k >= n || s[k] < lo || s[k] > hi)
+            return -k;
+        lo = 0x80;
+        hi = 0xBF;
+    }
+    return need;
+}
+
+/* Writes s[0 .. n-1] as a quoted, escaped string of valid UTF-8. */
+static void json_put_string(JsonWriter *w, const unsigned char *s, size_t n)
+{
+    static const char hex[] = "0123456789abcdef";
+    json_put(w, "\"", 1);
+    size_t k = 0;
+    while (k < n && !w->error) {
+        size_t run = k;                     /* bytes that need no escaping */
+        while (run < n && s[run] >= 0x20 && s[run] < 0x80 && s[run] != '"' && s[run] != '\\')
+            run++;
+        json_put(w, s + k, run - k);
+        k = run;
+        if (k == n)
+            break;
+        unsigned char c = s[k];
+        if (c == '"' || c == '\\') {
+            char esc[2] = {'\\', (char)c};
+            json_put(w, esc, 2);
+            k++;
+        } else if (c < 0x20) {
+            char esc[6] = {'\\', 'u', '0', '0', hex[c >> 4], hex[c & 15]};
+            json_put(w, esc, 6);
+            k++;
+        } else {
+            int len = json_utf8_sequence(s + k, n - k);
+            if (len > 0) {
+                json_put(w, s + k, (size_t)len);
+                k += (size_t)len;
+            } else {
+                json_put(w, "\xEF\xBF\xBD", 3);     /* U+FFFD */
+                k += (size_t)-len;
+            }
+        }
+    }
+    json_put(w, "\"", 1);
+}
+
+/* Writes the key and the colon; the next call must write its value. */
+void json_key(JsonWriter *w, const char *key)
+{
+    if (w->error)
+        return;
+    if (w->depth == 0 || !w->is_object[w->depth - 1] || w->key_pending) {
+        json_fail(w, "a key outside an object or after another key");
+        return;
+    }
+    if (!key) {
+        json_fail(w, "a NULL key");
+        return;
+    }
+    if (w->has_items[w->depth - 1])
+        json_put(w, ",", 1);
+    json_newline(w);
+    json_put_string(w, (const unsigned char *)key, strlen(key));
+    json_puts(w, w->indent > 0 ? ": " : ":");
+    w->key_pending = true;
+}
+
+/* n bytes as a string; fails the writer if no value may come here. */
+void json_string_bytes(JsonWriter *w, const void *s, size_t n)
+{
+    if (json_before_value(w) != 0)
+        return;
+    json_put_string(w, s ? s : (const void *)"", s ? n : 0);
+    json_after_value(w);
+}
+
+/* A NUL-terminated string, or null for NULL. */
+void json_string(JsonWriter *w, const char *s)
+{
+    if (!s)
+        json_null(w);
+    else
+        json_string_bytes(w, s, strlen(s));
+}
+
+/* The shortest %.Ng (N = 1 .. 17) that reads back as x (17 digits always
+ * do); null for NaN and infinities.  Fails the writer if misplaced. */
+void json_number(JsonWriter *w, double x)
+{
+    if (!isfinite(x)) {
+        json_null(w);
+        return;
+    }
+    if (json_before_value(w) != 0)
+        return;
+    char text[40];
+    for (int digits = 1; digits <= 17; digits++) {
+        snprintf(text, sizeof text, "%.*g", digits, x);
+        if (strtod(text, NULL) == x)
+            break;
+    }
+    json_puts(w, text);
+    json_after_value(w);
+}
+
+/* An integer, exactly.  Fails the writer if misplaced. */
+void json_int(JsonWriter *w, long long x)
+{
+    if (json_before_value(w) != 0)
+        return;
+    char text[32];
+    snprintf(text, sizeof text, "%lld", x);
+    json_puts(w, text);
+    json_after_value(w);
+}
+
+/* true or false.  Fails the writer if misplaced. */
+void json_bool(JsonWriter *w, bool b)
+{
+    if (json_before_value(w) != 0)
+        return;
+    json_puts(w, b ? "true" : "false");
+    json_after_value(w);
+}
+
+/* null.  Fails the writer if misplaced. */
+void json_null(JsonWriter *w)
+{
+    if (json_before_value(w) != 0)
+        return;
+    json_puts(w, "null");
+    json_after_value(w);
+}
+
+/* Why the writer failed, or NULL. */
+const char *json_error(const JsonWriter *w)
+{
+    return w->error;
+}
+
+/* The text, NUL-terminated, once complete.  Returns NULL on failure or
+ * while the top-level value is unfinished. */
+const char *json_text(JsonWriter *w, size_t *len)
+{
+    if (w->error || !w->done)
+        return NULL;
+    if (kit_buf_reserve(&w->out, 1) != 0) {
+        json_fail(w, "out of memory");
+        return NULL;
+    }
+    w->out.data[w->out.len] = '\0';
+    if (len)
+        *len = w->out.len;
+    return (const char *)w->out.data;
+}
+
+/* Writes all n bytes to fd, retrying after interruptions and short
+ * writes.  Returns 0, or -1 with errno set. */
+static int json_write_all(int fd, const char *p, size_t n)
+{
+    while (n > 0) {
+        ssize_t got = write(fd, p, n);
+        if (got < 0) {
+            if (errno == EINTR)
+                continue;
+            return -1;
+        }
+        p += got;
+        n -= (size_t)got;
+    }
+    return 0;
+}
+
+/* The text and a newline into a temporary file beside path (created by
+ * mkstemp, then given the mode a new file would get), closed, then renamed
+ * over path.  Returns 0, or -1 with "path: reason" in err. */
+int json_write_file(JsonWriter *w, const char *path, char *err, size_t errlen)
+{
+    size_t len;
+    const char *text = json_text(w, &len);
+    if (!text) {
+        snprintf(err, errlen, "%s: cannot write JSON: %s", path,
+                 w->error ? w->error : "the document is not finished");
+        return -1;
+    }
+    const char *slash = strrchr(path, '/');
+    size_t dirlen = slash ? (size_t)(slash - path) + 1 : 0;
+    static const char pattern[] = ".json-XXXXXX";
+    char *tmp = malloc(dirlen + sizeof pattern);
+    if (!tmp) {
+        snprintf(err, errlen, "%s: out of memory", path);
+        return -1;
+    }
+    memcpy(tmp, path, dirlen);
+    memcpy(tmp + dirlen, pattern, sizeof pattern);
+    int fd = mkstemp(tmp);
+    if (fd < 0) {
+        snprintf(err, errlen, "%s: cannot create a temporary file in its directory: %s",
+                 path, strerror(errno));
+        free(tmp);
+        return -1;
+    }
+    mode_t mask = umask(022);
+    umask(mask);
+    const char *what = "cannot write";
+    int failed = fchmod(fd, 0666 & ~mask) != 0 || json_write_all(fd, text, len) != 0 ||
+                 json_write_all(fd, "\n", 1) != 0;
+    int saved = errno;
+    if (close(fd) != 0 && !failed) {
+        failed = 1;
+        saved = errno;
+    }
+    if (!failed && rename(tmp, path) != 0) {
+        failed = 1;
+        saved = errno;
+        what = "cannot rename the temporary file to it";
+    }
+    if (failed) {
+        unlink(tmp);
+        snprintf(err, errlen, "%s: %s: %s", path, what, strerror(saved));
+    }
+    free(tmp);
+    return failed ? -1 : 0;
+}

@@ -1,0 +1,763 @@
+/* The ZIP and .tar.gz archives of tests/tools/archive.h. */
+#include "check.h"            /* first: it sets the POSIX feature level */
+
+#include <dirent.h>
+#include <errno.h>
+#include <stdint.h>
+#include <sys/stat.h>
+
+#include "../../labs/kit/zlib.h"
+#include "../tools/archive.h"
+
+/* ---- helpers -------------------------------------------------------------------- */
+
+static uint32_t rng_state = 2463534242u;
+
+/* A small deterministic pseudo-random generator (xorshift32). */
+static uint32_t rng_next(void)
+{
+    uint32_t x = rng_state;
+    x ^= x << 13;
+    x ^= x >> 17;
+    x ^= x << 5;
+    return rng_state = x;
+}
+
+static uint32_t le32(const unsigned char *p)
+{
+    return p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+}
+
+static unsigned le16(const unsigned char *p)
+{
+    return p[0] | (unsigned)p[1] << 8;
+}
+
+/* A path of exactly len bytes made of 9-letter directories and a file
+ * name, with a '/' 101 bytes from the end (where a ustar header can split
+ * any path of up to 255 bytes). */
+static void long_path(char *out, size_t len)
+{
+    for (size_t k = 0; k < len; k++)
+        out[k] = k % 10 == 9 ? '/' : (char)('a' + k % 10);
+    if (len > 102) {
+        out[len - 102] = 'k';
+        out[len - 101] = '/';
+        out[len - 100] = 'k';
+    }
+    out[len - 1] = 'z';                   /* never end on a '/' */
+    out[len] = '\0';
+}
+
+typedef struct {
+    char long_name[151];
+    unsigned char *big;                  /* 300 kB, half random, half text */
+    size_t big_size;
+} Fixture;
+
+/* Fills a with the standard entries: a directory, an empty file, a 300 kB
+ * file, a 150-byte path, an executable, "123456789". */
+static void add_standard_entries(Archive *a, Fixture *f)
+{
+    char err[300] = "";
+    f->big_size = 300000;
+    f->big = malloc(f->big_size);
+    for (size_t k = 0; k < f->big_size; k++)
+        f->big[k] = k < f->big_size / 2 ? (unsigned char)(rng_next() >> 24) : (unsigned char)("abcab\n"[k % 6]);
+    long_path(f->long_name, 150);
+    CHECK_EQ_INT(archive_add_dir(a, "docs", 0755, err, sizeof err), 0);
+    CHECK_EQ_INT(archive_add_file(a, "docs/empty.txt", "", 0, 0644, err, sizeof err), 0);
+    CHECK_EQ_INT(archive_add_file(a, "data/big.bin", f->big, f->big_size, 0600, err, sizeof err), 0);
+    CHECK_EQ_INT(archive_add_file(a, f->long_name, "deep", 4, 0644, err, sizeof err), 0);
+    CHECK_EQ_INT(archive_add_file(a, "run_autograder", "#!/bin/sh\nexit 0\n", 17, 0755, err, sizeof err), 0);
+    CHECK_EQ_INT(archive_add_file(a, "digits.txt", "123456789", 9, 0444, err, sizeof err), 0);
+    CHECK_MSG(err[0] == '\0', "%s", err);
+}
+
+/* Checks that b holds exactly the standard entries, in order. */
+static void check_standard_entries(const Archive *b, const Fixture *f)
+{
+    CHECK_EQ_INT(b->count, 6);
+    if (b->count != 6)
+        return;
+    const ArchiveEntry *e = b->entries;
+    CHECK(strcmp(e[0].path, "docs") == 0 && e[0].is_dir && e[0].mode == 0755);
+    CHECK(strcmp(e[1].path, "docs/empty.txt") == 0 && !e[1].is_dir && e[1].size == 0 && e[1].mode == 0644);
+    CHECK(strcmp(e[2].path, "data/big.bin") == 0 && e[2].size == f->big_size && e[2].mode == 0600);
+    CHECK(e[2].size == f->big_size && memcmp(e[2].data, f->big, f->big_size) == 0);
+    CHECK(strcmp(e[3].path, f->long_name) == 0 && e[3].size == 4 && memcmp(e[3].data, "deep", 4) == 0);
+    CHECK(strcmp(e[4].path, "run_autograder") == 0 && e[4].mode == 0755 && e[4].size == 17);
+    CHECK(strcmp(e[5].path, "digits.txt") == 0 && e[5].mode == 0444 &&
+          e[5].size == 9 && memcmp(e[5].data, "123456789", 9) == 0);
+}
+
+/* Encodes a, decodes the bytes into b (which the caller frees). */
+static void encode_decode(const Archive *a, KitBuf *bytes, Archive *b)
+{
+    char err[300] = "";
+    CHECK_MSG(archive_encode(a, bytes, err, sizeof err) == 0, "encode: %s", err);
+    int rc = archive_decode(b, bytes->data, bytes->len, err, sizeof err);
+    CHECK_MSG(rc == 0, "decode: %s", err);
+    CHECK_EQ_INT(b->format, a->format);
+}
+
+/* A fresh empty directory under $TMPDIR or /tmp, in path[]. */
+static void make_temp_dir(char *path, size_t size)
+{
+    const char *base = getenv("TMPDIR");
+    snprintf(path, size, "%s/kit-test-archive-XXXXXX", base && *base ? base : "/tmp");
+    CHECK(mkdtemp(path) != NULL);
+}
+
+/* Removes path and everything below it (links are removed, not followed). */
+static void remove_tree(const char *path)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0)
+        return;
+    if (S_ISDIR(st.st_mode)) {
+        chmod(path, 0700);
+        DIR *d = opendir(path);
+        struct dirent *e;
+        char sub[2048];
+        while (d && (e = readdir(d)) != NULL) {
+            if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
+                continue;
+            snprintf(sub, sizeof sub, "%s/%s", path, e->d_name);
+            remove_tree(sub);
+        }
+        if (d)
+            closedir(d);
+        rmdir(path);
+    } else {
+        unlink(path);
+    }
+}
+
+/* Writes a file of n bytes with the given mode (exactly). */
+static void write_file(const char *path, const void *data, size_t n, mode_t mode)
+{
+    FILE *f = fopen(path, "wb");
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    CHECK_EQ_INT(fwrite(data, 1, n, f), n);
+    fclose(f);
+    CHECK_EQ_INT(chmod(path, mode), 0);
+}
+
+/* Whether the file at path holds exactly data[0 .. n-1] and has mode. */
+static int file_is(const char *path, const void *data, size_t n, mode_t mode)
+{
+    struct stat st;
+    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode) || (size_t)st.st_size != n ||
+        (st.st_mode & 0777) != mode)
+        return 0;
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return 0;
+    unsigned char *buf = malloc(n + 1);
+    int same = fread(buf, 1, n + 1, f) == n && (n == 0 || memcmp(buf, data, n) == 0);
+    free(buf);
+    fclose(f);
+    return same;
+}
+
+/* ---- round trips ------------------------------------------------------------------------ */
+
+static void test_zip_round_trip(void)
+{
+    Archive a, b;
+    Fixture f;
+    KitBuf bytes = {0};
+    archive_init(&a, ARCHIVE_ZIP);
+    add_standard_entries(&a, &f);
+    encode_decode(&a, &bytes, &b);
+    check_standard_entries(&b, &f);
+    /* the same entries give the same bytes */
+    KitBuf again = {0};
+    char err[300];
+    archive_encode(&a, &again, err, sizeof err);
+    CHECK(again.len == bytes.len && memcmp(again.data, bytes.data, bytes.len) == 0);
+    kit_buf_free(&again);
+    archive_free(&b);
+    archive_free(&a);
+    kit_buf_free(&bytes);
+    free(f.big);
+}
+
+static void test_targz_round_trip(void)
+{
+    Archive a, b;
+    Fixture f;
+    KitBuf bytes = {0};
+    archive_init(&a, ARCHIVE_TARGZ);
+    add_standard_entries(&a, &f);
+    encode_decode(&a, &bytes, &b);
+    check_standard_entries(&b, &f);
+    archive_free(&b);
+    archive_free(&a);
+    kit_buf_free(&bytes);
+    free(f.big);
+}
+
+static void test_empty_archives(void)
+{
+    for (int fmt = 0; fmt < 2; fmt++) {
+        Archive a, b;
+        KitBuf bytes = {0};
+        archive_init(&a, fmt ? ARCHIVE_TARGZ : ARCHIVE_ZIP);
+        encode_decode(&a, &bytes, &b);
+        CHECK_EQ_INT(b.count, 0);
+        if (!fmt)
+            CHECK_EQ_INT(bytes.len, 22);         /* just the end record */
+        archive_free(&b);
+        kit_buf_free(&bytes);
+    }
+}
+
+/* ---- the bytes of a ZIP ------------------------------------------------------------- */
+
+static void test_zip_layout(void)
+{
+    Archive a;
+    Fixture f;
+    KitBuf z = {0};
+    char err[300];
+    archive_init(&a, ARCHIVE_ZIP);
+    add_standard_entries(&a, &f);
+    CHECK_EQ_INT(archive_encode(&a, &z, err, sizeof err), 0);
+    const unsigned char *p = z.data;
+    /* end of central directory: last 22 bytes */
+    const unsigned char *end = p + z.len - 22;
+    CHECK_EQ_INT(le32(end), 0x06054b50u);
+    CHECK_EQ_INT(le16(end + 10), 6);
+    uint32_t cd_size = le32(end + 12), cd_off = le32(end + 16);
+    CHECK_EQ_INT(cd_off + cd_size, z.len - 22);
+    /* walk the central directory */
+    size_t at = cd_off;
+    int found_digits = 0, found_exec = 0;
+    for (int k = 0; k < 6 && at + 46 <= z.len; k++) {
+        const unsigned char *c = p + at;
+        CHECK_EQ_INT(le32(c), 0x02014b50u);
+        CHECK_EQ_INT(le16(c + 4) >> 8, 3);              /* made by Unix */
+        CHECK_EQ_INT(le16(c + 12), 0);                   /* 00:00:00 */
+        CHECK_EQ_INT(le16(c + 14), (40 << 9) | (1 << 5) | 1);   /* 2020-01-01 */
+        unsigned nlen = le16(c + 28), method = le16(c + 10);
+        uint32_t local = le32(c + 42);
+        /* the local header repeats the CRC and sizes */
+        CHECK_EQ_INT(le32(p + local), 0x04034b50u);
+        CHECK_EQ_INT(le32(p + local + 14), le32(c + 16));
+        CHECK_EQ_INT(le32(p + local + 18), le32(c + 20));
+        CHECK_EQ_INT(le32(p + local + 22), le32(c + 24));
+        CHECK(memcmp(p + local + 30, c + 46, nlen) == 0);
+        if (nlen == 10 && memcmp(c + 46, "digits.txt", 10) == 0) {
+            found_digits = 1;
+            CHECK_EQ_INT(le32(c + 16), 0xCBF43926u);     /* CRC-32 of "123456789" */
+            CHECK_EQ_INT(le32(c + 24), 9);
+            CHECK_EQ_INT(le32(c + 38) >> 16, 0100444);
+        }
+        if (nlen == 14 && memcmp(c + 46, "run_autograder", 14) == 0) {
+            found_exec = 1;
+            CHECK_EQ_INT(le32(c + 38) >> 16, 0100755);   /* a regular file, rwxr-xr-x */
+        }
+        if (nlen == 5 && memcmp(c + 46, "docs/", 5) == 0)
+            CHECK_EQ_INT(le32(c + 38), (0040755u << 16) | 0x10u);
+        if (nlen == 12 && memcmp(c + 46, "data/big.bin", 12) == 0) {
+            CHECK_EQ_INT(method, 8);                     /* half of it compresses */
+            CHECK(le32(c + 20) < 200000);
+        }
+        if (nlen == 14 && memcmp(c + 46, "docs/empty.txt", 14) == 0)
+            CHECK(method == 0 && le32(c + 20) == 0 && le32(c + 16) == 0);
+        at += 46 + nlen + le16(c + 30) + le16(c + 32);
+    }
+    CHECK_EQ_INT(at, cd_off + cd_size);
+    CHECK(found_digits && found_exec);
+    /* random data is stored, not deflated */
+    Archive r;
+    archive_init(&r, ARCHIVE_ZIP);
+    unsigned char noise[5000];
+    for (size_t k = 0; k < sizeof noise; k++)
+        noise[k] = (unsigned char)(rng_next() >> 24);
+    archive_add_file(&r, "noise", noise, sizeof noise, 0644, err, sizeof err);
+    KitBuf rz = {0};
+    archive_encode(&r, &rz, err, sizeof err);
+    CHECK_EQ_INT(le16(rz.data + 8), 0);
+    CHECK_EQ_INT(rz.len, 30 + 5 + 5000 + 46 + 5 + 22);
+    kit_buf_free(&rz);
+    archive_free(&r);
+    archive_free(&a);
+    kit_buf_free(&z);
+    free(f.big);
+}
+
+/* ---- the bytes of a .tar.gz ----------------------------------------------------------- */
+
+/* The tar inside a .tar.gz, checked with the kit's inflate. */
+static void gunzip_by_hand(const KitBuf *gz, KitBuf *tar)
+{
+    char err[200] = "";
+    size_t used = 0;
+    kit_buf_init(tar);
+    CHECK(gz->len > 18 && gz->data[0] == 0x1F && gz->data[1] == 0x8B && gz->data[2] == 8);
+    CHECK_EQ_INT(gz->data[3], 0);                          /* no name, no comment */
+    CHECK_EQ_INT(le32(gz->data + 4), 0);                   /* time 0 */
+    int rc = kit_inflate(gz->data + 10, gz->len - 10, 1 << 28, tar, &used, err, sizeof err);
+    CHECK_MSG(rc == 0, "%s", err);
+    CHECK_EQ_INT(10 + used + 8, gz->len);
+    CHECK_EQ_INT(le32(gz->data + gz->len - 8), kit_crc32(0, tar->data, tar->len));
+    CHECK_EQ_INT(le32(gz->data + gz->len - 4), tar->len);
+}
+
+/* The unsigned sum of a header with its checksum field as spaces. */
+static unsigned long header_sum(const unsigned char *h)
+{
+    unsigned long sum = 0;
+    for (int k = 0; k < 512; k++)
+        sum += k >= 148 && k < 156 ? ' ' : h[k];
+    return sum;
+}
+
+static void test_tar_layout(void)
+{
+    Archive a;
+    Fixture f;
+    KitBuf gz = {0}, tar;
+    char err[300];
+    archive_init(&a, ARCHIVE_TARGZ);
+    add_standard_entries(&a, &f);
+    CHECK_EQ_INT(archive_encode(&a, &gz, err, sizeof err), 0);
+    gunzip_by_hand(&gz, &tar);
+    CHECK_EQ_INT(tar.len % 10240, 0);
+    size_t at = 0;
+    int headers = 0;
+    while (at + 512 <= tar.len) {
+        const unsigned char *h = tar.data + at;
+        int zero = 1;
+        for (int k = 0; k < 512; k++)
+            zero &= h[k] == 0;
+        if (zero)
+            break;
+        headers++;
+        CHECK(memcmp(h + 257, "ustar\0" "00", 8) == 0);
+        CHECK_EQ_INT(strtoul((const char *)h + 148, NULL, 8), header_sum(h));
+        CHECK_EQ_INT(strtoul((const char *)h + 136, NULL, 8), ARCHIVE_MTIME);
+        size_t size = strtoul((const char *)h + 124, NULL, 8);
+        char name[256] = "";
+        if (h[345])
+            snprintf(name, sizeof name, "%.155s/", (const char *)h + 345);
+        snprintf(name + strlen(name), sizeof name - strlen(name), "%.100s", (const char *)h);
+        if (strcmp(name, "run_autograder") == 0)
+            CHECK(memcmp(h + 100, "0000755", 8) == 0 && h[156] == '0');
+        if (strcmp(name, "docs/") == 0)
+            CHECK(h[156] == '5' && size == 0);
+        if (strlen(name) == 150) {
+            CHECK(strcmp(name, f.long_name) == 0);
+            CHECK(h[345] != 0);                          /* the prefix field is used */
+        }
+        at += 512 + (size + 511) / 512 * 512;
+    }
+    CHECK_EQ_INT(headers, 6);
+    archive_free(&a);
+    kit_buf_free(&gz);
+    kit_buf_free(&tar);
+    free(f.big);
+}
+
+static void test_tar_path_lengths(void)
+{
+    char path[400], err[1000] = "";
+    for (size_t len = 95; len <= 300; len += 5) {
+        Archive a, b;
+        KitBuf bytes = {0};
+        long_path(path, len);
+        archive_init(&a, ARCHIVE_TARGZ);
+        CHECK_EQ_INT(archive_add_file(&a, path, "x", 1, 0644, err, sizeof err), 0);
+        int rc = archive_encode(&a, &bytes, err, sizeof err);
+        if (len <= 255) {
+            CHECK_MSG(rc == 0, "length %zu: %s", len, err);
+            CHECK_EQ_INT(archive_decode(&b, bytes.data, bytes.len, err, sizeof err), 0);
+            CHECK(b.count == 1 && strcmp(b.entries[0].path, path) == 0);
+            archive_free(&b);
+        } else {
+            CHECK_EQ_INT(rc, -1);
+            CHECK_STR_CONTAINS(err, "too long");
+        }
+        archive_free(&a);
+        kit_buf_free(&bytes);
+    }
+    /* a long last component cannot be split */
+    Archive a;
+    KitBuf bytes = {0};
+    memset(path, 'q', 120);
+    path[120] = '\0';
+    archive_init(&a, ARCHIVE_TARGZ);
+    archive_add_file(&a, path, "x", 1, 0644, err, sizeof err);
+    CHECK_EQ_INT(archive_encode(&a, &bytes, err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, "split");
+    archive_free(&a);
+}
+
+static void test_gzip(void)
+{
+    KitBuf gz = {0}, back = {0};
+    char err[200] = "";
+    static const char text[] = "gzip me, gzip me, gzip me";
+    CHECK_EQ_INT(archive_gzip(text, sizeof text - 1, &gz), 0);
+    CHECK_EQ_INT(archive_gunzip(gz.data, gz.len, 1000, &back, err, sizeof err), 0);
+    CHECK(back.len == sizeof text - 1 && memcmp(back.data, text, back.len) == 0);
+    /* two members decode to their concatenation */
+    size_t one = gz.len;
+    kit_buf_append(&gz, gz.data, one);
+    back.len = 0;
+    CHECK_EQ_INT(archive_gunzip(gz.data, gz.len, 1000, &back, err, sizeof err), 0);
+    CHECK_EQ_INT(back.len, 2 * (sizeof text - 1));
+    /* the size limit */
+    back.len = 0;
+    CHECK_EQ_INT(archive_gunzip(gz.data, gz.len, 30, &back, err, sizeof err), -1);
+    CHECK_EQ_INT(back.len, 0);
+    gz.len = one;
+    /* a wrong CRC, trailing junk, truncation */
+    gz.data[one - 5] ^= 1;
+    CHECK_EQ_INT(archive_gunzip(gz.data, gz.len, 1000, &back, err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, "CRC");
+    gz.data[one - 5] ^= 1;
+    kit_buf_append(&gz, "junk", 4);
+    CHECK_EQ_INT(archive_gunzip(gz.data, gz.len, 1000, &back, err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, "after the gzip data");
+    for (size_t n = 0; n < one; n++)
+        CHECK_EQ_INT(archive_gunzip(gz.data, n, 1000, &back, err, sizeof err), -1);
+    CHECK_EQ_INT(back.len, 0);
+    /* a header with a name and a comment (made by hand) */
+    KitBuf named = {0};
+    static const unsigned char head[] = {0x1F, 0x8B, 8, 0x18, 0, 0, 0, 0, 0, 3,
+                                         'f', '.', 't', 'x', 't', 0, 'h', 'i', 0};
+    kit_buf_append(&named, head, sizeof head);
+    kit_buf_append(&named, gz.data + 10, one - 10);
+    back.len = 0;
+    CHECK_EQ_INT(archive_gunzip(named.data, named.len, 1000, &back, err, sizeof err), 0);
+    CHECK(back.len == sizeof text - 1 && memcmp(back.data, text, back.len) == 0);
+    kit_buf_free(&named);
+    kit_buf_free(&gz);
+    kit_buf_free(&back);
+}
+
+/* ---- refusing bad paths and bad data ---------------------------------------------------- */
+
+static void test_bad_paths_refused_when_adding(void)
+{
+    static const char *bad[] = {"", "/abs", "a/../b", "..", "../a", "a/..", "a//b", "./a",
+                                "a/.", "a/", "a\\b"};
+    Archive a;
+    char err[300];
+    archive_init(&a, ARCHIVE_ZIP);
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        CHECK_MSG(!archive_path_ok(bad[k]), "\"%s\" accepted", bad[k]);
+        CHECK_EQ_INT(archive_add_file(&a, bad[k], "x", 1, 0644, err, sizeof err), -1);
+        CHECK_EQ_INT(archive_add_dir(&a, bad[k], 0755, err, sizeof err), -1);
+    }
+    CHECK(archive_path_ok("a/b..c/..d/.e"));
+    CHECK(archive_path_ok("x"));
+    CHECK_EQ_INT(a.count, 0);
+    CHECK_EQ_INT(archive_add_file(&a, "same", "x", 1, 0644, err, sizeof err), 0);
+    CHECK_EQ_INT(archive_add_file(&a, "same", "y", 1, 0644, err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, "twice");
+    archive_free(&a);
+}
+
+/* Replaces every occurrence of from by to (same length) in b. */
+static int replace_bytes(KitBuf *b, const char *from, const char *to)
+{
+    size_t n = strlen(from);
+    int count = 0;
+    for (size_t k = 0; k + n <= b->len; k++)
+        if (memcmp(b->data + k, from, n) == 0) {
+            memcpy(b->data + k, to, n);
+            count++;
+        }
+    return count;
+}
+
+static void test_zip_refuses_unsafe_paths(void)
+{
+    static const char *evil[] = {"../evil", "/x/evil", "x/../ev", "x//evil"};
+    for (int k = 0; k < 4; k++) {
+        Archive a, b;
+        KitBuf z = {0};
+        char err[300] = "";
+        archive_init(&a, ARCHIVE_ZIP);
+        archive_add_file(&a, "xx/evil", "bad", 3, 0644, err, sizeof err);
+        archive_encode(&a, &z, err, sizeof err);
+        CHECK_EQ_INT(replace_bytes(&z, "xx/evil", evil[k]), 2);    /* local and central */
+        CHECK_EQ_INT(archive_decode(&b, z.data, z.len, err, sizeof err), -1);
+        CHECK_STR_CONTAINS(err, "unsafe");
+        CHECK_EQ_INT(b.count, 0);
+        archive_free(&a);
+        kit_buf_free(&z);
+    }
+}
+
+static void test_targz_refuses_unsafe_paths(void)
+{
+    static const char *evil[] = {"../evil", "/x/evil", "x/../ev"};
+    for (int k = 0; k < 3; k++) {
+        Archive a, b;
+        KitBuf gz = {0}, tar, again = {0};
+        char err[300] = "";
+        archive_init(&a, ARCHIVE_TARGZ);
+        archive_add_file(&a, "xx/evil", "bad", 3, 0644, err, sizeof err);
+        archive_encode(&a, &gz, err, sizeof err);
+        gunzip_by_hand(&gz, &tar);
+        CHECK_EQ_INT(replace_bytes(&tar, "xx/evil", evil[k]), 1);
+        snprintf((char *)tar.data + 148, 8, "%06lo", header_sum(tar.data));
+        tar.data[155] = ' ';
+        archive_gzip(tar.data, tar.len, &again);
+        CHECK_EQ_INT(archive_decode(&b, again.data, again.len, err, sizeof err), -1);
+        CHECK_STR_CONTAINS(err, "unsafe");
+        /* a wrong checksum is refused too */
+        tar.data[148] ^= 1;
+        again.len = 0;
+        archive_gzip(tar.data, tar.len, &again);
+        CHECK_EQ_INT(archive_decode(&b, again.data, again.len, err, sizeof err), -1);
+        CHECK_STR_CONTAINS(err, "checksum");
+        archive_free(&a);
+        kit_buf_free(&gz);
+        kit_buf_free(&tar);
+        kit_buf_free(&again);
+    }
+}
+
+static void test_corrupt_archives(void)
+{
+    for (int fmt = 0; fmt < 2; fmt++) {
+        Archive a, b;
+        KitBuf bytes = {0};
+        char err[300];
+        archive_init(&a, fmt ? ARCHIVE_TARGZ : ARCHIVE_ZIP);
+        archive_add_dir(&a, "d", 0755, err, sizeof err);
+        archive_add_file(&a, "d/text", "hello hello hello hello hello", 29, 0644, err, sizeof err);
+        archive_add_file(&a, "d/raw", "q", 1, 0755, err, sizeof err);
+        archive_encode(&a, &bytes, err, sizeof err);
+        /* every truncation is refused */
+        for (size_t n = 0; n < bytes.len; n++) {
+            CHECK_MSG(archive_decode(&b, bytes.data, n, err, sizeof err) == -1,
+                      "format %d: %zu of %zu bytes accepted", fmt, n, bytes.len);
+            CHECK_EQ_INT(b.count, 0);
+        }
+        /* random damage: an error or an archive, never a crash */
+        for (int k = 0; k < 4000; k++) {
+            KitBuf bad = {0};
+            kit_buf_append(&bad, bytes.data, bytes.len);
+            for (int f = 0; f < 1 + k % 3; f++)
+                bad.data[rng_next() % bad.len] ^= (unsigned char)(1 + rng_next() % 255);
+            if (archive_decode(&b, bad.data, bad.len, err, sizeof err) == 0)
+                archive_free(&b);
+            kit_buf_free(&bad);
+        }
+        archive_free(&a);
+        kit_buf_free(&bytes);
+    }
+    /* a stored ZIP entry whose data changed: the CRC catches it */
+    Archive a, b;
+    KitBuf z = {0};
+    char err[300];
+    archive_init(&a, ARCHIVE_ZIP);
+    archive_add_file(&a, "f", "abcdefgh", 8, 0644, err, sizeof err);
+    archive_encode(&a, &z, err, sizeof err);
+    CHECK_EQ_INT(replace_bytes(&z, "abcdefgh", "abcdefgX"), 1);
+    CHECK_EQ_INT(archive_decode(&b, z.data, z.len, err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, "CRC");
+    CHECK_EQ_INT(archive_decode(&b, "hello", 5, err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, "not a ZIP or .tar.gz");
+    archive_free(&a);
+    kit_buf_free(&z);
+}
+
+/* ---- on disk: add_tree, save, load, extract ---------------------------------------------- */
+
+/* Makes dir/src: run_autograder (0755), lib/a.c, lib/b.h (0600), an empty
+ * directory, an empty file. */
+static void make_source_tree(const char *dir, char *src, size_t size)
+{
+    char p[1024];
+    snprintf(src, size, "%s/src", dir);
+    CHECK_EQ_INT(mkdir(src, 0755), 0);
+    snprintf(p, sizeof p, "%s/run_autograder", src);
+    write_file(p, "#!/bin/sh\necho ok\n", 18, 0755);
+    snprintf(p, sizeof p, "%s/lib", src);
+    CHECK_EQ_INT(mkdir(p, 0750), 0);
+    chmod(p, 0750);
+    snprintf(p, sizeof p, "%s/lib/b.h", src);
+    write_file(p, "int b;\n", 7, 0600);
+    snprintf(p, sizeof p, "%s/lib/a.c", src);
+    write_file(p, "int a;\n", 7, 0644);
+    snprintf(p, sizeof p, "%s/empty", src);
+    CHECK_EQ_INT(mkdir(p, 0755), 0);
+    snprintf(p, sizeof p, "%s/Zero.txt", src);
+    write_file(p, "", 0, 0644);
+}
+
+/* Checks the tree made by make_source_tree below root. */
+static void check_source_tree(const char *root)
+{
+    char p[1024];
+    struct stat st;
+    snprintf(p, sizeof p, "%s/run_autograder", root);
+    CHECK_MSG(file_is(p, "#!/bin/sh\necho ok\n", 18, 0755), "%s", p);
+    snprintf(p, sizeof p, "%s/lib/a.c", root);
+    CHECK_MSG(file_is(p, "int a;\n", 7, 0644), "%s", p);
+    snprintf(p, sizeof p, "%s/lib/b.h", root);
+    CHECK_MSG(file_is(p, "int b;\n", 7, 0600), "%s", p);
+    snprintf(p, sizeof p, "%s/Zero.txt", root);
+    CHECK_MSG(file_is(p, "", 0, 0644), "%s", p);
+    snprintf(p, sizeof p, "%s/empty", root);
+    CHECK(stat(p, &st) == 0 && S_ISDIR(st.st_mode));
+    snprintf(p, sizeof p, "%s/lib", root);
+    CHECK(stat(p, &st) == 0 && S_ISDIR(st.st_mode) && (st.st_mode & 0777) == 0750);
+}
+
+static void test_tree_save_load_extract(void)
+{
+    char dir[512], src[600], out[700], dest[700], err[1500] = "";
+    make_temp_dir(dir, sizeof dir);
+    make_source_tree(dir, src, sizeof src);
+    for (int fmt = 0; fmt < 2; fmt++) {
+        const char *prefix = fmt ? "kit" : NULL;
+        Archive a, b;
+        archive_init(&a, fmt ? ARCHIVE_TARGZ : ARCHIVE_ZIP);
+        CHECK_MSG(archive_add_tree(&a, src, prefix, err, sizeof err) == 0, "%s", err);
+        /* sorted by name, directories before their contents */
+        static const char *zip_order[] = {"Zero.txt", "empty", "lib", "lib/a.c", "lib/b.h",
+                                          "run_autograder"};
+        size_t base = prefix ? 1 : 0;
+        CHECK_EQ_INT(a.count, 6 + base);
+        for (size_t k = 0; k < 6 && k + base < a.count; k++) {
+            char want[100];
+            snprintf(want, sizeof want, "%s%s%s", prefix ? prefix : "", prefix ? "/" : "", zip_order[k]);
+            CHECK_MSG(strcmp(a.entries[k + base].path, want) == 0, "entry %zu is %s, want %s",
+                      k + base, a.entries[k + base].path, want);
+        }
+        snprintf(out, sizeof out, "%s/out.%s", dir, fmt ? "tar.gz" : "zip");
+        CHECK_MSG(archive_save(&a, out, err, sizeof err) == 0, "%s", err);
+        CHECK_MSG(archive_load(&b, out, err, sizeof err) == 0, "%s", err);
+        CHECK_EQ_INT(b.count, a.count);
+        snprintf(dest, sizeof dest, "%s/dest%d/deeper", dir, fmt);
+        CHECK_MSG(archive_extract(&b, dest, err, sizeof err) == 0, "%s", err);
+        char root[800];
+        snprintf(root, sizeof root, "%s%s%s", dest, prefix ? "/" : "", prefix ? prefix : "");
+        check_source_tree(root);
+        /* extracting again over the same files works, read-only files included */
+        CHECK_MSG(archive_extract(&b, dest, err, sizeof err) == 0, "%s", err);
+        check_source_tree(root);
+        archive_free(&a);
+        archive_free(&b);
+    }
+    remove_tree(dir);
+}
+
+static void test_add_tree_refuses_links(void)
+{
+    char dir[512], p[700], q[700], err[1500] = "";
+    make_temp_dir(dir, sizeof dir);
+    snprintf(p, sizeof p, "%s/file", dir);
+    write_file(p, "x", 1, 0644);
+    snprintf(q, sizeof q, "%s/link", dir);
+    CHECK_EQ_INT(symlink("file", q), 0);
+    Archive a;
+    archive_init(&a, ARCHIVE_ZIP);
+    CHECK_EQ_INT(archive_add_tree(&a, dir, NULL, err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, "link");
+    CHECK_STR_CONTAINS(err, q);
+    archive_free(&a);
+    snprintf(p, sizeof p, "%s/missing", dir);
+    CHECK_EQ_INT(archive_add_tree(&a, p, NULL, err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, p);
+    remove_tree(dir);
+}
+
+static void test_extract_refuses_symlinks_in_dest(void)
+{
+    char dir[512], dest[700], outside[700], link[800], err[1500] = "";
+    make_temp_dir(dir, sizeof dir);
+    snprintf(dest, sizeof dest, "%s/dest", dir);
+    snprintf(outside, sizeof outside, "%s/outside", dir);
+    CHECK_EQ_INT(mkdir(dest, 0755), 0);
+    CHECK_EQ_INT(mkdir(outside, 0755), 0);
+    snprintf(link, sizeof link, "%s/sub", dest);
+    CHECK_EQ_INT(symlink(outside, link), 0);
+    Archive a;
+    archive_init(&a, ARCHIVE_ZIP);
+    archive_add_file(&a, "sub/planted", "x", 1, 0644, err, sizeof err);
+    CHECK_EQ_INT(archive_extract(&a, dest, err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, "symbolic link");
+    archive_free(&a);
+    /* a link in the place of the file itself is replaced, not followed */
+    archive_init(&a, ARCHIVE_ZIP);
+    archive_add_file(&a, "sub", "data", 4, 0644, err, sizeof err);
+    CHECK_EQ_INT(archive_extract(&a, dest, err, sizeof err), 0);
+    struct stat st;
+    CHECK(lstat(link, &st) == 0 && S_ISREG(st.st_mode));
+    archive_free(&a);
+    DIR *d = opendir(outside);
+    int entries = 0;
+    struct dirent *e;
+    while (d && (e = readdir(d)) != NULL)
+        entries += strcmp(e->d_name, ".") && strcmp(e->d_name, "..");
+    if (d)
+        closedir(d);
+    CHECK_EQ_INT(entries, 0);
+    remove_tree(dir);
+}
+
+static void test_save_failure_leaves_nothing(void)
+{
+    char dir[512], path[700], err[1500] = "";
+    make_temp_dir(dir, sizeof dir);
+    Archive a;
+    archive_init(&a, ARCHIVE_TARGZ);
+    archive_add_file(&a, "f", "x", 1, 0644, err, sizeof err);
+    snprintf(path, sizeof path, "%s/no/such/out.tar.gz", dir);
+    CHECK_EQ_INT(archive_save(&a, path, err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, path);
+    snprintf(path, sizeof path, "%s/taken", dir);
+    CHECK_EQ_INT(mkdir(path, 0755), 0);
+    CHECK_EQ_INT(archive_save(&a, path, err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, path);
+    DIR *d = opendir(dir);
+    int entries = 0;
+    struct dirent *e;
+    while (d && (e = readdir(d)) != NULL)
+        entries += strcmp(e->d_name, ".") && strcmp(e->d_name, "..");
+    if (d)
+        closedir(d);
+    CHECK_EQ_INT(entries, 1);                 /* just "taken" */
+    snprintf(path, sizeof path, "%s/missing.zip", dir);
+    Archive b;
+    CHECK_EQ_INT(archive_load(&b, path, err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, path);
+    archive_free(&a);
+    remove_tree(dir);
+}
+
+static const CheckTest tests[] = {
+    CHECK_TEST(test_zip_round_trip),
+    CHECK_TEST(test_targz_round_trip),
+    CHECK_TEST(test_empty_archives),
+    CHECK_TEST(test_zip_layout),
+    CHECK_TEST(test_tar_layout),
+    CHECK_TEST(test_tar_path_lengths),
+    CHECK_TEST(test_gzip),
+    CHECK_TEST(test_bad_paths_refused_when_adding),
+    CHECK_TEST(test_zip_refuses_unsafe_paths),
+    CHECK_TEST(test_targz_refuses_unsafe_paths),
+    CHECK_TEST(test_corrupt_archives),
+    CHECK_TEST(test_tree_save_load_extract),
+    CHECK_TEST(test_add_tree_refuses_links),
+    CHECK_TEST(test_extract_refuses_symlinks_in_dest),
+    CHECK_TEST(test_save_failure_leaves_nothing),
+};
+
+int main(int argc, char **argv)
+{
+    return check_main(argc, argv, tests, CHECK_COUNT(tests));
+}

@@ -1,0 +1,583 @@
+/* The JSON writer of tests/tools/json.h, and a small JSON checker to read
+ * its output. */
+#include "check.h"            /* first: it sets the POSIX feature level */
+
+#include <dirent.h>
+#include <stdint.h>
+#include <sys/stat.h>
+
+#include "../tools/json.h"
+
+/* ---- an independent checker: RFC 8259 grammar, strings in valid UTF-8 ------ */
+
+typedef struct {
+    const unsigned char *p;
+    size_t n, at;
+    int depth;
+} Checker;
+
+static int jc_value(Checker *c);
+
+static void jc_space(Checker *c)
+{
+    while (c->at < c->n && (c->p[c->at] == ' ' || c->p[c->at] == '\t' ||
+                            c->p[c->at] == '\n' || c->p[c->at] == '\r'))
+        c->at++;
+}
+
+/* Whether the next byte is ch; if so it is consumed. */
+static int jc_eat(Checker *c, char ch)
+{
+    if (c->at < c->n && c->p[c->at] == (unsigned char)ch) {
+        c->at++;
+        return 1;
+    }
+    return 0;
+}
+
+/* One UTF-8 encoded code point (not a surrogate, not overlong, at most
+ * U+10FFFF), decoded from first principles.  Returns 1 if valid. */
+static int jc_utf8(Checker *c)
+{
+    unsigned char b = c->p[c->at];
+    int extra = b >= 0xF0 && b <= 0xF7 ? 3 : b >= 0xE0 ? 2 : b >= 0xC0 ? 1 : -1;
+    if (b >= 0xF8 || extra < 0 || c->n - c->at <= (size_t)extra)
+        return 0;
+    uint32_t cp = b & (0x3Fu >> extra);
+    for (int k = 1; k <= extra; k++) {
+        unsigned char t = c->p[c->at + k];
+        if ((t & 0xC0) != 0x80)
+            return 0;
+        cp = (cp << 6) | (t & 0x3Fu);
+    }
+    static const uint32_t min[4] = {0, 0x80, 0x800, 0x10000};
+    if (cp < min[extra] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF))
+        return 0;
+    c->at += 1 + (size_t)extra;
+    return 1;
+}
+
+static int jc_string(Checker *c)
+{
+    if (!jc_eat(c, '"'))
+        return 0;
+    while (c->at < c->n) {
+        unsigned char b = c->p[c->at];
+        if (b == '"') {
+            c->at++;
+            return 1;
+        }
+        if (b < 0x20)
+            return 0;
+        if (b == '\\') {
+            c->at++;
+            if (c->at >= c->n)
+                return 0;
+            unsigned char e = c->p[c->at++];
+            if (e == 'u') {
+                for (int k = 0; k < 4; k++, c->at++)
+                    if (c->at >= c->n || !strchr("0123456789abcdefABCDEF", c->p[c->at]) ||
+                        c->p[c->at] == 0)
+                        return 0;
+            } else if (!strchr("\"\\/bfnrt", e) || e == 0) {
+                return 0;
+            }
+        } else if (b >= 0x80) {
+            if (!jc_utf8(c))
+                return 0;
+        } else {
+            c->at++;
+        }
+    }
+    return 0;
+}
+
+static int jc_digits(Checker *c)
+{
+    size_t start = c->at;
+    while (c->at < c->n && c->p[c->at] >= '0' && c->p[c->at] <= '9')
+        c->at++;
+    return c->at > start;
+}
+
+static int jc_number(Checker *c)
+{
+    jc_eat(c, '-');
+    if (jc_eat(c, '0')) {
+        if (c->at < c->n && c->p[c->at] >= '0' && c->p[c->at] <= '9')
+            return 0;                                   /* no leading zeros */
+    } else if (!jc_digits(c)) {
+        return 0;
+    }
+    if (jc_eat(c, '.') && !jc_digits(c))
+        return 0;
+    if (jc_eat(c, 'e') || jc_eat(c, 'E')) {
+        if (!jc_eat(c, '+'))
+            jc_eat(c, '-');
+        if (!jc_digits(c))
+            return 0;
+    }
+    return 1;
+}
+
+static int jc_literal(Checker *c, const char *word)
+{
+    size_t len = strlen(word);
+    if (c->n - c->at < len || memcmp(c->p + c->at, word, len) != 0)
+        return 0;
+    c->at += len;
+    return 1;
+}
+
+/* An object or array: open, members separated by commas, close. */
+static int jc_container(Checker *c, char open, char close)
+{
+    if (!jc_eat(c, open) || ++c->depth > 200)
+        return 0;
+    jc_space(c);
+    if (jc_eat(c, close)) {
+        c->depth--;
+        return 1;
+    }
+    for (;;) {
+        jc_space(c);
+        if (open == '{') {
+            if (!jc_string(c))
+                return 0;
+            jc_space(c);
+            if (!jc_eat(c, ':'))
+                return 0;
+        }
+        if (!jc_value(c))
+            return 0;
+        jc_space(c);
+        if (jc_eat(c, close)) {
+            c->depth--;
+            return 1;
+        }
+        if (!jc_eat(c, ','))
+            return 0;
+    }
+}
+
+static int jc_value(Checker *c)
+{
+    jc_space(c);
+    if (c->at >= c->n)
+        return 0;
+    switch (c->p[c->at]) {
+    case '{': return jc_container(c, '{', '}');
+    case '[': return jc_container(c, '[', ']');
+    case '"': return jc_string(c);
+    case 't': return jc_literal(c, "true");
+    case 'f': return jc_literal(c, "false");
+    case 'n': return jc_literal(c, "null");
+    default: return jc_number(c);
+    }
+}
+
+/* Whether text[0 .. n-1] is exactly one JSON value (with whitespace around). */
+static int json_valid(const char *text, size_t n)
+{
+    Checker c = {(const unsigned char *)text, n, 0, 0};
+    if (!jc_value(&c))
+        return 0;
+    jc_space(&c);
+    return c.at == n;
+}
+
+static void test_checker_itself(void)
+{
+    static const char *good[] = {"0", "-0.5e+3", "\"a\\u00e9\\n\"", "[1,[2,{}]]", " {\"a\" : null} ",
+                                 "\"\xC3\xA9\xE2\x82\xAC\xF0\x9F\x98\x80\"", "true"};
+    static const char *bad[] = {"", "01", "[1,]", "{\"a\"}", "\"\x01\"", "\"\xFF\"", "\"\xC0\xAF\"",
+                                "\"\xED\xA0\x80\"", "\"\xF4\x90\x80\x80\"", "nul", "1.", "[1 2]", "\"\\x\"",
+                                "{} {}", "\"abc"};
+    for (size_t k = 0; k < sizeof good / sizeof good[0]; k++)
+        CHECK_MSG(json_valid(good[k], strlen(good[k])), "valid JSON refused: %s", good[k]);
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++)
+        CHECK_MSG(!json_valid(bad[k], strlen(bad[k])), "invalid JSON accepted: %s", bad[k]);
+}
+
+/* ---- helpers ------------------------------------------------------------------------------ */
+
+/* Checks that w's text is exactly want and valid JSON, then frees w. */
+static void check_text(JsonWriter *w, const char *want)
+{
+    size_t len = 0;
+    const char *text = json_text(w, &len);
+    CHECK_MSG(text != NULL, "writer failed: %s", json_error(w) ? json_error(w) : "unfinished");
+    if (text) {
+        CHECK_MSG(strcmp(text, want) == 0, "wrote   %s\n        want    %s", text, want);
+        CHECK_EQ_INT(len, strlen(text));
+        CHECK_MSG(json_valid(text, len), "not valid JSON: %s", text);
+    }
+    json_free(w);
+}
+
+/* The text of one string value holding bytes s[0 .. n-1]. */
+static void check_string(const char *s, size_t n, const char *want)
+{
+    JsonWriter w;
+    json_init(&w, 0);
+    json_string_bytes(&w, s, n);
+    check_text(&w, want);
+}
+
+/* The text of one number. */
+static void check_number(double x, const char *want)
+{
+    JsonWriter w;
+    json_init(&w, 0);
+    json_number(&w, x);
+    check_text(&w, want);
+}
+
+static uint64_t rng_state = 88172645463325252ull;
+
+/* A deterministic pseudo-random generator (xorshift64). */
+static uint64_t rng_next(void)
+{
+    uint64_t x = rng_state;
+    x ^= x << 13;
+    x ^= x >> 7;
+    x ^= x << 17;
+    return rng_state = x;
+}
+
+/* ---- strings --------------------------------------------------------------------------------- */
+
+static void test_escaping(void)
+{
+    check_string("plain", 5, "\"plain\"");
+    check_string("", 0, "\"\"");
+    check_string("a\"b\\c/d", 7, "\"a\\\"b\\\\c/d\"");
+    check_string("\n\t\r\x01\x1f\x7f", 6, "\"\\u000a\\u0009\\u000d\\u0001\\u001f\x7f\"");
+    check_string("nul\0byte", 8, "\"nul\\u0000byte\"");
+    JsonWriter w;
+    json_init(&w, 0);
+    json_string(&w, NULL);
+    check_text(&w, "null");
+}
+
+static void test_utf8_kept_and_replaced(void)
+{
+    /* valid sequences pass through unchanged */
+    check_string("\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80 \xF4\x8F\xBF\xBF", 16,
+                 "\"\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80 \xF4\x8F\xBF\xBF\"");
+    check_string("\xE2\x80\xA8", 3, "\"\xE2\x80\xA8\"");     /* U+2028 is fine in JSON */
+#define FFFD "\xEF\xBF\xBD"
+    check_string("\xFF", 1, "\"" FFFD "\"");
+    check_string("a\x80z", 3, "\"a" FFFD "z\"");                 /* lone continuation byte */
+    check_string("\xC3", 1, "\"" FFFD "\"");                     /* cut short at the end */
+    check_string("\xC3(", 2, "\"" FFFD "(\"");                   /* cut short by ASCII */
+    check_string("\xE2\x82", 2, "\"" FFFD "\"");                 /* one U+FFFD for the prefix */
+    check_string("\xE2\x82z", 3, "\"" FFFD "z\"");
+    check_string("\xC0\xAF", 2, "\"" FFFD FFFD "\"");            /* overlong '/' */
+    check_string("\xE0\x80\xAF", 3, "\"" FFFD FFFD FFFD "\"");   /* overlong */
+    check_string("\xED\xA0\x80", 3, "\"" FFFD FFFD FFFD "\"");   /* a surrogate */
+    check_string("\xF4\x90\x80\x80", 4, "\"" FFFD FFFD FFFD FFFD "\"");   /* past U+10FFFF */
+    check_string("\xF0\x9F\x98", 3, "\"" FFFD "\"");
+    check_string("\xF8\x88\x80\x80\x80", 5, "\"" FFFD FFFD FFFD FFFD FFFD "\"");
+    check_string("ok\xC3\xA9\xFE\"", 6, "\"ok\xC3\xA9" FFFD "\\\"\"");
+#undef FFFD
+}
+
+static void test_random_bytes_always_valid(void)
+{
+    unsigned char buf[64];
+    for (int k = 0; k < 20000; k++) {
+        size_t n = rng_next() % sizeof buf;
+        for (size_t i = 0; i < n; i++) {
+            uint64_t r = rng_next();
+            /* mostly high bytes and controls, where the trouble is */
+            buf[i] = (unsigned char)(r % 4 == 0 ? 0x80 + (r >> 8) % 0x80 : r % 4 == 1 ? (r >> 8) % 0x20
+                                     : r % 4 == 2 ? 0xC0 + (r >> 8) % 0x40 : (r >> 8) & 0xFF);
+        }
+        JsonWriter w;
+        json_init(&w, k % 2 ? 2 : 0);
+        json_begin_object(&w);
+        json_key(&w, (const char *)"key");
+        json_string_bytes(&w, buf, n);
+        json_end_object(&w);
+        size_t len = 0;
+        const char *text = json_text(&w, &len);
+        CHECK(text != NULL);
+        if (text && !json_valid(text, len)) {
+            CHECK_MSG(0, "invalid JSON for %zu random bytes", n);
+            json_free(&w);
+            return;
+        }
+        json_free(&w);
+    }
+}
+
+/* ---- numbers ------------------------------------------------------------------------------- */
+
+static void test_numbers(void)
+{
+    check_number(0, "0");
+    check_number(-0.0, "-0");
+    check_number(1, "1");
+    check_number(-2.5, "-2.5");
+    check_number(0.1, "0.1");
+    check_number(1.0 / 3, "0.3333333333333333");
+    check_number(2.0 / 3, "0.6666666666666666");
+    check_number(1e300, "1e+300");
+    check_number(1.5e-7, "1.5e-07");
+    check_number(123456789, "123456789");
+    check_number(0x1p-1074, "5e-324");
+    check_number(1.7976931348623157e308, "1.7976931348623157e+308");
+    check_number(NAN, "null");
+    check_number(INFINITY, "null");
+    check_number(-INFINITY, "null");
+    JsonWriter w;
+    json_init(&w, 0);
+    json_begin_array(&w);
+    json_int(&w, -9223372036854775807LL - 1);
+    json_int(&w, 42);
+    json_bool(&w, true);
+    json_bool(&w, false);
+    json_null(&w);
+    json_end_array(&w);
+    check_text(&w, "[-9223372036854775808,42,true,false,null]");
+}
+
+static void test_numbers_round_trip(void)
+{
+    for (int k = 0; k < 100000; k++) {
+        uint64_t bits = rng_next();
+        double x;
+        memcpy(&x, &bits, sizeof x);
+        JsonWriter w;
+        json_init(&w, 0);
+        json_number(&w, x);
+        size_t len;
+        const char *text = json_text(&w, &len);
+        if (!isfinite(x)) {
+            CHECK(text && strcmp(text, "null") == 0);
+        } else if (text) {
+            double back = strtod(text, NULL);
+            CHECK_MSG(memcmp(&back, &x, sizeof x) == 0, "%a written as %s", x, text);
+            CHECK_MSG(len <= 24 && json_valid(text, len), "%a written as %s", x, text);
+            /* shortest: one significant digit fewer does not read back */
+            char shorter[400];
+            int digits = 0;
+            for (const char *p = text; *p && *p != 'e'; p++)
+                digits += *p >= '0' && *p <= '9';
+            if (digits > 1) {
+                snprintf(shorter, sizeof shorter, "%.*g", digits - 1, x);
+                CHECK_MSG(strtod(shorter, NULL) != x || strlen(shorter) >= len,
+                          "%s is not the shortest for %a", text, x);
+            }
+        }
+        json_free(&w);
+    }
+    /* decimals with few digits are written as they were read */
+    for (int k = 0; k < 3000; k++) {
+        char decimal[40];
+        snprintf(decimal, sizeof decimal, "%d.%03d", (int)(rng_next() % 2001) - 1000,
+                 (int)(rng_next() % 1000));
+        double x = strtod(decimal, NULL);
+        JsonWriter w;
+        json_init(&w, 0);
+        json_number(&w, x);
+        const char *text = json_text(&w, NULL);
+        CHECK_MSG(text && strlen(text) <= strlen(decimal), "%s written as %s", decimal, text);
+        json_free(&w);
+    }
+}
+
+/* ---- structure ------------------------------------------------------------------------------ */
+
+static void test_nested_compact(void)
+{
+    JsonWriter w;
+    json_init(&w, 0);
+    json_begin_object(&w);
+    json_key(&w, "score");
+    json_number(&w, 7.5);
+    json_key(&w, "tests");
+    json_begin_array(&w);
+    for (int k = 0; k < 2; k++) {
+        json_begin_object(&w);
+        json_key(&w, "name");
+        json_string(&w, k ? "b" : "a");
+        json_key(&w, "tags");
+        json_begin_array(&w);
+        json_end_array(&w);
+        json_key(&w, "extra");
+        json_begin_object(&w);
+        json_end_object(&w);
+        json_end_object(&w);
+    }
+    json_end_array(&w);
+    json_key(&w, "ok");
+    json_bool(&w, true);
+    json_end_object(&w);
+    check_text(&w, "{\"score\":7.5,\"tests\":[{\"name\":\"a\",\"tags\":[],\"extra\":{}},"
+                   "{\"name\":\"b\",\"tags\":[],\"extra\":{}}],\"ok\":true}");
+}
+
+static void test_nested_indented(void)
+{
+    JsonWriter w;
+    json_init(&w, 2);
+    json_begin_object(&w);
+    json_key(&w, "a");
+    json_begin_array(&w);
+    json_int(&w, 1);
+    json_begin_object(&w);
+    json_key(&w, "b\n");
+    json_null(&w);
+    json_end_object(&w);
+    json_begin_array(&w);
+    json_end_array(&w);
+    json_end_array(&w);
+    json_key(&w, "c");
+    json_string(&w, "d");
+    json_end_object(&w);
+    check_text(&w, "{\n  \"a\": [\n    1,\n    {\n      \"b\\u000a\": null\n    },\n    []\n  ],\n"
+                   "  \"c\": \"d\"\n}");
+}
+
+static void test_top_level_scalars_and_deep_nesting(void)
+{
+    JsonWriter w;
+    json_init(&w, 0);
+    json_int(&w, 5);
+    check_text(&w, "5");
+    json_init(&w, 0);
+    for (int k = 0; k < JSON_MAX_DEPTH; k++)
+        json_begin_array(&w);
+    for (int k = 0; k < JSON_MAX_DEPTH; k++)
+        json_end_array(&w);
+    size_t len = 0;
+    const char *text = json_text(&w, &len);
+    CHECK(text && len == 2 * JSON_MAX_DEPTH && json_valid(text, len));
+    json_free(&w);
+}
+
+/* Expects w to have failed (json_text NULL, an error set), then frees it. */
+static void check_failed(JsonWriter *w, const char *what)
+{
+    CHECK_MSG(json_text(w, NULL) == NULL, "%s: accepted", what);
+    CHECK_MSG(json_error(w) != NULL || !w->done, "%s: no error", what);
+    json_free(w);
+}
+
+static void test_misuse_fails(void)
+{
+    JsonWriter w;
+    json_init(&w, 0);
+    json_begin_object(&w);
+    json_int(&w, 1);                        /* a value without a key */
+    json_end_object(&w);
+    check_failed(&w, "value without key");
+    json_init(&w, 0);
+    json_begin_array(&w);
+    json_key(&w, "k");                      /* a key in an array */
+    json_end_array(&w);
+    check_failed(&w, "key in array");
+    json_init(&w, 0);
+    json_begin_object(&w);
+    json_key(&w, "k");
+    json_end_object(&w);                    /* a key without a value */
+    check_failed(&w, "key without value");
+    json_init(&w, 0);
+    json_begin_array(&w);
+    json_end_object(&w);                    /* mismatched end */
+    check_failed(&w, "mismatched end");
+    json_init(&w, 0);
+    json_end_array(&w);                     /* end of nothing */
+    check_failed(&w, "end of nothing");
+    json_init(&w, 0);
+    json_int(&w, 1);
+    json_int(&w, 2);                        /* two top-level values */
+    check_failed(&w, "two values");
+    json_init(&w, 0);
+    json_begin_array(&w);                   /* unfinished */
+    check_failed(&w, "unfinished");
+    json_init(&w, 0);
+    for (int k = 0; k <= JSON_MAX_DEPTH; k++)
+        json_begin_array(&w);               /* too deep */
+    for (int k = 0; k <= JSON_MAX_DEPTH; k++)
+        json_end_array(&w);
+    check_failed(&w, "too deep");
+    json_init(&w, 0);
+    check_failed(&w, "empty");
+}
+
+/* ---- files --------------------------------------------------------------------------------- */
+
+static void test_write_file(void)
+{
+    char dir[512], path[700], err[1000] = "";
+    const char *base = getenv("TMPDIR");
+    snprintf(dir, sizeof dir, "%s/kit-test-json-XXXXXX", base && *base ? base : "/tmp");
+    CHECK(mkdtemp(dir) != NULL);
+    snprintf(path, sizeof path, "%s/results.json", dir);
+    JsonWriter w;
+    json_init(&w, 0);
+    json_begin_object(&w);
+    json_key(&w, "score");
+    json_int(&w, 3);
+    json_end_object(&w);
+    CHECK_MSG(json_write_file(&w, path, err, sizeof err) == 0, "%s", err);
+    CHECK_MSG(json_write_file(&w, path, err, sizeof err) == 0, "%s", err);   /* replaces it */
+    FILE *f = fopen(path, "rb");
+    char text[100] = "";
+    size_t n = f ? fread(text, 1, sizeof text - 1, f) : 0;
+    if (f)
+        fclose(f);
+    CHECK(n == 12 && strcmp(text, "{\"score\":3}\n") == 0);
+    struct stat st;
+    mode_t mask = umask(022);
+    umask(mask);
+    CHECK(stat(path, &st) == 0 && (st.st_mode & 0777) == (0666 & ~mask));
+    /* failures: a missing directory, an unfinished document */
+    char bad[800];
+    snprintf(bad, sizeof bad, "%s/missing/results.json", dir);
+    CHECK_EQ_INT(json_write_file(&w, bad, err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, bad);
+    json_free(&w);
+    json_init(&w, 0);
+    json_begin_object(&w);
+    snprintf(bad, sizeof bad, "%s/unfinished.json", dir);
+    CHECK_EQ_INT(json_write_file(&w, bad, err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, bad);
+    json_free(&w);
+    /* nothing but results.json is left */
+    DIR *d = opendir(dir);
+    int entries = 0;
+    struct dirent *e;
+    while (d && (e = readdir(d)) != NULL)
+        if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..")) {
+            entries++;
+            CHECK(strcmp(e->d_name, "results.json") == 0);
+        }
+    if (d)
+        closedir(d);
+    CHECK_EQ_INT(entries, 1);
+    unlink(path);
+    rmdir(dir);
+}
+
+static const CheckTest tests[] = {
+    CHECK_TEST(test_checker_itself),
+    CHECK_TEST(test_escaping),
+    CHECK_TEST(test_utf8_kept_and_replaced),
+    CHECK_TEST(test_random_bytes_always_valid),
+    CHECK_TEST(test_numbers),
+    CHECK_TEST(test_numbers_round_trip),
+    CHECK_TEST(test_nested_compact),
+    CHECK_TEST(test_nested_indented),
+    CHECK_TEST(test_top_level_scalars_and_deep_nesting),
+    CHECK_TEST(test_misuse_fails),
+    CHECK_TEST(test_write_file),
+};
+
+int main(int argc, char **argv)
+{
+    return check_main(argc, argv, tests, CHECK_COUNT(tests));
+}
