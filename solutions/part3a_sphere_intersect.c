@@ -44,24 +44,25 @@ bool sphere_intersect(const Sphere *sphere, const Ray *ray, double *t)
 
     /* Otherwise solve accurately (Ray Tracing Gems, ch. 7).  B^2 - A C loses
      * the radius when the sphere is small and far: both terms are about
-     * A |f|^2.  Instead measure from the point of the line closest to c:
-     * l = f - (B / A) r, and the half-chord s satisfies s^2 A = R^2 - l.l,
-     * whose error grows only like |f| / R, not (|f| / R)^2. */
-    double b = B / A;                   /* the closest point is at t = -b */
-    Vec3 l = vec3_sub(f, vec3_scale(r, b));
-    double disc = R2 - vec3_dot(l, l);
-    if (!(disc >= 0))                   /* a miss, or NaN input */
+     * A |f|^2.  Instead measure from the point of the line closest to c,
+     * l = f - (B / A) r: then B^2 - A C = A (R^2 - l.l), whose error grows
+     * only like |f| / R, not (|f| / R)^2. */
+    Vec3 l = vec3_sub(f, vec3_scale(r, B / A));
+    double D = R2 - vec3_dot(l, l);
+    if (!(D >= 0))                      /* a miss, or NaN input */
         return false;
-    double s = sqrt(disc) / sqrt(A);    /* not sqrt(disc / A): that overflows */
-    /* The roots are -b -+ s.  Take the one of larger size, q, without
-     * cancellation; the other is C / (A q), since their product is C / A. */
-    double q = -(b + copysign(s, b));
-    if (q == 0)                         /* double root at t = 0: no t > 0 */
+    double AD = A * D;                  /* = B^2 - A C, accurately */
+    double sq = AD > 0x1p-900 && AD < 0x1p+900 ? sqrt(AD) : sqrt(A) * sqrt(D);
+    /* The roots are (-B -+ sq) / A.  Take the one of larger size without
+     * cancellation, q / A with q = -(B + sign(B) sq); the other is C / q,
+     * since the product of the roots is C / A. */
+    double q = -(B + copysign(sq, B));
+    if (q == 0)                         /* a double root at t = 0: no t > 0 */
         return false;
-    double t1 = q, t2 = C / (A * q);
-    double tnear = t1 < t2 ? t1 : t2, tfar = t1 < t2 ? t2 : t1;
-    double root = tnear > 0 ? tnear : tfar;
-    if (!(root > 0 && root < INFINITY))   /* behind e, or out of range */
+    double root = C / q;                /* the root nearer 0 */
+    if (!(root > 0))                    /* behind e: try the other one */
+        root = q / A;
+    if (!(root > 0 && root < INFINITY)) /* both behind e, or out of range */
         return false;
     *t = root;
     return true;

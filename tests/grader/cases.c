@@ -12,7 +12,8 @@
  *     hint OUT... | what the mistake is
  *     end
  *
- * Numbers are C99 hex floats (%a), so they survive the round trip exactly.
+ * Numbers are written in the shortest decimal form that reads back as the
+ * same double, so they survive the round trip exactly.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "grader.h"
@@ -106,10 +107,26 @@ void testlist_free(TestList *list)
 
 /* ---- writing ------------------------------------------------------------ */
 
+/* The shortest decimal that reads back as exactly v (at most 17 digits). */
+static void put_number(FILE *f, double v)
+{
+    char buf[40];
+    if (v == (double)(long long)v && v > -1e15 && v < 1e15) {
+        fprintf(f, " %lld", (long long)v);
+        return;
+    }
+    for (int digits = 1; digits <= 17; digits++) {
+        snprintf(buf, sizeof buf, "%.*g", digits, v);
+        if (strtod(buf, NULL) == v || v != v)
+            break;
+    }
+    fprintf(f, " %s", buf);
+}
+
 static void put_numbers(FILE *f, const double *v, int n)
 {
     for (int k = 0; k < n; k++)
-        fprintf(f, " %a", v[k]);
+        put_number(f, v[k]);
 }
 
 int tests_write(const TestList *list, const char *path, const char *header, char *err, size_t errlen)

@@ -1,5 +1,5 @@
 /*
- * public.c - the public tests, shipped to students as tests/public/*.tests.
+ * public.c - the public tests, shipped to students as tests/public/partN.tests.
  * Every test mixes cases so that no fixed answer (the skeletons' zeros,
  * "always miss", "always the background") passes any of them.
  */
@@ -166,8 +166,8 @@ static void part3b(TestList *l)
     tg_color(t, V(0, 0, 0), V(0, 0, 1));
     tg_color(t, V(0, 0, 0), V(0, 0.5, -0.8660254037844386));
 
-    tg_image(l, "Part 3b: render the default scene at 48 x 36", "labs/scenes/default.scene", 48, 36)->weight = 2;
-    tg_image(l, "Part 3b: render the flip scene at 32 x 32", "labs/scenes/flip.scene", 32, 32);
+    tg_image(l, "Part 3b: render the default scene at 40 x 30", "labs/scenes/default.scene", 40, 30)->weight = 2;
+    tg_image(l, "Part 3b: render the flip scene at 24 x 24", "labs/scenes/flip.scene", 24, 24);
     tg_image(l, "Part 3b: render the inside scene at 32 x 24", "labs/scenes/inside.scene", 32, 24);
     for (int k = l->n - 3; k < l->n; k++)
         snprintf(l->tests[k].note, sizeof l->tests[k].note, "%s",

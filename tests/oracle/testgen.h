@@ -1,7 +1,7 @@
 /*
  * testgen.h - the autograder's tests, built with the oracle's expected
  * values and the hints of known mistakes.  Instructor only: the public
- * tests are written out as tests/public/*.tests (make public-tests), the
+ * tests are written out as tests/public/partN.tests (make public-tests), the
  * hidden ones (tests/hidden) are drawn when grading.
  */
 #ifndef TESTGEN_H
