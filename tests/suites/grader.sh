@@ -69,14 +69,14 @@ for sub in "$tmp/subs"/*/; do
     p1=$(score "$name" 2); p2=$(score "$name" 3); p3a=$(score "$name" 4); p3b=$(score "$name" 5)
     if grep -q '^core full' "$expect"; then
         check "$name: full core marks ($p1 $p2 $p3a $p3b)" \
-            [ "$p1" = "$max1" ] && [ "$p2" = "$max2" ] && [ "$p3a" = "$max3a" ] && [ "$p3b" = "$max3b" ]
+            [ "$p1 $p2 $p3a $p3b" = "$max1 $max2 $max3a $max3b" ]
     fi
     part=$(sed -n 's/^part //p' "$expect")
     if [ -n "$part" ]; then
         for p in 1 2 3a 3b; do
             case $p in 1) got=$p1 max=$max1;; 2) got=$p2 max=$max2;; 3a) got=$p3a max=$max3a;; 3b) got=$p3b max=$max3b;; esac
             if [ "$p" = "$part" ]; then
-                check "$name: Part $p loses points (got $got of $max)" [ -n "$got" ] && [ "$got" != "$max" ]
+                check "$name: Part $p loses points (got $got of $max)" [ -n "$got" -a "$got" != "$max" ]
             else
                 check "$name: Part $p keeps full marks (got $got of $max)" [ "$got" = "$max" ]
             fi
