@@ -17,6 +17,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include "grader.h"
+#include "../../labs/kit/numtext.h"
 
 #include <errno.h>
 #include <math.h>
@@ -107,20 +108,10 @@ void testlist_free(TestList *list)
 
 /* ---- writing ------------------------------------------------------------ */
 
-/* The shortest decimal that reads back as exactly v (at most 17 digits). */
 static void put_number(FILE *f, double v)
 {
     char buf[40];
-    if (v == (double)(long long)v && v > -1e15 && v < 1e15) {
-        fprintf(f, " %lld", (long long)v);
-        return;
-    }
-    for (int digits = 1; digits <= 17; digits++) {
-        snprintf(buf, sizeof buf, "%.*g", digits, v);
-        if (strtod(buf, NULL) == v || v != v)
-            break;
-    }
-    fprintf(f, " %s", buf);
+    fprintf(f, " %s", kit_shortest_double(buf, sizeof buf, v));
 }
 
 static void put_numbers(FILE *f, const double *v, int n)

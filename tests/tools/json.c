@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include "json.h"
+#include "../../labs/kit/numtext.h"
 
 #include <errno.h>
 #include <math.h>
@@ -257,12 +258,7 @@ void json_number(JsonWriter *w, double x)
     if (json_before_value(w) != 0)
         return;
     char text[40];
-    for (int digits = 1; digits <= 17; digits++) {
-        snprintf(text, sizeof text, "%.*g", digits, x);
-        if (strtod(text, NULL) == x)
-            break;
-    }
-    json_puts(w, text);
+    json_puts(w, kit_shortest_double(text, sizeof text, x));
     json_after_value(w);
 }
 

@@ -1,0 +1,52 @@
+#!/bin/sh
+# The Gradescope bundle, tried locally through AUTOGRADER_ROOT: build the
+# zip, unpack it as Gradescope does, run setup.sh, then run_autograder on a
+# correct submission tucked in a folder, on an empty one, and with a grader
+# that cannot run.  Each must leave a valid results.json.
+set -u
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtgradescope.XXXXXX")
+trap '[ -n "${KEEP:-}" ] || rm -rf "$tmp"' EXIT
+chmod 755 "$tmp"
+passed=0
+failed=0
+check() { name=$1; shift; if "$@"; then passed=$((passed + 1)); else echo "FAIL: $name"; failed=$((failed + 1)); fi; }
+
+make -s gradescope >"$tmp/make.log" 2>&1
+check "make gradescope" [ -f out/gradescope/autograder.zip ]
+out/build/bin/pack list out/gradescope/autograder.zip >"$tmp/list" 2>&1
+check "setup.sh at the zip's root" grep -q ' setup.sh$' "$tmp/list"
+check "run_autograder at the zip's root" grep -q ' run_autograder$' "$tmp/list"
+
+ag="$tmp/ag"
+mkdir -p "$ag/source" "$ag/submission/my work/lab" "$ag/results"
+out/build/bin/pack unzip out/gradescope/autograder.zip "$ag/source" >/dev/null
+check "run_autograder is executable after unzipping" [ -x "$ag/source/run_autograder" ]
+cp "$ag/source/run_autograder" "$ag/run_autograder"
+(cd "$ag/source" && AUTOGRADER_ROOT="$ag" sh ./setup.sh) >"$tmp/setup.log" 2>&1
+check "setup.sh builds the grader" [ -x "$ag/source/out/build/bin/grade" ]
+[ -x "$ag/source/out/build/bin/grade" ] || tail -n 20 "$tmp/setup.log"
+
+# A correct submission, uploaded inside folders.
+cp solutions/*.c "$ag/submission/my work/lab/"
+AUTOGRADER_ROOT="$ag" "$ag/run_autograder" >"$tmp/run1.log" 2>&1
+check "run_autograder exits 0" [ $? -eq 0 ]
+check "results.json for a correct submission" grep -q '"score": 1[01][0-9]' "$ag/results/results.json"
+check "every test passed" sh -c "! grep -q '\"status\": \"failed\"' '$ag/results/results.json'"
+check "hidden tests are after_published" grep -q '"visibility": "after_published"' "$ag/results/results.json"
+check "hard tests are tagged" grep -q '"hard"' "$ag/results/results.json"
+
+# An empty submission: every part missing, score 0, still a valid file.
+rm -rf "$ag/submission"/* "$ag/results/results.json"
+AUTOGRADER_ROOT="$ag" "$ag/run_autograder" >"$tmp/run2.log" 2>&1
+check "results.json for an empty submission" grep -q '"score": 0' "$ag/results/results.json"
+check "it says the files are missing" grep -q 'missing' "$ag/results/results.json"
+
+# A grader that cannot run still leaves results.json.
+broken="$tmp/broken"
+mkdir -p "$broken/source" "$broken/submission" "$broken/results"
+cp "$ag/run_autograder" "$broken/"
+AUTOGRADER_ROOT="$broken" "$broken/run_autograder" >"$tmp/run3.log" 2>&1
+check "results.json when the grader cannot run" grep -q 'could not grade' "$broken/results/results.json"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
