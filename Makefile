@@ -15,6 +15,7 @@ CFLAGS     = $(STD) $(OPT) $(FPFLAGS) $(WARN)
 SANFLAGS   = $(STD) -O1 -g $(FPFLAGS) $(WARN) -fsanitize=address,undefined \
              -fno-omit-frame-pointer -fno-sanitize-recover=all
 THREADS    = -pthread
+RENDER_LTO = -flto                      # the renderer inlines across the stage files; empty to disable
 LDLIBS     = -lm
 
 # What the targets act on (all accept absolute paths).
@@ -72,20 +73,32 @@ stage_src  = $(firstword $(wildcard $(2)/$(1).c) labs/$(1).c)
 SUB_NAME  := $(call sub_name,$(SUBMISSION))
 SUB_BUILD  = $(BUILD)/sub/$(SUB_NAME)
 
+# The renderer's own objects (lto/) are built with link-time optimisation,
+# so the per-pixel calls into the stage files can be inlined.
 $(BUILD)/sub/labs/%.o: labs/%.c $(KIT_HDR)
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/sub/solutions/%.o: solutions/%.c $(KIT_HDR)
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-ifeq ($(filter labs solutions,$(SUB_NAME)),)
-$(SUB_BUILD)/%.o: $$(call stage_src,$$*,$(SUBMISSION)) $(KIT_HDR)
+$(BUILD)/sub/labs/lto/%.o: labs/%.c $(KIT_HDR)
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+	$(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@
+$(BUILD)/sub/solutions/lto/%.o: solutions/%.c $(KIT_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@
+ifeq ($(filter labs solutions,$(SUB_NAME)),)
+$(SUB_BUILD)/lto/%.o: $$(call stage_src,$$*,$(SUBMISSION)) $(KIT_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@
 endif
-$(BUILD)/sub/%/render: $(BUILD)/kit/render_main.o \
-                       $$(addprefix $(BUILD)/sub/$$*/,$$(addsuffix .o,$$(STAGES))) $(BUILD)/kit/libkit.a
-	$(CC) $(CFLAGS) $(THREADS) $^ -o $@ $(LDLIBS)
+$(BUILD)/kit/lto/%.o: labs/kit/%.c $(KIT_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) -c $< -o $@
+RENDER_OBJ = $(BUILD)/kit/lto/render_main.o $(BUILD)/kit/lto/render.o $(BUILD)/kit/lto/image.o
+$(BUILD)/sub/%/render: $(RENDER_OBJ) \
+                       $$(addprefix $(BUILD)/sub/$$*/lto/,$$(addsuffix .o,$$(STAGES))) $(BUILD)/kit/libkit.a
+	$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/compare: $(BUILD)/kit/compare_main.o $(BUILD)/kit/libkit.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
