@@ -190,6 +190,11 @@ $(BUILD)/bin/gentests: $(BUILD)/oracle/gentests_main.o $(BUILD)/oracle/liboracle
                        $(BUILD)/grader/libgrader.a $(BUILD)/kit/libkit.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+# The reference solutions' accuracy on the hard cases (tables for the README).
+$(BUILD)/bin/accuracy: $(BUILD)/oracle/accuracy_main.o $(BUILD)/oracle/liboracle.a \
+                       $(STAGES:%=$(BUILD)/sub/solutions/%.o)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 
 grader: $(BUILD)/bin/grade $(HARNESS) $(GRADER_REF)
 

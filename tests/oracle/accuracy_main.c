@@ -1,0 +1,248 @@
+/*
+ * accuracy_main.c - how accurate the reference solutions are on the hard
+ * families, next to the lecture's textbook formulas; Markdown tables for the
+ * README and the handouts.
+ *
+ *     out/build/bin/accuracy [cases per family [seed]]     (default 2000, 1)
+ *
+ * Errors are in units of u = 2^-53: relative for Part 1 and for t in
+ * Part 3a; for Part 2 absolute in units of u |w| (x) or u |h| (y), since a
+ * pixel centre may be 0.  "worst/tol" is the largest error over tolerance
+ * (the hard_check rules of hard.h: above 1 fails).  "fails" counts answers
+ * the rule rejects, hit/miss included.  Medians and worsts of Part 3a are
+ * over the cases both the oracle and the method call an unambiguous hit.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "hard.h"
+
+#define U ORACLE_U
+
+/* ---- the textbook formulas (the lecture's, as most students write them) --- */
+
+static void textbook_image_plane(double fov, double aspect, double d, double *w, double *h)
+{
+    *h = 2 * d * tan(fov / 2 * M_PI / 180);
+    *w = aspect * *h;
+}
+
+static Vec3 textbook_pixel(int i, int j, int nx, int ny, double w, double h, double d)
+{
+    return vec3(-w / 2 + w * (i + 0.5) / nx, -h / 2 + h * (ny - 0.5 - j) / ny, -d);
+}
+
+static bool textbook_intersect(const Sphere *sp, const Ray *ray, double *t)
+{
+    Vec3 r = ray->direction, f = vec3_sub(ray->origin, sp->center);
+    double A = vec3_dot(r, r), B = vec3_dot(f, r);
+    double C = vec3_dot(f, f) - sp->radius * sp->radius;
+    double disc = B * B - A * C;
+    if (!(A > 0) || !(disc >= 0))
+        return false;
+    double t1 = (-B - sqrt(disc)) / A, t2 = (-B + sqrt(disc)) / A;
+    *t = t1 > 0 ? t1 : t2;
+    return *t > 0;
+}
+
+/* ---- statistics per family ------------------------------------------------ */
+
+typedef struct {
+    double *err;        /* errors in u */
+    int n;
+    double worst_ratio; /* error / tolerance */
+    int fails;
+} Stat;
+
+static void stat_add(Stat *s, double err_u, double ratio)
+{
+    s->err[s->n++] = err_u;
+    if (ratio > s->worst_ratio || isnan(ratio))
+        s->worst_ratio = isnan(ratio) ? INFINITY : ratio;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* "worst | median | worst/tol | fails" cells. */
+static void stat_print(Stat *s)
+{
+    if (s->n == 0) {
+        printf(" - | - | - | %d |", s->fails);
+        return;
+    }
+    qsort(s->err, (size_t)s->n, sizeof *s->err, cmp_double);
+    printf(" %.3g | %.3g | %.3g | %d |", s->err[s->n - 1], s->err[s->n / 2], s->worst_ratio, s->fails);
+}
+
+static Stat *stats_new(int nfam, int per)
+{
+    Stat *s = calloc((size_t)nfam, sizeof *s);
+    for (int f = 0; f < nfam; f++)
+        s[f].err = calloc((size_t)per + 1, sizeof *s[f].err);
+    return s;
+}
+
+static void stats_free(Stat *s, int nfam)
+{
+    for (int f = 0; f < nfam; f++)
+        free(s[f].err);
+    free(s);
+}
+
+static double rel_u(double got, double want)
+{
+    return want == 0 ? (got == 0 ? 0 : INFINITY) : fabs(got - want) / fabs(want) / U;
+}
+
+static const char HEADER[] =
+    "| family | reference worst | median | worst/tol | fails | textbook worst | median | worst/tol | fails |\n"
+    "|---|---|---|---|---|---|---|---|---|\n";
+
+/* ---- the parts -------------------------------------------------------------- */
+
+static void part1(uint64_t seed, int per)
+{
+    int nf = HARD_PART1_FAMILIES, n = nf * per;
+    HardCase1 *c = malloc((size_t)n * sizeof *c);
+    hard_part1(seed, c, n);
+    Stat *ref = stats_new(nf, per), *tb = stats_new(nf, per);
+    for (int k = 0; k < n; k++) {
+        double w, h;
+        for (int m = 0; m < 2; m++) {
+            Stat *s = m ? &tb[k % nf] : &ref[k % nf];
+            (m ? textbook_image_plane : image_plane_size)(c[k].fov_degrees, c[k].aspect, c[k].d, &w, &h);
+            double e = fmax(rel_u(w, c[k].w), rel_u(h, c[k].h));
+            stat_add(s, e, e * U / HARD_PART1_REL_TOL);
+            s->fails += !hard_check1(&c[k], w, h);
+        }
+    }
+    printf("\n### Part 1: image_plane_size (relative error of w and h, in u; tolerance %g u)\n\n%s",
+           HARD_PART1_REL_TOL / U, HEADER);
+    for (int f = 0; f < nf; f++) {
+        printf("| %s |", c[f].family);
+        stat_print(&ref[f]);
+        stat_print(&tb[f]);
+        printf("\n");
+    }
+    stats_free(ref, nf);
+    stats_free(tb, nf);
+    free(c);
+}
+
+static void part2(uint64_t seed, int per)
+{
+    int nf = HARD_PART2_FAMILIES, n = nf * per;
+    HardCase2 *c = malloc((size_t)n * sizeof *c);
+    hard_part2(seed, c, n);
+    Stat *ref = stats_new(nf, per), *tb = stats_new(nf, per);
+    for (int k = 0; k < n; k++) {
+        for (int m = 0; m < 2; m++) {
+            Stat *s = m ? &tb[k % nf] : &ref[k % nf];
+            Vec3 p = (m ? textbook_pixel : pixel_coordinates)(c[k].i, c[k].j, c[k].nx, c[k].ny, c[k].w, c[k].h, c[k].d);
+            double e = fmax(fabs(p.x - c[k].p.x) / (U * c[k].w), fabs(p.y - c[k].p.y) / (U * c[k].h));
+            stat_add(s, e, e / HARD_PART2_TOL_U);
+            s->fails += !hard_check2(&c[k], p);
+        }
+    }
+    printf("\n### Part 2: pixel_coordinates (error of x in u |w|, of y in u |h|; tolerance %g)\n\n%s",
+           HARD_PART2_TOL_U, HEADER);
+    for (int f = 0; f < nf; f++) {
+        printf("| %s |", c[f].family);
+        stat_print(&ref[f]);
+        stat_print(&tb[f]);
+        printf("\n");
+    }
+    stats_free(ref, nf);
+    stats_free(tb, nf);
+    free(c);
+}
+
+static void part3a(uint64_t seed, int per)
+{
+    int nf = HARD_PART3A_FAMILIES, n = nf * per;
+    HardCase3a *c = malloc((size_t)n * sizeof *c);
+    hard_part3a(seed, c, n);
+    Stat *ref = stats_new(nf, per), *tb = stats_new(nf, per);
+    int *hits = calloc((size_t)nf, sizeof *hits), *amb = calloc((size_t)nf, sizeof *amb);
+    for (int k = 0; k < n; k++) {
+        const OracleHit *o = &c[k].expect;
+        hits[k % nf] += o->hit;
+        amb[k % nf] += o->ambiguous;
+        for (int m = 0; m < 2; m++) {
+            Stat *s = m ? &tb[k % nf] : &ref[k % nf];
+            double t = 0;
+            bool hit = (m ? textbook_intersect : sphere_intersect)(&c[k].sphere, &c[k].ray, &t);
+            s->fails += !hard_check3a(&c[k], hit, t);
+            if (hit && o->hit && !o->ambiguous) {
+                double tol = oracle_sphere_t_tolerance(&c[k].sphere, &c[k].ray, o);
+                stat_add(s, rel_u(t, o->t), fabs(t - o->t) / tol);
+            }
+        }
+    }
+    printf("\n### Part 3a: sphere_intersect (relative error of t, in u; tolerance %g u kappa)\n\n"
+           "| family | hits | ambiguous | reference worst | median | worst/tol | fails | textbook worst | median | worst/tol | fails |\n"
+           "|---|---|---|---|---|---|---|---|---|---|---|\n", ORACLE_K_T);
+    for (int f = 0; f < nf; f++) {
+        printf("| %s | %d | %d |", c[f].family, hits[f], amb[f]);
+        stat_print(&ref[f]);
+        stat_print(&tb[f]);
+        printf("\n");
+    }
+    free(hits);
+    free(amb);
+    stats_free(ref, nf);
+    stats_free(tb, nf);
+    free(c);
+}
+
+static void part3b(uint64_t seed, int per)
+{
+    int nf = HARD_PART3B_FAMILIES, n = nf * per;
+    HardCase3b *c = malloc((size_t)n * sizeof *c);
+    hard_part3b(seed, c, n);
+    printf("\n### Part 3b: camera_ray (direction error, in u, tolerance %g u) and ray_color (reference only)\n\n"
+           "| family | ambiguous | direction worst | median | ray fails | colour fails |\n"
+           "|---|---|---|---|---|---|\n", HARD_PART3B_DIR_TOL_U);
+    Stat *dir = stats_new(nf, per);
+    int *amb = calloc((size_t)nf, sizeof *amb), *cfail = calloc((size_t)nf, sizeof *cfail);
+    for (int k = 0; k < n; k++) {
+        Ray ray = camera_ray(c[k].eye, c[k].pixel);
+        Vec3 u = c[k].ray.direction;
+        double e = fmax(fabs(ray.direction.x - u.x), fmax(fabs(ray.direction.y - u.y), fabs(ray.direction.z - u.z))) / U;
+        stat_add(&dir[k % nf], e, e / HARD_PART3B_DIR_TOL_U);
+        dir[k % nf].fails += !hard_check3b_ray(&c[k], ray);
+        Scene scene = hard_scene3b(&c[k]);
+        cfail[k % nf] += !hard_check3b_color(&c[k], ray_color(&scene, &c[k].ray));
+        amb[k % nf] += c[k].ambiguous;
+    }
+    for (int f = 0; f < nf; f++) {
+        qsort(dir[f].err, (size_t)dir[f].n, sizeof *dir[f].err, cmp_double);
+        printf("| %s | %d | %.3g | %.3g | %d | %d |\n", c[f].family, amb[f],
+               dir[f].err[dir[f].n - 1], dir[f].err[dir[f].n / 2], dir[f].fails, cfail[f]);
+    }
+    free(amb);
+    free(cfail);
+    stats_free(dir, nf);
+    free(c);
+}
+
+int main(int argc, char **argv)
+{
+    int per = argc > 1 ? atoi(argv[1]) : 2000;
+    uint64_t seed = argc > 2 ? strtoull(argv[2], NULL, 0) : 1;
+    if (per < 1) {
+        fprintf(stderr, "usage: accuracy [cases per family [seed]]\n");
+        return 2;
+    }
+    printf("## Accuracy on the hard families (%d cases per family, seed %llu)\n",
+           per, (unsigned long long)seed);
+    part1(seed, per);
+    part2(seed, per);
+    part3a(seed, per);
+    part3b(seed, per);
+    return 0;
+}

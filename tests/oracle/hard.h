@@ -1,0 +1,120 @@
+/*
+ * hard.h - deterministic generators of hard cases for every part, each with
+ * its expected answer from the oracle and the rule that judges an answer.
+ *
+ *     HardCase3a cases[HARD_PART3A_FAMILIES * 20];
+ *     int n = hard_part3a(seed, cases, HARD_PART3A_FAMILIES * 20);
+ *     for (int k = 0; k < n; k++) {
+ *         double t = 0;
+ *         bool hit = sphere_intersect(&cases[k].sphere, &cases[k].ray, &t);
+ *         if (!hard_check3a(&cases[k], hit, t)) ...  "Part 3a: " + cases[k].family
+ *     }
+ *
+ * Case k belongs to family k % HARD_PARTx_FAMILIES and depends only on
+ * (seed, k): any max >= the number of families covers every family, and a
+ * longer list starts with the shorter one.  Within a family, even and odd
+ * cases aim at a hit and at a miss where the family allows both (the
+ * oracle decides what they are).  Only + - * / sqrt ldexp nextafter are
+ * used to make the inputs, so the same seed gives the same cases on every
+ * IEEE-754 machine (build with -ffp-contract=off).
+ *
+ * Tolerances (the hard_check functions apply them):
+ *   Part 1   w and h each within HARD_PART1_REL_TOL = 8 u relative.  The
+ *            reference's error is a few u: the rounding of pi / 180 and of
+ *            the argument (times tan's condition, at most pi / 2 once the
+ *            angle is reduced to 45 degrees or less), tan's own ulp, the
+ *            products by 2 d and by aspect.
+ *   Part 2   x within HARD_PART2_TOL_U u |w| of the exact centre, y within
+ *            HARD_PART2_TOL_U u |h|, z exactly -d.  The lecture's formula
+ *            -w/2 + w (i + 0.5) / nx is off by at most about 1.25 u |w|.
+ *   Part 3a  oracle_sphere_accepts (oracle.h): hit/miss must match unless
+ *            ambiguous; t within ORACLE_K_T u kappa t; a hit's t finite, > 0.
+ *   Part 3b  camera_ray: origin exact, each direction component within
+ *            HARD_PART3B_DIR_TOL_U u of the correctly rounded unit vector
+ *            (the reference is off by at most about 2.5 u).  ray_color: the
+ *            colour of the oracle's closest sphere (or the background), or
+ *            when ambiguous that of the alternative.
+ */
+#ifndef HARD_H
+#define HARD_H
+
+#include <stdint.h>
+#include "oracle.h"
+
+#define HARD_FAMILY_LEN 48
+
+/* splitmix64: *state advances by one step per call. */
+uint64_t hard_rng_next(uint64_t *state);
+/* Uniform in [0, 1), 53 random bits. */
+double hard_rng_uniform(uint64_t *state);
+
+/* ---- Part 1: image_plane_size ------------------------------------------ */
+
+#define HARD_PART1_FAMILIES 6
+#define HARD_PART1_REL_TOL (8 * ORACLE_U)
+
+typedef struct {
+    char family[HARD_FAMILY_LEN];      /* e.g. "fov 180 - 2^-k"            */
+    double fov_degrees, aspect, d;     /* inputs                           */
+    double w, h;                       /* expected (oracle_image_plane)    */
+} HardCase1;
+
+int  hard_part1(uint64_t seed, HardCase1 *cases, int max);
+bool hard_check1(const HardCase1 *c, double w, double h);
+
+/* ---- Part 2: pixel_coordinates ----------------------------------------- */
+
+#define HARD_PART2_FAMILIES 4
+#define HARD_PART2_TOL_U 4.0
+
+typedef struct {
+    char family[HARD_FAMILY_LEN];
+    int i, j, nx, ny;                  /* inputs                           */
+    double w, h, d;
+    Vec3 p;                            /* expected (oracle_pixel)          */
+} HardCase2;
+
+int  hard_part2(uint64_t seed, HardCase2 *cases, int max);
+bool hard_check2(const HardCase2 *c, Vec3 got);
+
+/* ---- Part 3a: sphere_intersect ----------------------------------------- */
+
+#define HARD_PART3A_FAMILIES 28
+
+typedef struct {
+    char family[HARD_FAMILY_LEN];      /* e.g. "far small sphere D/R=1e7"  */
+    Sphere sphere;                     /* inputs                           */
+    Ray ray;
+    OracleHit expect;                  /* oracle_sphere(&sphere, &ray)     */
+} HardCase3a;
+
+int  hard_part3a(uint64_t seed, HardCase3a *cases, int max);
+bool hard_check3a(const HardCase3a *c, bool hit, double t);
+
+/* ---- Part 3b: camera_ray and ray_color --------------------------------- */
+
+#define HARD_PART3B_FAMILIES 6
+#define HARD_PART3B_MAX_SPHERES 4
+#define HARD_PART3B_DIR_TOL_U 4.0
+
+typedef struct {
+    char family[HARD_FAMILY_LEN];
+    Sphere spheres[HARD_PART3B_MAX_SPHERES];   /* distinct colours         */
+    int nspheres;
+    Vec3 background;
+    Vec3 eye;                          /* the origin                       */
+    Vec3 pixel;                        /* camera_ray(eye, pixel)           */
+    Ray ray;                           /* expected: eye, oracle_unit(pixel - eye);
+                                          also the ray ray_color is given */
+    int closest;                       /* expected: oracle_closest(scene, ray) */
+    bool ambiguous;
+    int alternative;
+} HardCase3b;
+
+int  hard_part3b(uint64_t seed, HardCase3b *cases, int max);
+/* A Scene that points into c (valid while c is). */
+Scene hard_scene3b(HardCase3b *c);
+bool hard_check3b_ray(const HardCase3b *c, Ray got);
+bool hard_check3b_color(const HardCase3b *c, Vec3 got);
+
+#endif
