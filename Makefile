@@ -239,6 +239,17 @@ student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 	$(BUILD)/bin/pack targz out/student-kit.tar.gz $(KIT_DIR) student-kit
 	@echo "wrote $(KIT_DIR)/ and out/student-kit.tar.gz"
 
+# ---- handouts --------------------------------------------------------------
+# The handouts' figures, drawn by the kit from the reference and from faulty
+# variants (handouts/figures/make-figures.sh); commit the PNGs it writes.
+# The student kit has no solutions/: its figures come ready-made.
+handouts: $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render $(BUILD)/bin/compare)
+ifneq ($(HAVE_SOLUTIONS),)
+	MAKE="$(MAKE)" sh handouts/figures/make-figures.sh
+else
+	@echo "the figures are in handouts/figures (drawing them again needs solutions/)"
+endif
+
 # ---- unit tests of the framework (tests/unit) ------------------------------
 UNIT_SRC   = $(wildcard tests/unit/test_*.c)
 UNIT_BIN   = $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)

@@ -1,0 +1,290 @@
+/*
+ * bench.h - `make bench`: how much speed each ray/sphere formulation buys
+ * and how much accuracy it costs.
+ *
+ * The pieces, one job per file:
+ *   methods.c    the formulations, in double and float, one test at a time
+ *   fastpath.c   the specialised fast path: eye at the origin, spheres as
+ *                structure of arrays, vectorised over packets of rays
+ *   suite.c      the table of methods: for each, one test and a closest-hit
+ *                loop over many rays (the renderer's inner loop)
+ *   workload.c   the rays: an ordinary scene's camera rays, and hard cases
+ *   measure.c    timing (interleaved medians), the clock, the ceiling
+ *   accuracy.c   errors against the exact answers of tests/oracle
+ *   renders.c    the lab's scenes rendered at full HD, against exact renders
+ *   svg.c        the plot, drawn directly as SVG
+ *   report.c     results.csv, report.md
+ *   bench_main.c options, progress line, the order of the stages
+ *
+ * Everything the bench writes goes to one directory (out/bench by default).
+ */
+#ifndef BENCH_H
+#define BENCH_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include "raytracer.h"
+
+/* ---- float counterparts of the lab's types ------------------------------ */
+typedef struct { float x, y, z; } Vec3f;
+typedef struct { Vec3f origin, direction; } Rayf;
+typedef struct { Vec3f center; float radius; } Spheref;
+
+Vec3f vec3f_from(Vec3 v);                 /* each component rounded to float */
+Spheref spheref_from(const Sphere *s);
+Rayf rayf_from(const Ray *r);
+
+/* ---- methods.c: one ray against one sphere ------------------------------ */
+/* All follow the lab's contract for sphere_intersect (smallest t > 0; a miss
+ * returns false), except where a method's own assumption is stated. */
+typedef bool (*IsectD)(const Sphere *sphere, const Ray *ray, double *t);
+typedef bool (*IsectF)(const Spheref *sphere, const Rayf *ray, float *t);
+
+bool isect_textbook_d(const Sphere *sphere, const Ray *ray, double *t);
+bool isect_textbook_f(const Spheref *sphere, const Rayf *ray, float *t);
+bool isect_unit_d(const Sphere *sphere, const Ray *ray, double *t);      /* assumes |r| = 1 */
+bool isect_unit_f(const Spheref *sphere, const Rayf *ray, float *t);
+bool isect_geometric_d(const Sphere *sphere, const Ray *ray, double *t); /* assumes |r| = 1 */
+bool isect_geometric_f(const Spheref *sphere, const Rayf *ray, float *t);
+bool isect_rtg_d(const Sphere *sphere, const Ray *ray, double *t);
+bool isect_rtg_f(const Spheref *sphere, const Rayf *ray, float *t);
+bool isect_reference_f(const Spheref *sphere, const Rayf *ray, float *t);
+/* The same transliteration compiled as double: the benchmark checks that it
+ * agrees with the linked sphere_intersect (which it times as "reference"). */
+bool isect_reference_d(const Sphere *sphere, const Ray *ray, double *t);
+
+/* ---- proposal.c: a cheaper reference, proposed for solutions/ ----------- */
+bool proposal_sphere_intersect(const Sphere *sphere, const Ray *ray, double *t);
+
+/* ---- fastpath.c: the specialised fast path ------------------------------ */
+/* Rays start at the eye (the origin of the sphere coordinates given to
+ * fast_build) and have unit direction (to a few ulps).  Per sphere, built
+ * once: the centre c, R^2, C = |c|^2 - R^2 rounded once from an exact
+ * computation, and a threshold below which b = c.r is a certain miss.  Per
+ * ray and sphere the vector loop computes only b and compares it with the
+ * threshold: no sqrt, no division, no branch.  Packets of rays where some
+ * ray passes are then solved accurately (Ray Tracing Gems' discriminant),
+ * the nearest hit kept. */
+#define FAST_PACKET 16                    /* rays per packet */
+
+typedef struct {
+    int n;
+    double *cx, *cy, *cz;     /* centres, relative to the eye              */
+    double *r2;               /* R^2                                       */
+    double *c;                /* |c|^2 - R^2, rounded once from exact      */
+    double *bthr;             /* b = c.r below this: certainly a miss      */
+    float *fcx, *fcy, *fcz;   /* the same in float                         */
+    float *fr2, *fc, *fbthr;
+} FastScene;
+
+/* Builds the fast path's scene from spheres, with the eye at eye.
+ * Returns 0, or -1 if out of memory. */
+int fast_build(FastScene *fs, const Sphere *spheres, int n, Vec3 eye);
+void fast_free(FastScene *fs);
+
+/* Nearest hit for count rays with unit directions (dx, dy, dz)[i] from the
+ * eye: idx[i] = sphere index or -1, t[i] = its t (INFINITY on a miss).
+ * count need not be a multiple of FAST_PACKET. */
+void fast_closest_d(const FastScene *fs, const double *dx, const double *dy, const double *dz,
+                    int count, int *idx, double *t);
+void fast_closest_f(const FastScene *fs, const float *dx, const float *dy, const float *dz,
+                    int count, int *idx, double *t);
+/* Float filter, double solve: needs both copies of the directions. */
+void fast_closest_m(const FastScene *fs, const float *fdx, const float *fdy, const float *fdz,
+                    const double *dx, const double *dy, const double *dz,
+                    int count, int *idx, double *t);
+
+/* ---- workload.c: rays -------------------------------------------------- */
+/* A set of rays in every layout a method may want. */
+typedef struct {
+    int n;
+    Ray *rays;                        /* array of structures, double  */
+    Rayf *raysf;                      /* array of structures, float   */
+    double *dx, *dy, *dz;             /* structure of arrays, double  */
+    float *fdx, *fdy, *fdz;           /* structure of arrays, float   */
+} RaySet;
+
+int rayset_alloc(RaySet *rs, int n);
+void rayset_free(RaySet *rs);
+void rayset_set(RaySet *rs, int i, Ray ray);   /* stores ray in every layout */
+enum { LAYOUT_AOS_D = 1, LAYOUT_AOS_F = 2, LAYOUT_SOA_D = 4, LAYOUT_SOA_F = 8 };
+void rayset_put(RaySet *rs, int i, Ray ray, unsigned layouts);   /* only those */
+
+/* Camera rays through an nx x ny grid of pixel centres for scene (its fov
+ * and d, the given size), every step-th pixel in each direction. */
+int rayset_camera(RaySet *rs, const Scene *scene, int nx, int ny, int step);
+
+/* One test case: a sphere and a ray. */
+typedef struct {
+    Sphere sphere;
+    Ray ray;
+} Case;
+
+typedef enum { FAMILY_SCENE, FAMILY_FAR, FAMILY_NEAR, FAMILY_TANGENT, FAMILY_COUNT } Family;
+const char *family_name(Family f);
+const char *family_title(Family f);
+
+/* Generates n cases of a hard family with a fixed seed.  Directions have
+ * unit length (rounded).  Returns a malloc'd array or NULL. */
+Case *cases_hard(Family f, int n, uint64_t seed);
+/* Every (camera ray, sphere) pair of scene at its own size, every step-th
+ * pixel in each direction: *n cases. */
+Case *cases_scene(const Scene *scene, int step, int *n);
+
+/* ---- suite.c: the methods ---------------------------------------------- */
+typedef enum { PREC_DOUBLE, PREC_FLOAT, PREC_MIXED } Precision;
+const char *precision_name(Precision p);
+
+typedef struct {
+    const Sphere *spheres;    /* the scene, double                    */
+    const Spheref *spheresf;  /* the same, rounded to float           */
+    int n;
+    const FastScene *fast;
+} BenchScene;
+
+typedef struct {
+    const char *name;         /* short id, as in results.csv                */
+    const char *title;        /* for the report                             */
+    Precision precision;
+    bool fast;                /* the specialised fast path                  */
+    unsigned layouts;         /* the ray layouts closest reads (LAYOUT_*)   */
+    /* One test: hit and t, computed at the method's precision. */
+    bool (*one)(const Sphere *sphere, const Ray *ray, double *t);
+    /* Nearest hit for rays [0, rs->n): idx[i], t[i] as fast_closest_d. */
+    void (*closest)(const BenchScene *scene, const RaySet *rs, int *idx, double *t);
+    /* The function itself, for the scalar methods (else NULL). */
+    IsectD scalar_d;
+    IsectF scalar_f;
+} Method;
+
+extern const Method bench_methods[];
+extern const int bench_nmethods;
+int method_find(const char *name, Precision p);   /* index, or -1 */
+
+/* ---- measure.c: time, clock, ceiling ------------------------------------ */
+double now_seconds(void);                    /* CLOCK_MONOTONIC */
+double median(double *v, int n);             /* sorts v */
+double quantile(double *v, int n, double q); /* v sorted */
+
+typedef struct {
+    double mhz_cpuinfo;        /* from /proc/cpuinfo, 0 if not available   */
+    double mhz_measured;       /* from a dependent integer-add loop (median
+                                  of readings between throughput rounds)    */
+    double mhz;                /* the one used                              */
+    double mul_per_cycle;      /* independent vector multiplies per cycle   */
+    double add_per_cycle;      /* independent vector adds per cycle         */
+    double mix_per_cycle;      /* the two interleaved                       */
+    double mul_pipes, add_pipes, mix_pipes;   /* the same, rounded          */
+    double cycles_per_vector;  /* for one vector of tests                   */
+    int lanes_d, lanes_f;      /* vector lanes the portable build uses      */
+    int ops_mul, ops_add;      /* per test, the minimum for the lab scene   */
+    double ceiling_d, ceiling_f;   /* million tests per second              */
+} Ceiling;
+
+/* Measures the pipes and fills c.  mhz_during: the clock measured while the
+ * methods ran (0: measure it here). */
+void measure_ceiling(Ceiling *c, bool quick, double mhz_during);
+
+/* Times every method's closest loop over rs, interleaved: rounds rounds,
+ * each running every method once (for about sample_s seconds).  Stores
+ * pass_seconds[r * bench_nmethods + m], the time of one pass of method m
+ * in round r, and round_mhz[r], the clock measured after round r.
+ * Returns 0, or -1 if out of memory. */
+int measure_throughput(const BenchScene *sc, const RaySet *rs, int rounds, double sample_s,
+                       double *pass_seconds, double *round_mhz);
+
+/* Cost per test by outcome, for the scalar methods: every method calls its
+ * function on the same (sphere, ray) pairs, first pairs that miss, then pairs
+ * that hit, interleaved over rounds; medians in ns per call.  Methods
+ * without a scalar function get NAN.  Returns 0, or -1 if out of memory. */
+int measure_outcomes(const Case *miss, int nmiss, const Case *hit, int nhit, int rounds,
+                     double sample_s, double *miss_ns, double *hit_ns);
+
+/* ---- accuracy.c ---------------------------------------------------------- */
+typedef struct {
+    long tests;                /* cases                                    */
+    long ambiguous;            /* oracle: either answer acceptable         */
+    long wrong;                /* hit/miss differs, not ambiguous          */
+    long hits;                 /* both hit, not ambiguous: t compared      */
+    long over_tol;             /* of those, error above 64 u kappa         */
+    double max_rel, median_rel;
+    double max_over_kappa;     /* max of error / (u kappa)                 */
+} ErrorStats;
+
+/* Exact answers for cases, computed once. */
+typedef struct {
+    bool hit, ambiguous;
+    double t, kappa;
+} Exact;
+Exact *exact_answers(const Case *cases, int n);
+
+/* Errors of method m on cases.  errs (may be NULL) receives the relative
+ * errors of the compared hits, *nerrs of them. */
+void accuracy_run(const Method *m, const Case *cases, const Exact *exact, int n,
+                  ErrorStats *st, double *errs, long *nerrs);
+
+/* ---- renders.c ------------------------------------------------------------ */
+typedef struct {
+    char scene[64];            /* file name without directory or .scene */
+    int nspheres;
+    int nx, ny;
+    long pixels, ambiguous;    /* ambiguous: the exact render allows two colours */
+    double seconds[32];        /* per method: median render time, one thread */
+    double rays_seconds;       /* making the rays alone (every renderer does) */
+    long differ[32];           /* per method: pixels not as the exact render */
+} RenderResult;
+
+/* Renders the scene at path at nx x ny with every method, reps times
+ * interleaved, and compares each with the exact render (oracle_closest).
+ * Returns 0, or -1 with a reason in err. */
+int render_bench(const char *path, int nx, int ny, int reps, RenderResult *res,
+                 char *err, size_t errlen);
+
+/* ---- report.c ------------------------------------------------------------- */
+#define BENCH_MAX_METHODS 32
+#define BENCH_MAX_SCENES 16
+
+typedef struct {
+    /* how it ran */
+    bool quick;
+    char date[64], cpu[128], compiler[128];
+    double load_before, load_after;      /* 1-minute load average, -1 if unknown */
+    double seconds_total;
+    uint64_t seed;
+    int rounds;                          /* throughput rounds                 */
+    int tp_rays, tp_spheres;             /* the throughput workload           */
+    char tp_scene[64];
+    int family_cases[FAMILY_COUNT];
+    int render_reps;
+    /* per method */
+    double mtests[BENCH_MAX_METHODS], mtests_q1[BENCH_MAX_METHODS], mtests_q3[BENCH_MAX_METHODS];
+    ErrorStats fam[BENCH_MAX_METHODS][FAMILY_COUNT];
+    ErrorStats all[BENCH_MAX_METHODS];   /* the families pooled */
+    /* reference / textbook, double, the ordinary scene */
+    double ratio_of_medians, ratio_paired, ratio_q1, ratio_q3;
+    /* ns per call on pairs of the ordinary scene that miss and that hit */
+    double miss_ns[BENCH_MAX_METHODS], hit_ns[BENCH_MAX_METHODS];
+    double hit_share;                    /* share of the scene's tests that hit */
+    /* the float transliteration, compiled as double, against the linked
+     * reference: cases compared and cases that differ (must be 0) */
+    long translit_cases, translit_differ;
+    /* the grader's hard cases (tests/oracle/hard.h), judged by its rule */
+    int grader_cases;
+    int grader_failed[BENCH_MAX_METHODS];
+    Ceiling ceiling;
+    RenderResult renders[BENCH_MAX_SCENES];
+    int nrenders;
+} BenchResults;
+
+/* Writes results.csv, results_by_family.csv, renders.csv, report.md and
+ * plot.svg into dir.  Returns 0, or -1 with a reason in err. */
+int report_write(const BenchResults *br, const char *dir, char *err, size_t errlen);
+
+/* ---- progress (bench_main.c) ----------------------------------------------- */
+void progress(const char *stage, int done, int total);
+
+/* A sink the compiler cannot see through: measured results go here. */
+extern volatile double bench_sink;
+
+#endif

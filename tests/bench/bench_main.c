@@ -1,0 +1,458 @@
+/*
+ * bench_main.c - `make bench`: the order of the stages, the options, and
+ * the progress line.
+ *
+ *     bench [--quick] [--out DIR] [--scenes DIR] [--size WxH] [--rounds N]
+ *           [--seed N]
+ *
+ *   1. throughput: every method's closest-hit loop over the camera rays of
+ *      default.scene, interleaved rounds, medians
+ *   2. the ceiling: clock and floating-point pipes, measured
+ *   3. errors: every method against the exact answers, on the ordinary scene
+ *      and on the hard families
+ *   4. renders: each lab scene at full HD with every method, against an
+ *      exact render
+ *   5. the report: results.csv, results_by_family.csv, renders.csv,
+ *      report.md, plot.svg in DIR (default out/bench)
+ * --quick does the same with small sizes, in a few seconds (make test).
+ * Exit status: 0, or 1 if something could not run (the reason on stderr).
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <dirent.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+#include "kit/scene.h"
+#include "../oracle/hard.h"
+#include "bench.h"
+
+volatile double bench_sink;
+
+/* ---- progress ------------------------------------------------------------- */
+
+static double start_time;
+static bool progress_tty;
+
+/* One line on stderr, rewritten in place on a terminal (at most ten times a
+ * second); elsewhere one line per stage. */
+void progress(const char *stage, int done, int total)
+{
+    static char last_stage[64];
+    static double last_time;
+    double now = now_seconds();
+    bool new_stage = strncmp(stage, last_stage, sizeof last_stage - 1) != 0;
+    if (progress_tty) {
+        if (!new_stage && done < total && now - last_time < 0.1)
+            return;
+        fprintf(stderr, "\r\033[Kbench [%5.1fs] %s: %d/%d (%.0f%%)", now - start_time, stage, done,
+                total, total > 0 ? 100.0 * done / total : 100.0);
+    } else if (new_stage) {
+        fprintf(stderr, "bench [%5.1fs] %s\n", now - start_time, stage);
+    }
+    fflush(stderr);
+    snprintf(last_stage, sizeof last_stage, "%s", stage);
+    last_time = now;
+}
+
+static void progress_done(void)
+{
+    if (progress_tty)
+        fprintf(stderr, "\r\033[K");
+}
+
+/* ---- small helpers -------------------------------------------------------------- */
+
+static double load_average(void)
+{
+    FILE *f = fopen("/proc/loadavg", "r");
+    double v = -1;
+    if (f) {
+        if (fscanf(f, "%lf", &v) != 1)
+            v = -1;
+        fclose(f);
+    }
+    return v;
+}
+
+static void cpu_model(char *out, size_t len)
+{
+    snprintf(out, len, "unknown CPU");
+    FILE *f = fopen("/proc/cpuinfo", "r");
+    if (!f)
+        return;
+    char line[256];
+    while (fgets(line, sizeof line, f))
+        if (strncmp(line, "model name", 10) == 0) {
+            const char *colon = strchr(line, ':');
+            if (colon) {
+                snprintf(out, len, "%s", colon + 2);
+                out[strcspn(out, "\n")] = '\0';
+            }
+            break;
+        }
+    fclose(f);
+}
+
+static int mkdir_p(const char *dir)
+{
+    char buf[1024];
+    snprintf(buf, sizeof buf, "%s", dir);
+    for (char *p = buf + 1; *p; p++)
+        if (*p == '/') {
+            *p = '\0';
+            mkdir(buf, 0777);
+            *p = '/';
+        }
+    mkdir(buf, 0777);
+    struct stat st;
+    return stat(buf, &st) == 0 && S_ISDIR(st.st_mode) ? 0 : -1;
+}
+
+static int cmp_str(const void *a, const void *b)
+{
+    return strcmp(*(const char *const *)a, *(const char *const *)b);
+}
+
+/* The *.scene files of dir, sorted; *n of them (at most max). */
+static int list_scenes(const char *dir, char **paths, int max)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        return -1;
+    int n = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL && n < max) {
+        size_t len = strlen(e->d_name);
+        if (len > 6 && strcmp(e->d_name + len - 6, ".scene") == 0) {
+            size_t need = strlen(dir) + len + 2;
+            paths[n] = malloc(need);
+            if (!paths[n])
+                break;
+            snprintf(paths[n], need, "%s/%s", dir, e->d_name);
+            n++;
+        }
+    }
+    closedir(d);
+    qsort(paths, (size_t)n, sizeof *paths, cmp_str);
+    return n;
+}
+
+static void pool_stats(ErrorStats *all, const ErrorStats *fam, double *errs, long nerrs)
+{
+    memset(all, 0, sizeof *all);
+    for (int f = 0; f < FAMILY_COUNT; f++) {
+        all->tests += fam[f].tests;
+        all->ambiguous += fam[f].ambiguous;
+        all->wrong += fam[f].wrong;
+        all->hits += fam[f].hits;
+        all->over_tol += fam[f].over_tol;
+        if (fam[f].max_rel > all->max_rel)
+            all->max_rel = fam[f].max_rel;
+        if (fam[f].max_over_kappa > all->max_over_kappa)
+            all->max_over_kappa = fam[f].max_over_kappa;
+    }
+    all->median_rel = nerrs > 0 ? median(errs, (int)nerrs) : 0;
+}
+
+/* ---- the stages ------------------------------------------------------------------- */
+
+typedef struct {
+    bool quick;
+    const char *out, *scenes;
+    int width, height, rounds;
+    uint64_t seed;
+} Options;
+
+static int stage_throughput(const Options *o, BenchResults *br, char *err, size_t errlen)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/default.scene", o->scenes);
+    Scene scene;
+    if (scene_load(&scene, path, err, errlen) != 0)
+        return -1;
+    RaySet rs;
+    FastScene fs;
+    Spheref sf[64];
+    if (scene.nspheres > 64 || rayset_camera(&rs, &scene, scene.nx, scene.ny, o->quick ? 8 : 4) != 0) {
+        snprintf(err, errlen, "%s: too many spheres, or out of memory", path);
+        scene_free(&scene);
+        return -1;
+    }
+    if (fast_build(&fs, scene.spheres, scene.nspheres, scene.eye) != 0) {
+        snprintf(err, errlen, "out of memory");
+        rayset_free(&rs);
+        scene_free(&scene);
+        return -1;
+    }
+    for (int k = 0; k < scene.nspheres; k++)
+        sf[k] = spheref_from(&scene.spheres[k]);
+    BenchScene bs = { scene.spheres, sf, scene.nspheres, &fs };
+    snprintf(br->tp_scene, sizeof br->tp_scene, "default.scene");
+    br->tp_rays = rs.n;
+    br->tp_spheres = scene.nspheres;
+    br->rounds = o->rounds;
+
+    int nm = bench_nmethods, R = o->rounds;
+    double *secs = malloc((size_t)(R * nm) * sizeof *secs);
+    double *mhz = malloc((size_t)R * sizeof *mhz);
+    double *col = malloc((size_t)R * sizeof *col);
+    int status = -1;
+    if (secs && mhz && col &&
+        measure_throughput(&bs, &rs, R, o->quick ? 0.001 : 0.005, secs, mhz) == 0) {
+        double tests = (double)rs.n * scene.nspheres;
+        for (int m = 0; m < nm; m++) {
+            for (int r = 0; r < R; r++)
+                col[r] = tests / secs[r * nm + m] / 1e6;
+            br->mtests[m] = median(col, R);
+            br->mtests_q1[m] = quantile(col, R, 0.25);
+            br->mtests_q3[m] = quantile(col, R, 0.75);
+        }
+        int ref = method_find("reference", PREC_DOUBLE), tb = method_find("textbook", PREC_DOUBLE);
+        for (int r = 0; r < R; r++)
+            col[r] = secs[r * nm + ref] / secs[r * nm + tb];
+        br->ratio_paired = median(col, R);
+        br->ratio_q1 = quantile(col, R, 0.25);
+        br->ratio_q3 = quantile(col, R, 0.75);
+        br->ratio_of_medians = br->mtests[tb] / br->mtests[ref];
+        br->ceiling.mhz_measured = median(mhz, R);
+        status = 0;
+    } else {
+        snprintf(err, errlen, "out of memory");
+    }
+    free(secs);
+    free(mhz);
+    free(col);
+    fast_free(&fs);
+    rayset_free(&rs);
+    scene_free(&scene);
+    return status;
+}
+
+static int stage_errors(const Options *o, BenchResults *br, char *err, size_t errlen)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/default.scene", o->scenes);
+    Scene scene;
+    if (scene_load(&scene, path, err, errlen) != 0)
+        return -1;
+    Case *cases[FAMILY_COUNT];
+    int n[FAMILY_COUNT];
+    int hard_n = o->quick ? 3000 : 200000;
+    cases[FAMILY_SCENE] = cases_scene(&scene, o->quick ? 8 : 1, &n[FAMILY_SCENE]);
+    scene_free(&scene);
+    for (int f = 1; f < FAMILY_COUNT; f++) {
+        n[f] = hard_n;
+        cases[f] = cases_hard((Family)f, hard_n, o->seed);
+    }
+    long total = 0;
+    for (int f = 0; f < FAMILY_COUNT; f++) {
+        total += n[f];
+        br->family_cases[f] = n[f];
+    }
+    Exact *exact[FAMILY_COUNT] = { NULL };
+    double *errs = malloc((size_t)total * sizeof *errs);
+    int status = errs ? 0 : -1;
+    for (int f = 0; f < FAMILY_COUNT && status == 0; f++) {
+        char stage[64];
+        snprintf(stage, sizeof stage, "exact answers, %s", family_name((Family)f));
+        progress(stage, 0, 1);
+        exact[f] = cases[f] ? exact_answers(cases[f], n[f]) : NULL;
+        if (!exact[f])
+            status = -1;
+    }
+    /* The float transliteration of the reference, compiled as double, must
+     * give the linked reference's answers exactly. */
+    for (int f = 0; f < FAMILY_COUNT && status == 0; f++)
+        for (int i = 0; i < n[f]; i++) {
+            double t1 = 0, t2 = 0;
+            bool h1 = sphere_intersect(&cases[f][i].sphere, &cases[f][i].ray, &t1);
+            bool h2 = isect_reference_d(&cases[f][i].sphere, &cases[f][i].ray, &t2);
+            br->translit_cases++;
+            if (h1 != h2 || (h1 && memcmp(&t1, &t2, sizeof t1) != 0))
+                br->translit_differ++;
+        }
+    /* Cost by outcome: the scene's pairs that surely miss and surely hit. */
+    if (status == 0) {
+        const int cap = o->quick ? 2000 : 20000;
+        Case *miss = malloc((size_t)cap * sizeof *miss), *hit = malloc((size_t)cap * sizeof *hit);
+        int nmiss = 0, nhit = 0;
+        long counted = 0, hits = 0;
+        for (int i = 0; i < n[FAMILY_SCENE]; i++)
+            if (!exact[FAMILY_SCENE][i].ambiguous) {
+                counted++;
+                hits += exact[FAMILY_SCENE][i].hit;
+            }
+        br->hit_share = counted > 0 ? (double)hits / (double)counted : 0;
+        long step_hit = hits / cap + 1, step_miss = (counted - hits) / cap + 1, kh = 0, km = 0;
+        for (int i = 0; miss && hit && i < n[FAMILY_SCENE]; i++) {
+            const Exact *e = &exact[FAMILY_SCENE][i];
+            if (e->ambiguous)
+                continue;
+            if (e->hit && kh++ % step_hit == 0 && nhit < cap)
+                hit[nhit++] = cases[FAMILY_SCENE][i];
+            else if (!e->hit && km++ % step_miss == 0 && nmiss < cap)
+                miss[nmiss++] = cases[FAMILY_SCENE][i];
+        }
+        if (!miss || !hit || measure_outcomes(miss, nmiss, hit, nhit, o->quick ? 3 : 31,
+                                              o->quick ? 0.0005 : 0.002, br->miss_ns,
+                                              br->hit_ns) != 0)
+            status = -1;
+        free(miss);
+        free(hit);
+    }
+    for (int m = 0; m < bench_nmethods && status == 0; m++) {
+        progress("errors", m, bench_nmethods);
+        long used = 0;
+        for (int f = 0; f < FAMILY_COUNT; f++) {
+            long ne = 0;
+            accuracy_run(&bench_methods[m], cases[f], exact[f], n[f], &br->fam[m][f], errs + used, &ne);
+            used += ne;
+        }
+        pool_stats(&br->all[m], br->fam[m], errs, used);
+    }
+    progress("errors", bench_nmethods, bench_nmethods);
+    if (status != 0)
+        snprintf(err, errlen, "out of memory");
+    for (int f = 0; f < FAMILY_COUNT; f++) {
+        free(cases[f]);
+        free(exact[f]);
+    }
+    free(errs);
+    return status;
+}
+
+/* The grader's Part 3a hard cases, judged by the grader's own rule. */
+static int stage_grader(const Options *o, BenchResults *br, char *err, size_t errlen)
+{
+    int max = HARD_PART3A_FAMILIES * (o->quick ? 10 : 100);
+    HardCase3a *cases = malloc((size_t)max * sizeof *cases);
+    if (!cases) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    progress("grader's hard cases", 0, 1);
+    int n = hard_part3a(o->seed, cases, max);
+    br->grader_cases = n;
+    for (int m = 0; m < bench_nmethods; m++) {
+        br->grader_failed[m] = 0;
+        for (int i = 0; i < n; i++) {
+            double t = 0;
+            bool hit = bench_methods[m].one(&cases[i].sphere, &cases[i].ray, &t);
+            if (!hard_check3a(&cases[i], hit, t))
+                br->grader_failed[m]++;
+        }
+    }
+    free(cases);
+    return 0;
+}
+
+static int stage_renders(const Options *o, BenchResults *br, char *err, size_t errlen)
+{
+    char *paths[BENCH_MAX_SCENES];
+    int n = list_scenes(o->scenes, paths, BENCH_MAX_SCENES);
+    if (n < 0) {
+        snprintf(err, errlen, "%s: cannot list scenes", o->scenes);
+        return -1;
+    }
+    br->render_reps = o->quick ? 1 : 3;
+    int status = 0;
+    br->nrenders = 0;
+    for (int s = 0; s < n; s++) {
+        if (status == 0 && render_bench(paths[s], o->width, o->height, br->render_reps,
+                                        &br->renders[br->nrenders], err, errlen) == 0)
+            br->nrenders++;
+        else
+            status = -1;
+        free(paths[s]);
+    }
+    return status;
+}
+
+static void usage(void)
+{
+    fprintf(stderr, "usage: bench [--quick] [--out DIR] [--scenes DIR] [--size WxH] "
+                    "[--rounds N] [--seed N]\n");
+}
+
+int main(int argc, char **argv)
+{
+    Options o = { false, "out/bench", "labs/scenes", 1920, 1080, 0, 20260101 };
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (strcmp(a, "--quick") == 0) {
+            o.quick = true;
+        } else if (strcmp(a, "--out") == 0 && v) {
+            o.out = v;
+            i++;
+        } else if (strcmp(a, "--scenes") == 0 && v) {
+            o.scenes = v;
+            i++;
+        } else if (strcmp(a, "--size") == 0 && v && sscanf(v, "%dx%d", &o.width, &o.height) == 2 &&
+                   o.width > 0 && o.height > 0 && o.width <= 16384 && o.height <= 16384) {
+            i++;
+        } else if (strcmp(a, "--rounds") == 0 && v && atoi(v) > 0) {
+            o.rounds = atoi(v);
+            i++;
+        } else if (strcmp(a, "--seed") == 0 && v) {
+            o.seed = strtoull(v, NULL, 10);
+            i++;
+        } else {
+            usage();
+            return 1;
+        }
+    }
+    if (o.quick && o.width == 1920 && o.height == 1080) {
+        o.width = 192;
+        o.height = 108;
+    }
+    if (o.rounds == 0)
+        o.rounds = o.quick ? 7 : 151;
+
+    static BenchResults br;
+    char err[1200] = "";
+    start_time = now_seconds();
+    progress_tty = isatty(2);
+    br.quick = o.quick;
+    br.seed = o.seed;
+    br.load_before = load_average();
+    cpu_model(br.cpu, sizeof br.cpu);
+#ifdef __VERSION__
+    snprintf(br.compiler, sizeof br.compiler, "%s", __VERSION__);
+#endif
+    time_t now = time(NULL);
+    strftime(br.date, sizeof br.date, "%Y-%m-%d %H:%M UTC", gmtime(&now));
+    if (mkdir_p(o.out) != 0) {
+        fprintf(stderr, "bench: %s: cannot create the directory\n", o.out);
+        return 1;
+    }
+
+    int status = stage_throughput(&o, &br, err, sizeof err);
+    if (status == 0) {
+        progress("ceiling", 0, 1);
+        /* the clock read between throughput rounds is the one that counts */
+        measure_ceiling(&br.ceiling, o.quick, br.ceiling.mhz_measured);
+        status = stage_errors(&o, &br, err, sizeof err);
+    }
+    if (status == 0)
+        status = stage_grader(&o, &br, err, sizeof err);
+    if (status == 0)
+        status = stage_renders(&o, &br, err, sizeof err);
+    br.load_after = load_average();
+    br.seconds_total = now_seconds() - start_time;
+    if (status == 0) {
+        progress("report", 0, 1);
+        status = report_write(&br, o.out, err, sizeof err);
+    }
+    progress_done();
+    if (status != 0) {
+        fprintf(stderr, "bench: %s\n", err);
+        return 1;
+    }
+    printf("bench: wrote %s/results.csv, %s/report.md, %s/plot.svg in %.0f s (checksum %g)\n",
+           o.out, o.out, o.out, br.seconds_total, bench_sink);
+    return 0;
+}

@@ -1,0 +1,352 @@
+/*
+ * measure.c - time, and this machine's limits.
+ *
+ *   now_seconds     CLOCK_MONOTONIC
+ *   median, quantile
+ *   measure_ceiling the clock (from /proc/cpuinfo, and measured with a
+ *                   dependent integer loop), how many independent floating-
+ *                   point multiplies and adds the core starts per cycle, and
+ *                   from those the most ray/sphere tests per second the lab
+ *                   scene's arithmetic allows
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include "bench.h"
+
+double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+double quantile(double *v, int n, double q)
+{
+    if (n <= 0)
+        return NAN;
+    double pos = q * (n - 1);
+    int lo = (int)pos;
+    int hi = lo + 1 < n ? lo + 1 : lo;
+    return v[lo] + (v[hi] - v[lo]) * (pos - lo);
+}
+
+double median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    return quantile(v, n, 0.5);
+}
+
+/* ---- the clock ------------------------------------------------------------ */
+
+/* "cpu MHz" from /proc/cpuinfo (Linux), the first one; 0 if none.  In a
+ * virtual machine it is often the nominal clock, not the one running. */
+static double cpuinfo_mhz(void)
+{
+    FILE *f = fopen("/proc/cpuinfo", "r");
+    if (!f)
+        return 0;
+    char line[256];
+    double mhz = 0;
+    while (fgets(line, sizeof line, f))
+        if (strncmp(line, "cpu MHz", 7) == 0) {
+            const char *colon = strchr(line, ':');
+            if (colon)
+                mhz = atof(colon + 1);
+            break;
+        }
+    fclose(f);
+    return mhz;
+}
+
+static volatile uint64_t opaque_k1 = 0x9e3779b97f4a7c15ull, opaque_k2 = 12345;
+static volatile double opaque_one = 1.0, opaque_zero = 0.0;
+
+/* Each iteration is one xor and one add, each needing the previous result:
+ * two cycles on any core whose integer xor and add take one cycle (all
+ * current x86-64 and arm64 ones).  Both operands are unknown to the
+ * compiler and loop-invariant, so it can neither fold nor split them. */
+static uint64_t dependent_chain(uint64_t x, long n)
+{
+    uint64_t k1 = opaque_k1, k2 = opaque_k2;
+    for (long i = 0; i < n; i++)
+        x = (x ^ k1) + k2;
+    return x;
+}
+
+/* MHz from one run of the chain. */
+static double chain_mhz(long n)
+{
+    double t0 = now_seconds();
+    uint64_t x = dependent_chain((uint64_t)n, n);
+    double dt = now_seconds() - t0;
+    bench_sink += (double)(x & 1);
+    return 2.0 * (double)n / dt / 1e6;
+}
+
+/* ---- floating-point issue rates --------------------------------------------- */
+
+/* Twelve independent chains of 128-bit vector multiplies by 1 (or adds of
+ * 0): enough to hide the latency of any current core, so the time measures
+ * how many vector instructions of each kind it starts per cycle.  With gcc
+ * and clang the chains are written as 128-bit vectors (their vector
+ * extension), else as scalars, which use the same pipes. */
+#if defined(__GNUC__) || defined(__clang__)
+typedef double Pair __attribute__((vector_size(16)));
+#define PAIR(a, b) { a, b }
+#else
+typedef double Pair;
+#define PAIR(a, b) a
+#endif
+
+static double ops_per_cycle(int kind, long n, double mhz)
+{
+    Pair m = PAIR(opaque_one, opaque_one), z = PAIR(opaque_zero, opaque_zero);
+    Pair a[12] = { PAIR(1, 2), PAIR(3, 4), PAIR(5, 6), PAIR(7, 8), PAIR(9, 10), PAIR(11, 12),
+                   PAIR(13, 14), PAIR(15, 16), PAIR(17, 18), PAIR(19, 20), PAIR(21, 22),
+                   PAIR(23, 24) };
+    Pair a0 = a[0], a1 = a[1], a2 = a[2], a3 = a[3], a4 = a[4], a5 = a[5], a6 = a[6],
+         a7 = a[7], a8 = a[8], a9 = a[9], a10 = a[10], a11 = a[11];
+    double t0 = now_seconds();
+    {
+        if (kind == 0) {
+            for (long i = 0; i < n; i++) {
+                a0 = a0 * m; a1 = a1 * m; a2 = a2 * m; a3 = a3 * m; a4 = a4 * m; a5 = a5 * m;
+                a6 = a6 * m; a7 = a7 * m; a8 = a8 * m; a9 = a9 * m; a10 = a10 * m; a11 = a11 * m;
+            }
+        } else if (kind == 1) {
+            for (long i = 0; i < n; i++) {
+                a0 = a0 + z; a1 = a1 + z; a2 = a2 + z; a3 = a3 + z; a4 = a4 + z; a5 = a5 + z;
+                a6 = a6 + z; a7 = a7 + z; a8 = a8 + z; a9 = a9 + z; a10 = a10 + z; a11 = a11 + z;
+            }
+        } else {
+            for (long i = 0; i < n; i++) {
+                a0 = a0 * m; a1 = a1 + z; a2 = a2 * m; a3 = a3 + z; a4 = a4 * m; a5 = a5 + z;
+                a6 = a6 * m; a7 = a7 + z; a8 = a8 * m; a9 = a9 + z; a10 = a10 * m; a11 = a11 + z;
+            }
+        }
+    }
+    double dt = now_seconds() - t0;
+    Pair sum = a0 + a1 + a2 + a3 + a4 + a5 + a6 + a7 + a8 + a9 + a10 + a11;
+    double out[sizeof(Pair) / sizeof(double)];
+    memcpy(out, &sum, sizeof sum);
+    bench_sink += out[0];
+    return 12.0 * (double)n / (dt * mhz * 1e6);
+}
+
+/* The least work a test needs in the lab's scenes: with the eye at the
+ * origin, b = c.r (3 multiplies, 2 adds) and its comparison with a threshold
+ * known per sphere (b >= sqrt(C) from outside: 1 compare).  A hit also needs
+ * a sqrt and a division, but most rays miss most spheres, and the few hits
+ * are left out.  Vectors of 128 bits (SSE2 on x86-64, NEON on arm64: what
+ * the portable -O2 build targets) hold 2 doubles or 4 floats. */
+void measure_ceiling(Ceiling *c, bool quick, double mhz_during)
+{
+    enum { REPS = 9 };
+    long n = quick ? 5000000L : 40000000L, nf = n / 8;
+    double mhz[REPS], mul[REPS], add[REPS], mix[REPS];
+    int reps = quick ? 3 : REPS;
+    /* Each repetition measures the clock and then the rates in cycles of
+     * that clock; the medians shrug off the repetitions another process
+     * disturbed. */
+    for (int r = 0; r < reps; r++) {
+        mhz[r] = chain_mhz(n);
+        mul[r] = ops_per_cycle(0, nf, mhz[r]);
+        add[r] = ops_per_cycle(1, nf, mhz[r]);
+        mix[r] = ops_per_cycle(2, nf, mhz[r]);
+    }
+    c->mhz_cpuinfo = cpuinfo_mhz();
+    c->mhz_measured = mhz_during > 0 ? mhz_during : median(mhz, reps);
+    c->mhz = c->mhz_measured;
+    c->mul_per_cycle = median(mul, reps);
+    c->add_per_cycle = median(add, reps);
+    c->mix_per_cycle = median(mix, reps);
+    /* Pipes come in whole numbers: use the nearest (at least 1). */
+    double pm = floor(c->mul_per_cycle + 0.5), pa = floor(c->add_per_cycle + 0.5),
+           px = floor(c->mix_per_cycle + 0.5);
+    c->mul_pipes = pm < 1 ? 1 : pm;
+    c->add_pipes = pa < 1 ? 1 : pa;
+    c->mix_pipes = px < 1 ? 1 : px;
+    c->lanes_d = 2;
+    c->lanes_f = 4;
+    c->ops_mul = 3;
+    c->ops_add = 3;
+    /* Cycles per vector of tests: each kind on its own pipes, and both kinds
+     * together no faster than the mixed rate. */
+    double cyc = c->ops_mul / c->mul_pipes;
+    if (c->ops_add / c->add_pipes > cyc)
+        cyc = c->ops_add / c->add_pipes;
+    if ((c->ops_mul + c->ops_add) / c->mix_pipes > cyc)
+        cyc = (c->ops_mul + c->ops_add) / c->mix_pipes;
+    c->cycles_per_vector = cyc;
+    c->ceiling_d = c->mhz * c->lanes_d / cyc;
+    c->ceiling_f = c->mhz * c->lanes_f / cyc;
+}
+
+/* ---- throughput ------------------------------------------------------------ */
+
+/* Runs method m's closest-hit loop passes times over rs; seconds per pass. */
+static double time_passes(const Method *m, const BenchScene *sc, const RaySet *rs,
+                          int passes, int *idx, double *t)
+{
+    double t0 = now_seconds();
+    for (int p = 0; p < passes; p++)
+        m->closest(sc, rs, idx, t);
+    double dt = now_seconds() - t0;
+    /* consume the answers, so no compiler may skip computing them */
+    double sum = 0;
+    for (int i = 0; i < rs->n; i++)
+        sum += idx[i] + (t[i] < INFINITY ? t[i] : 0);
+    bench_sink += sum;
+    return dt / passes;
+}
+
+int measure_throughput(const BenchScene *sc, const RaySet *rs, int rounds, double sample_s,
+                       double *pass_seconds, double *round_mhz)
+{
+    int nm = bench_nmethods;
+    int *idx = malloc((size_t)rs->n * sizeof *idx);
+    double *t = malloc((size_t)rs->n * sizeof *t);
+    int *passes = malloc((size_t)nm * sizeof *passes);
+    if (!idx || !t || !passes) {
+        free(idx);
+        free(t);
+        free(passes);
+        return -1;
+    }
+    /* Calibrate: enough passes for each sample to last about sample_s. */
+    for (int m = 0; m < nm; m++) {
+        double one = time_passes(&bench_methods[m], sc, rs, 1, idx, t);
+        one = time_passes(&bench_methods[m], sc, rs, 1, idx, t);
+        int p = (int)(sample_s / (one > 1e-9 ? one : 1e-9));
+        passes[m] = p < 1 ? 1 : p;
+    }
+    /* Interleave: every round times every method once, starting each round
+     * one method further on, so that a slow spell or a warm cache favours
+     * no method.  A short clock reading per round gives the clock the
+     * ceiling uses, taken under the same conditions. */
+    for (int r = 0; r < rounds; r++) {
+        progress("throughput", r, rounds);
+        for (int j = 0; j < nm; j++) {
+            int m = (r + j) % nm;
+            pass_seconds[r * nm + m] = time_passes(&bench_methods[m], sc, rs, passes[m], idx, t);
+        }
+        round_mhz[r] = chain_mhz(200000);
+    }
+    progress("throughput", rounds, rounds);
+    free(idx);
+    free(t);
+    free(passes);
+    return 0;
+}
+
+/* ---- cost by outcome ------------------------------------------------------- */
+
+typedef struct {
+    int n;
+    Sphere *s;
+    Ray *r;
+    Spheref *sf;
+    Rayf *rf;
+} PairSet;
+
+static int pairs_make(PairSet *p, const Case *c, int n)
+{
+    size_t m = n > 0 ? (size_t)n : 1;
+    p->n = n;
+    p->s = malloc(m * sizeof *p->s);
+    p->r = malloc(m * sizeof *p->r);
+    p->sf = malloc(m * sizeof *p->sf);
+    p->rf = malloc(m * sizeof *p->rf);
+    if (!p->s || !p->r || !p->sf || !p->rf)
+        return -1;
+    for (int i = 0; i < n; i++) {
+        p->s[i] = c[i].sphere;
+        p->r[i] = c[i].ray;
+        p->sf[i] = spheref_from(&c[i].sphere);
+        p->rf[i] = rayf_from(&c[i].ray);
+    }
+    return 0;
+}
+
+static void pairs_free(PairSet *p)
+{
+    free(p->s);
+    free(p->r);
+    free(p->sf);
+    free(p->rf);
+}
+
+/* Seconds per call of m's scalar function over the pairs, passes times. */
+static double time_pairs(const Method *m, const PairSet *p, int passes)
+{
+    double sum = 0;
+    double t0 = now_seconds();
+    for (int k = 0; k < passes; k++) {
+        if (m->scalar_d) {
+            for (int i = 0; i < p->n; i++) {
+                double t = 0;
+                if (m->scalar_d(&p->s[i], &p->r[i], &t))
+                    sum += t;
+            }
+        } else {
+            for (int i = 0; i < p->n; i++) {
+                float t = 0;
+                if (m->scalar_f(&p->sf[i], &p->rf[i], &t))
+                    sum += t;
+            }
+        }
+    }
+    double dt = now_seconds() - t0;
+    bench_sink += sum;
+    return dt / passes / (p->n > 0 ? p->n : 1);
+}
+
+int measure_outcomes(const Case *miss, int nmiss, const Case *hit, int nhit, int rounds,
+                     double sample_s, double *miss_ns, double *hit_ns)
+{
+    int nm = bench_nmethods;
+    PairSet ps[2] = { { 0, NULL, NULL, NULL, NULL }, { 0, NULL, NULL, NULL, NULL } };
+    double *samples = malloc((size_t)(2 * nm * rounds) * sizeof *samples);
+    int passes[2] = { 1, 1 };
+    int status = -1;
+    if (!samples || pairs_make(&ps[0], miss, nmiss) != 0 || pairs_make(&ps[1], hit, nhit) != 0)
+        goto done;
+    /* calibrate on the textbook, the same passes for every method */
+    int tb = method_find("textbook", PREC_DOUBLE);
+    for (int o = 0; o < 2; o++) {
+        double one = time_pairs(&bench_methods[tb], &ps[o], 1) * (ps[o].n > 0 ? ps[o].n : 1);
+        int p = (int)(sample_s / (one > 1e-9 ? one : 1e-9));
+        passes[o] = p < 1 ? 1 : p;
+    }
+    for (int r = 0; r < rounds; r++) {
+        progress("cost by outcome", r, rounds);
+        for (int j = 0; j < nm; j++) {
+            int m = (r + j) % nm;
+            if (!bench_methods[m].scalar_d && !bench_methods[m].scalar_f)
+                continue;
+            for (int o = 0; o < 2; o++)
+                samples[(o * nm + m) * rounds + r] = time_pairs(&bench_methods[m], &ps[o], passes[o]);
+        }
+    }
+    for (int m = 0; m < nm; m++) {
+        bool scalar = bench_methods[m].scalar_d || bench_methods[m].scalar_f;
+        miss_ns[m] = scalar ? 1e9 * median(samples + (0 * nm + m) * rounds, rounds) : NAN;
+        hit_ns[m] = scalar ? 1e9 * median(samples + (1 * nm + m) * rounds, rounds) : NAN;
+    }
+    status = 0;
+done:
+    free(samples);
+    pairs_free(&ps[0]);
+    pairs_free(&ps[1]);
+    return status;
+}

@@ -1,0 +1,68 @@
+/*
+ * methods.c - the ray/sphere formulations, each in double and in float.
+ * The bodies are in methods_body.h, written once for both precisions, so
+ * the double and float versions cannot drift apart.
+ *
+ * Each is an ordinary external function, called through a pointer from the
+ * closest-hit loop in suite.c: the same call the lab makes from ray_color
+ * (part 3b) to sphere_intersect (part 3a), so no method is inlined into the
+ * loop and the linked reference is timed on equal terms.
+ */
+#include <float.h>
+#include <math.h>
+#include "bench.h"
+
+Vec3f vec3f_from(Vec3 v)
+{
+    Vec3f f = { (float)v.x, (float)v.y, (float)v.z };
+    return f;
+}
+
+Spheref spheref_from(const Sphere *s)
+{
+    Spheref f = { vec3f_from(s->center), (float)s->radius };
+    return f;
+}
+
+Rayf rayf_from(const Ray *r)
+{
+    Rayf f = { vec3f_from(r->origin), vec3f_from(r->direction) };
+    return f;
+}
+
+#define REAL double
+#define VEC Vec3
+#define SPHERE Sphere
+#define RAY Ray
+#define SQRT sqrt
+#define COPYSIGN copysign
+#define EPS DBL_EPSILON
+#define TINY DBL_MIN
+#define SAFE_LO 0x1p-900
+#define SAFE_HI 0x1p+900
+#define NAME(x) x##_d
+#include "methods_body.h"
+#undef REAL
+#undef VEC
+#undef SPHERE
+#undef RAY
+#undef SQRT
+#undef COPYSIGN
+#undef EPS
+#undef TINY
+#undef SAFE_LO
+#undef SAFE_HI
+#undef NAME
+
+#define REAL float
+#define VEC Vec3f
+#define SPHERE Spheref
+#define RAY Rayf
+#define SQRT sqrtf
+#define COPYSIGN copysignf
+#define EPS FLT_EPSILON
+#define TINY FLT_MIN
+#define SAFE_LO 0x1p-100f
+#define SAFE_HI 0x1p+100f
+#define NAME(x) x##_f
+#include "methods_body.h"

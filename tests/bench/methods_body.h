@@ -1,0 +1,178 @@
+/*
+ * methods_body.h - the ray/sphere formulations, written once and compiled
+ * twice by methods.c: with REAL = double and with REAL = float.
+ *
+ * methods.c defines, before each inclusion:
+ *   REAL, VEC, SPHERE, RAY   the number and struct types
+ *   SQRT, COPYSIGN           the <math.h> functions for REAL
+ *   EPS, TINY                machine epsilon and the smallest normal number
+ *   NAME(x)                  x with the precision's suffix (_d or _f)
+ *
+ * Notation (the lecture's): ray x(t) = e + t r, sphere centre c, radius R,
+ * f = e - c, A = r.r, B = f.r, C = f.f - R^2.  Every method returns the
+ * smallest root t > 0 (from inside the sphere, the exit point) and false on
+ * a miss; NaN input falls through every `!(x >= 0)` test to a miss.
+ */
+
+static VEC NAME(sub)(VEC a, VEC b)
+{
+    VEC v = { a.x - b.x, a.y - b.y, a.z - b.z };
+    return v;
+}
+
+static REAL NAME(dot)(VEC a, VEC b)
+{
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+/* The lecture's quadratic: t = (-B -+ sqrt(B^2 - A C)) / A.  B^2 - A C loses
+ * R^2 when the sphere is small and far; -B + sqrt(..) cancels when e is
+ * close to a big sphere. */
+bool NAME(isect_textbook)(const SPHERE *sphere, const RAY *ray, REAL *t)
+{
+    VEC r = ray->direction;
+    VEC f = NAME(sub)(ray->origin, sphere->center);
+    REAL A = NAME(dot)(r, r);
+    REAL B = NAME(dot)(f, r);
+    REAL C = NAME(dot)(f, f) - sphere->radius * sphere->radius;
+    REAL disc = B * B - A * C;
+    if (!(disc >= 0))
+        return false;
+    REAL sq = SQRT(disc);
+    REAL t1 = (-B - sq) / A;
+    if (t1 > 0) {
+        *t = t1;
+        return true;
+    }
+    REAL t2 = (-B + sq) / A;
+    if (t2 > 0) {
+        *t = t2;
+        return true;
+    }
+    return false;
+}
+
+/* The same with A = 1, which holds for unit directions (camera rays):
+ * t = -B -+ sqrt(B^2 - C).  One product and two divisions fewer. */
+bool NAME(isect_unit)(const SPHERE *sphere, const RAY *ray, REAL *t)
+{
+    VEC r = ray->direction;
+    VEC f = NAME(sub)(ray->origin, sphere->center);
+    REAL B = NAME(dot)(f, r);
+    REAL C = NAME(dot)(f, f) - sphere->radius * sphere->radius;
+    REAL disc = B * B - C;
+    if (!(disc >= 0))
+        return false;
+    REAL sq = SQRT(disc);
+    REAL t1 = -B - sq;
+    if (t1 > 0) {
+        *t = t1;
+        return true;
+    }
+    REAL t2 = -B + sq;
+    if (t2 > 0) {
+        *t = t2;
+        return true;
+    }
+    return false;
+}
+
+/* The geometric method (unit r): L = c - e, t_ca = L.r is where the ray
+ * passes closest to c, d^2 = L.L - t_ca^2 the squared distance there (by
+ * Pythagoras: the same cancellation as B^2 - C), t_hc = sqrt(R^2 - d^2),
+ * t = t_ca -+ t_hc.  The early exit for a centre behind the ray holds only
+ * from outside the sphere, so it tests that too. */
+bool NAME(isect_geometric)(const SPHERE *sphere, const RAY *ray, REAL *t)
+{
+    VEC r = ray->direction;
+    VEC L = NAME(sub)(sphere->center, ray->origin);
+    REAL tca = NAME(dot)(L, r);
+    REAL L2 = NAME(dot)(L, L);
+    REAL R2 = sphere->radius * sphere->radius;
+    if (tca < 0 && L2 > R2)
+        return false;
+    REAL d2 = L2 - tca * tca;
+    if (!(d2 <= R2))
+        return false;
+    REAL thc = SQRT(R2 - d2);
+    REAL t0 = tca - thc;
+    if (t0 > 0) {
+        *t = t0;
+        return true;
+    }
+    REAL t1 = tca + thc;
+    if (t1 > 0) {
+        *t = t1;
+        return true;
+    }
+    return false;
+}
+
+/* Ray Tracing Gems, ch. 7 (the general-direction listing): the discriminant
+ * from l = f - (B/A) r, the offset from c to the line's closest point,
+ * A (R^2 - l.l); then q = -(B + sign(B) sqrt(disc)) and the roots C/q and
+ * q/A, neither of which cancels. */
+bool NAME(isect_rtg)(const SPHERE *sphere, const RAY *ray, REAL *t)
+{
+    VEC r = ray->direction;
+    VEC f = NAME(sub)(ray->origin, sphere->center);
+    REAL A = NAME(dot)(r, r);
+    REAL B = NAME(dot)(f, r);
+    REAL R2 = sphere->radius * sphere->radius;
+    REAL b = B / A;
+    VEC l = { f.x - b * r.x, f.y - b * r.y, f.z - b * r.z };
+    REAL disc = A * (R2 - NAME(dot)(l, l));
+    if (!(disc >= 0))
+        return false;
+    REAL C = NAME(dot)(f, f) - R2;
+    REAL q = -(B + COPYSIGN(SQRT(disc), B));
+    REAL t1 = C / q, t2 = q / A;
+    REAL tnear = t1 < t2 ? t1 : t2, tfar = t1 < t2 ? t2 : t1;
+    REAL root = tnear > 0 ? tnear : tfar;
+    if (!(root > 0))
+        return false;
+    *t = root;
+    return true;
+}
+
+/* solutions/part3a_sphere_intersect.c, line by line in REAL.  Compiled as
+ * double it must agree bit for bit with the linked sphere_intersect (the
+ * benchmark checks, so this copy cannot silently go stale); the float
+ * version is the benchmark's "reference, float".  SAFE_LO and SAFE_HI are
+ * the reference's 2^-900 and 2^900: where A D can be formed without
+ * overflow or underflow (2^-100 and 2^100 in float). */
+bool NAME(isect_reference)(const SPHERE *sphere, const RAY *ray, REAL *t)
+{
+    VEC r = ray->direction;
+    VEC f = NAME(sub)(ray->origin, sphere->center);
+    REAL R2 = sphere->radius * sphere->radius;
+    REAL A = NAME(dot)(r, r);
+    REAL B = NAME(dot)(f, r);
+    REAL ff = NAME(dot)(f, f);
+    REAL C = ff - R2;
+
+    if (!(A > 0))
+        return false;
+    if (C > 0 && B >= 0)
+        return false;
+    if (B * B - A * C < -(16 * EPS * A * (ff + R2) + TINY))
+        return false;
+
+    REAL b = B / A;
+    VEC l = { f.x - r.x * b, f.y - r.y * b, f.z - r.z * b };
+    REAL D = R2 - NAME(dot)(l, l);
+    if (!(D >= 0))
+        return false;
+    REAL AD = A * D;
+    REAL sq = AD > SAFE_LO && AD < SAFE_HI ? SQRT(AD) : SQRT(A) * SQRT(D);
+    REAL q = -(B + COPYSIGN(sq, B));
+    if (q == 0)
+        return false;
+    REAL root = C / q;
+    if (!(root > 0))
+        root = q / A;
+    if (!(root > 0 && root < (REAL)INFINITY))
+        return false;
+    *t = root;
+    return true;
+}

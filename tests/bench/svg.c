@@ -1,0 +1,318 @@
+/*
+ * svg.c - the speed-against-error plot, written directly as SVG (no plotting
+ * package): log axes, one labelled point per method and precision, and the
+ * Pareto front -- the methods no other method beats on both speed and error
+ * -- drawn as a staircase.  Panels are stacked one above the other.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "svg.h"
+
+void pareto_front(const PlotPoint *pts, int n, bool *on)
+{
+    for (int i = 0; i < n; i++) {
+        on[i] = true;
+        for (int j = 0; j < n; j++) {
+            bool no_worse = pts[j].x <= pts[i].x && pts[j].y >= pts[i].y;
+            bool better = pts[j].x < pts[i].x || pts[j].y > pts[i].y;
+            if (j != i && no_worse && better) {
+                on[i] = false;
+                break;
+            }
+        }
+    }
+}
+
+/* ---- geometry ---------------------------------------------------------------- */
+
+enum { WIDTH = 980, HEADER = 96, PANEL_H = 560, LEFT = 90, RIGHT = 30, PANEL_TOP = 40,
+       PANEL_BOTTOM = 64, MAXP = 64 };
+#define FONT_W 6.6          /* average width of a 12px sans-serif character */
+#define X_FLOOR 1e-18       /* an error of 0 is drawn here                  */
+
+typedef struct {
+    double lo, hi;          /* decades: 10^lo .. 10^hi */
+    double p0, p1;          /* pixels */
+} Axis;
+
+static double axis_pos(const Axis *a, double v)
+{
+    return a->p0 + (a->p1 - a->p0) * (log10(v) - a->lo) / (a->hi - a->lo);
+}
+
+/* The range of the values (those at or below floor_v count as it), in
+ * log10, widened to whole decades or, with fine set, to 1, 2 or 5 times a
+ * power of ten. */
+static void axis_range(Axis *a, const double *v, int n, double floor_v, bool fine)
+{
+    double lo = INFINITY, hi = -INFINITY;
+    for (int i = 0; i < n; i++) {
+        double x = log10(v[i] > floor_v ? v[i] : floor_v);
+        lo = x < lo ? x : lo;
+        hi = x > hi ? x : hi;
+    }
+    if (!(lo <= hi)) {
+        lo = 0;
+        hi = 1;
+    }
+    lo -= 0.08;
+    hi += 0.08;
+    if (!fine) {
+        a->lo = floor(lo);
+        a->hi = ceil(hi);
+        return;
+    }
+    const double steps[] = { 0, log10(2.0), log10(5.0), 1 };      /* log10 of 1 2 5 10 */
+    double dlo = floor(lo), dhi = floor(hi);
+    int k = 3;
+    while (k > 0 && dlo + steps[k] > lo)
+        k--;
+    a->lo = dlo + steps[k];
+    k = 0;
+    while (k < 3 && dhi + steps[k] < hi)
+        k++;
+    a->hi = dhi + steps[k];
+}
+
+typedef struct {
+    double x0, y0, x1, y1;
+} Box;
+
+static bool overlaps(Box a, Box b)
+{
+    return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+
+static void xml_text(FILE *f, const char *s)
+{
+    for (; *s; s++) {
+        if (*s == '&')
+            fputs("&amp;", f);
+        else if (*s == '<')
+            fputs("&lt;", f);
+        else if (*s == '>')
+            fputs("&gt;", f);
+        else
+            fputc(*s, f);
+    }
+}
+
+static const char *group_color[] = { "#1f5fbf", "#d9730d", "#2a9d55" };
+static const char *group_name[] = { "double", "float", "mixed: float filter, double solve" };
+
+static void marker(FILE *f, int group, double x, double y)
+{
+    const char *c = group_color[group];
+    if (group == 0)
+        fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"5.5\" fill=\"%s\"/>\n", x, y, c);
+    else if (group == 1)
+        fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"10\" height=\"10\" fill=\"%s\"/>\n",
+                x - 5, y - 5, c);
+    else
+        fprintf(f, "<path d=\"M%.1f %.1f l6.5 6.5 l-6.5 6.5 l-6.5 -6.5 z\" fill=\"%s\"/>\n",
+                x, y - 6.5, c);
+}
+
+/* 1, 2, 5 times a power of ten, as a tick label. */
+static void tick_label(char *buf, size_t len, int k, int e)
+{
+    if (e >= 0 && e <= 4)
+        snprintf(buf, len, "%.0f", k * pow(10, e));
+    else if (k == 1)
+        snprintf(buf, len, "1e%d", e);
+    else
+        snprintf(buf, len, "%de%d", k, e);
+}
+
+/* ---- one panel ------------------------------------------------------------------ */
+
+static void draw_panel(FILE *f, const PlotPanel *p, double top)
+{
+    double xs[MAXP], ys[MAXP];
+    int n = p->n < MAXP ? p->n : MAXP;
+    for (int i = 0; i < n; i++) {
+        xs[i] = p->pts[i].x;
+        ys[i] = p->pts[i].y;
+    }
+    Axis ax = { 0, 0, LEFT, WIDTH - RIGHT };
+    Axis ay = { 0, 0, top + PANEL_H - PANEL_BOTTOM, top + PANEL_TOP };
+    axis_range(&ax, xs, n, X_FLOOR, false);
+    axis_range(&ay, ys, n, 1e-3, true);
+    bool dense_x = ax.hi - ax.lo > 8;        /* label every other decade */
+
+    fprintf(f, "<text x=\"%d\" y=\"%.1f\" font-size=\"15\" font-weight=\"bold\">", LEFT, top + 24);
+    xml_text(f, p->title);
+    fprintf(f, "</text>\n");
+
+    /* grid: decades darker; 2 and 5 between them on the throughput axis */
+    fprintf(f, "<g stroke=\"#e6e6e6\">\n");
+    for (int e = (int)ax.lo; e <= (int)ax.hi; e++) {
+        double x = axis_pos(&ax, pow(10, e));
+        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#cfcfcf\"/>\n",
+                x, ay.p1, x, ay.p0);
+    }
+    for (int e = (int)floor(ay.lo); e <= (int)ay.hi; e++)
+        for (int k = 1; k <= 9; k++) {
+            double v = k * pow(10, e);
+            if (log10(v) > ay.hi + 1e-9 || log10(v) < ay.lo - 1e-9)
+                continue;
+            double y = axis_pos(&ay, v);
+            fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\"%s/>\n", ax.p0, y,
+                    ax.p1, y, k == 1 ? " stroke=\"#cfcfcf\"" : "");
+        }
+    fprintf(f, "</g>\n<g fill=\"#333\">\n");
+    for (int e = (int)ax.lo; e <= (int)ax.hi; e++) {
+        if (dense_x && (e - (int)ax.lo) % 2 != 0)
+            continue;
+        char buf[32];
+        tick_label(buf, sizeof buf, 1, e);
+        fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">%s</text>\n",
+                axis_pos(&ax, pow(10, e)), ay.p0 + 18, buf);
+    }
+    for (int e = (int)floor(ay.lo); e <= (int)ay.hi; e++)
+        for (int k = 1; k <= 5; k += (k == 1 ? 1 : 3)) {          /* 1, 2, 5 */
+            double v = k * pow(10, e);
+            if (log10(v) > ay.hi + 1e-9 || log10(v) < ay.lo - 1e-9)
+                continue;
+            char buf[32];
+            tick_label(buf, sizeof buf, k, e);
+            fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\">%s</text>\n", ax.p0 - 8,
+                    axis_pos(&ay, v) + 4, buf);
+        }
+    fprintf(f, "</g>\n");
+    fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"none\" "
+               "stroke=\"#888\"/>\n", ax.p0, ay.p1, ax.p1 - ax.p0, ay.p0 - ay.p1);
+    fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-size=\"13\">",
+            (ax.p0 + ax.p1) / 2, ay.p0 + 42);
+    xml_text(f, p->xlabel);
+    fprintf(f, "</text>\n<text transform=\"translate(24 %.1f) rotate(-90)\" "
+               "text-anchor=\"middle\" font-size=\"13\">", (ay.p0 + ay.p1) / 2);
+    xml_text(f, p->ylabel);
+    fprintf(f, "</text>\n");
+    fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" fill=\"#888\" font-style=\"italic\">"
+               "better: up and to the left</text>\n", ax.p0 + 8, ay.p1 + 16);
+
+    /* the Pareto front: a staircase through its points, by error */
+    bool on[MAXP];
+    pareto_front(p->pts, n, on);
+    int order[MAXP], nf = 0;
+    for (int i = 0; i < n; i++)
+        if (on[i])
+            order[nf++] = i;
+    for (int a = 1; a < nf; a++)
+        for (int b = a; b > 0 && xs[order[b]] < xs[order[b - 1]]; b--) {
+            int tmp = order[b];
+            order[b] = order[b - 1];
+            order[b - 1] = tmp;
+        }
+    double px[MAXP], py[MAXP];
+    for (int i = 0; i < n; i++) {
+        px[i] = axis_pos(&ax, xs[i] > X_FLOOR ? xs[i] : X_FLOOR);
+        py[i] = axis_pos(&ay, ys[i]);
+    }
+    if (nf > 0) {
+        fprintf(f, "<path fill=\"none\" stroke=\"#555\" stroke-width=\"1.5\" "
+                   "stroke-dasharray=\"6 4\" d=\"M%.1f %.1f", ax.p0, py[order[0]]);
+        for (int a = 0; a < nf; a++) {
+            if (a > 0)
+                fprintf(f, " V%.1f", py[order[a]]);
+            fprintf(f, " H%.1f", px[order[a]]);
+        }
+        fprintf(f, " V%.1f\"/>\n", ay.p0);
+    }
+
+    /* points, then labels where they collide with nothing placed yet */
+    Box placed[2 * MAXP];
+    int nplaced = 0;
+    for (int i = 0; i < n; i++) {
+        Box b = { px[i] - 7, py[i] - 7, px[i] + 7, py[i] + 7 };
+        placed[nplaced++] = b;
+        if (on[i])
+            fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"10\" fill=\"none\" stroke=\"#555\"/>\n",
+                    px[i], py[i]);
+        marker(f, p->pts[i].group, px[i], py[i]);
+    }
+    static const double dx[] = { 12, 12, 12, -12, -12, -12, 0, 0, 12, -12, 12, -12, 30, -30 };
+    static const double dy[] = { 4, -9, 17, 4, -9, 17, -13, 25, -22, -22, 30, 30, 4, 4 };
+    for (int i = 0; i < n; i++) {
+        double w = FONT_W * (double)strlen(p->pts[i].label);
+        Box best = { 0, 0, 0, 0 };
+        double tx = 0, ty = 0;
+        for (size_t c = 0; c < sizeof dx / sizeof dx[0]; c++) {
+            double x0 = dx[c] > 0 ? px[i] + dx[c] : dx[c] < 0 ? px[i] + dx[c] - w : px[i] - w / 2;
+            Box b = { x0, py[i] + dy[c] - 11, x0 + w, py[i] + dy[c] + 3 };
+            bool inside = b.x0 >= ax.p0 && b.x1 <= ax.p1 && b.y0 >= ay.p1 && b.y1 <= ay.p0;
+            bool ok = inside;
+            for (int k = 0; ok && k < nplaced; k++)
+                ok = !overlaps(b, placed[k]);
+            if (ok || (c == 0 && inside) || (c == 3 && best.x1 == 0 && inside)) {
+                best = b;
+                tx = x0;
+                ty = py[i] + dy[c];
+                if (ok)
+                    break;
+            }
+        }
+        if (best.x1 == 0) {            /* nowhere inside: right of the point */
+            tx = px[i] + 12;
+            ty = py[i] + 4;
+            Box b = { tx, ty - 11, tx + w, ty + 3 };
+            best = b;
+        }
+        placed[nplaced++] = best;
+        /* a label not beside its point gets a thin line to it */
+        double cx = px[i] < best.x0 ? best.x0 : px[i] > best.x1 ? best.x1 : px[i];
+        double cy = py[i] < best.y0 ? best.y0 : py[i] > best.y1 ? best.y1 : py[i];
+        if (hypot(cx - px[i], cy - py[i]) > 16)
+            fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\" "
+                       "stroke-width=\"0.7\"/>\n", px[i], py[i], cx, cy,
+                    group_color[p->pts[i].group]);
+        fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" fill=\"%s\">", tx, ty,
+                group_color[p->pts[i].group]);
+        xml_text(f, p->pts[i].label);
+        fprintf(f, "</text>\n");
+    }
+}
+
+int svg_plot(const char *path, const char *title, const char *subtitle,
+             const PlotPanel *panels, int npanels, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        snprintf(err, errlen, "%s: cannot write", path);
+        return -1;
+    }
+    int height = HEADER + npanels * PANEL_H;
+    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+    fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
+               "viewBox=\"0 0 %d %d\" font-family=\"Helvetica, Arial, sans-serif\" "
+               "font-size=\"12\">\n", WIDTH, height, WIDTH, height);
+    fprintf(f, "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n");
+    fprintf(f, "<text x=\"%d\" y=\"28\" font-size=\"19\" font-weight=\"bold\">", LEFT);
+    xml_text(f, title);
+    fprintf(f, "</text>\n<text x=\"%d\" y=\"50\" fill=\"#555\">", LEFT);
+    xml_text(f, subtitle);
+    fprintf(f, "</text>\n");
+    /* legend, once, under the title */
+    double lx = LEFT, ly = 76;
+    for (int g = 0; g < 3; g++) {
+        marker(f, g, lx + 6, ly - 4);
+        fprintf(f, "<text x=\"%.1f\" y=\"%.1f\">%s</text>\n", lx + 18, ly, group_name[g]);
+        lx += 30 + FONT_W * (double)strlen(group_name[g]);
+    }
+    fprintf(f, "<path d=\"M%.1f %.1f h26\" stroke=\"#555\" stroke-width=\"1.5\" "
+               "stroke-dasharray=\"6 4\"/>\n", lx, ly - 4);
+    fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"7\" fill=\"none\" stroke=\"#555\"/>\n",
+            lx + 13, ly - 4);
+    fprintf(f, "<text x=\"%.1f\" y=\"%.1f\">Pareto front: nothing is both faster and more "
+               "accurate</text>\n", lx + 34, ly);
+    for (int k = 0; k < npanels; k++)
+        draw_panel(f, &panels[k], HEADER + k * PANEL_H);
+    fprintf(f, "</svg>\n");
+    if (fclose(f) != 0) {
+        snprintf(err, errlen, "%s: write failed", path);
+        return -1;
+    }
+    return 0;
+}

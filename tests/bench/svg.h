@@ -1,0 +1,34 @@
+/*
+ * svg.h - the benchmark's plot: speed against error on log axes, drawn as
+ * SVG by hand (no plotting package).
+ */
+#ifndef BENCH_SVG_H
+#define BENCH_SVG_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+typedef struct {
+    const char *label;      /* shown beside the point                          */
+    double x;               /* error (smaller is better); 0 is drawn at 1e-18   */
+    double y;               /* throughput (larger is better), > 0              */
+    int group;              /* 0 double, 1 float, 2 mixed: colour and marker   */
+} PlotPoint;
+
+typedef struct {
+    const PlotPoint *pts;
+    int n;
+    const char *title;      /* above the panel                                 */
+    const char *xlabel, *ylabel;
+} PlotPanel;
+
+/* on[i]: no other point has both x no larger and y no smaller (one of them
+ * strictly): the Pareto front of "small x, large y". */
+void pareto_front(const PlotPoint *pts, int n, bool *on);
+
+/* Writes the panels, one above the other, to path.  Returns 0, or -1 with a
+ * reason in err. */
+int svg_plot(const char *path, const char *title, const char *subtitle,
+             const PlotPanel *panels, int npanels, char *err, size_t errlen);
+
+#endif

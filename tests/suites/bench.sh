@@ -1,0 +1,92 @@
+#!/bin/sh
+# The benchmark keeps working: `bench --quick` (small sizes, a second or so)
+# writes its files, and they are well formed:
+# - results.csv: the required columns, one row per method, numbers in them;
+# - plot.svg: an SVG root element, closed, with a Pareto front and a label
+#   per method;
+# - report.md: its headings;
+# and the answers that must not depend on timing hold: the float
+# transliteration of the reference still matches the linked reference, the
+# accurate double methods give no wrong hit/miss answer and pass the
+# grader's hard cases.  Speed is not checked here (it is noisy); `make bench`
+# reports it.
+set -u
+passed=0
+failed=0
+check() { name=$1; shift; if "$@"; then passed=$((passed + 1)); else echo "FAIL: $name"; failed=$((failed + 1)); fi; }
+
+bench=out/build/bin/bench
+if [ ! -d solutions ]; then
+    echo "no solutions/: the benchmark is not part of this kit"
+    echo "0 passed, 0 failed"
+    exit 0
+fi
+dir=out/tests/bench
+rm -rf "$dir"
+mkdir -p "$dir"
+check "the benchmark is built (make all)" test -x "$bench"
+if [ -x "$bench" ]; then
+    check "bench --quick runs and exits 0" sh -c "'$bench' --quick --out '$dir' >'$dir.log' 2>&1"
+fi
+csv=$dir/results.csv
+svg=$dir/plot.svg
+md=$dir/report.md
+for f in "$csv" "$svg" "$md" "$dir/results_by_family.csv" "$dir/renders.csv"; do
+    check "$f was written" test -s "$f"
+done
+
+# results.csv: header, one row per method, the same number of fields in
+# every row, numbers where numbers belong.
+if [ -s "$csv" ]; then
+    header=$(head -n 1 "$csv")
+    for col in method precision mtests_per_s max_rel_err median_rel_err wrong_per_million; do
+        check "results.csv has the column $col" \
+            sh -c "printf '%s\n' '$header' | tr ',' '\n' | grep -qx '$col'"
+    done
+    check "results.csv has a row per method and precision (at least 13)" \
+        test "$(tail -n +2 "$csv" | grep -c .)" -ge 13
+    check "every row of results.csv has as many fields as the header" \
+        awk -F, 'NR == 1 { n = NF } NF != n { bad = 1 } END { exit bad }' "$csv"
+    check "throughput and errors in results.csv are numbers, throughput > 0" \
+        awk -F, 'NR > 1 && !($3 + 0 > 0 && $7 ~ /^[0-9.e+-]+$/ && $8 ~ /^[0-9.e+-]+$/ && $9 ~ /^[0-9.e+-]+$/) { bad = 1 } END { exit bad }' "$csv"
+    for m in reference,double proposal,double fast,double fast,mixed rtg,double; do
+        check "$m gives no wrong hit/miss answer" \
+            awk -F, -v m="$m" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "wrong") w = i }
+                               $1 "," $2 == m { found = 1; if ($w != 0) bad = 1 }
+                               END { exit bad || !found }' "$csv"
+    done
+    for m in reference,double proposal,double; do
+        check "$m passes the grader's hard cases" \
+            awk -F, -v m="$m" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "grader_hard_failed") g = i }
+                               $1 "," $2 == m { found = 1; if ($g != 0) bad = 1 }
+                               END { exit bad || !found }' "$csv"
+    done
+fi
+
+# plot.svg: an SVG document with its root element, the front, the labels.
+if [ -s "$svg" ]; then
+    check "plot.svg starts with an XML declaration and has an <svg> root" \
+        sh -c "head -n 1 '$svg' | grep -q '^<?xml' && grep -q '<svg xmlns=\"http://www.w3.org/2000/svg\"' '$svg'"
+    check "plot.svg ends with </svg>" sh -c "tail -n 1 '$svg' | grep -qx '</svg>'"
+    check "plot.svg draws a Pareto front" grep -q 'stroke-dasharray' "$svg"
+    check "plot.svg labels the fast path and the textbook" \
+        sh -c "grep -q '>fast double<' '$svg' && grep -q '>textbook float<' '$svg'"
+    if command -v xmllint >/dev/null 2>&1; then
+        check "plot.svg is well-formed XML" xmllint --noout "$svg"
+    fi
+fi
+
+# report.md: the headings and the checks it states.
+if [ -s "$md" ]; then
+    for h in '# Ray/sphere intersection: speed against accuracy' '## Headline' \
+             '## Throughput and error' '## What it shows' '## The reference against the textbook' \
+             '## Errors by family' '## Render level' '## The ceiling' '## How it is measured'; do
+        check "report.md has the heading '$h'" grep -qx "$h" "$md"
+    done
+    check "report.md states the reference / textbook ratio" grep -q 'Reference / textbook cost' "$md"
+    check "the float transliteration still matches solutions/part3a (methods_body.h)" \
+        grep -q 'transliteration: agrees' "$md"
+fi
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,305 @@
+#!/bin/sh
+# The student kit as a student gets it: make student-kit, unpack the
+# tarball into an empty directory (with the kit's own pack, not tar), and
+# there:
+#   - nothing of solutions/, tests/hidden, tests/oracle, tests/selftest or
+#     tests/bench, and no line of the solutions' function bodies in any file;
+#   - the handouts, their figures and a reference render of every scene;
+#   - `make` builds without a warning;
+#   - `make grade` on the untouched skeleton: 0 points on every part,
+#     status 1, no crash;
+#   - every `make ...` command of the handouts' ```sh blocks (and the
+#     README's) runs as written: status 0 or 1, never 2 or a crash;
+#   - with the reference stage files copied into its labs/: `make grade`
+#     gives full marks (status 0), and `make compare SUBMISSION=labs`
+#     reports `identical` for every scene.
+#
+# `make` turns a recipe's failure into its own exit status 2, so the status
+# of the program it ran (the grader's 1 for "points lost", compare's 1 for
+# "the images differ") is read from its "make: *** [...] Error N" line.
+#
+# Usage: sh tests/suites/student_kit.sh     (from the kit's top directory;
+# tests/run.sh runs it).  Set KEEP=1 to keep the unpacked kit.
+# The last line is "N passed, N failed"; the exit status is 1 if any failed.
+set -u
+# The kit's own make must not see the settings of a make that runs us.
+unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
+
+top=$(pwd)
+passed=0
+failed=0
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/student_kit.XXXXXX") || {
+    echo "cannot make a temporary directory"
+    echo "0 passed, 1 failed"
+    exit 1
+}
+trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
+trap 'exit 1' HUP INT TERM
+
+pass() {
+    passed=$((passed + 1))
+}
+# fail WHAT: counts a failure; shows the start of the last output, if any.
+fail() {
+    failed=$((failed + 1))
+    echo "FAIL: $*"
+    if [ -s "$tmp/out" ]; then
+        sed -n '1,15s/^/    | /p' "$tmp/out"
+    fi
+}
+# check WHAT COMMAND...: passes when the command succeeds.
+check() {
+    what=$1
+    shift
+    if "$@"; then pass; else failed=$((failed + 1)); echo "FAIL: $what"; fi
+}
+finish() {
+    echo "$passed passed, $failed failed"
+    if [ "$failed" -eq 0 ]; then exit 0; fi
+    exit 1
+}
+
+# mk DIR ARGS...: runs make ARGS in DIR, output in $tmp/out.  Sets status
+# (make's own) and ran (the status of the recipe that failed, from make's
+# "Error N" line; 0 when make succeeded; 2 when make failed with no such
+# line, e.g. a recipe killed by a signal).
+mk() {
+    dir=$1
+    shift
+    (cd "$dir" && make "$@") >"$tmp/out" 2>&1 </dev/null
+    status=$?
+    ran=$status
+    if [ "$status" -ne 0 ]; then
+        n=$(sed -n 's/^.*make\(\[[0-9]*\]\)\{0,1\}: \*\*\* \[.*\] Error \([0-9][0-9]*\)$/\2/p' "$tmp/out" | tail -n 1)
+        ran=${n:-2}
+    fi
+}
+# crashed: true when the last output shows a crash or a sanitizer report.
+crashed() {
+    grep -q -i -e 'segmentation fault' -e 'core dumped' -e 'aborted' -e 'bus error' \
+        -e 'sanitizer' -e 'runtime error' -e 'floating point exception' "$tmp/out"
+}
+# part_points PART: prints "N M" from the last output's line "Part PART: ... N / M".
+part_points() {
+    sed -n "s/^Part $1: [^0-9]*\([0-9][0-9.]*\) \/ \([0-9][0-9.]*\).*\$/\1 \2/p" "$tmp/out" | head -n 1
+}
+# squeeze: blanks runs of spaces and tabs into one space, trims the ends.
+squeeze() {
+    awk '{ gsub(/[ \t]+/, " "); sub(/^ /, ""); sub(/ $/, ""); print }'
+}
+
+if [ ! -d solutions ]; then
+    echo "FAIL: no solutions/ here: run this from the instructor's kit"
+    echo "0 passed, 1 failed"
+    exit 1
+fi
+
+# ---- make student-kit, unpacked with the kit's own pack -------------------
+mk "$top" student-kit
+if [ "$status" -ne 0 ] || [ ! -f out/student-kit.tar.gz ]; then
+    fail "make student-kit: exit $status"
+    finish
+fi
+pass
+mkdir "$tmp/unpacked"
+: >"$tmp/out"
+if ! "$top/out/build/bin/pack" untargz out/student-kit.tar.gz "$tmp/unpacked" >"$tmp/out" 2>&1; then
+    fail "pack untargz out/student-kit.tar.gz"
+    finish
+fi
+kit=
+for d in "$tmp/unpacked"/*; do
+    if [ -z "$kit" ] && [ -d "$d" ]; then kit=$d; else kit=; break; fi
+done
+if [ -z "$kit" ] || [ ! -f "$kit/Makefile" ]; then
+    fail "the tarball does not hold exactly one directory with a Makefile"
+    finish
+fi
+pass
+: >"$tmp/out"
+
+# ---- what must not be there, and what must --------------------------------
+for p in solutions tests/hidden tests/oracle tests/selftest tests/bench tests/suites tests/gradescope; do
+    check "the kit holds $p" test ! -e "$kit/$p"
+done
+for f in README.md labs/raytracer.h labs/vec3.h tests/weights.conf \
+         handouts/overview.md handouts/part1_image_plane.md handouts/part2_pixel_coordinates.md \
+         handouts/part3a_sphere_intersect.md handouts/part3b_ray_color.md; do
+    check "the kit lacks $f" test -s "$kit/$f"
+done
+for f in labs/part*.c tests/public/*.tests; do
+    check "the kit lacks $f" cmp -s "$f" "$kit/$f"
+done
+for s in labs/scenes/*.scene; do
+    name=$(basename "$s" .scene)
+    check "the kit lacks $s" cmp -s "$s" "$kit/$s"
+    check "the kit lacks the reference render labs/reference/$name.png" test -s "$kit/labs/reference/$name.png"
+done
+# Every picture and file the handouts and the README link to is there.
+# (handouts/student-readme.md is the README's source: its links are the README's.)
+for md in "$kit"/README.md "$kit"/handouts/*.md; do
+    [ "$md" = "$kit/handouts/student-readme.md" ] && continue
+    base=$(dirname "$md")
+    sed -n 's/.*\](\([^)#]*\)).*/\1/p; s/.*src="\([^"]*\)".*/\1/p' "$md" | grep -v '^[a-z]*:' |
+        sort -u >"$tmp/links"
+    while read -r link; do
+        check "${md#$kit/} links to $link, which is not in the kit" test -e "$base/$link"
+    done <"$tmp/links"
+done
+for png in "$kit"/handouts/figures/*.png; do
+    size=$(wc -c <"$png")
+    check "${png#$kit/} is $size bytes (over 200 KB)" test "$size" -le 204800
+done
+
+# ---- no line of the solutions' bodies anywhere in the kit -----------------
+# Lines inside the function bodies ("{" ... "}" at the start of a line),
+# comments removed, blanks squeezed; short ones ("return true;") and those
+# the kit's own labs/ already holds (the skeletons, the helpers' examples)
+# are left out.
+cat >"$tmp/body.awk" <<'EOF'
+/^\{/ { inside = 1; next }
+/^\}/ { inside = 0; next }
+inside {
+    line = $0; out = ""
+    while (line != "") {
+        if (comment) {
+            k = index(line, "*/")
+            if (k == 0) break
+            line = substr(line, k + 2); comment = 0
+        } else {
+            a = index(line, "/*"); b = index(line, "//")
+            if (b > 0 && (a == 0 || b < a)) { out = out substr(line, 1, b - 1); break }
+            if (a == 0) { out = out line; break }
+            out = out substr(line, 1, a - 1); line = substr(line, a + 2); comment = 1
+        }
+    }
+    print out
+}
+EOF
+find labs -type f -exec cat {} + | squeeze >"$tmp/labs.txt"
+: >"$tmp/patterns"
+for f in solutions/*.c; do
+    awk -f "$tmp/body.awk" "$f" | squeeze | awk 'length($0) >= 14' >"$tmp/body"
+    while IFS= read -r line; do
+        grep -F -q -e "$line" "$tmp/labs.txt" || printf '%s\n' "$line" >>"$tmp/patterns"
+    done <"$tmp/body"
+done
+npatterns=$(wc -l <"$tmp/patterns")
+check "the scan has lines of the solutions to look for ($npatterns)" test "$npatterns" -ge 10
+# The scan itself works: it finds every line in the solutions.
+cat solutions/*.c | squeeze >"$tmp/solutions.txt"
+missed=0
+while IFS= read -r line; do
+    grep -F -q -e "$line" "$tmp/solutions.txt" || missed=$((missed + 1))
+done <"$tmp/patterns"
+check "the scan finds its own lines in solutions/ ($missed missed)" test "$missed" -eq 0
+(cd "$kit" && find . -type f) | sed 's|^\./||' | sort >"$tmp/files"
+leaks=0
+while IFS= read -r f; do
+    squeeze <"$kit/$f" >"$tmp/file.txt" 2>/dev/null
+    if grep -F -q -f "$tmp/patterns" "$tmp/file.txt"; then
+        leaks=$((leaks + 1))
+        echo "FAIL: $f holds lines of the solutions:"
+        grep -F -f "$tmp/patterns" "$tmp/file.txt" | sed -n '1,5s/^/    | /p'
+    fi
+done <"$tmp/files"
+if [ "$leaks" -eq 0 ]; then pass; else failed=$((failed + leaks)); fi
+
+# ---- it builds, warning-free ----------------------------------------------
+mk "$kit"
+if [ "$status" -ne 0 ]; then
+    fail "make in the kit: exit $status"
+    finish
+elif grep -q -i 'warning' "$tmp/out"; then
+    fail "make in the kit prints warnings"
+    grep -i 'warning' "$tmp/out" | sed -n '1,5s/^/    | /p'
+else
+    pass
+fi
+
+# ---- the untouched skeleton: 0 on every part, status 1 --------------------
+mk "$kit" grade
+if crashed; then
+    fail "make grade on the skeleton crashed"
+elif [ "$ran" -ne 1 ]; then
+    fail "make grade on the skeleton: the grader's status is $ran, want 1"
+else
+    pass
+fi
+for p in 1 2 3a 3b; do
+    set -- $(part_points "$p")
+    if [ $# -ne 2 ]; then
+        fail "make grade on the skeleton: no line for Part $p"
+    elif [ "$1" != 0 ]; then
+        fail "make grade on the skeleton: Part $p scores $1 / $2, want 0"
+    else
+        pass
+    fi
+done
+check "make grade on the skeleton: Score: 0 / 100" grep -q '^Score: 0 / 100' "$tmp/out"
+
+# ---- every make command of the handouts runs as written --------------------
+# Lines of ```sh blocks that start with "make ", each run once in the kit
+# (on the skeleton): `make grade` and `make compare` may end with status 1
+# (points lost, the images differ); anything else must succeed.
+for md in "$kit"/README.md "$kit"/handouts/*.md; do
+    awk -v name="${md#$kit/}" '
+        /^```/ { if (fence) fence = 0; else fence = ($0 ~ /^```sh[ \t]*$/); next }
+        fence && /^make( |$)/ { print name "\t" $0 }' "$md"
+done >"$tmp/commands"
+check "the handouts have make commands to try" test -s "$tmp/commands"
+awk -F '\t' '!seen[$2]++ { print $2 }' "$tmp/commands" >"$tmp/unique"
+while IFS= read -r command; do
+    where=$(awk -F '\t' -v c="$command" '$2 == c { print $1 }' "$tmp/commands" | sort -u |
+        tr '\n' ' ' | sed 's/ $//')
+    case $command in
+        "make grade"*|"make compare"*) allowed="0 or 1" ;;
+        *) allowed="0" ;;
+    esac
+    (cd "$kit" && sh -c "$command") >"$tmp/out" 2>&1 </dev/null
+    status=$?
+    ran=$status
+    if [ "$status" -ne 0 ]; then
+        n=$(sed -n 's/^.*make\(\[[0-9]*\]\)\{0,1\}: \*\*\* \[.*\] Error \([0-9][0-9]*\)$/\2/p' "$tmp/out" | tail -n 1)
+        ran=${n:-2}
+    fi
+    if crashed; then
+        fail "'$command' (in $where) crashed"
+    elif [ "$ran" -ne 0 ] && { [ "$ran" -ne 1 ] || [ "$allowed" = 0 ]; }; then
+        fail "'$command' (in $where): status $ran, want $allowed"
+    else
+        pass
+    fi
+done <"$tmp/unique"
+
+# ---- the reference stage files in labs/: full marks, identical renders ----
+cp solutions/*.c "$kit/labs/"
+mk "$kit" grade
+if crashed; then
+    fail "make grade with the reference crashed"
+elif [ "$status" -ne 0 ]; then
+    fail "make grade with the reference: exit $status (grader $ran), want 0"
+elif ! grep -q '^Score: 100 / 100' "$tmp/out"; then
+    fail "make grade with the reference: no 'Score: 100 / 100'"
+else
+    pass
+fi
+for p in 1 2 3a 3b; do
+    set -- $(part_points "$p")
+    if [ $# -ne 2 ] || [ "$1" != "$2" ]; then
+        fail "make grade with the reference: Part $p scores '${1:-}' / '${2:-}', want full marks"
+    else
+        pass
+    fi
+done
+for s in "$kit"/labs/scenes/*.scene; do
+    name=$(basename "$s")
+    mk "$kit" compare SUBMISSION=labs SCENE="labs/scenes/$name"
+    if [ "$status" -ne 0 ] || ! grep -q '^identical$' "$tmp/out"; then
+        fail "make compare SUBMISSION=labs SCENE=labs/scenes/$name with the reference: exit $status, not identical"
+    else
+        pass
+    fi
+done
+
+finish
