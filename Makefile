@@ -273,6 +273,26 @@ $(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN)
 	@mkdir -p $(@D)
 	$(CC) $(SANFLAGS) $(THREADS) -Ilabs $< $(REF_ASAN) $(UNIT_LIBS_ASAN) -o $@ $(LDLIBS)
 
+# ---- bench: speed against accuracy (tests/bench) ----------------------------
+# `make bench` writes out/bench/: results.csv, report.md, plot.svg and more
+# (about a minute).  tests/suites/bench.sh runs `bench --quick`.  It links the
+# reference solutions and the oracle, so only the instructor's kit has it.
+BENCH_SRC  = $(wildcard tests/bench/*.c)
+BENCH_OBJ  = $(BENCH_SRC:tests/bench/%.c=$(BUILD)/bench/%.o)
+HAVE_BENCH := $(and $(HAVE_SOLUTIONS),$(wildcard tests/oracle/hard.h),$(BENCH_SRC))
+$(BUILD)/bench/%.o: tests/bench/%.c $(wildcard tests/bench/*.h) $(wildcard tests/oracle/*.h) $(KIT_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+# The fast path's sqrt is vectorised only if it need not set errno (no result changes).
+$(BUILD)/bench/fastpath.o: CFLAGS += -fno-math-errno
+$(BUILD)/bin/bench: $(BENCH_OBJ) $(STAGES:%=$(BUILD)/sub/solutions/%.o) \
+                    $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+all: $(if $(HAVE_BENCH),$(BUILD)/bin/bench)
+bench: $(BUILD)/bin/bench
+	$(BUILD)/bin/bench --out out/bench
+
 # ---- the kit's own tests ---------------------------------------------------
 # The renderer with the reference stages, sanitized (tests/suites/render_cli.sh).
 $(ASAN)/bin/render-solutions: $(ASAN)/kit/render_main.o $(REF_ASAN) $(ASAN)/kit/libkit.a
