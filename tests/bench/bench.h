@@ -148,6 +148,7 @@ typedef struct {
     const char *title;        /* for the report                             */
     Precision precision;
     bool fast;                /* the specialised fast path                  */
+    bool unit_dir;            /* assumes |r| = 1 (else: give it r / |r|)    */
     unsigned layouts;         /* the ray layouts closest reads (LAYOUT_*)   */
     /* One test: hit and t, computed at the method's precision. */
     bool (*one)(const Sphere *sphere, const Ray *ray, double *t);

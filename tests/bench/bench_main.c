@@ -340,8 +340,16 @@ static int stage_grader(const Options *o, BenchResults *br, char *err, size_t er
     for (int m = 0; m < bench_nmethods; m++) {
         br->grader_failed[m] = 0;
         for (int i = 0; i < n; i++) {
-            double t = 0;
-            bool hit = bench_methods[m].one(&cases[i].sphere, &cases[i].ray, &t);
+            /* a method that assumes |r| = 1 gets r / |r|, and its t is
+             * scaled back: what a caller would do */
+            Ray ray = cases[i].ray;
+            double len = vec3_length(ray.direction), t = 0;
+            bool scale = bench_methods[m].unit_dir && len > 0 && len < INFINITY;
+            if (scale)
+                ray.direction = vec3_scale(ray.direction, 1 / len);
+            bool hit = bench_methods[m].one(&cases[i].sphere, &ray, &t);
+            if (hit && scale)
+                t /= len;
             if (!hard_check3a(&cases[i], hit, t))
                 br->grader_failed[m]++;
         }

@@ -25,9 +25,25 @@
 #include <math.h>
 #include "bench.h"
 
-/* The reference's accurate steps (solutions/, as of this writing). */
-static bool reference_tail(Vec3 f, Vec3 r, double R2, double A, double B, double C, double *t)
+/* The reference as it is (solutions/, as of this writing), for the inputs
+ * the cheaper form leaves out.  Whole, and called with the original
+ * pointers, so that the common path keeps nothing on the stack for it. */
+bool proposal_fallback(const Sphere *sphere, const Ray *ray, double *t);
+bool proposal_fallback(const Sphere *sphere, const Ray *ray, double *t)
 {
+    Vec3 r = ray->direction;
+    Vec3 f = vec3_sub(ray->origin, sphere->center);
+    double R2 = sphere->radius * sphere->radius;
+    double A = vec3_dot(r, r);
+    double B = vec3_dot(f, r);
+    double ff = vec3_dot(f, f);
+    double C = ff - R2;
+    if (!(A > 0))
+        return false;
+    if (C > 0 && B >= 0)
+        return false;
+    if (B * B - A * C < -(16 * DBL_EPSILON * A * (ff + R2) + DBL_MIN))
+        return false;
     Vec3 l = vec3_sub(f, vec3_scale(r, B / A));
     double D = R2 - vec3_dot(l, l);
     if (!(D >= 0))
@@ -72,7 +88,7 @@ bool proposal_sphere_intersect(const Sphere *sphere, const Ray *ray, double *t)
     Vec3 m = vec3_sub(vec3_scale(f, A), vec3_scale(r, B));
     double XA = (A * A * R2 - vec3_dot(m, m)) * A;     /* = (A sq)^2 */
     if (!(XA > 0x1p-900 && XA < 0x1p+900))
-        return reference_tail(f, r, R2, A, B, C, t);
+        return proposal_fallback(sphere, ray, t);
     /* The roots are (-B -+ sq) / A, A sq = sqrt(X A).  The one of larger
      * size, without cancellation, is Q / A^2 with Q = -(A B + sign(B) A sq);
      * the other is C A / Q, since the product of the roots is C / A. */
@@ -81,7 +97,7 @@ bool proposal_sphere_intersect(const Sphere *sphere, const Ray *ray, double *t)
     if (!(root > 0))                    /* behind e: try the other one */
         root = Q / (A * A);
     if (!(root > 0 && root < INFINITY)) /* rare: Q = 0, or C A overflowed */
-        return reference_tail(f, r, R2, A, B, C, t);
+        return proposal_fallback(sphere, ray, t);
     *t = root;
     return true;
 }

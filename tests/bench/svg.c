@@ -42,8 +42,8 @@ static double axis_pos(const Axis *a, double v)
 }
 
 /* The range of the values (those at or below floor_v count as it), in
- * log10, widened to whole decades or, with fine set, to 1, 2 or 5 times a
- * power of ten. */
+ * log10, widened to whole decades or, with fine set, to 1, 2, 3 or 5 times
+ * a power of ten. */
 static void axis_range(Axis *a, const double *v, int n, double floor_v, bool fine)
 {
     double lo = INFINITY, hi = -INFINITY;
@@ -63,14 +63,14 @@ static void axis_range(Axis *a, const double *v, int n, double floor_v, bool fin
         a->hi = ceil(hi);
         return;
     }
-    const double steps[] = { 0, log10(2.0), log10(5.0), 1 };      /* log10 of 1 2 5 10 */
+    const double steps[] = { 0, log10(2.0), log10(3.0), log10(5.0), 1 };   /* 1 2 3 5 10 */
     double dlo = floor(lo), dhi = floor(hi);
-    int k = 3;
+    int k = 4;
     while (k > 0 && dlo + steps[k] > lo)
         k--;
     a->lo = dlo + steps[k];
     k = 0;
-    while (k < 3 && dhi + steps[k] < hi)
+    while (k < 4 && dhi + steps[k] < hi)
         k++;
     a->hi = dhi + steps[k];
 }
@@ -114,7 +114,7 @@ static void marker(FILE *f, int group, double x, double y)
                 x, y - 6.5, c);
 }
 
-/* 1, 2, 5 times a power of ten, as a tick label. */
+/* 1, 2, 3 or 5 times a power of ten, as a tick label. */
 static void tick_label(char *buf, size_t len, int k, int e)
 {
     if (e >= 0 && e <= 4)
@@ -171,7 +171,7 @@ static void draw_panel(FILE *f, const PlotPanel *p, double top)
                 axis_pos(&ax, pow(10, e)), ay.p0 + 18, buf);
     }
     for (int e = (int)floor(ay.lo); e <= (int)ay.hi; e++)
-        for (int k = 1; k <= 5; k += (k == 1 ? 1 : 3)) {          /* 1, 2, 5 */
+        for (int k = 1; k <= 5; k += (k < 3 ? 1 : 2)) {           /* 1, 2, 3, 5 */
             double v = k * pow(10, e);
             if (log10(v) > ay.hi + 1e-9 || log10(v) < ay.lo - 1e-9)
                 continue;
@@ -241,7 +241,7 @@ static void draw_panel(FILE *f, const PlotPanel *p, double top)
         double tx = 0, ty = 0;
         for (size_t c = 0; c < sizeof dx / sizeof dx[0]; c++) {
             double x0 = dx[c] > 0 ? px[i] + dx[c] : dx[c] < 0 ? px[i] + dx[c] - w : px[i] - w / 2;
-            Box b = { x0, py[i] + dy[c] - 11, x0 + w, py[i] + dy[c] + 3 };
+            Box b = { x0, py[i] + dy[c] - 12, x0 + w, py[i] + dy[c] + 4 };
             bool inside = b.x0 >= ax.p0 && b.x1 <= ax.p1 && b.y0 >= ay.p1 && b.y1 <= ay.p0;
             bool ok = inside;
             for (int k = 0; ok && k < nplaced; k++)
