@@ -2,18 +2,21 @@
  * bench.h - `make bench`: how much speed each ray/sphere formulation buys
  * and how much accuracy it costs.
  *
- * The pieces, one job per file:
+ * The pieces, one job per file (README.md beside them shows the results):
  *   methods.c    the formulations, in double and float, one test at a time
+ *                (bodies in methods_body.h, written once for both)
+ *   proposal.c   a cheaper reference, proposed for solutions/
  *   fastpath.c   the specialised fast path: eye at the origin, spheres as
  *                structure of arrays, vectorised over packets of rays
+ *                (bodies in fastpath_body.h)
  *   suite.c      the table of methods: for each, one test and a closest-hit
  *                loop over many rays (the renderer's inner loop)
  *   workload.c   the rays: an ordinary scene's camera rays, and hard cases
  *   measure.c    timing (interleaved medians), the clock, the ceiling
  *   accuracy.c   errors against the exact answers of tests/oracle
  *   renders.c    the lab's scenes rendered at full HD, against exact renders
- *   svg.c        the plot, drawn directly as SVG
- *   report.c     results.csv, report.md
+ *   svg.c        the plot, drawn directly as SVG (svg.h)
+ *   report.c     results.csv, results_by_family.csv, renders.csv, report.md
  *   bench_main.c options, progress line, the order of the stages
  *
  * Everything the bench writes goes to one directory (out/bench by default).

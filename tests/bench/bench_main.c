@@ -177,7 +177,8 @@ static int stage_throughput(const Options *o, BenchResults *br, char *err, size_
     RaySet rs;
     FastScene fs;
     Spheref sf[64];
-    if (scene.nspheres > 64 || rayset_camera(&rs, &scene, scene.nx, scene.ny, o->quick ? 8 : 4) != 0) {
+    int step = o->quick ? 8 : 4;
+    if (scene.nspheres > 64 || rayset_camera(&rs, &scene, scene.nx, scene.ny, step) != 0) {
         snprintf(err, errlen, "%s: too many spheres, or out of memory", path);
         scene_free(&scene);
         return -1;
@@ -309,7 +310,8 @@ static int stage_errors(const Options *o, BenchResults *br, char *err, size_t er
         long used = 0;
         for (int f = 0; f < FAMILY_COUNT; f++) {
             long ne = 0;
-            accuracy_run(&bench_methods[m], cases[f], exact[f], n[f], &br->fam[m][f], errs + used, &ne);
+            accuracy_run(&bench_methods[m], cases[f], exact[f], n[f], &br->fam[m][f], errs + used,
+                         &ne);
             used += ne;
         }
         pool_stats(&br->all[m], br->fam[m], errs, used);

@@ -25,7 +25,10 @@
  * 64-bit integer with plain SSE2, nor a ?: between two arrays, but it does
  * vectorise these.)  sqrt is vectorised only if the compiler need not set
  * errno, hence -fno-math-errno for this file (it changes no result).
- * A sphere that contains the eye (C <= 0) is solved ray by ray: it is rare.
+ * The filter takes two spheres per pass over the packet, so each ray is
+ * loaded once for both.  A sphere that contains the eye (C <= 0) is solved
+ * ray by ray: it is rare.  fast_closest_m runs the filter in float (four
+ * lanes) and the solve in double; its answers are the double path's.
  * C itself is computed exactly (products split with fma, sums in double-
  * double) and rounded once, which is affordable because it happens once per
  * sphere; so the fast path is also more accurate than the per-ray formulas

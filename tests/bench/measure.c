@@ -335,7 +335,8 @@ int measure_outcomes(const Case *miss, int nmiss, const Case *hit, int nhit, int
             if (!bench_methods[m].scalar_d && !bench_methods[m].scalar_f)
                 continue;
             for (int o = 0; o < 2; o++)
-                samples[(o * nm + m) * rounds + r] = time_pairs(&bench_methods[m], &ps[o], passes[o]);
+                samples[(o * nm + m) * rounds + r] =
+                    time_pairs(&bench_methods[m], &ps[o], passes[o]);
         }
     }
     for (int m = 0; m < nm; m++) {

@@ -31,9 +31,10 @@ static void render_once(const Method *m, const BenchScene *bs, const Scene *scen
     image_plane_size(scene->fov_degrees, (double)nx / ny, scene->d, &w, &h);
     row->n = nx;
     for (int j = 0; j < ny; j++) {
-        for (int i = 0; i < nx; i++)
-            rayset_put(row, i, camera_ray(scene->eye, pixel_coordinates(i, j, nx, ny, w, h, scene->d)),
-                       m ? m->layouts : LAYOUT_SOA_D);
+        for (int i = 0; i < nx; i++) {
+            Vec3 pixel = pixel_coordinates(i, j, nx, ny, w, h, scene->d);
+            rayset_put(row, i, camera_ray(scene->eye, pixel), m ? m->layouts : LAYOUT_SOA_D);
+        }
         if (m)
             m->closest(bs, row, idx + (size_t)j * nx, trow);
         else

@@ -250,7 +250,8 @@ static void md_render_table(FILE *f, const BenchResults *br)
         fprintf(f, "---:|");
     fprintf(f, "\n");
     for (int m = 0; m < bench_nmethods; m++) {
-        fprintf(f, "| %s | %s |", bench_methods[m].name, precision_name(bench_methods[m].precision));
+        fprintf(f, "| %s | %s |", bench_methods[m].name,
+                precision_name(bench_methods[m].precision));
         for (int s = 0; s < br->nrenders; s++) {
             const RenderResult *r = &br->renders[s];
             fprintf(f, " %.0f / %s |", 1e3 * r->seconds[m],
@@ -323,7 +324,8 @@ static void md_ratio(FILE *f, const BenchResults *br)
                    "Cm = f.f (1 - 16 eps) - R^2 (1 + 16 eps) is the reference's test, rearranged, "
                    "and costs two products more than the lecture's; the zero-direction and "
                    "heading-away tests move after it. (2) The accurate solve scales l by A "
-                   "instead of dividing B by A: m = A f - B r, X = A^2 R^2 - m.m = A^2 (R^2 - l.l), "
+                   "instead of dividing B by A: m = A f - B r, "
+                   "X = A^2 R^2 - m.m = A^2 (R^2 - l.l), "
                    "and the roots Q / A^2 and C A / Q with Q = -(A B + sign(B) sqrt(X A)): one "
                    "division, as in the lecture's formula; extreme inputs fall back to the "
                    "reference's own steps. Measured in this run: **%.3fx** the textbook "
@@ -361,7 +363,8 @@ static void md_findings(FILE *f, const BenchResults *br)
             hi = br->mtests[m] > hi ? br->mtests[m] : hi;
         }
     fprintf(f, "- **One test at a time, the formula moves the speed by %.1fx at most.** The "
-               "scalar double methods run at %.0f to %.0f million tests per second. Each test is a call and some twenty operations, and most tests end at "
+               "scalar double methods run at %.0f to %.0f million tests per second. Each test "
+               "is a call and some twenty operations, and most tests end at "
                "the first comparison (most rays miss most spheres), so the accurate formulas' "
                "extra work shows mainly on hits (see the ns per hit below). Scalar float is no "
                "faster than scalar double (the textbook: %.0f against %.0f): one number at a "
@@ -388,11 +391,11 @@ static void md_findings(FILE *f, const BenchResults *br)
             E(br->all[rd].max_over_kappa), E(br->all[rgd].max_over_kappa),
             E(br->all[fd].max_over_kappa));
     /* 3. float */
-    fprintf(f, "- **Float is a different story.** Rounding the inputs to float moves a far "
-               "sphere's image by more than its radius: on the far family the textbook in float "
-               "is wrong %s times per million, the reference's float version %s, the float "
-               "fast path %s. On the ordinary scene float's worst error in t is %s (textbook) "
-               "to %s (reference), still well under a pixel.\n",
+    fprintf(f, "- **Float is a different story.** Rounding the inputs to float (7 digits) "
+               "moves a sphere 10^7 radii away by more than half its radius: on the far "
+               "family the textbook in float is wrong %s times per million, the reference's "
+               "float version %s, the float fast path %s. On the ordinary scene float's worst "
+               "error in t is %s (textbook) to %s (reference), still well under a pixel.\n",
             W(per_million(&br->fam[tf][FAMILY_FAR])), W(per_million(&br->fam[rf][FAMILY_FAR])),
             W(per_million(&br->fam[ff][FAMILY_FAR])), E(br->fam[tf][FAMILY_SCENE].max_rel),
             E(br->fam[rf][FAMILY_SCENE].max_rel));

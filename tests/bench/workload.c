@@ -82,8 +82,10 @@ int rayset_camera(RaySet *rs, const Scene *scene, int nx, int ny, int step)
         return -1;
     int k = 0;
     for (int j = 0; j < ny; j += step)
-        for (int i = 0; i < nx; i += step)
-            rayset_set(rs, k++, camera_ray(scene->eye, pixel_coordinates(i, j, nx, ny, w, h, scene->d)));
+        for (int i = 0; i < nx; i += step) {
+            Vec3 pixel = pixel_coordinates(i, j, nx, ny, w, h, scene->d);
+            rayset_set(rs, k++, camera_ray(scene->eye, pixel));
+        }
     return 0;
 }
 
@@ -93,7 +95,8 @@ Case *cases_scene(const Scene *scene, int step, int *n)
     *n = 0;
     if (rayset_camera(&rs, scene, scene->nx, scene->ny, step) != 0)
         return NULL;
-    Case *cases = malloc((size_t)rs.n * (size_t)(scene->nspheres > 0 ? scene->nspheres : 1) * sizeof *cases);
+    size_t per_ray = (size_t)(scene->nspheres > 0 ? scene->nspheres : 1);
+    Case *cases = malloc((size_t)rs.n * per_ray * sizeof *cases);
     if (cases) {
         for (int i = 0; i < rs.n; i++)
             for (int k = 0; k < scene->nspheres; k++) {
