@@ -107,4 +107,7 @@ void testgen_hidden(TestList *l, uint64_t seed)
     img->hidden = true;
     img = tg_image(l, "Part 3b: hidden: render the behind scene at 32 x 24", "labs/scenes/behind.scene", 32, 24);
     img->hidden = true;
+
+    /* Hard cases drawn from this seed, beyond the public ones. */
+    tg_hard(l, seed, 0, 1, true);
 }

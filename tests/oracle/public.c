@@ -174,10 +174,13 @@ static void part3b(TestList *l)
                  "each pixel centre goes through your camera_ray and ray_color");
 }
 
+#define PUBLIC_HARD_SEED 20261122u
+
 void testgen_public(TestList *list)
 {
     part1(list);
     part2(list);
     part3a(list);
     part3b(list);
+    tg_hard(list, PUBLIC_HARD_SEED, 0, 2, false);
 }

@@ -10,6 +10,7 @@
  */
 #include "testgen.h"
 #include "oracle.h"
+#include "hard.h"
 #include "../../labs/kit/scene.h"
 
 #include <math.h>
@@ -49,7 +50,7 @@ void tg_plane(Test *t, double fov, double aspect, double d)
     Case *c = test_add_case(t);
     c->in[0] = fov, c->in[1] = aspect, c->in[2] = d;
     oracle_image_plane(fov, aspect, d, &c->want[0], &c->want[1]);
-    double rel = t->hard ? 8 * U : CORE_REL;
+    double rel = t->hard ? HARD_PART1_REL_TOL : CORE_REL;
     c->tol[0] = rel * fabs(c->want[0]);
     c->tol[1] = rel * fabs(c->want[1]);
 
@@ -84,9 +85,9 @@ void tg_pixel(Test *t, int i, int j, int nx, int ny, double w, double h, double 
     memcpy(c->in, in, sizeof in);
     Vec3 p = oracle_pixel(i, j, nx, ny, w, h, d);
     c->want[0] = p.x, c->want[1] = p.y, c->want[2] = p.z;
-    double rel = t->hard ? 8 * U : CORE_REL;
-    c->tol[0] = rel * w;
-    c->tol[1] = rel * h;
+    double rel = t->hard ? HARD_PART2_TOL_U * U : CORE_REL;
+    c->tol[0] = rel * fabs(w);
+    c->tol[1] = rel * fabs(h);
     c->tol[2] = 0;
 
     double x = -w / 2 + w * (i + 0.5) / nx, y = -h / 2 + h * (ny - 0.5 - j) / ny, v[3];
@@ -190,7 +191,7 @@ void tg_camera(Test *t, const double eye[3], const double pixel[3])
     double want[6] = { eye[0], eye[1], eye[2], u.x, u.y, u.z };
     memcpy(c->want, want, sizeof want);
     for (int k = 3; k < 6; k++)
-        c->tol[k] = t->hard ? 8 * U : CORE_REL;
+        c->tol[k] = t->hard ? HARD_PART3B_DIR_TOL_U * U : CORE_REL;
 
     double v[6] = { eye[0], eye[1], eye[2], dir.x, dir.y, dir.z };
     add_hint(c, "the direction must have unit length: divide s - e by |s - e|", v, 6);
@@ -301,6 +302,87 @@ Test *tg_image(TestList *list, const char *name, const char *scene_path, int nx,
         }
     scene_free(&file);
     return t;
+}
+
+/* ---- the hard cases (hard.c), as tests tagged "hard" ------------------------ */
+
+static Test *hard_test(TestList *l, int part, Kind kind, const char *family, bool hidden)
+{
+    char name[128];
+    snprintf(name, sizeof name, "Part %s: %shard: %s", part_label(part), hidden ? "hidden: " : "", family);
+    Test *t = testlist_add(l, part, kind, name);
+    t->hard = true;
+    t->hidden = hidden;
+    snprintf(t->note, sizeof t->note, "%s", "a hard case: see the handout's hard-case challenge");
+    return t;
+}
+
+/* Finds the test of this family made by this call, or makes it. */
+static Test *family_test(TestList *l, int first, int part, Kind kind, const char *family, bool hidden)
+{
+    for (int k = first; k < l->n; k++)
+        if (l->tests[k].part == part && strstr(l->tests[k].name, family))
+            return &l->tests[k];
+    return hard_test(l, part, kind, family, hidden);
+}
+
+void tg_hard(TestList *l, uint64_t seed, int first_round, int rounds, bool hidden)
+{
+    int first = l->n;
+    int n1 = (first_round + rounds) * HARD_PART1_FAMILIES;
+    HardCase1 *c1 = calloc((size_t)n1, sizeof *c1);
+    hard_part1(seed, c1, n1);
+    for (int k = first_round * HARD_PART1_FAMILIES; k < n1; k++)
+        tg_plane(family_test(l, first, PART1, KIND_PLANE, c1[k].family, hidden),
+                 c1[k].fov_degrees, c1[k].aspect, c1[k].d);
+    free(c1);
+
+    int n2 = (first_round + rounds) * HARD_PART2_FAMILIES;
+    HardCase2 *c2 = calloc((size_t)n2, sizeof *c2);
+    hard_part2(seed, c2, n2);
+    for (int k = first_round * HARD_PART2_FAMILIES; k < n2; k++)
+        tg_pixel(family_test(l, first, PART2, KIND_PIXEL, c2[k].family, hidden),
+                 c2[k].i, c2[k].j, c2[k].nx, c2[k].ny, c2[k].w, c2[k].h, c2[k].d);
+    free(c2);
+
+    int n3 = (first_round + 2 * rounds) * HARD_PART3A_FAMILIES;
+    HardCase3a *c3 = calloc((size_t)n3, sizeof *c3);
+    hard_part3a(seed, c3, n3);
+    for (int k = first_round * HARD_PART3A_FAMILIES; k < n3; k++) {
+        const Sphere *sp = &c3[k].sphere;
+        const Ray *r = &c3[k].ray;
+        double c[3] = { sp->center.x, sp->center.y, sp->center.z };
+        double e[3] = { r->origin.x, r->origin.y, r->origin.z };
+        double d[3] = { r->direction.x, r->direction.y, r->direction.z };
+        tg_sphere(family_test(l, first, PART3A, KIND_SPHERE, c3[k].family, hidden), c, sp->radius, e, d);
+    }
+    free(c3);
+
+    /* Part 3b: the camera rays in one test; each colour case has its own
+     * scene, so its own test. */
+    int n4 = (first_round + rounds) * HARD_PART3B_FAMILIES;
+    HardCase3b *c4 = calloc((size_t)n4, sizeof *c4);
+    hard_part3b(seed, c4, n4);
+    Test *cam = hard_test(l, PART3B, KIND_CAMERA, "camera rays through pixels of huge images", hidden);
+    for (int k = first_round * HARD_PART3B_FAMILIES; k < n4; k++) {
+        double e[3] = { c4[k].eye.x, c4[k].eye.y, c4[k].eye.z };
+        double p[3] = { c4[k].pixel.x, c4[k].pixel.y, c4[k].pixel.z };
+        tg_camera(cam, e, p);
+        Test *t = hard_test(l, PART3B, KIND_COLOR, c4[k].family, hidden);
+        t->weight = 1.0 / rounds;
+        t->background[0] = c4[k].background.x;
+        t->background[1] = c4[k].background.y;
+        t->background[2] = c4[k].background.z;
+        for (int s = 0; s < c4[k].nspheres; s++) {
+            const Sphere *sp = &c4[k].spheres[s];
+            double cc[3] = { sp->center.x, sp->center.y, sp->center.z };
+            double col[3] = { sp->color.x, sp->color.y, sp->color.z };
+            test_add_sphere(t, cc, sp->radius, col);
+        }
+        double d[3] = { c4[k].ray.direction.x, c4[k].ray.direction.y, c4[k].ray.direction.z };
+        tg_color(t, e, d);
+    }
+    free(c4);
 }
 
 /* ---- random numbers ----------------------------------------------------------- */

@@ -28,6 +28,10 @@ void tg_color(Test *t, const double e[3], const double r[3]);   /* t's scene */
 /* An image test of the scene file at nx x ny: one case per pixel. */
 Test *tg_image(TestList *list, const char *name, const char *scene_path, int nx, int ny);
 
+/* The hard cases of hard.c for rounds first_round .. first_round + rounds - 1
+ * of every family (Part 3a: twice as many), as tests tagged hard. */
+void tg_hard(TestList *list, uint64_t seed, int first_round, int rounds, bool hidden);
+
 /* A small deterministic random number generator (splitmix64). */
 typedef struct { uint64_t s; } TgRandom;
 double tg_uniform(TgRandom *r, double lo, double hi);
