@@ -156,7 +156,8 @@ void tg_sphere(Test *t, const double c3[3], double R, const double e[3], const d
         return;
     double sq = sqrt(q.disc);
     double tn = (-q.B - sq) / q.A, tf = (-q.B + sq) / q.A;
-    hint_t(c, "the far root: the first hit is the smaller t > 0, (-B - sqrt(B^2 - A C)) / A", tf > 0, tf);
+    if (tf > 0)
+        hint_t(c, "the far root: the first hit is the smaller t > 0, (-B - sqrt(B^2 - A C)) / A", true, tf);
     hint_t(c, "a hit behind the eye: only roots t > 0 are ahead of the ray", true, tn);
     if (q.C < 0)
         hint_t(c, "from inside the sphere (C < 0) the near root is behind: the hit is the far root", false, 0);
@@ -165,17 +166,19 @@ void tg_sphere(Test *t, const double c3[3], double R, const double e[3], const d
     double d1 = q.B * q.B - q.C;
     if (d1 >= 0) {
         double t1 = -q.B - sqrt(d1);
-        hint_t(c, "A is not 1: the direction need not have unit length, so A = r.r", t1 > 0, t1);
+        if (t1 > 0)
+            hint_t(c, "A is not 1: the direction need not have unit length, so A = r.r", true, t1);
     }
     double tb = (q.B - sq) / q.A;
-    hint_t(c, "the sign of B: with f = e - c, B = f.r and t = (-B -+ sqrt(B^2 - A C)) / A",
-           tb > 0, tb);
-    hint_t(c, "t is halved: with B = f.r (not 2 f.r) the roots are (-B -+ sqrt(B^2 - A C)) / A",
-           tn / 2 > 0, tn / 2);
+    if (tb > 0)
+        hint_t(c, "the sign of B: with f = e - c, B = f.r and t = (-B -+ sqrt(B^2 - A C)) / A", true, tb);
+    if (tn > 0)
+        hint_t(c, "t is halved: with B = f.r (not 2 f.r) the roots are (-B -+ sqrt(B^2 - A C)) / A", true, tn / 2);
     double d4 = q.B * q.B - 4 * q.A * q.C;
     if (d4 >= 0) {
         double t4 = (-q.B - sqrt(d4)) / (2 * q.A);
-        hint_t(c, "B^2 - 4 A C mixes two forms: with B = f.r the discriminant is B^2 - A C", t4 > 0, t4);
+        if (t4 > 0)
+            hint_t(c, "B^2 - 4 A C mixes two forms: with B = f.r the discriminant is B^2 - A C", true, t4);
     }
 }
 
@@ -357,6 +360,17 @@ void tg_hard(TestList *l, uint64_t seed, int first_round, int rounds, bool hidde
         tg_sphere(family_test(l, first, PART3A, KIND_SPHERE, c3[k].family, hidden), c, sp->radius, e, d);
     }
     free(c3);
+    /* A family of misses (spheres behind, grazing rays) would give the
+     * always-miss skeleton points: add a plain hit to any test without one. */
+    for (int k = first; k < l->n; k++) {
+        Test *t = &l->tests[k];
+        bool certain_hit = false;
+        for (int c = 0; c < t->ncases; c++)
+            certain_hit = certain_hit || (t->cases[c].want[0] == 1 && !(t->cases[c].flags & CASE_EITHER_HIT));
+        if (t->part == PART3A && !certain_hit)
+            tg_sphere(t, (const double[3]){ 0, 0, -8 }, 2, (const double[3]){ 0, 0, 0 },
+                      (const double[3]){ 0.06, 0.08, -1 });
+    }
 
     /* Part 3b: the camera rays in one test; each colour case has its own
      * scene, so its own test. */
@@ -381,6 +395,10 @@ void tg_hard(TestList *l, uint64_t seed, int first_round, int rounds, bool hidde
         }
         double d[3] = { c4[k].ray.direction.x, c4[k].ray.direction.y, c4[k].ray.direction.z };
         tg_color(t, e, d);
+        /* and a ray at the last sphere's centre, so the background alone never passes */
+        const Sphere *last = &c4[k].spheres[c4[k].nspheres - 1];
+        double at[3] = { last->center.x - e[0], last->center.y - e[1], last->center.z - e[2] };
+        tg_color(t, e, at);
     }
     free(c4);
 }
