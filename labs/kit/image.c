@@ -5,6 +5,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include "image.h"
+#include "savefile.h"
 
 #include <errno.h>
 #include <math.h>
@@ -106,71 +107,6 @@ static int image_encode_ppm(const Image *img, KitBuf *out)
                ? -1 : 0;
 }
 
-/* Writes all n bytes to fd, retrying after interruptions and short writes.
- * Returns 0, or -1 with errno set. */
-static int image_write_all(int fd, const unsigned char *p, size_t n)
-{
-    while (n > 0) {
-        ssize_t w = write(fd, p, n);
-        if (w < 0) {
-            if (errno == EINTR)
-                continue;
-            return -1;
-        }
-        p += w;
-        n -= (size_t)w;
-    }
-    return 0;
-}
-
-/* Saves data to path: a temporary file beside it (same directory, so the
- * rename cannot cross file systems), given the usual permissions, written,
- * closed, then renamed over path.  Returns 0, or -1 with "path: reason" in
- * err and no temporary file left behind. */
-static int image_save_bytes(const char *path, const unsigned char *data, size_t n,
-                            char *err, size_t errlen)
-{
-    const char *slash = strrchr(path, '/');
-    size_t dirlen = slash ? (size_t)(slash - path) + 1 : 0;
-    static const char pattern[] = ".image-XXXXXX";
-    char *tmp = malloc(dirlen + sizeof pattern);
-    if (!tmp) {
-        snprintf(err, errlen, "%s: out of memory", path);
-        return -1;
-    }
-    memcpy(tmp, path, dirlen);
-    memcpy(tmp + dirlen, pattern, sizeof pattern);
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        snprintf(err, errlen, "%s: cannot create a temporary file in its directory: %s",
-                 path, strerror(errno));
-        free(tmp);
-        return -1;
-    }
-    /* mkstemp makes the file private (0600); give it the mode a newly
-     * created file would have (0666 less the umask). */
-    mode_t mask = umask(022);
-    umask(mask);
-    const char *what = "cannot write";
-    int failed = fchmod(fd, 0666 & ~mask) != 0 || image_write_all(fd, data, n) != 0;
-    int saved = errno;
-    if (close(fd) != 0 && !failed) {
-        failed = 1;
-        saved = errno;
-    }
-    if (!failed && rename(tmp, path) != 0) {
-        failed = 1;
-        saved = errno;
-        what = "cannot rename the temporary file to it";
-    }
-    if (failed) {
-        unlink(tmp);
-        snprintf(err, errlen, "%s: %s: %s", path, what, strerror(saved));
-    }
-    free(tmp);
-    return failed ? -1 : 0;
-}
-
 /* Encodes by extension, then saves through a temporary file.  Returns 0,
  * or -1 with "path: reason" in err. */
 int image_write(const Image *img, const char *path, char *err, size_t errlen)
@@ -198,7 +134,7 @@ int image_write(const Image *img, const char *path, char *err, size_t errlen)
     if (rc != 0)
         snprintf(err, errlen, "%s: %s", path, why);
     else
-        rc = image_save_bytes(path, bytes.data, bytes.len, err, errlen);
+        rc = kit_save_file(path, bytes.data, bytes.len, err, errlen);
     kit_buf_free(&bytes);
     return rc;
 }

@@ -5,6 +5,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include "archive.h"
+#include "../../labs/kit/savefile.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -936,44 +937,9 @@ int archive_save(const Archive *a, const char *path, char *err, size_t errlen)
         kit_buf_free(&bytes);
         return arc_fail(err, errlen, "%s: %s", path, why);
     }
-    const char *slash = strrchr(path, '/');
-    size_t dirlen = slash ? (size_t)(slash - path) + 1 : 0;
-    static const char pattern[] = ".archive-XXXXXX";
-    char *tmp = malloc(dirlen + sizeof pattern);
-    int fd = -1;
-    if (tmp) {
-        memcpy(tmp, path, dirlen);
-        memcpy(tmp + dirlen, pattern, sizeof pattern);
-        fd = mkstemp(tmp);
-    }
-    if (fd < 0) {
-        int saved = errno;
-        kit_buf_free(&bytes);
-        free(tmp);
-        return arc_fail(err, errlen, "%s: cannot create a temporary file in its directory: %s",
-                        path, tmp ? strerror(saved) : "out of memory");
-    }
-    mode_t mask = umask(022);
-    umask(mask);
-    const char *what = "cannot write";
-    int failed = fchmod(fd, 0666 & ~mask) != 0 || arc_write_all(fd, bytes.data, bytes.len) != 0;
-    int saved = errno;
-    if (close(fd) != 0 && !failed) {
-        failed = 1;
-        saved = errno;
-    }
-    if (!failed && rename(tmp, path) != 0) {
-        failed = 1;
-        saved = errno;
-        what = "cannot rename the temporary file to it";
-    }
-    if (failed) {
-        unlink(tmp);
-        arc_fail(err, errlen, "%s: %s: %s", path, what, strerror(saved));
-    }
-    free(tmp);
+    int status = kit_save_file(path, bytes.data, bytes.len, err, errlen);
     kit_buf_free(&bytes);
-    return failed ? -1 : 0;
+    return status;
 }
 
 /* Tells the format by the first bytes and decodes.  Returns 0, or -1 with

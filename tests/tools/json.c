@@ -5,6 +5,7 @@
 
 #include "json.h"
 #include "../../labs/kit/numtext.h"
+#include "../../labs/kit/savefile.h"
 
 #include <errno.h>
 #include <math.h>
@@ -313,23 +314,6 @@ const char *json_text(JsonWriter *w, size_t *len)
     return (const char *)w->out.data;
 }
 
-/* Writes all n bytes to fd, retrying after interruptions and short
- * writes.  Returns 0, or -1 with errno set. */
-static int json_write_all(int fd, const char *p, size_t n)
-{
-    while (n > 0) {
-        ssize_t got = write(fd, p, n);
-        if (got < 0) {
-            if (errno == EINTR)
-                continue;
-            return -1;
-        }
-        p += got;
-        n -= (size_t)got;
-    }
-    return 0;
-}
-
 /* The text and a newline into a temporary file beside path (created by
  * mkstemp, then given the mode a new file would get), closed, then renamed
  * over path.  Returns 0, or -1 with "path: reason" in err. */
@@ -342,42 +326,14 @@ int json_write_file(JsonWriter *w, const char *path, char *err, size_t errlen)
                  w->error ? w->error : "the document is not finished");
         return -1;
     }
-    const char *slash = strrchr(path, '/');
-    size_t dirlen = slash ? (size_t)(slash - path) + 1 : 0;
-    static const char pattern[] = ".json-XXXXXX";
-    char *tmp = malloc(dirlen + sizeof pattern);
-    if (!tmp) {
+    char *copy = malloc(len + 1);
+    if (!copy) {
         snprintf(err, errlen, "%s: out of memory", path);
         return -1;
     }
-    memcpy(tmp, path, dirlen);
-    memcpy(tmp + dirlen, pattern, sizeof pattern);
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        snprintf(err, errlen, "%s: cannot create a temporary file in its directory: %s",
-                 path, strerror(errno));
-        free(tmp);
-        return -1;
-    }
-    mode_t mask = umask(022);
-    umask(mask);
-    const char *what = "cannot write";
-    int failed = fchmod(fd, 0666 & ~mask) != 0 || json_write_all(fd, text, len) != 0 ||
-                 json_write_all(fd, "\n", 1) != 0;
-    int saved = errno;
-    if (close(fd) != 0 && !failed) {
-        failed = 1;
-        saved = errno;
-    }
-    if (!failed && rename(tmp, path) != 0) {
-        failed = 1;
-        saved = errno;
-        what = "cannot rename the temporary file to it";
-    }
-    if (failed) {
-        unlink(tmp);
-        snprintf(err, errlen, "%s: %s: %s", path, what, strerror(saved));
-    }
-    free(tmp);
-    return failed ? -1 : 0;
+    memcpy(copy, text, len);
+    copy[len] = '\n';
+    int status = kit_save_file(path, copy, len + 1, err, errlen);
+    free(copy);
+    return status;
 }

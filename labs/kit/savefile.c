@@ -1,0 +1,78 @@
+/*
+ * savefile.c - see savefile.h.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "savefile.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <unistd.h>
+
+/* Writes all n bytes to fd, retrying after interruptions and short writes.
+ * Returns 0, or -1 with errno set. */
+static int save_write_all(int fd, const unsigned char *p, size_t n)
+{
+    while (n > 0) {
+        ssize_t w = write(fd, p, n);
+        if (w < 0) {
+            if (errno == EINTR)
+                continue;
+            return -1;
+        }
+        p += w;
+        n -= (size_t)w;
+    }
+    return 0;
+}
+
+/* Saves data to path: a temporary file beside it (same directory, so the
+ * rename cannot cross file systems), given the usual permissions, written,
+ * closed, then renamed over path.  Returns 0, or -1 with "path: reason" in
+ * err and no temporary file left behind. */
+int kit_save_file(const char *path, const void *data, size_t n, char *err, size_t errlen)
+{
+    const char *slash = strrchr(path, '/');
+    size_t dirlen = slash ? (size_t)(slash - path) + 1 : 0;
+    static const char pattern[] = ".save-XXXXXX";
+    char *tmp = malloc(dirlen + sizeof pattern);
+    if (!tmp) {
+        snprintf(err, errlen, "%s: out of memory", path);
+        return -1;
+    }
+    memcpy(tmp, path, dirlen);
+    memcpy(tmp + dirlen, pattern, sizeof pattern);
+    int fd = mkstemp(tmp);
+    if (fd < 0) {
+        snprintf(err, errlen, "%s: cannot create a temporary file in its directory: %s",
+                 path, strerror(errno));
+        free(tmp);
+        return -1;
+    }
+    /* mkstemp makes the file private (0600); give it the mode a newly
+     * created file would have (0666 less the umask). */
+    mode_t mask = umask(022);
+    umask(mask);
+    const char *what = "cannot write";
+    int failed = fchmod(fd, 0666 & ~mask) != 0 || save_write_all(fd, data, n) != 0;
+    int saved = errno;
+    if (close(fd) != 0 && !failed) {
+        failed = 1;
+        saved = errno;
+    }
+    if (!failed && rename(tmp, path) != 0) {
+        failed = 1;
+        saved = errno;
+        what = "cannot rename the temporary file to it";
+    }
+    if (failed) {
+        unlink(tmp);
+        snprintf(err, errlen, "%s: %s: %s", path, what, strerror(saved));
+    }
+    free(tmp);
+    return failed ? -1 : 0;
+}
+

@@ -1,0 +1,15 @@
+/*
+ * savefile.h - writing a whole file so that it is never left half-written.
+ */
+#ifndef KIT_SAVEFILE_H
+#define KIT_SAVEFILE_H
+
+#include <stddef.h>
+
+/* Writes n bytes of data to a temporary file beside path, gives it the mode
+ * a new file would get (0666 less the umask), closes it and renames it over
+ * path.  Returns 0, or -1 with "path: reason" in err and no temporary file
+ * left behind. */
+int kit_save_file(const char *path, const void *data, size_t n, char *err, size_t errlen);
+
+#endif
