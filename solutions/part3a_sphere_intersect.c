@@ -26,43 +26,54 @@ bool sphere_intersect(const Sphere *sphere, const Ray *ray, double *t)
     Vec3 f = vec3_sub(ray->origin, sphere->center);     /* f = e - c */
     double R2 = sphere->radius * sphere->radius;
     double A = vec3_dot(r, r);
+
+    /* The discriminant B^2 - A C, computed without cancellation.  By
+     * Lagrange's identity (f.f)(r.r) - (f.r)^2 = |f x r|^2, so
+     *     B^2 - A C = A R^2 - |f x r|^2,
+     * and |f x r|^2 / A is the squared distance from c to the line: the
+     * line meets the sphere when that distance is at most R.  Written as
+     * B^2 - A C it loses the radius when the sphere is small and far (both
+     * terms are about A |f|^2 and their difference is rounding error); this
+     * form's error grows only like |f| / R (Ray Tracing Gems, ch. 7). */
+    Vec3 n = vec3_cross(f, r);
+    double AR2 = A * R2, nn = vec3_dot(n, n);
+    if (nn - AR2 > DBL_MIN)             /* the line passes the sphere by: */
+        return false;                   /* most rays and most spheres     */
+
+    /* The roots are (-B -+ sqrt(disc)) / A. */
     double B = vec3_dot(f, r);
-    double ff = vec3_dot(f, f);
-    double C = ff - R2;
+    double sq;                          /* sqrt(disc) */
+    if (AR2 > 0x1p-900 && AR2 < 0x1p+900) {
+        double disc = AR2 - nn;
+        if (!(disc >= 0))               /* a miss */
+            return false;
+        sq = sqrt(disc);
+    } else {
+        /* r so short or long that A R^2 leaves the range of double (or
+         * NaN input).  Measure instead from l = f - (B / A) r, the point
+         * of the line closest to c, whose size does not depend on |r|:
+         * disc = A (R^2 - l.l), and sqrt(disc) = sqrt(A) sqrt(R^2 - l.l). */
+        if (!(A > 0))                   /* zero or NaN direction */
+            return false;
+        Vec3 l = vec3_sub(f, vec3_scale(r, B / A));
+        double D = R2 - vec3_dot(l, l);
+        if (!(D >= 0))                  /* a miss, or NaN input */
+            return false;
+        sq = sqrt(A) * sqrt(D);
+    }
 
-    if (!(A > 0))                       /* zero or NaN direction */
-        return false;
-    if (C > 0 && B >= 0)                /* outside and heading away */
-        return false;
-    /* Most rays miss most spheres: when the lecture's B^2 - A C is below
-     * minus a bound on its rounding error, the miss is certain and costs
-     * no more than the lecture's test.  The bound, 16 eps A (f.f + R^2),
-     * covers the roundings of f, A, B, C and the products (about 21 u);
-     * DBL_MIN keeps it positive when the products underflow. */
-    if (B * B - A * C < -(16 * DBL_EPSILON * A * (ff + R2) + DBL_MIN))
-        return false;
-
-    /* Otherwise solve accurately (Ray Tracing Gems, ch. 7).  B^2 - A C loses
-     * the radius when the sphere is small and far: both terms are about
-     * A |f|^2.  Instead measure from the point of the line closest to c,
-     * l = f - (B / A) r: then B^2 - A C = A (R^2 - l.l), whose error grows
-     * only like |f| / R, not (|f| / R)^2. */
-    Vec3 l = vec3_sub(f, vec3_scale(r, B / A));
-    double D = R2 - vec3_dot(l, l);
-    if (!(D >= 0))                      /* a miss, or NaN input */
-        return false;
-    double AD = A * D;                  /* = B^2 - A C, accurately */
-    double sq = AD > 0x1p-900 && AD < 0x1p+900 ? sqrt(AD) : sqrt(A) * sqrt(D);
-    /* The roots are (-B -+ sq) / A.  Take the one of larger size without
-     * cancellation, q / A with q = -(B + sign(B) sq); the other is C / q,
-     * since the product of the roots is C / A. */
+    /* Take the root of larger size without cancellation, q / A with
+     * q = -(B + sign(B) sqrt(disc)); the other is C / q, since the product
+     * of the roots is C / A. */
+    double C = vec3_dot(f, f) - R2;
     double q = -(B + copysign(sq, B));
-    if (q == 0)                         /* a double root at t = 0: no t > 0 */
-        return false;
     double root = C / q;                /* the root nearer 0 */
     if (!(root > 0))                    /* behind e: try the other one */
         root = q / A;
-    if (!(root > 0 && root < INFINITY)) /* both behind e, or out of range */
+    /* Both roots behind e (a sphere behind, or outside and heading away),
+     * a double root at t = 0 (q = 0 gives NaN or infinity), or a t out of
+     * range: no hit. */
+    if (!(root > 0 && root < INFINITY))
         return false;
     *t = root;
     return true;

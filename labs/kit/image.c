@@ -37,11 +37,14 @@ int image_alloc(Image *img, int width, int height, char *err, size_t errlen)
                  width, height, IMAGE_MAX_SIDE);
         return -1;
     }
-    /* malloc and memset, not calloc: the pages are touched here, so that a
-     * render's timing counts rays and not the first touch of fresh memory. */
+    /* The pages are touched here, so that a render's timing counts rays
+     * and not the first touch of fresh memory.  memset is called through a
+     * volatile pointer: a compiler may otherwise turn malloc and memset
+     * into calloc, which leaves fresh pages untouched. */
+    static void *(*volatile const touch)(void *, int, size_t) = memset;
     img->rgb = malloc(3 * (size_t)width * (size_t)height);
     if (img->rgb)
-        memset(img->rgb, 0, 3 * (size_t)width * (size_t)height);
+        touch(img->rgb, 0, 3 * (size_t)width * (size_t)height);
     if (!img->rgb) {
         snprintf(err, errlen, "out of memory for a %d x %d image", width, height);
         return -1;

@@ -21,6 +21,7 @@
 
 #define RENDER_MAX_THREADS   256
 #define RENDER_CHUNK_PIXELS  2048   /* a chunk is at least one row, else about this many pixels */
+#define RENDER_RUN           16     /* pixels whose rays are made before their colours */
 #define RENDER_PROGRESS_AFTER 1.0   /* seconds before the progress line appears */
 #define RENDER_PROGRESS_EVERY 0.25  /* seconds between its updates */
 
@@ -70,7 +71,15 @@ static int render_cores(void)
 
 /* Draws rows j0 .. j1 - 1 of the image: for each pixel, its centre
  * (Part 2), the ray from the eye through it and the colour the ray sees
- * (Part 3b), stored as three bytes.  Never fails. */
+ * (Part 3b), stored as three bytes.  Never fails.
+ *
+ * Two things make the loop faster without changing a byte of the image.
+ * The rays of a run of RENDER_RUN pixels are made first, then their
+ * colours: making a ray is a square root and a division whose results
+ * take long to arrive, and in a loop of their own the processor overlaps
+ * them instead of waiting for each.  And a colour equal, bit for bit, to
+ * the previous pixel's reuses its bytes: neighbouring pixels mostly see
+ * the same sphere. */
 static void render_rows(const RenderJob *job, int j0, int j1)
 {
     const Scene *scene = job->scene;
@@ -79,14 +88,28 @@ static void render_rows(const RenderJob *job, int j0, int j1)
     const Vec3 e = scene->eye;
     for (int j = j0; j < j1; j++) {
         unsigned char *px = job->img->rgb + (size_t)3 * nx * (size_t)j;
-        for (int i = 0; i < nx; i++) {
-            Vec3 s = pixel_coordinates(i, j, nx, ny, w, h, d);
-            Ray ray = camera_ray(e, s);
-            Vec3 color = ray_color(scene, &ray);
-            px[0] = image_channel(color.x);
-            px[1] = image_channel(color.y);
-            px[2] = image_channel(color.z);
-            px += 3;
+        Vec3 last = { 0, 0, 0 };        /* the previous pixel's colour, once have_last */
+        unsigned char rgb[3] = { 0, 0, 0 };
+        bool have_last = false;
+        for (int i0 = 0; i0 < nx; i0 += RENDER_RUN) {
+            const int n = nx - i0 < RENDER_RUN ? nx - i0 : RENDER_RUN;
+            Ray rays[RENDER_RUN];
+            for (int k = 0; k < n; k++)
+                rays[k] = camera_ray(e, pixel_coordinates(i0 + k, j, nx, ny, w, h, d));
+            for (int k = 0; k < n; k++) {
+                Vec3 color = ray_color(scene, &rays[k]);
+                if (!have_last || memcmp(&color, &last, sizeof color) != 0) {
+                    rgb[0] = image_channel(color.x);
+                    rgb[1] = image_channel(color.y);
+                    rgb[2] = image_channel(color.z);
+                    last = color;
+                    have_last = true;
+                }
+                px[0] = rgb[0];
+                px[1] = rgb[1];
+                px[2] = rgb[2];
+                px += 3;
+            }
         }
     }
 }

@@ -36,7 +36,6 @@ Rayf rayf_from(const Ray *r)
 #define RAY Ray
 #define SQRT sqrt
 #define COPYSIGN copysign
-#define EPS DBL_EPSILON
 #define TINY DBL_MIN
 #define SAFE_LO 0x1p-900
 #define SAFE_HI 0x1p+900
@@ -48,7 +47,6 @@ Rayf rayf_from(const Ray *r)
 #undef RAY
 #undef SQRT
 #undef COPYSIGN
-#undef EPS
 #undef TINY
 #undef SAFE_LO
 #undef SAFE_HI
@@ -60,7 +58,6 @@ Rayf rayf_from(const Ray *r)
 #define RAY Rayf
 #define SQRT sqrtf
 #define COPYSIGN copysignf
-#define EPS FLT_EPSILON
 #define TINY FLT_MIN
 #define SAFE_LO 0x1p-100f
 #define SAFE_HI 0x1p+100f

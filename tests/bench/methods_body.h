@@ -5,7 +5,8 @@
  * methods.c defines, before each inclusion:
  *   REAL, VEC, SPHERE, RAY   the number and struct types
  *   SQRT, COPYSIGN           the <math.h> functions for REAL
- *   EPS, TINY                machine epsilon and the smallest normal number
+ *   TINY                     the smallest normal number
+ *   SAFE_LO, SAFE_HI         the range where A R^2 is formed safely
  *   NAME(x)                  x with the precision's suffix (_d or _f)
  *
  * Notation (the lecture's): ray x(t) = e + t r, sphere centre c, radius R,
@@ -139,35 +140,38 @@ bool NAME(isect_rtg)(const SPHERE *sphere, const RAY *ray, REAL *t)
  * double it must agree bit for bit with the linked sphere_intersect (the
  * benchmark checks, so this copy cannot silently go stale); the float
  * version is the benchmark's "reference, float".  SAFE_LO and SAFE_HI are
- * the reference's 2^-900 and 2^900: where A D can be formed without
- * overflow or underflow (2^-100 and 2^100 in float). */
+ * the reference's 2^-900 and 2^900: where A R^2 and |f x r|^2 are formed
+ * without overflow or underflow (2^-100 and 2^100 in float). */
 bool NAME(isect_reference)(const SPHERE *sphere, const RAY *ray, REAL *t)
 {
     VEC r = ray->direction;
     VEC f = NAME(sub)(ray->origin, sphere->center);
     REAL R2 = sphere->radius * sphere->radius;
     REAL A = NAME(dot)(r, r);
+    VEC n = { f.y * r.z - f.z * r.y, f.z * r.x - f.x * r.z, f.x * r.y - f.y * r.x };
+    REAL AR2 = A * R2, nn = NAME(dot)(n, n);
+    if (nn - AR2 > TINY)
+        return false;
+
     REAL B = NAME(dot)(f, r);
-    REAL ff = NAME(dot)(f, f);
-    REAL C = ff - R2;
-
-    if (!(A > 0))
-        return false;
-    if (C > 0 && B >= 0)
-        return false;
-    if (B * B - A * C < -(16 * EPS * A * (ff + R2) + TINY))
-        return false;
-
-    REAL b = B / A;
-    VEC l = { f.x - r.x * b, f.y - r.y * b, f.z - r.z * b };
-    REAL D = R2 - NAME(dot)(l, l);
-    if (!(D >= 0))
-        return false;
-    REAL AD = A * D;
-    REAL sq = AD > SAFE_LO && AD < SAFE_HI ? SQRT(AD) : SQRT(A) * SQRT(D);
+    REAL sq;
+    if (AR2 > SAFE_LO && AR2 < SAFE_HI) {
+        REAL disc = AR2 - nn;
+        if (!(disc >= 0))
+            return false;
+        sq = SQRT(disc);
+    } else {
+        if (!(A > 0))
+            return false;
+        REAL b = B / A;
+        VEC l = { f.x - r.x * b, f.y - r.y * b, f.z - r.z * b };
+        REAL D = R2 - NAME(dot)(l, l);
+        if (!(D >= 0))
+            return false;
+        sq = SQRT(A) * SQRT(D);
+    }
+    REAL C = NAME(dot)(f, f) - R2;
     REAL q = -(B + COPYSIGN(sq, B));
-    if (q == 0)
-        return false;
     REAL root = C / q;
     if (!(root > 0))
         root = q / A;
