@@ -5,7 +5,6 @@
  * The pieces, one job per file (README.md beside them shows the results):
  *   methods.c    the formulations, in double and float, one test at a time
  *                (bodies in methods_body.h, written once for both)
- *   proposal.c   a cheaper reference, proposed for solutions/
  *   fastpath.c   the specialised fast path: eye at the origin, spheres as
  *                structure of arrays, vectorised over packets of rays
  *                (bodies in fastpath_body.h)
@@ -56,9 +55,6 @@ bool isect_reference_f(const Spheref *sphere, const Rayf *ray, float *t);
 /* The same transliteration compiled as double: the benchmark checks that it
  * agrees with the linked sphere_intersect (which it times as "reference"). */
 bool isect_reference_d(const Sphere *sphere, const Ray *ray, double *t);
-
-/* ---- proposal.c: a cheaper reference, proposed for solutions/ ----------- */
-bool proposal_sphere_intersect(const Sphere *sphere, const Ray *ray, double *t);
 
 /* ---- fastpath.c: the specialised fast path ------------------------------ */
 /* Rays start at the eye (the origin of the sphere coordinates given to

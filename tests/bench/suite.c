@@ -93,7 +93,6 @@ SCALAR_D(rtg_d, isect_rtg_d)
 SCALAR_F(rtg_f, isect_rtg_f)
 SCALAR_D(reference_d, sphere_intersect)
 SCALAR_F(reference_f, isect_reference_f)
-SCALAR_D(proposal_d, proposal_sphere_intersect)
 
 /* ---- the fast path ---------------------------------------------------------- */
 
@@ -180,10 +179,6 @@ const Method bench_methods[] = {
     { "reference", "Reference, float transliteration", PREC_FLOAT, false, false, LAYOUT_AOS_F,
       one_reference_f, closest_reference_f,
       NULL, isect_reference_f },
-    { "proposal", "Proposed reference (tests/bench/proposal.c)", PREC_DOUBLE, false, false,
-      LAYOUT_AOS_D,
-      proposal_sphere_intersect, closest_proposal_d,
-      proposal_sphere_intersect, NULL },
     { "fast", "Fast path (eye at origin, SoA, vectorised filter)", PREC_DOUBLE, true, true,
       LAYOUT_SOA_D,
       one_fast_d, closest_fast_d,
