@@ -213,6 +213,53 @@ static void test_threads_byte_identical(void)
     check_threads_agree("labs/scenes/flip.scene", 320, 320, 0);
 }
 
+/* Renders a shipped scene at nx x ny and checks every pixel against the
+ * stage functions applied to it one at a time, the plainest loop there is:
+ * the renderer makes rays a run of pixels ahead and reuses the bytes of a
+ * repeated colour, and neither may change a byte. */
+static void check_plain_loop(const char *path, int nx, int ny)
+{
+    Scene scene;
+    char err[512];
+    int status = scene_load(&scene, path, err, sizeof err);
+    CHECK_MSG(status == 0, "%s", err);
+    if (status != 0)
+        return;
+    scene.nx = nx;
+    scene.ny = ny;
+    Image img;
+    if (render_with(&scene, 2, &img, NULL) == 0) {
+        double w, h;
+        image_plane_size(scene.fov_degrees, (double)nx / ny, scene.d, &w, &h);
+        int wrong = 0, first_i = -1, first_j = -1;
+        for (int j = 0; j < ny; j++) {
+            for (int i = 0; i < nx; i++) {
+                Ray ray = camera_ray(scene.eye, pixel_coordinates(i, j, nx, ny, w, h, scene.d));
+                if (!pixel_is(&img, i, j, ray_color(&scene, &ray)) && wrong++ == 0) {
+                    first_i = i;
+                    first_j = j;
+                }
+            }
+        }
+        CHECK_MSG(wrong == 0, "%s at %dx%d: %d pixels differ from the plain loop, the first (%d, %d)",
+                  path, nx, ny, wrong, first_i, first_j);
+        image_free(&img);
+    }
+    scene_free(&scene);
+}
+
+/* The renderer's image is the stage functions' answer at every pixel, for
+ * widths on either side of the renderer's runs of 16 pixels. */
+static void test_same_as_plain_loop(void)
+{
+    static const int widths[] = { 1, 2, 15, 16, 17, 31, 32, 33, 97, 640 };
+    for (size_t k = 0; k < sizeof widths / sizeof widths[0]; k++)
+        check_plain_loop("labs/scenes/default.scene", widths[k], 48);
+    check_plain_loop("labs/scenes/inside.scene", 161, 120);
+    check_plain_loop("labs/scenes/behind.scene", 161, 120);
+    check_plain_loop("labs/scenes/flip.scene", 47, 53);
+}
+
 /* The statistics are positive and consistent. */
 static void test_stats(void)
 {
@@ -260,6 +307,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_eye_inside_sphere),
     CHECK_TEST(test_tiny_images),
     CHECK_TEST(test_threads_byte_identical),
+    CHECK_TEST(test_same_as_plain_loop),
     CHECK_TEST(test_stats),
     CHECK_TEST(test_wrong_image_size),
 };
