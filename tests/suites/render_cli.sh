@@ -326,6 +326,28 @@ else
     pass
 fi
 
+# A correct submission written independently of solutions/
+# (tests/selftest/independent: the geometric method, the plain pixel
+# formula) renders, through `make compare` as a student runs it, the same
+# image as the reference on every shipped scene but far.scene, which is
+# there to show what a plain formula loses on a small, far sphere.
+if [ -d solutions ] && [ -d tests/selftest/independent ]; then
+    for scene in labs/scenes/*.scene; do
+        name=$(basename "$scene" .scene)
+        run ${MAKE:-make} --no-print-directory compare SUBMISSION=tests/selftest/independent SCENE="$scene"
+        # make turns compare's exit 1 (the images differ) into 2
+        if [ "$name" = far ]; then
+            if grep -q "the images differ" "$tmp/stdout"; then pass; else
+                fail "the independent submission renders far.scene like the reference (exit $status): the scene no longer shows the far sphere's rounding"
+            fi
+        elif [ "$status" -eq 0 ] && grep -q "^identical" "$tmp/stdout"; then
+            pass
+        else
+            fail "the independent submission renders $name.scene unlike the reference (exit $status): $(grep 'differ' "$tmp/stdout")"
+        fi
+    done
+fi
+
 # images of different sizes: a clear message, exit 1
 run "$RENDER" labs/scenes/default.scene --size 60x90 --quiet -o "$tmp/small.png"
 run "$COMPARE" "$tmp/small.png" "$tmp/ref.png"
