@@ -405,17 +405,10 @@ void tg_hard(TestList *l, uint64_t seed, int first_round, int rounds, bool hidde
 
 /* ---- random numbers ----------------------------------------------------------- */
 
-static uint64_t next(TgRandom *r)
-{
-    uint64_t z = (r->s += 0x9e3779b97f4a7c15u);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-    return z ^ (z >> 31);
-}
-
+/* The hard cases' generator (hard.c), on the state TgRandom wraps. */
 double tg_uniform(TgRandom *r, double lo, double hi)
 {
-    return lo + (hi - lo) * ((double)(next(r) >> 11) * 0x1p-53);
+    return lo + (hi - lo) * hard_rng_uniform(&r->s);
 }
 
 double tg_log_uniform(TgRandom *r, double lo, double hi)
@@ -425,5 +418,5 @@ double tg_log_uniform(TgRandom *r, double lo, double hi)
 
 int tg_int(TgRandom *r, int lo, int hi)
 {
-    return lo + (int)(next(r) % (uint64_t)(hi - lo + 1));
+    return lo + (int)(hard_rng_next(&r->s) % (uint64_t)(hi - lo + 1));
 }
