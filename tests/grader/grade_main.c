@@ -220,6 +220,7 @@ static int grade_all(const char *self, const char *dir, const char *out, int job
 
     Job *all = calloc((size_t)n + 1, sizeof *all);
     int next = 0, running = 0, done = 0;
+    const bool show_progress = isatty(STDERR_FILENO);   /* a log gets only the summary */
     while (done < n) {
         while (running < jobs && next < n) {
             Job *j = &all[next];
@@ -262,9 +263,11 @@ static int grade_all(const char *self, const char *dir, const char *out, int job
             running--;
             done++;
         }
-        fprintf(stderr, "\r  graded %d of %d submissions", done, n);
+        if (show_progress)
+            fprintf(stderr, "\r  graded %d of %d submissions", done, n);
     }
-    fprintf(stderr, "\n");
+    if (show_progress)
+        fprintf(stderr, "\n");
 
     char csv[PATH_MAX], tmp[PATH_MAX + 8];
     snprintf(csv, sizeof csv, "%s/gradebook.csv", out);
