@@ -37,10 +37,13 @@ bool sphere_intersect(const Sphere *sphere, const Ray *ray, double *t)
      * form's error grows only like |f| / R (Ray Tracing Gems, ch. 7). */
     Vec3 n = vec3_cross(f, r);
     double AR2 = A * R2, nn = vec3_dot(n, n);
-    if (nn - AR2 > DBL_MIN)             /* the line passes the sphere by: */
-        return false;                   /* most rays and most spheres     */
+    /* The line passes the sphere by (most rays, most spheres).  DBL_MIN,
+     * not 0: a difference that small is left to the careful branch below,
+     * as are NaNs, which fail every comparison. */
+    if (nn - AR2 > DBL_MIN)
+        return false;
 
-    /* The roots are (-B -+ sqrt(disc)) / A. */
+    /* disc = B^2 - A C >= 0: the roots are (-B -+ sqrt(disc)) / A. */
     double B = vec3_dot(f, r);
     double sq;                          /* sqrt(disc) */
     if (AR2 > 0x1p-900 && AR2 < 0x1p+900) {
