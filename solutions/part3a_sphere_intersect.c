@@ -43,9 +43,7 @@ bool sphere_intersect(const Sphere *sphere, const Ray *ray, double *t)
     if (nn - AR2 > DBL_MIN)
         return false;
 
-    /* disc = B^2 - A C >= 0: the roots are (-B -+ sqrt(disc)) / A. */
-    double B = vec3_dot(f, r);
-    double sq;                          /* sqrt(disc) */
+    double sq;                          /* sqrt(disc), disc = B^2 - A C */
     if (AR2 > 0x1p-900 && AR2 < 0x1p+900) {
         double disc = AR2 - nn;
         if (!(disc >= 0))               /* a miss */
@@ -58,18 +56,20 @@ bool sphere_intersect(const Sphere *sphere, const Ray *ray, double *t)
          * disc = A (R^2 - l.l), and sqrt(disc) = sqrt(A) sqrt(R^2 - l.l). */
         if (!(A > 0))                   /* zero or NaN direction */
             return false;
-        Vec3 l = vec3_sub(f, vec3_scale(r, B / A));
+        Vec3 l = vec3_sub(f, vec3_scale(r, vec3_dot(f, r) / A));
         double D = R2 - vec3_dot(l, l);
         if (!(D >= 0))                  /* a miss, or NaN input */
             return false;
         sq = sqrt(A) * sqrt(D);
     }
 
-    /* Take the root of larger size without cancellation, q / A with
-     * q = -(B + sign(B) sqrt(disc)); the other is C / q, since the product
-     * of the roots is C / A. */
+    /* The roots are (-B -+ sq) / A.  Take the one of larger size without
+     * cancellation, q / A with q = -(B + sign(B) sq), a sum of two numbers
+     * of one sign; the other is C / q, since the product of the roots is
+     * C / A. */
+    double B = vec3_dot(f, r);
     double C = vec3_dot(f, f) - R2;
-    double q = -(B + copysign(sq, B));
+    double q = B < 0 ? sq - B : -(B + sq);
     double root = C / q;                /* the root nearer 0 */
     if (!(root > 0))                    /* behind e: try the other one */
         root = q / A;

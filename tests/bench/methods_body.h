@@ -153,7 +153,6 @@ bool NAME(isect_reference)(const SPHERE *sphere, const RAY *ray, REAL *t)
     if (nn - AR2 > TINY)
         return false;
 
-    REAL B = NAME(dot)(f, r);
     REAL sq;
     if (AR2 > SAFE_LO && AR2 < SAFE_HI) {
         REAL disc = AR2 - nn;
@@ -163,15 +162,16 @@ bool NAME(isect_reference)(const SPHERE *sphere, const RAY *ray, REAL *t)
     } else {
         if (!(A > 0))
             return false;
-        REAL b = B / A;
+        REAL b = NAME(dot)(f, r) / A;
         VEC l = { f.x - r.x * b, f.y - r.y * b, f.z - r.z * b };
         REAL D = R2 - NAME(dot)(l, l);
         if (!(D >= 0))
             return false;
         sq = SQRT(A) * SQRT(D);
     }
+    REAL B = NAME(dot)(f, r);
     REAL C = NAME(dot)(f, f) - R2;
-    REAL q = -(B + COPYSIGN(sq, B));
+    REAL q = B < 0 ? sq - B : -(B + sq);
     REAL root = C / q;
     if (!(root > 0))
         root = q / A;
