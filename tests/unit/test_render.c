@@ -176,18 +176,27 @@ static void test_tiny_images(void)
     image_free(&img);
 }
 
+/* Loads a shipped scene and sets its image size to nx x ny.  Returns 0, or
+ * -1 after a failed check. */
+static int load_at_size(Scene *scene, const char *path, int nx, int ny)
+{
+    char err[512];
+    int status = scene_load(scene, path, err, sizeof err);
+    CHECK_MSG(status == 0, "%s", err);
+    if (status != 0)
+        return -1;
+    scene->nx = nx;
+    scene->ny = ny;
+    return 0;
+}
+
 /* Renders a shipped scene at nx x ny with 1 and with nthreads threads and
  * checks the two images are byte for byte the same. */
 static void check_threads_agree(const char *path, int nx, int ny, int nthreads)
 {
     Scene scene;
-    char err[512];
-    int status = scene_load(&scene, path, err, sizeof err);
-    CHECK_MSG(status == 0, "%s", err);
-    if (status != 0)
+    if (load_at_size(&scene, path, nx, ny) < 0)
         return;
-    scene.nx = nx;
-    scene.ny = ny;
     Image one, many;
     RenderStats stats;
     if (render_with(&scene, 1, &one, &stats) == 0) {
@@ -220,13 +229,8 @@ static void test_threads_byte_identical(void)
 static void check_plain_loop(const char *path, int nx, int ny)
 {
     Scene scene;
-    char err[512];
-    int status = scene_load(&scene, path, err, sizeof err);
-    CHECK_MSG(status == 0, "%s", err);
-    if (status != 0)
+    if (load_at_size(&scene, path, nx, ny) < 0)
         return;
-    scene.nx = nx;
-    scene.ny = ny;
     Image img;
     if (render_with(&scene, 2, &img, NULL) == 0) {
         double w, h;
