@@ -41,6 +41,7 @@ KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
 .PHONY: all help render compare grade grade-all gradescope student-kit bench \
         handouts test unit-tests clean grader public-tests
 .DELETE_ON_ERROR:
+.SECONDARY:                             # keep the objects a chain of rules makes (the renderer's lto/)
 .SECONDEXPANSION:
 
 all: $(BUILD)/kit/libkit.a $(BUILD)/bin/compare $(BUILD)/sub/labs/render \
