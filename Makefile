@@ -28,7 +28,8 @@ SUBMISSIONS ?=
 
 BUILD      = out/build
 ASAN       = out/asan
-STAGES     = part1_image_plane part2_pixel_coordinates part3a_sphere_intersect part3b_ray_color
+STAGES     = part1_image_plane part2_pixel_coordinates part3a_sphere_intersect part3b_ray_color \
+             part4_plane_intersect part5_triangle_intersect
 HAVE_SOLUTIONS := $(wildcard solutions/part1_image_plane.c)
 
 # ---- the framework students use (labs/kit) ---------------------------------

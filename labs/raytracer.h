@@ -1,5 +1,6 @@
 /*
- * raytracer.h - the lab's contract: the types and the five functions you write.
+ * raytracer.h - the lab's contract: the types and the functions you write
+ * (five in Parts 1-3b; one more in each of the optional Parts 4 and 5).
  *
  * Conventions (the lecture's):
  *   - The eye e is at the origin, looking down -z; the image plane is at z = -d.
@@ -28,6 +29,8 @@
 typedef struct { double x, y, z; } Vec3;
 typedef struct { Vec3 origin, direction; } Ray;            /* x(t) = e + t r   */
 typedef struct { Vec3 center; double radius; Vec3 color; } Sphere;
+typedef struct { Vec3 point, normal; Vec3 color; } Plane;     /* (x - point).normal = 0 */
+typedef struct { Vec3 a, b, c; Vec3 color; } Triangle;
 
 typedef struct {
     int nx, ny;            /* image size in pixels (columns, rows)           */
@@ -37,6 +40,10 @@ typedef struct {
     Vec3 background;       /* colour of rays that hit nothing                */
     Sphere *spheres;
     int nspheres;
+    Plane *planes;         /* Part 4's planes and Part 5's triangles: a scene */
+    int nplanes;           /* with none of them is drawn by Parts 1-3b alone  */
+    Triangle *triangles;
+    int ntriangles;
 } Scene;
 
 #include "vec3.h"
@@ -53,5 +60,11 @@ bool sphere_intersect(const Sphere *sphere, const Ray *ray, double *t);
 /* Part 3b (part3b_ray_color.c) */
 Ray  camera_ray(Vec3 eye, Vec3 pixel);
 Vec3 ray_color(const Scene *scene, const Ray *ray);
+
+/* Part 4  (part4_plane_intersect.c), optional */
+bool plane_intersect(const Plane *plane, const Ray *ray, double *t);
+
+/* Part 5  (part5_triangle_intersect.c), optional */
+bool triangle_intersect(const Triangle *tri, const Ray *ray, double *t);
 
 #endif
