@@ -10,104 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "hard.h"
-
-/* ---- random numbers (splitmix64) ----------------------------------------- */
-
-uint64_t hard_rng_next(uint64_t *state)
-{
-    uint64_t z = (*state += 0x9E3779B97F4A7C15u);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
-    return z ^ (z >> 31);
-}
-
-double hard_rng_uniform(uint64_t *state)
-{
-    return (double)(hard_rng_next(state) >> 11) * 0x1p-53;
-}
-
-/* The stream of case k of part `part`. */
-static uint64_t case_stream(uint64_t seed, uint64_t part, int k)
-{
-    uint64_t s = seed ^ (part * 0xD1B54A32D192ED03u);
-    uint64_t mixed = hard_rng_next(&s) ^ ((uint64_t)k * 0x632BE59BD9B4E019u);
-    hard_rng_next(&mixed);
-    return mixed;
-}
-
-/* Uniform in [a, b). */
-static double uni(uint64_t *s, double a, double b)
-{
-    return a + (b - a) * hard_rng_uniform(s);
-}
-
-/* Uniform integer in [a, b]. */
-static int uni_int(uint64_t *s, int a, int b)
-{
-    return a + (int)(hard_rng_next(s) % (uint64_t)(b - a + 1));
-}
-
-/* Roughly log-uniform in [a, b], 0 < a < b: a random binade, a random
- * significand, redrawn until inside.  No libm: the same on every machine. */
-static double log_uniform(uint64_t *s, double a, double b)
-{
-    int ea, eb;
-    frexp(a, &ea);
-    frexp(b, &eb);
-    for (;;) {
-        double x = ldexp(1 + hard_rng_uniform(s), uni_int(s, ea - 1, eb - 1));
-        if (x >= a && x <= b)
-            return x;
-    }
-}
-
-/* A random direction: uniform in the unit ball (rejection), normalized. */
-static Vec3 rand_unit(uint64_t *s)
-{
-    for (;;) {
-        Vec3 v = vec3(uni(s, -1, 1), uni(s, -1, 1), uni(s, -1, 1));
-        double n2 = vec3_dot(v, v);
-        if (n2 > 0.01 && n2 <= 1)
-            return vec3_scale(v, 1 / sqrt(n2));
-    }
-}
-
-/* A random unit vector (nearly) perpendicular to a. */
-static Vec3 rand_perp(uint64_t *s, Vec3 a)
-{
-    for (;;) {
-        Vec3 p = vec3_cross(a, rand_unit(s));
-        double n = vec3_length(p);
-        if (n > 0.1 * vec3_length(a))
-            return vec3_scale(p, 1 / n);
-    }
-}
-
-/* A point with coordinates uniform in [-size, size]. */
-static Vec3 rand_point(uint64_t *s, double size)
-{
-    return vec3(uni(s, -size, size), uni(s, -size, size), uni(s, -size, size));
-}
-
-/* A direction from e that passes the centre c at rho R (rho < 1 hits),
- * of length len. */
-static Vec3 aim(uint64_t *s, Vec3 e, Vec3 c, double R, double rho, double len)
-{
-    Vec3 n = rand_perp(s, vec3_sub(c, e));
-    Vec3 r = vec3_sub(vec3_add(c, vec3_scale(n, rho * R)), e);
-    return vec3_scale(r, len / vec3_length(r));
-}
-
-/* A random length of about 1 (1/16 .. 16) that is not a power of two. */
-static double rand_len(uint64_t *s)
-{
-    return ldexp(1 + hard_rng_uniform(s), uni_int(s, -4, 3));
-}
-
-static void set_family(char *dst, const char *name)
-{
-    snprintf(dst, HARD_FAMILY_LEN, "%s", name);
-}
+#include "draw.h"
 
 /* ---- Part 1 -------------------------------------------------------------- */
 
@@ -127,28 +30,28 @@ int hard_part1(uint64_t seed, HardCase1 *cases, int max)
     static const double round_fov[] = { 1, 5, 10, 20, 30, 45, 60, 75, 90, 100, 120, 135,
                                          150, 160, 170, 175, 179 };
     for (int k = 0; k < max; k++) {
-        uint64_t s = case_stream(seed, 1, k);
+        uint64_t s = draw_stream(seed, 1, k);
         HardCase1 *c = &cases[k];
         int fam = k % HARD_PART1_FAMILIES;
         double fov = 60;
         switch (fam) {
-        case 0: fov = 180 - ldexp(1, -uni_int(&s, 1, 45)); break;
-        case 1: fov = nines[uni_int(&s, 0, (int)(sizeof nines / sizeof nines[0]) - 1)]; break;
-        case 2: fov = log_uniform(&s, 1e-10, 1); break;
-        case 3: fov = uni(&s, 1, 179); break;
+        case 0: fov = 180 - ldexp(1, -draw_int(&s, 1, 45)); break;
+        case 1: fov = nines[draw_int(&s, 0, (int)(sizeof nines / sizeof nines[0]) - 1)]; break;
+        case 2: fov = draw_log(&s, 1e-10, 1); break;
+        case 3: fov = draw_uni(&s, 1, 179); break;
         case 4: {
-            int m = uni_int(&s, -16, 16);
+            int m = draw_int(&s, -16, 16);
             fov = 90;
             for (; m > 0; m--) fov = nextafter(fov, 180);
             for (; m < 0; m++) fov = nextafter(fov, 0);
             break;
         }
-        default: fov = round_fov[uni_int(&s, 0, (int)(sizeof round_fov / sizeof round_fov[0]) - 1)]; break;
+        default: fov = round_fov[draw_int(&s, 0, (int)(sizeof round_fov / sizeof round_fov[0]) - 1)]; break;
         }
-        set_family(c->family, fam1[fam]);
+        draw_family(c->family, fam1[fam]);
         c->fov_degrees = fov;
-        c->aspect = log_uniform(&s, 1e-6, 1e6);
-        c->d = log_uniform(&s, 1e-6, 1e6);
+        c->aspect = draw_log(&s, 1e-6, 1e6);
+        c->d = draw_log(&s, 1e-6, 1e6);
         oracle_image_plane(c->fov_degrees, c->aspect, c->d, &c->w, &c->h);
     }
     return max > 0 ? max : 0;
@@ -176,7 +79,7 @@ static const char *const fam2[HARD_PART2_FAMILIES] = {
 /* One of the four special indices of a row of n pixels. */
 static int edge_index(uint64_t *s, int n)
 {
-    switch (uni_int(s, 0, 3)) {
+    switch (draw_int(s, 0, 3)) {
     case 0: return 0;
     case 1: return n - 1;
     case 2: return n / 2;
@@ -194,41 +97,41 @@ static double odd_significand(uint64_t *s, int e)
 int hard_part2(uint64_t seed, HardCase2 *cases, int max)
 {
     for (int k = 0; k < max; k++) {
-        uint64_t s = case_stream(seed, 2, k);
+        uint64_t s = draw_stream(seed, 2, k);
         HardCase2 *c = &cases[k];
         int fam = k % HARD_PART2_FAMILIES;
-        c->w = log_uniform(&s, 1e-6, 1e6);
-        c->h = log_uniform(&s, 1e-6, 1e6);
-        c->d = log_uniform(&s, 1e-6, 1e6);
+        c->w = draw_log(&s, 1e-6, 1e6);
+        c->h = draw_log(&s, 1e-6, 1e6);
+        c->d = draw_log(&s, 1e-6, 1e6);
         switch (fam) {
         case 0:
-            c->nx = uni_int(&s, 500000, 1000000);
-            c->ny = uni_int(&s, 500000, 1000000);
-            c->i = uni_int(&s, 0, c->nx - 1);
-            c->j = uni_int(&s, 0, c->ny - 1);
+            c->nx = draw_int(&s, 500000, 1000000);
+            c->ny = draw_int(&s, 500000, 1000000);
+            c->i = draw_int(&s, 0, c->nx - 1);
+            c->j = draw_int(&s, 0, c->ny - 1);
             break;
         case 1:
-            c->nx = (int)log_uniform(&s, 1, 1e6);
-            c->ny = (int)log_uniform(&s, 1, 1e6);
+            c->nx = (int)draw_log(&s, 1, 1e6);
+            c->ny = (int)draw_log(&s, 1, 1e6);
             c->i = edge_index(&s, c->nx);
             c->j = edge_index(&s, c->ny);
             break;
         case 2:
-            c->nx = uni_int(&s, 1, 16);
-            c->ny = uni_int(&s, 1, 16);
-            c->i = uni_int(&s, 0, c->nx - 1);
-            c->j = uni_int(&s, 0, c->ny - 1);
+            c->nx = draw_int(&s, 1, 16);
+            c->ny = draw_int(&s, 1, 16);
+            c->i = draw_int(&s, 0, c->nx - 1);
+            c->j = draw_int(&s, 0, c->ny - 1);
             break;
         default:
-            c->nx = 1 << uni_int(&s, 0, 19);
-            c->ny = 1 << uni_int(&s, 0, 19);
-            c->i = uni_int(&s, 0, c->nx - 1);
-            c->j = uni_int(&s, 0, c->ny - 1);
-            c->w = odd_significand(&s, uni_int(&s, -20, 19));
-            c->h = odd_significand(&s, uni_int(&s, -20, 19));
+            c->nx = 1 << draw_int(&s, 0, 19);
+            c->ny = 1 << draw_int(&s, 0, 19);
+            c->i = draw_int(&s, 0, c->nx - 1);
+            c->j = draw_int(&s, 0, c->ny - 1);
+            c->w = odd_significand(&s, draw_int(&s, -20, 19));
+            c->h = odd_significand(&s, draw_int(&s, -20, 19));
             break;
         }
-        set_family(c->family, fam2[fam]);
+        draw_family(c->family, fam2[fam]);
         c->p = oracle_pixel(c->i, c->j, c->nx, c->ny, c->w, c->h, c->d);
     }
     return max > 0 ? max : 0;
@@ -286,10 +189,10 @@ static const int quads[][4] = {
 static Vec3 lattice_point(uint64_t *s, int q)
 {
     static const int perm[6][3] = { {0,1,2}, {0,2,1}, {1,0,2}, {1,2,0}, {2,0,1}, {2,1,0} };
-    const int *p = perm[uni_int(s, 0, 5)];
+    const int *p = perm[draw_int(s, 0, 5)];
     double v[3];
     for (int k = 0; k < 3; k++)
-        v[k] = quads[q][p[k]] * (uni_int(s, 0, 1) ? 1.0 : -1.0);
+        v[k] = quads[q][p[k]] * (draw_int(s, 0, 1) ? 1.0 : -1.0);
     return vec3(v[0], v[1], v[2]);
 }
 
@@ -304,7 +207,7 @@ typedef struct {
 static Lattice lattice(uint64_t *s, bool need_cross)
 {
     Lattice L;
-    int q = uni_int(s, 0, (int)(sizeof quads / sizeof quads[0]) - 1);
+    int q = draw_int(s, 0, (int)(sizeof quads / sizeof quads[0]) - 1);
     Vec3 a = lattice_point(s, q), b;
     for (;;) {
         b = lattice_point(s, q);
@@ -313,20 +216,20 @@ static Lattice lattice(uint64_t *s, bool need_cross)
         if (!same && (!need_cross || vec3_dot(x, x) > 0))
             break;
     }
-    int m = uni_int(s, -20, 20);
+    int m = draw_int(s, -20, 20);
     L.scale = ldexp(1, m);
     L.R = quads[q][3] * L.scale;
     L.p1 = vec3_scale(a, L.scale);
     L.p2 = vec3_scale(b, L.scale);
-    L.c = vec3(uni_int(s, -1000, 1000) * ldexp(1, m - 2), uni_int(s, -1000, 1000) * ldexp(1, m - 2),
-               uni_int(s, -1000, 1000) * ldexp(1, m - 2));
+    L.c = vec3(draw_int(s, -1000, 1000) * ldexp(1, m - 2), draw_int(s, -1000, 1000) * ldexp(1, m - 2),
+               draw_int(s, -1000, 1000) * ldexp(1, m - 2));
     return L;
 }
 
 /* Centre at distance D from e in a random direction. */
 static Vec3 centre_at(uint64_t *s, Vec3 e, double D)
 {
-    return vec3_add(e, vec3_scale(rand_unit(s), D));
+    return vec3_add(e, vec3_scale(draw_unit(s), D));
 }
 
 /* The lecture's kind of scene, at length scale S: an eye within S of the
@@ -334,87 +237,87 @@ static Vec3 centre_at(uint64_t *s, Vec3 e, double D)
  * with inside true, around the eye). */
 static void ordinary(uint64_t *s, double S, bool inside_ok, Vec3 *e, Vec3 *c, double *R)
 {
-    *e = rand_point(s, S);
-    *R = S * uni(s, 0.5, 2);
+    *e = draw_point(s, S);
+    *R = S * draw_uni(s, 0.5, 2);
     bool inside = inside_ok && hard_rng_next(s) % 4 == 0;
-    *c = centre_at(s, *e, *R * (inside ? uni(s, 0, 0.9) : uni(s, 1.2, 5)));
+    *c = centre_at(s, *e, *R * (inside ? draw_uni(s, 0, 0.9) : draw_uni(s, 1.2, 5)));
 }
 
 static void gen3a(uint64_t *s, int fam, bool want_hit, Sphere *sp, Ray *ray)
 {
     Vec3 e = vec3(0, 0, 0), c = vec3(0, 0, 0), r = vec3(0, 0, -1);
     double R = 1;
-    double rho = want_hit ? uni(s, 0, 0.98) : uni(s, 1.02, 2);
+    double rho = want_hit ? draw_uni(s, 0, 0.98) : draw_uni(s, 1.02, 2);
     if (fam == 0) {                                         /* ordinary */
         ordinary(s, 1, true, &e, &c, &R);
-        r = aim(s, e, c, R, rho, rand_len(s));
+        r = draw_aim(s, e, c, R, rho, draw_len(s));
     } else if (fam <= 7) {                                  /* far small sphere */
         static const double ratio[8] = { 0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7 };
-        R = log_uniform(s, 0.01, 100);
-        e = rand_point(s, R);
-        c = centre_at(s, e, R * ratio[fam] * uni(s, 1, 2));
-        r = aim(s, e, c, R, rho, rand_len(s));
+        R = draw_log(s, 0.01, 100);
+        e = draw_point(s, R);
+        c = centre_at(s, e, R * ratio[fam] * draw_uni(s, 1, 2));
+        r = draw_aim(s, e, c, R, rho, draw_len(s));
     } else if (fam <= 15) {                                 /* near a huge sphere */
         static const double hr[16] = { [8] = 1e-1, 1e-3, 1e-5, 1e-7, 1e-9, 1e-3, 1e-6, 1e-9 };
         bool above = fam <= 12;
-        R = log_uniform(s, 1e2, 1e6);
-        c = rand_point(s, 10 * R);
-        Vec3 n = rand_unit(s);
-        double h = R * hr[fam] * uni(s, 1, 2);
+        R = draw_log(s, 1e2, 1e6);
+        c = draw_point(s, 10 * R);
+        Vec3 n = draw_unit(s);
+        double h = R * hr[fam] * draw_uni(s, 1, 2);
         e = vec3_add(c, vec3_scale(n, above ? R + h : R - h));
-        Vec3 w = rand_perp(s, n);
+        Vec3 w = draw_perp(s, n);
         if (!above) {                   /* inside: always a hit, out or in */
             double sgn = want_hit ? 1 : -1;
-            r = vec3_add(vec3_scale(n, sgn), vec3_scale(w, uni(s, 0, 3)));
+            r = vec3_add(vec3_scale(n, sgn), vec3_scale(w, draw_uni(s, 0, 3)));
         } else if (want_hit) {          /* downwards, up to 63 degrees off */
-            r = vec3_add(vec3_scale(n, -1), vec3_scale(w, uni(s, 0, 2)));
+            r = vec3_add(vec3_scale(n, -1), vec3_scale(w, draw_uni(s, 0, 2)));
         } else if (hard_rng_next(s) % 2) {  /* upwards */
-            r = vec3_add(n, vec3_scale(w, uni(s, 0, 3)));
+            r = vec3_add(n, vec3_scale(w, draw_uni(s, 0, 3)));
         } else {                        /* horizontal or just above */
-            r = vec3_add(w, vec3_scale(n, uni(s, 0, 0.5)));
+            r = vec3_add(w, vec3_scale(n, draw_uni(s, 0, 0.5)));
         }
-        r = vec3_scale(r, rand_len(s));
+        r = vec3_scale(r, draw_len(s));
     } else if (fam == 16) {                                 /* tangent +- 1 ulp */
-        e = rand_point(s, 1);
-        r = vec3_scale(rand_unit(s), rand_len(s));
-        R = log_uniform(s, 0.01, 100);
-        double t0 = R * uni(s, 1, 1000) / vec3_length(r);
-        c = vec3_add(vec3_add(e, vec3_scale(r, t0)), vec3_scale(rand_perp(s, r), R));
+        e = draw_point(s, 1);
+        r = vec3_scale(draw_unit(s), draw_len(s));
+        R = draw_log(s, 0.01, 100);
+        double t0 = R * draw_uni(s, 1, 1000) / vec3_length(r);
+        c = vec3_add(vec3_add(e, vec3_scale(r, t0)), vec3_scale(draw_perp(s, r), R));
         double *target[5] = { &r.x, &r.y, &r.z, &R, &c.x };
-        double *x = target[uni_int(s, 0, 4)];
-        int steps = uni_int(s, 1, 2);
+        double *x = target[draw_int(s, 0, 4)];
+        int steps = draw_int(s, 1, 2);
         for (int k = 0; k < steps; k++)
             *x = nextafter(*x, want_hit ? INFINITY : -INFINITY);
     } else if (fam == 17) {                                 /* grazing, clear gap */
-        r = vec3_scale(rand_unit(s), rand_len(s));
-        R = log_uniform(s, 0.01, 100);
-        double along = R * uni(s, 2, 1000);
-        double gap = (want_hit ? -1 : 1) * log_uniform(s, 16, 1e4) * ORACLE_U * (along + 2 * R);
-        c = vec3_add(vec3_scale(r, along / vec3_length(r)), vec3_scale(rand_perp(s, r), R + gap));
+        r = vec3_scale(draw_unit(s), draw_len(s));
+        R = draw_log(s, 0.01, 100);
+        double along = R * draw_uni(s, 2, 1000);
+        double gap = (want_hit ? -1 : 1) * draw_log(s, 16, 1e4) * ORACLE_U * (along + 2 * R);
+        c = vec3_add(vec3_scale(r, along / vec3_length(r)), vec3_scale(draw_perp(s, r), R + gap));
     } else if (fam <= 19) {                                 /* extreme |r| */
         ordinary(s, 1, true, &e, &c, &R);
-        int k = fam == 18 ? uni_int(s, -498, -167) : uni_int(s, 166, 497);
-        r = aim(s, e, c, R, rho, ldexp(1 + hard_rng_uniform(s), k));
+        int k = fam == 18 ? draw_int(s, -498, -167) : draw_int(s, 166, 497);
+        r = draw_aim(s, e, c, R, rho, ldexp(1 + hard_rng_uniform(s), k));
     } else if (fam <= 23) {                                 /* exact dyadic */
         Lattice L = lattice(s, fam == 23);
         c = L.c;
         R = L.R;
         Vec3 chord = vec3_sub(L.p2, L.p1);                  /* exact */
-        double rs = ldexp(1, uni_int(s, -10, 10));
+        double rs = ldexp(1, draw_int(s, -10, 10));
         if (fam == 20) {                /* inside: exit at p2 (or p1) */
-            double lambda = uni_int(s, 1, 15) / 16.0;
+            double lambda = draw_int(s, 1, 15) / 16.0;
             e = vec3_add(c, vec3_add(L.p1, vec3_scale(chord, lambda)));
             r = vec3_scale(chord, want_hit ? rs : -rs);
         } else if (fam == 21) {         /* on the surface: in (hit) or out */
             e = vec3_add(c, L.p1);
             r = vec3_scale(chord, want_hit ? rs : -rs);
         } else if (fam == 22) {         /* outside: towards it or away */
-            double mu = uni_int(s, 1, 40) / 8.0;
+            double mu = draw_int(s, 1, 40) / 8.0;
             e = vec3_add(c, vec3_sub(L.p1, vec3_scale(chord, mu)));
             r = vec3_scale(chord, want_hit ? rs : -rs);
         } else {                        /* tangent at p1: along p1 x p2 */
             Vec3 w = vec3_scale(vec3_cross(L.p1, L.p2), 1 / L.scale);   /* exact */
-            double mu = uni_int(s, 1, 40) / 8.0;
+            double mu = draw_int(s, 1, 40) / 8.0;
             e = vec3_add(c, vec3_sub(L.p1, vec3_scale(w, mu)));
             r = vec3_scale(w, rs);
             if (hard_rng_next(s) % 2)
@@ -422,19 +325,19 @@ static void gen3a(uint64_t *s, int fam, bool want_hit, Sphere *sp, Ray *ray)
         }
     } else if (fam == 24) {                                 /* behind the eye */
         ordinary(s, 1, false, &e, &c, &R);
-        r = aim(s, e, c, R, uni(s, 0, 0.95), rand_len(s));
+        r = draw_aim(s, e, c, R, draw_uni(s, 0, 0.95), draw_len(s));
         if (!want_hit)
             r = vec3_negate(r);
     } else if (fam == 27) {                                 /* on the surface, rounded */
-        R = log_uniform(s, 0.01, 100);
-        c = rand_point(s, 10 * R);
-        Vec3 n = rand_unit(s);
+        R = draw_log(s, 0.01, 100);
+        c = draw_point(s, 10 * R);
+        Vec3 n = draw_unit(s);
         e = vec3_add(c, vec3_scale(n, R));
-        r = vec3_add(vec3_scale(n, want_hit ? -1 : 1), vec3_scale(rand_perp(s, n), uni(s, 0, 3)));
-        r = vec3_scale(r, rand_len(s));
+        r = vec3_add(vec3_scale(n, want_hit ? -1 : 1), vec3_scale(draw_perp(s, n), draw_uni(s, 0, 3)));
+        r = vec3_scale(r, draw_len(s));
     } else {                                                /* tiny or huge scene */
         ordinary(s, fam == 25 ? 1e-6 : 1e9, true, &e, &c, &R);
-        r = aim(s, e, c, R, rho, fam == 25 ? 1 : rand_len(s));
+        r = draw_aim(s, e, c, R, rho, fam == 25 ? 1 : draw_len(s));
     }
     sp->center = c;
     sp->radius = R;
@@ -446,12 +349,12 @@ static void gen3a(uint64_t *s, int fam, bool want_hit, Sphere *sp, Ray *ray)
 int hard_part3a(uint64_t seed, HardCase3a *cases, int max)
 {
     for (int k = 0; k < max; k++) {
-        uint64_t s = case_stream(seed, 3, k);
+        uint64_t s = draw_stream(seed, 3, k);
         HardCase3a *c = &cases[k];
         int fam = k % HARD_PART3A_FAMILIES;
         bool want_hit = (k / HARD_PART3A_FAMILIES) % 2 == 0;
         gen3a(&s, fam, want_hit, &c->sphere, &c->ray);
-        set_family(c->family, fam3a[fam]);
+        draw_family(c->family, fam3a[fam]);
         c->expect = oracle_sphere(&c->sphere, &c->ray);
     }
     return max > 0 ? max : 0;
@@ -482,69 +385,69 @@ static Sphere make_sphere(Vec3 c, double R, int k)
 int hard_part3b(uint64_t seed, HardCase3b *cases, int max)
 {
     for (int k = 0; k < max; k++) {
-        uint64_t s = case_stream(seed, 4, k);
+        uint64_t s = draw_stream(seed, 4, k);
         HardCase3b *c = &cases[k];
         int fam = k % HARD_PART3B_FAMILIES;
         bool even = (k / HARD_PART3B_FAMILIES) % 2 == 0;
         memset(c, 0, sizeof *c);
-        set_family(c->family, fam3b[fam]);
+        draw_family(c->family, fam3b[fam]);
 
         /* A pixel of a large image, from the oracle's Parts 1 and 2. */
-        int nx = uni_int(&s, 1, 1000000), ny = uni_int(&s, 1, 1000000);
-        double w, h, d = uni(&s, 0.5, 2);
-        oracle_image_plane(uni(&s, 20, 120), (double)nx / ny, d, &w, &h);
+        int nx = draw_int(&s, 1, 1000000), ny = draw_int(&s, 1, 1000000);
+        double w, h, d = draw_uni(&s, 0.5, 2);
+        oracle_image_plane(draw_uni(&s, 20, 120), (double)nx / ny, d, &w, &h);
         c->eye = vec3(0, 0, 0);
-        c->pixel = oracle_pixel(uni_int(&s, 0, nx - 1), uni_int(&s, 0, ny - 1), nx, ny, w, h, d);
+        c->pixel = oracle_pixel(draw_int(&s, 0, nx - 1), draw_int(&s, 0, ny - 1), nx, ny, w, h, d);
         c->background = vec3(0, 0, 0);
         c->ray.origin = c->eye;
         c->ray.direction = oracle_unit(vec3_sub(c->pixel, c->eye));
         Vec3 r = c->ray.direction;
 
-        double t0 = uni(&s, 2, 20), R1 = uni(&s, 0.5, 2);
+        double t0 = draw_uni(&s, 2, 20), R1 = draw_uni(&s, 0.5, 2);
         Vec3 p = vec3_scale(r, t0);                         /* a point ahead */
         switch (fam) {
         case 0: {       /* both entered at p; odd: the second one 1e-6 later or sooner */
-            double R2 = R1 * uni(&s, 1.2, 3);
+            double R2 = R1 * draw_uni(&s, 1.2, 3);
             double shift = even ? 0 : R2 * 1e-6 * (hard_rng_next(&s) % 2 ? 1 : -1);
             c->spheres[0] = make_sphere(vec3_add(p, vec3_scale(r, R1)), R1, 0);
             c->spheres[1] = make_sphere(vec3_add(p, vec3_scale(r, R2 + shift)), R2, 1);
-            c->spheres[2] = make_sphere(vec3_add(p, vec3_scale(rand_unit(&s), 8 * R2)), R1, 2);
+            c->spheres[2] = make_sphere(vec3_add(p, vec3_scale(draw_unit(&s), 8 * R2)), R1, 2);
             c->nspheres = 3;
             break;
         }
         case 1: {       /* a small sphere inside a big one */
-            double R2 = R1 * uni(&s, 2, 4);
+            double R2 = R1 * draw_uni(&s, 2, 4);
             Vec3 cb = vec3_add(p, vec3_scale(r, R2));
-            Vec3 cs = vec3_add(cb, vec3_scale(rand_unit(&s), uni(&s, 0, R2 - R1)));
+            Vec3 cs = vec3_add(cb, vec3_scale(draw_unit(&s), draw_uni(&s, 0, R2 - R1)));
             c->spheres[0] = make_sphere(cs, R1, 0);
             c->spheres[1] = make_sphere(cb, R2, 1);
             c->nspheres = 2;
             break;
         }
         case 2: {       /* inside a room of radius 50: a sphere before or beyond its wall */
-            c->spheres[0] = make_sphere(rand_point(&s, 5), 50, 0);
-            double along = even ? uni(&s, 5, 30) : uni(&s, 70, 90);
-            c->spheres[1] = make_sphere(vec3_add(vec3_scale(r, along), vec3_scale(rand_perp(&s, r), uni(&s, 0, 0.9) * R1)), R1, 1);
+            c->spheres[0] = make_sphere(draw_point(&s, 5), 50, 0);
+            double along = even ? draw_uni(&s, 5, 30) : draw_uni(&s, 70, 90);
+            c->spheres[1] = make_sphere(vec3_add(vec3_scale(r, along), vec3_scale(draw_perp(&s, r), draw_uni(&s, 0, 0.9) * R1)), R1, 1);
             c->nspheres = 2;
             break;
         }
         case 3: {       /* D/R = 1e6 before a huge sphere */
             double D = R1 * 1e6;
-            Vec3 cs = vec3_add(vec3_scale(r, D), vec3_scale(rand_perp(&s, r), (even ? uni(&s, 0, 0.95) : uni(&s, 1.05, 2)) * R1));
+            Vec3 cs = vec3_add(vec3_scale(r, D), vec3_scale(draw_perp(&s, r), (even ? draw_uni(&s, 0, 0.95) : draw_uni(&s, 1.05, 2)) * R1));
             c->spheres[0] = make_sphere(vec3_scale(r, 3 * D), D, 0);
             c->spheres[1] = make_sphere(cs, R1, 1);
             c->nspheres = 2;
             break;
         }
         case 4: {       /* a big sphere behind, a small one ahead (hit or missed) */
-            c->spheres[0] = make_sphere(vec3_scale(r, -uni(&s, 3, 10)), uni(&s, 1, 2.5), 0);
-            Vec3 off = vec3_scale(rand_perp(&s, r), (even ? uni(&s, 0, 0.9) : uni(&s, 1.1, 2)) * R1);
+            c->spheres[0] = make_sphere(vec3_scale(r, -draw_uni(&s, 3, 10)), draw_uni(&s, 1, 2.5), 0);
+            Vec3 off = vec3_scale(draw_perp(&s, r), (even ? draw_uni(&s, 0, 0.9) : draw_uni(&s, 1.1, 2)) * R1);
             c->spheres[1] = make_sphere(vec3_add(p, off), R1, 1);
             c->nspheres = 2;
             break;
         }
         default: {      /* one centre and radius, and its neighbour by an ulp */
-            Vec3 c0 = vec3_add(p, vec3_scale(rand_perp(&s, r), uni(&s, 0, 0.9) * R1));
+            Vec3 c0 = vec3_add(p, vec3_scale(draw_perp(&s, r), draw_uni(&s, 0, 0.9) * R1));
             Vec3 c1 = c0;
             c1.x = nextafter(c1.x, INFINITY);
             c->spheres[0] = make_sphere(c0, R1, 0);

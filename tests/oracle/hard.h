@@ -117,4 +117,63 @@ Scene hard_scene3b(HardCase3b *c);
 bool hard_check3b_ray(const HardCase3b *c, Ray got);
 bool hard_check3b_color(const HardCase3b *c, Vec3 got);
 
+/* ---- Part 4: plane_intersect (hard_flat.c) --------------------------------- */
+
+#define HARD_PART4_FAMILIES 6
+
+typedef struct {
+    char family[HARD_FAMILY_LEN];
+    Plane plane;                       /* inputs                           */
+    Ray ray;
+    OracleFlat expect;                 /* oracle_plane(&plane, &ray)       */
+} HardCase4;
+
+int  hard_part4(uint64_t seed, HardCase4 *cases, int max);
+bool hard_check4(const HardCase4 *c, bool hit, double t);
+
+/* ---- Part 5: triangle_intersect (hard_flat.c) ------------------------------ */
+
+#define HARD_PART5_FAMILIES 7
+
+typedef struct {
+    char family[HARD_FAMILY_LEN];
+    Triangle tri;                      /* inputs                           */
+    Ray ray;
+    OracleFlat expect;                 /* oracle_triangle(&tri, &ray)      */
+} HardCase5;
+
+int  hard_part5(uint64_t seed, HardCase5 *cases, int max);
+bool hard_check5(const HardCase5 *c, bool hit, double t);
+
+/* Closed meshes (convex polyhedra: a cube split into 12 triangles, an
+ * octahedron, an icosahedron), each with rays from outside aimed at its
+ * shared edges or vertices and on into its interior, so that every ray
+ * crosses the surface there: a watertight test hits one of the triangles
+ * that share the edge or vertex, and the first hit is that crossing.
+ * expect[k] is oracle_mesh(tris, ntris, &rays[k]). */
+#define HARD_MESH_FAMILIES 3
+#define HARD_MESH_MAX_TRIANGLES 20
+#define HARD_MESH_RAYS 16
+
+typedef struct {
+    char family[HARD_FAMILY_LEN];
+    Triangle tris[HARD_MESH_MAX_TRIANGLES];
+    int ntris;
+    Vec3 centre;                       /* inside the mesh                  */
+    Ray rays[HARD_MESH_RAYS];
+    OracleFlat expect[HARD_MESH_RAYS];
+} HardMesh;
+
+/* Mesh k is of family k % HARD_MESH_FAMILIES and depends only on (seed, k). */
+int  hard_meshes(uint64_t seed, HardMesh *meshes, int max);
+bool hard_check_mesh(const HardMesh *m, int ray, bool hit, double t);
+
+/* The building blocks, for the benchmark and the unit tests: a mesh of one
+ * of HARD_MESH_SHAPES shapes about size across, centred near offset and
+ * turned at random (without rays); a ray aimed from outside at one of its
+ * shared vertices (vertex true) or at a point of one of its shared edges. */
+#define HARD_MESH_SHAPES 3
+void hard_mesh_make(uint64_t *state, int shape, double size, Vec3 offset, HardMesh *m);
+Ray  hard_mesh_ray(uint64_t *state, const HardMesh *m, bool vertex);
+
 #endif

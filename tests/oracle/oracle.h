@@ -114,4 +114,53 @@ Vec3 oracle_unit(Vec3 v);
  * Either pointer may be NULL. */
 int oracle_closest(const Scene *scene, const Ray *ray, bool *ambiguous, int *alternative);
 
+/* ---- Parts 4 and 5: planes and triangles (flat.c) ------------------------ */
+
+/* The exact answer for a plane or a triangle, and what a correct double
+ * method may answer instead.
+ *
+ * Hit or miss is decided in exact arithmetic (expansion.h): the smallest
+ * t > 0 at which the ray meets the plane, or the closed triangle (edges and
+ * vertices included); both sides count.  A zero direction, a zero normal,
+ * a zero-area triangle, a ray parallel to the plane or lying in it, and NaN
+ * input are misses; infinite input is outside the contract (ambiguous).
+ * ambiguous is set when rounding of the inputs could change the answer:
+ * the ray grazes an edge of the triangle, is parallel within rounding, or
+ * starts on the plane within rounding (flat.c says how that is measured).
+ * oracle_flat_accepts() applies the rule. */
+typedef struct {
+    bool hit;          /* a hit at t > 0                                       */
+    double t;          /* on a hit, t rounded once; on a miss, where the ray
+                          meets the plane (any sign), or 0 when parallel       */
+    bool ambiguous;    /* either answer is acceptable                          */
+    double tol;        /* accepted |t - this t| (absolute)                     */
+    double t_min;      /* parallel within rounding: a hit at t >= t_min is
+                          accepted too (INFINITY when not parallel)            */
+    double kappa;      /* condition number of t (>= 1)                         */
+} OracleFlat;
+
+OracleFlat oracle_plane(const Plane *plane, const Ray *ray);
+OracleFlat oracle_triangle(const Triangle *tri, const Ray *ray);
+
+/* Whether the answer (hit, t) is correct, given the oracle's o:
+ *   - a hit's t must be finite and > 0;
+ *   - a miss is right when the oracle misses or is ambiguous;
+ *   - a hit is right when within tol of the oracle's t (also for an
+ *     ambiguous miss: a grazed edge, or t near 0), or, parallel within
+ *     rounding, at t >= t_min. */
+bool oracle_flat_accepts(const OracleFlat *o, bool hit, double t);
+
+/* The first hit of a ray among several triangles, for a closed mesh that
+ * the ray crosses away from its silhouette: the smallest exact hit, with
+ * the largest tolerance among the triangles hit there (two triangles that
+ * share the edge the ray crosses meet it at the same t).  Never ambiguous:
+ * a watertight method must hit there.  A ray that hits none gives
+ * hit = false. */
+OracleFlat oracle_mesh(const Triangle *tris, int n, const Ray *ray);
+
+/* The band of doubt, in units of u times a quantity's sensitivity to
+ * rounding of the inputs (flat.c), for edges, parallel rays and origins on
+ * the plane.  Measured in tests/unit/test_flat.c. */
+#define ORACLE_K_FLAT_BAND 16.0
+
 #endif

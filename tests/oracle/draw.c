@@ -1,0 +1,106 @@
+/*
+ * draw.c - the random draws of the hard-case generators (hard.c, hard_flat.c):
+ * splitmix64 streams and the shapes drawn from them.  Only + - * / sqrt
+ * ldexp frexp are used, so the same seed gives the same numbers on every
+ * IEEE-754 machine (built with -ffp-contract=off).
+ */
+#include <stdio.h>
+#include "draw.h"
+
+/* ---- random numbers (splitmix64) ----------------------------------------- */
+
+uint64_t hard_rng_next(uint64_t *state)
+{
+    uint64_t z = (*state += 0x9E3779B97F4A7C15u);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
+    return z ^ (z >> 31);
+}
+
+double hard_rng_uniform(uint64_t *state)
+{
+    return (double)(hard_rng_next(state) >> 11) * 0x1p-53;
+}
+
+/* The stream of case k of part `part`. */
+uint64_t draw_stream(uint64_t seed, uint64_t part, int k)
+{
+    uint64_t s = seed ^ (part * 0xD1B54A32D192ED03u);
+    uint64_t mixed = hard_rng_next(&s) ^ ((uint64_t)k * 0x632BE59BD9B4E019u);
+    hard_rng_next(&mixed);
+    return mixed;
+}
+
+/* Uniform in [a, b). */
+double draw_uni(uint64_t *s, double a, double b)
+{
+    return a + (b - a) * hard_rng_uniform(s);
+}
+
+/* Uniform integer in [a, b]. */
+int draw_int(uint64_t *s, int a, int b)
+{
+    return a + (int)(hard_rng_next(s) % (uint64_t)(b - a + 1));
+}
+
+/* Roughly log-uniform in [a, b], 0 < a < b: a random binade, a random
+ * significand, redrawn until inside.  No libm: the same on every machine. */
+double draw_log(uint64_t *s, double a, double b)
+{
+    int ea, eb;
+    frexp(a, &ea);
+    frexp(b, &eb);
+    for (;;) {
+        double x = ldexp(1 + hard_rng_uniform(s), draw_int(s, ea - 1, eb - 1));
+        if (x >= a && x <= b)
+            return x;
+    }
+}
+
+/* A random direction: uniform in the unit ball (rejection), normalized. */
+Vec3 draw_unit(uint64_t *s)
+{
+    for (;;) {
+        Vec3 v = vec3(draw_uni(s, -1, 1), draw_uni(s, -1, 1), draw_uni(s, -1, 1));
+        double n2 = vec3_dot(v, v);
+        if (n2 > 0.01 && n2 <= 1)
+            return vec3_scale(v, 1 / sqrt(n2));
+    }
+}
+
+/* A random unit vector (nearly) perpendicular to a. */
+Vec3 draw_perp(uint64_t *s, Vec3 a)
+{
+    for (;;) {
+        Vec3 p = vec3_cross(a, draw_unit(s));
+        double n = vec3_length(p);
+        if (n > 0.1 * vec3_length(a))
+            return vec3_scale(p, 1 / n);
+    }
+}
+
+/* A point with coordinates uniform in [-size, size]. */
+Vec3 draw_point(uint64_t *s, double size)
+{
+    return vec3(draw_uni(s, -size, size), draw_uni(s, -size, size), draw_uni(s, -size, size));
+}
+
+/* A direction from e that passes the centre c at rho R (rho < 1 hits),
+ * of length len. */
+Vec3 draw_aim(uint64_t *s, Vec3 e, Vec3 c, double R, double rho, double len)
+{
+    Vec3 n = draw_perp(s, vec3_sub(c, e));
+    Vec3 r = vec3_sub(vec3_add(c, vec3_scale(n, rho * R)), e);
+    return vec3_scale(r, len / vec3_length(r));
+}
+
+/* A random length of about 1 (1/16 .. 16) that is not a power of two. */
+double draw_len(uint64_t *s)
+{
+    return ldexp(1 + hard_rng_uniform(s), draw_int(s, -4, 3));
+}
+
+void draw_family(char *dst, const char *name)
+{
+    snprintf(dst, HARD_FAMILY_LEN, "%s", name);
+}
