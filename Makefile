@@ -51,7 +51,7 @@ all: $(BUILD)/kit/libkit.a $(BUILD)/bin/compare $(BUILD)/sub/labs/render \
 help:
 	@echo "make render  [SUBMISSION=dir] [SCENE=file] [SIZE=WxH] [OUT=file]"
 	@echo "make compare [SUBMISSION=dir] [SCENE=file]"
-	@echo "make grade   [SUBMISSION=dir] [PART=1|2|3a|3b] [RESULTS=file]"
+	@echo "make grade   [SUBMISSION=dir] [PART=1|2|3a|3b|4|5] [RESULTS=file]"
 	@echo "make grade-all SUBMISSIONS=dir [OUT=dir]"
 	@echo "make gradescope | student-kit | bench | handouts | test | clean"
 
@@ -163,7 +163,8 @@ GRADER_LIB_SRC = tests/grader/cases.c tests/grader/check.c tests/grader/sandbox.
 GRADER_HDR = $(wildcard tests/grader/*.h) $(KIT_HDR)
 GRADER_OBJ = $(GRADER_LIB_SRC:tests/grader/%.c=$(BUILD)/grader/%.o)
 HARNESS    = $(BUILD)/grader/harness_1.o $(BUILD)/grader/harness_2.o \
-             $(BUILD)/grader/harness_3.o $(BUILD)/grader/harness_4.o
+             $(BUILD)/grader/harness_3.o $(BUILD)/grader/harness_4.o \
+             $(BUILD)/grader/harness_5.o $(BUILD)/grader/harness_6.o
 GRADER_REF = $(if $(HAVE_SOLUTIONS),$(STAGES:%=$(BUILD)/grader/ref_%.o))
 GRADE_DEFS = $(if $(and $(HAVE_ORACLE),$(HAVE_HIDDEN)),-DGRADER_ORACLE)
 GRADE_EXTRA = $(if $(GRADE_DEFS),$(BUILD)/grader/hidden.o $(BUILD)/oracle/liboracle.a)

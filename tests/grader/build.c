@@ -18,8 +18,9 @@
 
 #define SOURCE_MAX (1 << 20)        /* a stage file larger than 1 MiB is refused */
 
-const char *const stage_names[4] = {
+const char *const stage_names[NPARTS] = {
     "part1_image_plane", "part2_pixel_coordinates", "part3a_sphere_intersect", "part3b_ray_color",
+    "part4_plane_intersect", "part5_triangle_intersect",
 };
 
 int build_tempdir(char *dir, size_t len, char *err, size_t errlen)

@@ -30,7 +30,9 @@ typedef struct {
     char *messages;            /* the compiler's output (malloc'd, may be "")   */
 } Build;
 
-extern const char *const stage_names[4];   /* "part1_image_plane", ...      */
+#include "grader.h"
+
+extern const char *const stage_names[NPARTS];   /* "part1_image_plane", ...  */
 
 /* Builds the program for part from the submission directory.  Returns 0
  * when the grader could do its job (b->ok says whether the student's code

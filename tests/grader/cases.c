@@ -8,6 +8,7 @@
  *     background r g b                     (color and image tests)
  *     sphere cx cy cz R r g b              (color and image tests, repeated)
  *     nx 32                                (image tests: the image's width)
+ *     triangle ax ay az bx by bz cx cy cz  (mesh tests, repeated)
  *     case IN... | WANT... | TOL... | ALT... | FLAGS
  *     hint OUT... | what the mistake is
  *     end
@@ -25,19 +26,27 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *kind_names[NKINDS] = { "plane", "pixel", "sphere", "camera", "color", "image" };
-static const int kind_in[NKINDS] = { 3, 7, 10, 6, 6, 3 };
-static const int kind_out[NKINDS] = { 2, 3, 2, 6, 3, 3 };
+static const char *kind_names[NKINDS] = { "plane", "pixel", "sphere", "camera", "color", "image",
+                                          "planehit", "triangle", "mesh" };
+static const int kind_in[NKINDS] = { 3, 7, 10, 6, 6, 3, 12, 15, 6 };
+static const int kind_out[NKINDS] = { 2, 3, 2, 6, 3, 3, 2, 2, 2 };
 
 int kind_nin(Kind kind) { return kind_in[kind]; }
 int kind_nout(Kind kind) { return kind_out[kind]; }
 
-static const char *labels[NPARTS] = { "1", "2", "3a", "3b" };
+bool kind_is_hit(Kind kind)
+{
+    return kind == KIND_SPHERE || kind == KIND_PLANEHIT || kind == KIND_TRIANGLE || kind == KIND_MESH;
+}
+
+static const char *labels[NPARTS] = { "1", "2", "3a", "3b", "4", "5" };
 static const char *titles[NPARTS] = {
     "Part 1: the image plane's size",
     "Part 2: pixel coordinates",
     "Part 3a: ray/sphere intersection",
     "Part 3b: camera rays and colours",
+    "Part 4: ray/plane intersection",
+    "Part 5: ray/triangle intersection",
 };
 
 const char *part_label(int part) { return labels[part]; }
@@ -96,11 +105,18 @@ void test_add_sphere(Test *test, const double c[3], double R, const double color
     memcpy(s->color, color, sizeof s->color);
 }
 
+void test_add_triangle(Test *test, const double v[9])
+{
+    test->triangles = xrealloc(test->triangles, (size_t)(test->ntriangles + 1) * sizeof *test->triangles);
+    memcpy(test->triangles[test->ntriangles++].v, v, 9 * sizeof *v);
+}
+
 void testlist_free(TestList *list)
 {
     for (int k = 0; k < list->n; k++) {
         free(list->tests[k].cases);
         free(list->tests[k].spheres);
+        free(list->tests[k].triangles);
     }
     free(list->tests);
     memset(list, 0, sizeof *list);
@@ -152,6 +168,11 @@ int tests_write(const TestList *list, const char *path, const char *header, char
         }
         if (t->kind == KIND_IMAGE)
             fprintf(f, "nx %d\n", t->image_nx);
+        for (int k2 = 0; k2 < t->ntriangles; k2++) {
+            fprintf(f, "triangle");
+            put_numbers(f, t->triangles[k2].v, 9);
+            fprintf(f, "\n");
+        }
         for (int c = 0; c < t->ncases; c++) {
             const Case *cs = &t->cases[c];
             fprintf(f, "case");
@@ -270,6 +291,12 @@ int tests_read(TestList *list, const char *path, bool hidden, char *err, size_t 
             if (get_numbers(&p, v, 7))
                 BAD("sphere needs 7 numbers");
             test_add_sphere(t, v, v[3], v + 4);
+        } else if (strncmp(p, "triangle", 8) == 0 && t->kind == KIND_MESH) {
+            double v[9];
+            p += 8;
+            if (get_numbers(&p, v, 9))
+                BAD("triangle needs 9 numbers");
+            test_add_triangle(t, v);
         } else if (strncmp(p, "nx ", 3) == 0) {
             t->image_nx = atoi(p + 3);
         } else if (strncmp(p, "case", 4) == 0) {

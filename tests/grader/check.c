@@ -46,6 +46,10 @@ static const char *in_names[NKINDS][CASE_MAX_IN] = {
     [KIND_CAMERA] = { "eye.x", "eye.y", "eye.z", "pixel.x", "pixel.y", "pixel.z" },
     [KIND_COLOR] = { "e.x", "e.y", "e.z", "r.x", "r.y", "r.z" },
     [KIND_IMAGE] = { "pixel.x", "pixel.y", "pixel.z" },
+    [KIND_PLANEHIT] = { "p.x", "p.y", "p.z", "n.x", "n.y", "n.z", "e.x", "e.y", "e.z", "r.x", "r.y", "r.z" },
+    [KIND_TRIANGLE] = { "a.x", "a.y", "a.z", "b.x", "b.y", "b.z", "c.x", "c.y", "c.z",
+                        "e.x", "e.y", "e.z", "r.x", "r.y", "r.z" },
+    [KIND_MESH] = { "e.x", "e.y", "e.z", "r.x", "r.y", "r.z" },
 };
 static const char *out_names[NKINDS][CASE_MAX_OUT] = {
     [KIND_PLANE] = { "w", "h" },
@@ -54,6 +58,9 @@ static const char *out_names[NKINDS][CASE_MAX_OUT] = {
     [KIND_CAMERA] = { "origin.x", "origin.y", "origin.z", "direction.x", "direction.y", "direction.z" },
     [KIND_COLOR] = { "r", "g", "b" },
     [KIND_IMAGE] = { "r", "g", "b" },
+    [KIND_PLANEHIT] = { "hit", "t" },
+    [KIND_TRIANGLE] = { "hit", "t" },
+    [KIND_MESH] = { "hit", "t" },
 };
 
 static bool near(double got, double want, double tol)
@@ -61,10 +68,48 @@ static bool near(double got, double want, double tol)
     return fabs(got - want) <= tol;         /* false for NaN */
 }
 
+/* Parts 4 and 5: is the answer (hit, t) right?  A hit's t must be finite
+ * and > 0; a hit is right within tol of want's t, and for a case in doubt
+ * (CASE_EITHER_HIT) a miss is right too, and so is a hit at t >= alt[1]
+ * (a ray parallel to the plane within rounding). */
+static bool flat_ok(const Case *c, const double *got)
+{
+    bool either = c->flags & CASE_EITHER_HIT;
+    if (got[0] != 0 && got[0] != 1)
+        return false;
+    if (got[0] == 0)
+        return c->want[0] == 0 || either;
+    if (!(got[1] > 0) || isinf(got[1]))
+        return false;
+    if (c->want[0] == 1 && near(got[1], c->want[1], c->tol[1]))
+        return true;
+    if (!either)
+        return false;
+    return near(got[1], c->want[1], c->tol[1]) || got[1] >= c->alt[1];
+}
+
+/* Does a (hit, t) answer match a known mistake's?  Hits at a non-finite t
+ * match a mistake that also gives one (a division by zero), others match
+ * to 6 digits. */
+static bool flat_hint_matches(const double *mistake, const double *got, double tol)
+{
+    if (got[0] != mistake[0])
+        return false;
+    if (mistake[0] == 0)
+        return true;
+    if (isnan(mistake[1]))
+        return isnan(got[1]);
+    if (isinf(mistake[1]))
+        return isinf(got[1]) && (got[1] > 0) == (mistake[1] > 0);
+    return fabs(got[1] - mistake[1]) <= fmax(4 * tol, 1e-6 * fabs(mistake[1]));
+}
+
 /* Is the answer right?  For the hint search, slack widens the tolerances. */
 static bool case_ok(Kind kind, const Case *c, const double *want, const double *got, double slack)
 {
     int nout = kind_nout(kind);
+    if (kind == KIND_PLANEHIT || kind == KIND_TRIANGLE || kind == KIND_MESH)
+        return flat_ok(c, got);
     if (kind == KIND_SPHERE) {
         bool either = c->flags & CASE_EITHER_HIT;
         bool want_hit = want[0] != 0;
@@ -117,14 +162,19 @@ static void describe_case(Text *t, const Test *test, int index, const Case *c, c
     if (kind == KIND_COLOR || kind == KIND_IMAGE)
         say(t, "  (scene: %d spheres; background %.3g %.3g %.3g)", test->nspheres,
             test->background[0], test->background[1], test->background[2]);
+    if (kind == KIND_MESH)
+        say(t, "  (a closed mesh of %d triangles: the first hit over all of them)", test->ntriangles);
     say(t, "\n    expected:  ");
-    if (kind == KIND_SPHERE) {
+    if (kind_is_hit(kind)) {
         if (c->want[0] != 0)
             say(t, "hit at t = %.17g (within %.3g)", c->want[1], c->tol[1]);
         else
             say(t, "miss");
-        if (c->flags & CASE_EITHER_HIT)
+        if ((c->flags & CASE_EITHER_HIT) && kind == KIND_SPHERE)
             say(t, " -- the ray grazes the sphere within rounding: hit or miss both accepted");
+        else if (c->flags & CASE_EITHER_HIT)
+            say(t, " -- within rounding of an edge, of parallel or of the origin: a miss is "
+                   "accepted too");
     } else {
         describe_numbers(t, out_names[kind], c->want, nout);
         if (kind == KIND_COLOR || kind == KIND_IMAGE) {
@@ -142,7 +192,7 @@ static void describe_case(Text *t, const Test *test, int index, const Case *c, c
         say(t, "no answer\n");
         return;
     }
-    if (kind == KIND_SPHERE) {
+    if (kind_is_hit(kind)) {
         if (got[0] == 1)
             say(t, "hit at t = %.17g", got[1]);
         else if (got[0] == 0)
@@ -181,6 +231,78 @@ static void hint(Text *t, Kind kind, const Case *c, const double *got)
         }
 }
 
+/* Parts 4 and 5: the known mistake that explains every answer of the test.
+ * A mistake explains a case when the answer there is the mistake's output
+ * (a hint of that text on the case) or, where the mistake gives the right
+ * answer (no hint of that text), the right answer; it must explain every
+ * case answered, and be wrong somewhere.  That mistake when it is the only
+ * one, or NULL: when none or several fit, none is confirmed, and none is
+ * named. */
+static const char *flat_diagnosis(const Test *test, const double (*got)[CASE_MAX_OUT],
+                                  const bool *ok, int answered)
+{
+    /* First a fact rather than a mistake: every answer the same miss (a
+     * skeleton's, or a sign that puts every hit behind the ray). */
+    bool all_miss = answered > 0;
+    for (int c = 0; c < answered; c++)
+        all_miss = all_miss && got[c][0] == 0;
+    if (all_miss)
+        return "every case of this test was answered as a miss, also where the ray plainly hits";
+    const char *found = NULL;
+    for (int c0 = 0; c0 < answered; c0++) {
+        for (int h0 = 0; h0 < test->cases[c0].nhints; h0++) {
+            const char *text = test->cases[c0].hints[h0].text;
+            if (found && strcmp(found, text) == 0)
+                continue;
+            bool explains = true, wrong_somewhere = false;
+            for (int c = 0; c < answered && explains; c++) {
+                const Case *cs = &test->cases[c];
+                const Hint *h = NULL;
+                for (int k = 0; k < cs->nhints && !h; k++)
+                    if (strcmp(cs->hints[k].text, text) == 0)
+                        h = &cs->hints[k];
+                if (h) {
+                    explains = flat_hint_matches(h->out, got[c], cs->tol[1]);
+                    wrong_somewhere = wrong_somewhere || !ok[c];
+                } else {
+                    explains = ok[c];
+                }
+            }
+            if (explains && wrong_somewhere) {
+                if (found)
+                    return NULL;        /* two mistakes fit: name neither */
+                found = text;
+            }
+        }
+    }
+    return found;
+}
+
+/* Parts 4 and 5: causes that an answer shows by itself, whatever the
+ * test: t rounded to float, t a whole number, a ray through a closed
+ * mesh that the test gets right elsewhere.  Each is stated only when the
+ * answers prove it. */
+static void flat_evidence(Text *t, const Test *test, const Case *c, const double *got, int failed)
+{
+    double want = c->want[1], tg = got[1];
+    /* A crack: a miss or a later hit on a mesh whose other rays (at least
+     * three quarters of them) the same test gets right. */
+    if (test->kind == KIND_MESH && c->want[0] == 1 && (got[0] == 0 || tg > want + c->tol[1])
+        && 4 * failed <= test->ncases) {
+        say(t, "    hint:      the ray entered this closed mesh through an edge or vertex that "
+               "triangles share, and %s: your test is not watertight there (the hard-case "
+               "challenge)\n", got[0] == 0 ? "hit nothing" : "its first hit was farther on");
+        return;
+    }
+    if (got[0] != 1 || c->want[0] != 1 || !isfinite(tg) || !(want > 0))
+        return;
+    bool near_want = fabs(tg - want) <= 1e-5 * want;
+    if (near_want && (double)(float)tg == tg && (double)(float)want != want)
+        say(t, "    hint:      t = %.9g is a float (24 bits): compute in double\n", tg);
+    else if (tg == floor(tg) && want != floor(want) && fabs(tg - want) < 1)
+        say(t, "    hint:      t = %.17g is a whole number: is t, or a value it comes from, an int?\n", tg);
+}
+
 bool check_answers(const Test *test, const char *answers, size_t len, char **out)
 {
     Text t = { 0 };
@@ -188,6 +310,16 @@ bool check_answers(const Test *test, const char *answers, size_t len, char **out
     const char *p = answers, *end = answers + len;
     int failed = 0, first_bad = -1, answered = 0;
     bool complete = false;
+    bool flat = test->kind == KIND_PLANEHIT || test->kind == KIND_TRIANGLE || test->kind == KIND_MESH;
+    double (*all)[CASE_MAX_OUT] = flat ? calloc((size_t)test->ncases + 1, sizeof *all) : NULL;
+    bool *oks = flat ? calloc((size_t)test->ncases + 1, sizeof *oks) : NULL;
+    if (flat && (!all || !oks)) {
+        free(all);
+        free(oks);
+        all = NULL;
+        oks = NULL;
+        flat = false;
+    }
 
     for (int c = 0; c < test->ncases; c++) {
         double got[CASE_MAX_OUT] = { 0 };
@@ -207,14 +339,36 @@ bool check_answers(const Test *test, const char *answers, size_t len, char **out
         if (!have)
             break;
         answered++;
-        if (!case_ok(test->kind, &test->cases[c], test->cases[c].want, got, 1)) {
+        bool ok = case_ok(test->kind, &test->cases[c], test->cases[c].want, got, 1);
+        if (flat) {
+            memcpy(all[c], got, sizeof got);
+            oks[c] = ok;
+        }
+        if (!ok) {
             if (failed++ == 0) {
                 first_bad = c;
                 describe_case(&t, test, c, &test->cases[c], got, true);
-                hint(&t, test->kind, &test->cases[c], got);
+                if (!flat)
+                    hint(&t, test->kind, &test->cases[c], got);
             }
         }
     }
+    if (flat && first_bad >= 0) {
+        const Case *bad = &test->cases[first_bad];
+        bool nan_in = false;
+        for (int k = 0; k < kind_nin(test->kind); k++)
+            nan_in = nan_in || isnan(bad->in[k]);
+        const char *why = flat_diagnosis(test, (const double (*)[CASE_MAX_OUT])all, oks, answered);
+        if (nan_in && all[first_bad][0] == 1)
+            say(&t, "    hint:      NaN input must be a miss: a test written as \"t < 0: miss\" lets "
+                    "NaN through (every comparison with NaN is false); write it as !(t > 0)\n");
+        else if (why)
+            say(&t, "    hint:      %s\n", why);
+        else
+            flat_evidence(&t, test, &test->cases[first_bad], all[first_bad], failed);
+    }
+    free(all);
+    free(oks);
     if (answered == test->ncases) {
         int n = -1;
         complete = p < end && sscanf(p, "end %d", &n) == 1 && n == test->ncases;

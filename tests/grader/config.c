@@ -9,11 +9,38 @@
 #include <stdio.h>
 #include <string.h>
 
+/* "parts 1 2 3a 3b 4 5": the labels after the keyword, each known and
+ * given once; true and parts set, or false. */
+static bool parse_parts(const char *line, bool parts[NPARTS])
+{
+    bool seen[NPARTS] = { false };
+    char label[8];
+    int used = 0, count = 0;
+    if (sscanf(line, " parts%n", &used) != 0 || used == 0)
+        return false;
+    line += used;
+    while (sscanf(line, " %7s%n", label, &used) == 1) {
+        int p = part_from_label(label);
+        if (p < 0 || seen[p])
+            return false;
+        seen[p] = true;
+        count++;
+        line += used;
+    }
+    if (count == 0)
+        return false;
+    for (int p = 0; p < NPARTS; p++)
+        parts[p] = seen[p];
+    return true;
+}
+
 int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
 {
     memset(cfg, 0, sizeof *cfg);
     cfg->hard_is_bonus = true;
     cfg->timeout = 2;
+    for (int p = 0; p < NCORE_PARTS; p++)
+        cfg->parts[p] = true;
     FILE *f = fopen(path, "r");
     if (!f) {
         snprintf(err, errlen, "%s: %s", path, strerror(errno));
@@ -42,9 +69,11 @@ int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
             cfg->timeout = core;
         } else if (strcmp(word, "seed") == 0 && sscanf(line, " seed %llu", &seed) == 1) {
             cfg->seed = seed;
+        } else if (strcmp(word, "parts") == 0 && parse_parts(line, cfg->parts)) {
+            /* the parts graded by default */
         } else {
-            snprintf(err, errlen, "%s:%d: expected 'part P core N hard M', 'hard bonus|core', "
-                     "'timeout S' or 'seed N'", path, lineno);
+            snprintf(err, errlen, "%s:%d: expected 'part P core N hard M', 'parts P...', "
+                     "'hard bonus|core', 'timeout S' or 'seed N'", path, lineno);
             fclose(f);
             return -1;
         }

@@ -10,6 +10,8 @@
 #include "grader.h"
 
 typedef struct {
+    bool parts[NPARTS];        /* the parts graded when none is named: the
+                                  "parts" line (Parts 1-3b by default)    */
     double core[NPARTS];       /* points of each part's core tests      */
     double hard[NPARTS];       /* points of each part's hard-case tests */
     bool hard_is_bonus;        /* hard points on top of the total        */

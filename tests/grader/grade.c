@@ -16,7 +16,8 @@
 
 #define OUTPUT_SHOWN 1500     /* bytes of the student's own printing shown */
 
-static const char *kind_word[NKINDS] = { "plane", "pixel", "sphere", "camera", "color", "image" };
+static const char *kind_word[NKINDS] = { "plane", "pixel", "sphere", "camera", "color", "image",
+                                         "planehit", "triangle", "mesh" };
 
 static char *xasprintf(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 static char *xasprintf(const char *fmt, ...)
@@ -37,7 +38,8 @@ static char *xasprintf(const char *fmt, ...)
 /* What the child reads on stdin for a test. */
 static char *test_input(const Test *t, size_t *len)
 {
-    size_t cap = 256 + (size_t)t->ncases * 26 * CASE_MAX_IN + (size_t)t->nspheres * 26 * 7;
+    size_t cap = 256 + (size_t)t->ncases * 26 * CASE_MAX_IN + (size_t)t->nspheres * 26 * 7
+                 + (size_t)t->ntriangles * 26 * 9;
     char *s = malloc(cap);
     if (!s)
         return NULL;
@@ -49,6 +51,14 @@ static char *test_input(const Test *t, size_t *len)
             const TestSphere *sp = &t->spheres[k];
             n += (size_t)snprintf(s + n, cap - n, "%a %a %a %a %a %a %a\n", sp->c[0], sp->c[1],
                                   sp->c[2], sp->R, sp->color[0], sp->color[1], sp->color[2]);
+        }
+    }
+    if (t->kind == KIND_MESH) {
+        n += (size_t)snprintf(s + n, cap - n, "triangles %d\n", t->ntriangles);
+        for (int k = 0; k < t->ntriangles; k++) {
+            const double *v = t->triangles[k].v;
+            n += (size_t)snprintf(s + n, cap - n, "%a %a %a %a %a %a %a %a %a\n",
+                                  v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]);
         }
     }
     int nin = kind_nin(t->kind);

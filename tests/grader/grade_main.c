@@ -1,12 +1,15 @@
 /*
  * grade - the autograder's command line.
  *
- *   grade [--submission DIR] [--part 1|2|3a|3b] [--results FILE] [--quiet]
- *       grades one submission; exit 0 for full marks, 1 when points are
- *       lost, 2 when the grader itself could not run.
+ *   grade [--submission DIR] [--part 1|2|3a|3b|4|5] [--results FILE] [--quiet]
+ *       grades one submission: the parts of tests/weights.conf's "parts"
+ *       line, or the one part named; exit 0 for full marks, 1 when points
+ *       are lost, 2 when the grader itself could not run.
  *   grade --all DIR [--out DIR] [--jobs N]
  *       grades every subdirectory of DIR, in parallel; writes
  *       OUT/gradebook.csv and OUT/<submission>.json.
+ *   --weights FILE reads the points and parts from FILE instead of
+ *       tests/weights.conf (either form).
  *
  * Run it from the kit's root (make does).  Student code never runs in this
  * process: each test runs in a fresh sandboxed child (sandbox.c).
@@ -35,8 +38,9 @@
 static void usage(void)
 {
     fprintf(stderr,
-            "usage: grade [--submission DIR] [--part 1|2|3a|3b] [--results FILE] [--quiet]\n"
+            "usage: grade [--submission DIR] [--part 1|2|3a|3b|4|5] [--results FILE] [--quiet]\n"
             "       grade --all DIR [--out DIR] [--jobs N]\n"
+            "       either with --weights FILE (default tests/weights.conf)\n"
             "exit status: 0 full marks, 1 points lost, 2 the grader could not run\n");
     exit(2);
 }
@@ -52,12 +56,15 @@ static int fail(const char *results, const char *fmt, const char *what)
 }
 
 #ifdef GRADER_ORACLE
-/* FNV-1a of the submission's stage files: the seed of its random cases,
- * so a regrade of the same files draws the same cases. */
-static uint64_t submission_hash(const char *dir)
+/* FNV-1a of the submission's stage files of parts first .. last - 1: the
+ * seed of its random cases, so a regrade of the same files draws the same
+ * cases.  Parts 1-3b and Parts 4-5 are hashed apart, so that the optional
+ * stages' files (an untouched skeleton, say) change nothing of the others'
+ * cases. */
+static uint64_t submission_hash(const char *dir, int first, int last)
 {
     uint64_t h = 0xcbf29ce484222325u;
-    for (int p = 0; p < NPARTS; p++) {
+    for (int p = first; p < last; p++) {
         char path[PATH_MAX];
         snprintf(path, sizeof path, "%s/%s.c", dir, stage_names[p]);
         FILE *f = fopen(path, "rb");
@@ -73,7 +80,7 @@ static uint64_t submission_hash(const char *dir)
 #endif
 
 static int load_tests(TestList *list, const GradeConfig *cfg, const char *submission,
-                      char *err, size_t errlen)
+                      const bool parts[NPARTS], char *err, size_t errlen)
 {
     for (int p = 0; p < NPARTS; p++) {
         char path[256];
@@ -83,21 +90,25 @@ static int load_tests(TestList *list, const GradeConfig *cfg, const char *submis
     }
 #ifdef GRADER_ORACLE
     struct stat st;
-    if (stat("tests/hidden", &st) == 0)
-        testgen_hidden(list, cfg->seed ^ submission_hash(submission));
+    if (stat("tests/hidden", &st) == 0) {
+        testgen_hidden(list, cfg->seed ^ submission_hash(submission, 0, NCORE_PARTS));
+        if (parts[PART4] || parts[PART5])
+            testgen_hidden_flat(list, cfg->seed ^ submission_hash(submission, NCORE_PARTS, NPARTS));
+    }
 #else
     (void)cfg;
     (void)submission;
+    (void)parts;
 #endif
     return 0;
 }
 
 static int grade_one(const char *submission, const char *part, const char *results,
-                     bool quiet, bool summary)
+                     const char *weights, bool quiet, bool summary)
 {
     char err[1024];
     GradeConfig cfg;
-    if (config_read(&cfg, "tests/weights.conf", err, sizeof err) != 0)
+    if (config_read(&cfg, weights, err, sizeof err) != 0)
         return fail(results, "%s", err);
     struct stat st;
     if (stat(submission, &st) != 0 || !S_ISDIR(st.st_mode))
@@ -129,13 +140,13 @@ static int grade_one(const char *submission, const char *part, const char *resul
     snprintf(ref, sizeof ref, "%s/ref_part1_image_plane.o", objdir);
     BuildConfig bc = { .root = root, .cc = cc, .objdir = objdir, .reference = access(ref, R_OK) == 0 };
 
-    TestList tests = { 0 };
-    if (load_tests(&tests, &cfg, submission, err, sizeof err) != 0)
-        return fail(results, "%s", err);
-
     GradeOptions opt = { .submission = submission, .cfg = &cfg, .build = &bc };
     for (int p = 0; p < NPARTS; p++)
-        opt.parts[p] = !part || !*part || part_from_label(part) == p;
+        opt.parts[p] = part && *part ? part_from_label(part) == p : cfg.parts[p];
+    TestList tests = { 0 };
+    if (load_tests(&tests, &cfg, submission, opt.parts, err, sizeof err) != 0)
+        return fail(results, "%s", err);
+
     Grade g;
     if (grade_submission(&opt, &tests, &g, err, sizeof err) != 0) {
         testlist_free(&tests);
@@ -148,7 +159,7 @@ static int grade_one(const char *submission, const char *part, const char *resul
         fprintf(stderr, "grade: %s\n", err);
         status = 2;
     }
-    if (summary) {
+    if (summary) {                  /* every part's core points, for grade --all */
         printf("summary");
         for (int p = 0; p < NPARTS; p++)
             printf(" %.6g", g.core[p]);
@@ -194,8 +205,12 @@ static void csv_field(FILE *f, const char *s)
     }
 }
 
-static int grade_all(const char *self, const char *dir, const char *out, int jobs)
+static int grade_all(const char *self, const char *dir, const char *out, const char *weights, int jobs)
 {
+    char err[1024];
+    GradeConfig cfg;
+    if (config_read(&cfg, weights, err, sizeof err) != 0)
+        return fail(NULL, "%s", err);
     DIR *d = opendir(dir);
     if (!d)
         return fail(NULL, "%s: cannot open the submissions directory", dir);
@@ -236,7 +251,8 @@ static int grade_all(const char *self, const char *dir, const char *out, int job
                 dup2(p[1], 1);
                 close(p[0]);
                 close(p[1]);
-                execl(self, self, "--submission", sub, "--results", res, "--quiet", "--summary", (char *)NULL);
+                execl(self, self, "--submission", sub, "--results", res, "--weights", weights,
+                      "--quiet", "--summary", (char *)NULL);
                 _exit(2);
             }
             close(p[1]);
@@ -275,21 +291,41 @@ static int grade_all(const char *self, const char *dir, const char *out, int job
     FILE *f = fopen(tmp, "w");
     if (!f)
         return fail(NULL, "%s: cannot write", tmp);
-    fprintf(f, "submission,part1,part2,part3a,part3b,hard,total,status\n");
+    /* One column per graded part (the "parts" line), then the hard-case
+     * points, the total and the status. */
+    fprintf(f, "submission");
+    int ncols = 0;
+    for (int p = 0; p < NPARTS; p++)
+        if (cfg.parts[p]) {
+            fprintf(f, ",part%s", part_label(p));
+            ncols++;
+        }
+    fprintf(f, ",hard,total,status\n");
     int worst = 0;
     for (int k = 0; k < n; k++) {
         Job *j = &all[k];
-        double v[6];
-        int st = 2;
+        double v[NPARTS + 2];
+        int st = 2, used = 0;
         char *s = strstr(j->line, "summary ");
-        bool ok = s && sscanf(s, "summary %lf %lf %lf %lf %lf %lf %d", &v[0], &v[1], &v[2], &v[3],
-                              &v[4], &v[5], &st) == 7;
-        csv_field(f, j->name);
+        bool ok = s != NULL;
         if (ok)
-            fprintf(f, ",%g,%g,%g,%g,%g,%g,%s\n", v[0], v[1], v[2], v[3], v[4], v[5],
-                    st == 0 ? "full marks" : "points lost");
-        else
-            fprintf(f, ",,,,,,,grader error (see %s.json)\n", j->name);
+            s += 7;
+        for (int c = 0; ok && c < NPARTS + 2; c++) {
+            ok = sscanf(s, "%lf%n", &v[c], &used) == 1;
+            s += used;
+        }
+        ok = ok && sscanf(s, "%d", &st) == 1;
+        csv_field(f, j->name);
+        if (ok) {
+            for (int p = 0; p < NPARTS; p++)
+                if (cfg.parts[p])
+                    fprintf(f, ",%g", v[p]);
+            fprintf(f, ",%g,%g,%s\n", v[NPARTS], v[NPARTS + 1], st == 0 ? "full marks" : "points lost");
+        } else {
+            for (int c = 0; c < ncols + 2; c++)
+                fputc(',', f);
+            fprintf(f, ",grader error (see %s.json)\n", j->name);
+        }
         if (!ok)
             worst = 2;
         free(names[k]);
@@ -305,6 +341,7 @@ static int grade_all(const char *self, const char *dir, const char *out, int job
 int main(int argc, char **argv)
 {
     const char *submission = "labs", *part = NULL, *results = NULL, *all = NULL, *out = "out/grades";
+    const char *weights = "tests/weights.conf";
     bool quiet = false, summary = false;
     long jobs = sysconf(_SC_NPROCESSORS_ONLN);
     for (int k = 1; k < argc; k++) {
@@ -320,6 +357,8 @@ int main(int argc, char **argv)
             all = v, k++;
         else if (!strcmp(a, "--out") && v)
             out = *v ? v : out, k++;
+        else if (!strcmp(a, "--weights") && v)
+            weights = v, k++;
         else if (!strcmp(a, "--jobs") && v)
             jobs = atol(v), k++;
         else if (!strcmp(a, "--quiet"))
@@ -330,14 +369,17 @@ int main(int argc, char **argv)
             usage();
     }
     if (part && *part && part_from_label(part) < 0) {
-        fprintf(stderr, "grade: PART must be 1, 2, 3a or 3b, not '%s'\n", part);
+        fprintf(stderr, "grade: PART must be 1, 2, 3a, 3b, 4 or 5, not '%s'\n", part);
         return 2;
     }
     if (all) {
         char self[PATH_MAX];
         if (!realpath(argv[0], self))
             return fail(NULL, "cannot find this program: %s", argv[0]);
-        return grade_all(self, all, out, jobs > 0 ? (int)jobs : 1);
+        char wpath[PATH_MAX];
+        if (!realpath(weights, wpath))      /* the children run from the same root */
+            return fail(NULL, "%s: cannot find the weights file", weights);
+        return grade_all(self, all, out, wpath, jobs > 0 ? (int)jobs : 1);
     }
-    return grade_one(submission, part, results, quiet, summary);
+    return grade_one(submission, part, results, weights, quiet, summary);
 }

@@ -13,7 +13,11 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-enum { PART1, PART2, PART3A, PART3B, NPARTS };
+enum { PART1, PART2, PART3A, PART3B, PART4, PART5, NPARTS };
+
+/* Parts 4 and 5 are optional: graded only where tests/weights.conf's
+ * "parts" line lists them, or when asked for by name (PART=4). */
+#define NCORE_PARTS 4
 
 /* What a test's child computes for each case. */
 typedef enum {
@@ -24,15 +28,21 @@ typedef enum {
     KIND_COLOR,       /* Part 3b: in ray origin(3) dir(3)   -> colour(3), with the test's scene */
     KIND_IMAGE,       /* Part 3b: in pixel centre(3)        -> colour(3), eye at the origin,
                          through the child's camera_ray and ray_color            */
+    KIND_PLANEHIT,    /* Part 4:  in p(3) n(3) e(3) r(3)    -> hit t            */
+    KIND_TRIANGLE,    /* Part 5:  in a(3) b(3) c(3) e(3) r(3) -> hit t          */
+    KIND_MESH,        /* Part 5:  in e(3) r(3)              -> hit t, the first hit
+                         over the test's triangles (a closed mesh)              */
     NKINDS
 } Kind;
 
-#define CASE_MAX_IN   10
+#define CASE_MAX_IN   15
 #define CASE_MAX_OUT  6
-#define CASE_MAX_HINTS 8
+#define CASE_MAX_HINTS 12
 
 /* Case flags */
-#define CASE_EITHER_HIT 1u     /* 3a: hit or miss both acceptable (rounding) */
+#define CASE_EITHER_HIT 1u     /* hit or miss both acceptable (rounding); for
+                                  Parts 4 and 5 a hit then needs t within tol
+                                  of want, or t >= alt[1] (parallel rays)     */
 
 typedef struct {
     char text[96];                 /* the known mistake, as told to the student */
@@ -44,7 +54,9 @@ typedef struct {
     double want[CASE_MAX_OUT];     /* expected outputs                          */
     double tol[CASE_MAX_OUT];      /* accepted |got - want| per output           */
     double alt[CASE_MAX_OUT];      /* KIND_COLOR/IMAGE: another acceptable colour
-                                      when the flag CASE_EITHER_HIT is set       */
+                                      when the flag CASE_EITHER_HIT is set;
+                                      Parts 4 and 5: alt[1] is the smallest t
+                                      accepted for a ray parallel within rounding */
     unsigned flags;
     int nhints;
     Hint hints[CASE_MAX_HINTS];
@@ -53,6 +65,10 @@ typedef struct {
 typedef struct {
     double c[3], R, color[3];
 } TestSphere;
+
+typedef struct {
+    double v[9];                   /* a(3) b(3) c(3) */
+} TestTriangle;
 
 typedef struct {
     char name[128];                /* starts with "Part 1: " etc.               */
@@ -67,6 +83,8 @@ typedef struct {
     int nspheres;
     TestSphere *spheres;
     int image_nx;                  /* KIND_IMAGE: image width, for messages     */
+    int ntriangles;                /* KIND_MESH: the mesh                       */
+    TestTriangle *triangles;
     int ncases, cap;
     Case *cases;
 } Test;
@@ -79,13 +97,16 @@ typedef struct {
 /* Number of numbers in and out for a kind. */
 int kind_nin(Kind kind);
 int kind_nout(Kind kind);
-const char *part_label(int part);        /* "1", "2", "3a", "3b"         */
+const char *part_label(int part);        /* "1", "2", "3a", "3b", "4", "5" */
 const char *part_title(int part);        /* "Part 1: image plane size"   */
 int part_from_label(const char *label);  /* -1 if unknown                */
 
 Test *testlist_add(TestList *list, int part, Kind kind, const char *name);
 Case *test_add_case(Test *test);
 void test_add_sphere(Test *test, const double c[3], double R, const double color[3]);
+void test_add_triangle(Test *test, const double v[9]);
+/* Whether a kind's answer is (hit, t): Parts 3a, 4 and 5. */
+bool kind_is_hit(Kind kind);
 void testlist_free(TestList *list);
 
 /* Reads or writes the test files' text format (see cases.c). */

@@ -1,11 +1,12 @@
 /*
  * harness.c - the child side of a test: the only grader code that shares a
  * process with student code.  Built once per part (-DHARNESS_PART=1, 2, 3
- * for 3a, 4 for 3b) and linked with that part's student file; it calls no
- * other part's function itself.
+ * for 3a, 4 for 3b, 5 for Part 4, 6 for Part 5) and linked with that part's
+ * student file; it calls no other part's function itself.
  *
  * Reads from stdin:   KIND N
  *                     [background r g b] [spheres M, then M lines cx cy cz R r g b]
+ *                     [triangles M, then M lines ax ay az bx by bz cx cy cz]
  *                     N lines of inputs (numbers)
  * Writes to fd 3:     one line of outputs (%a) per case, then "end N".
  * It knows nothing of the expected answers: the parent judges.
@@ -65,8 +66,26 @@ int main(void)
         }
     }
 #endif
+#if HARNESS_PART == 6
+    Triangle *mesh = NULL;
+    int nmesh = 0;
+    if (strcmp(kind, "mesh") == 0) {
+        if (scanf(" triangles %d", &nmesh) != 1 || nmesh < 0)
+            return 3;
+        mesh = calloc((size_t)nmesh + 1, sizeof *mesh);
+        for (int k = 0; k < nmesh; k++) {
+            double v[9];
+            if (!mesh || get(v, 9))
+                return 3;
+            mesh[k].a = vec3(v[0], v[1], v[2]);
+            mesh[k].b = vec3(v[3], v[4], v[5]);
+            mesh[k].c = vec3(v[6], v[7], v[8]);
+            mesh[k].color = vec3(1, 1, 1);
+        }
+    }
+#endif
     for (int c = 0; c < n; c++) {
-        double in[10], out[6];
+        double in[15], out[6];
 #if HARNESS_PART == 1
         if (get(in, 3))
             return 3;
@@ -111,8 +130,44 @@ int main(void)
             out[0] = col.x, out[1] = col.y, out[2] = col.z;
             put(out, 3);
         }
+#elif HARNESS_PART == 5
+        if (get(in, 12))
+            return 3;
+        Plane pl = { vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]), vec3(1, 1, 1) };
+        Ray r = { vec3(in[6], in[7], in[8]), vec3(in[9], in[10], in[11]) };
+        double t = 0;
+        bool hit = plane_intersect(&pl, &r, &t);
+        out[0] = hit ? 1 : 0;
+        out[1] = hit ? t : 0;
+        put(out, 2);
+#elif HARNESS_PART == 6
+        bool hit = false;
+        double t = 0;
+        if (mesh) {
+            /* The first hit over the mesh, as a renderer finds it. */
+            if (get(in, 6))
+                return 3;
+            Ray r = { vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]) };
+            for (int k = 0; k < nmesh; k++) {
+                double tk = 0;
+                if (triangle_intersect(&mesh[k], &r, &tk) && (!hit || tk < t)) {
+                    hit = true;
+                    t = tk;
+                }
+            }
+        } else {
+            if (get(in, 15))
+                return 3;
+            Triangle tr = { vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]),
+                            vec3(in[6], in[7], in[8]), vec3(1, 1, 1) };
+            Ray r = { vec3(in[9], in[10], in[11]), vec3(in[12], in[13], in[14]) };
+            hit = triangle_intersect(&tr, &r, &t);
+        }
+        out[0] = hit ? 1 : 0;
+        out[1] = hit ? t : 0;
+        put(out, 2);
 #else
-#error "HARNESS_PART must be 1, 2, 3 (Part 3a) or 4 (Part 3b)"
+#error "HARNESS_PART must be 1, 2, 3 (Part 3a), 4 (Part 3b), 5 (Part 4) or 6 (Part 5)"
 #endif
     }
     fprintf(answers, "end %d\n", n);

@@ -111,3 +111,63 @@ void testgen_hidden(TestList *l, uint64_t seed)
     /* Hard cases drawn from this seed, beyond the public ones. */
     tg_hard(l, seed, 0, 1, true);
 }
+
+/* ---- Parts 4 and 5 -------------------------------------------------------- */
+
+void testgen_hidden_flat(TestList *l, uint64_t seed)
+{
+    TgRandom g = { seed };
+    Test *t = hidden_test(l, PART4, KIND_PLANEHIT, "Part 4: hidden: random rays at random planes",
+                          "planes and origins anywhere within 10, any lengths of n and r; about half hit");
+    for (int k = 0; k < 60; k++) {
+        double p[3], n[3], e[3], r[3], on[3], side[3];
+        random_direction(&g, tg_uniform(&g, 0, 10), p);
+        random_direction(&g, tg_log_uniform(&g, 0.1, 10), n);
+        random_direction(&g, tg_uniform(&g, 0, 10), e);
+        random_direction(&g, tg_uniform(&g, 0, 5), side);
+        /* aim at a point of the plane: p + side with side's normal part removed */
+        double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+        double sn = (side[0] * n[0] + side[1] * n[1] + side[2] * n[2]) / nn;
+        for (int q = 0; q < 3; q++)
+            on[q] = p[q] + side[q] - sn * n[q];
+        double len = tg_log_uniform(&g, 0.01, 100), d2 = 0;
+        for (int q = 0; q < 3; q++) {
+            r[q] = on[q] - e[q];
+            d2 += r[q] * r[q];
+        }
+        for (int q = 0; q < 3; q++)
+            r[q] *= (k % 3 == 0 ? -len : len) / sqrt(d2);
+        tg_planehit(t, p, n, e, r);
+    }
+
+    t = hidden_test(l, PART5, KIND_TRIANGLE, "Part 5: hidden: random rays at random triangles",
+                    "triangles of every shape and size within 10 of the eye; about half the rays hit");
+    for (int k = 0; k < 100; k++) {
+        double v[3][3], c[3], e[3], w[3], aim[3], r[3];
+        random_direction(&g, tg_uniform(&g, 0, 10), c);
+        double size = tg_log_uniform(&g, 0.01, 5);
+        for (int i = 0; i < 3; i++) {
+            random_direction(&g, size * tg_uniform(&g, 0.2, 1), v[i]);
+            for (int q = 0; q < 3; q++)
+                v[i][q] += c[q];
+        }
+        random_direction(&g, tg_uniform(&g, 0, 3), e);
+        /* aim at a point with random barycentric weights: inside about
+         * half the time */
+        double sum = 0;
+        for (int i = 0; i < 3; i++)
+            sum += w[i] = tg_uniform(&g, k % 2 ? -0.5 : 0.02, 1);
+        double len = tg_log_uniform(&g, 0.1, 10), d2 = 0;
+        for (int q = 0; q < 3; q++) {
+            aim[q] = (w[0] * v[0][q] + w[1] * v[1][q] + w[2] * v[2][q]) / sum;
+            r[q] = aim[q] - e[q];
+            d2 += r[q] * r[q];
+        }
+        for (int q = 0; q < 3; q++)
+            r[q] *= (k % 9 == 0 ? -len : len) / sqrt(d2);
+        tg_triangle(t, v[0], v[1], v[2], e, r);
+    }
+
+    /* Hard cases drawn from this seed, beyond the public ones. */
+    tg_hard_flat(l, seed, 0, 1, true);
+}

@@ -153,7 +153,7 @@ bool hard_check5(const HardCase5 *c, bool hit, double t);
  * expect[k] is oracle_mesh(tris, ntris, &rays[k]). */
 #define HARD_MESH_FAMILIES 3
 #define HARD_MESH_MAX_TRIANGLES 20
-#define HARD_MESH_RAYS 16
+#define HARD_MESH_RAYS 48
 
 typedef struct {
     char family[HARD_FAMILY_LEN];
@@ -164,7 +164,8 @@ typedef struct {
     OracleFlat expect[HARD_MESH_RAYS];
 } HardMesh;
 
-/* Mesh k is of family k % HARD_MESH_FAMILIES and depends only on (seed, k). */
+/* Mesh k is of family k % HARD_MESH_FAMILIES and depends only on (seed, k);
+ * the shapes take turns, starting from one the seed picks. */
 int  hard_meshes(uint64_t seed, HardMesh *meshes, int max);
 bool hard_check_mesh(const HardMesh *m, int ray, bool hit, double t);
 

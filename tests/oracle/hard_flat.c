@@ -381,7 +381,8 @@ int hard_meshes(uint64_t seed, HardMesh *meshes, int max)
     for (int k = 0; k < max; k++) {
         uint64_t s = draw_stream(seed, 6, k);
         HardMesh *m = &meshes[k];
-        int fam = k % HARD_MESH_FAMILIES, shape = (k / HARD_MESH_FAMILIES) % HARD_MESH_SHAPES;
+        int fam = k % HARD_MESH_FAMILIES;
+        int shape = (int)((seed + (uint64_t)(k / HARD_MESH_FAMILIES)) % HARD_MESH_SHAPES);
         Vec3 offset = fam == 2 ? vec3_scale(draw_unit(&s), draw_log(&s, 1e3, 1e6)) : draw_point(&s, 10);
         double size = fam == 2 ? draw_log(&s, 0.5, 2) : draw_log(&s, 0.1, 10);
         hard_mesh_make(&s, shape, size, offset, m);

@@ -183,4 +183,5 @@ void testgen_public(TestList *list)
     part3a(list);
     part3b(list);
     tg_hard(list, PUBLIC_HARD_SEED, 0, 2, false);
+    testgen_public_flat(list);          /* Parts 4 and 5: public_flat.c */
 }

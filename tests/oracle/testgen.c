@@ -23,7 +23,12 @@
 
 /* Adds a known mistake's output, unless it is the right answer anyway
  * (d missing when d = 1, say) or another hint already has it. */
-static void add_hint(Case *c, const char *text, const double *out, int n)
+void tg_add_hint(Case *c, const char *text, const double *out, int n)
+{
+    tg_add_hint_as(c, text, out, n, true);
+}
+
+void tg_add_hint_as(Case *c, const char *text, const double *out, int n, bool unique_output)
 {
     if (c->nhints == CASE_MAX_HINTS)
         return;
@@ -31,7 +36,7 @@ static void add_hint(Case *c, const char *text, const double *out, int n)
     for (int k = 0; k < n; k++)
         same = same && fabs(out[k] - c->want[k]) <= 1e-6 * fabs(c->want[k]) + c->tol[k];
     for (int h = 0; h < c->nhints && !same; h++) {
-        bool dup = true;
+        bool dup = unique_output || strcmp(c->hints[h].text, text) == 0;
         for (int k = 0; k < n; k++)
             dup = dup && out[k] == c->hints[h].out[k];
         same = dup;
@@ -57,23 +62,23 @@ void tg_plane(Test *t, double fov, double aspect, double d)
     double rad = fov * M_PI / 180, h, v[2];
     h = 2 * d * tan(fov / 2);
     v[0] = aspect * h, v[1] = h;
-    add_hint(c, "tan takes radians: convert the field of view from degrees (times pi / 180)", v, 2);
+    tg_add_hint(c, "tan takes radians: convert the field of view from degrees (times pi / 180)", v, 2);
     h = 2 * d * tan(rad);
     v[0] = aspect * h, v[1] = h;
-    add_hint(c, "use half the field of view: h = 2 d tan(alpha / 2)", v, 2);
+    tg_add_hint(c, "use half the field of view: h = 2 d tan(alpha / 2)", v, 2);
     h = d * tan(rad / 2);
     v[0] = aspect * h, v[1] = h;
-    add_hint(c, "the factor 2 is missing: h = 2 d tan(alpha / 2)", v, 2);
+    tg_add_hint(c, "the factor 2 is missing: h = 2 d tan(alpha / 2)", v, 2);
     h = 2 * tan(rad / 2);
     v[0] = aspect * h, v[1] = h;
-    add_hint(c, "d is missing: h = 2 d tan(alpha / 2) grows with the distance d", v, 2);
+    tg_add_hint(c, "d is missing: h = 2 d tan(alpha / 2) grows with the distance d", v, 2);
     h = 2 * d * tan(rad / 2);
     v[0] = h / aspect, v[1] = h;
-    add_hint(c, "the aspect ratio is inverted: w = aspect h, with aspect = nx / ny", v, 2);
+    tg_add_hint(c, "the aspect ratio is inverted: w = aspect h, with aspect = nx / ny", v, 2);
     v[0] = h, v[1] = aspect * h;
-    add_hint(c, "w and h are swapped", v, 2);
+    tg_add_hint(c, "w and h are swapped", v, 2);
     v[0] = h, v[1] = h / aspect;
-    add_hint(c, "the field of view is the VERTICAL one: it gives h, then w = aspect h", v, 2);
+    tg_add_hint(c, "the field of view is the VERTICAL one: it gives h, then w = aspect h", v, 2);
 }
 
 /* ---- Part 2 ---------------------------------------------------------------- */
@@ -92,21 +97,21 @@ void tg_pixel(Test *t, int i, int j, int nx, int ny, double w, double h, double 
 
     double x = -w / 2 + w * (i + 0.5) / nx, y = -h / 2 + h * (ny - 0.5 - j) / ny, v[3];
     v[0] = -w / 2 + w * i / nx, v[1] = -h / 2 + h * (ny - j) / ny, v[2] = -d;
-    add_hint(c, "that is a pixel's corner: the centre is at i + 0.5 (and ny - 0.5 - j)", v, 3);
+    tg_add_hint(c, "that is a pixel's corner: the centre is at i + 0.5 (and ny - 0.5 - j)", v, 3);
     v[0] = -w / 2 + w * i / nx, v[1] = -h / 2 + h * (ny - 1 - j) / ny;
-    add_hint(c, "that is a pixel's corner: the centre is at i + 0.5 (and ny - 0.5 - j)", v, 3);
+    tg_add_hint(c, "that is a pixel's corner: the centre is at i + 0.5 (and ny - 0.5 - j)", v, 3);
     v[0] = x, v[1] = -h / 2 + h * (j + 0.5) / ny;
-    add_hint(c, "y is upside down: row j = 0 is the TOP of the image, where y = +h/2", v, 3);
+    tg_add_hint(c, "y is upside down: row j = 0 is the TOP of the image, where y = +h/2", v, 3);
     v[0] = x, v[1] = y, v[2] = d;
-    add_hint(c, "z has the wrong sign: the eye looks down -z, so the plane is at z = -d", v, 3);
+    tg_add_hint(c, "z has the wrong sign: the eye looks down -z, so the plane is at z = -d", v, 3);
     v[0] = x, v[1] = -h / 2 + h * (ny - 0.5 - j) / nx, v[2] = -d;
-    add_hint(c, "y divides by nx: rows are counted by ny", v, 3);
+    tg_add_hint(c, "y divides by nx: rows are counted by ny", v, 3);
     v[0] = -h / 2 + h * (i + 0.5) / nx, v[1] = -w / 2 + w * (ny - 0.5 - j) / ny;
-    add_hint(c, "w and h are swapped: x spans the width w, y the height h", v, 3);
+    tg_add_hint(c, "w and h are swapped: x spans the width w, y the height h", v, 3);
     v[0] = w * (i + 0.5) / nx, v[1] = h * (ny - 0.5 - j) / ny;
-    add_hint(c, "the plane is centred on the axis: x runs from -w/2 to w/2, not 0 to w", v, 3);
+    tg_add_hint(c, "the plane is centred on the axis: x runs from -w/2 to w/2, not 0 to w", v, 3);
     v[0] = -w / 2, v[1] = -h / 2;
-    add_hint(c, "an integer division: in C, (2 * i + 1) / (2 * nx) is 0 for ints -- use 0.5 or a double", v, 3);
+    tg_add_hint(c, "an integer division: in C, (2 * i + 1) / (2 * nx) is 0 for ints -- use 0.5 or a double", v, 3);
 }
 
 /* ---- Part 3a ---------------------------------------------------------------- */
@@ -129,7 +134,7 @@ static void hint_t(Case *c, const char *text, bool hit, double t)
 {
     double v[2] = { hit ? 1 : 0, hit ? t : 0 };
     if (v[0] != c->want[0] || (hit && fabs(t - c->want[1]) > 1e-6 * fabs(c->want[1])))
-        add_hint(c, text, v, 2);
+        tg_add_hint(c, text, v, 2);
 }
 
 void tg_sphere(Test *t, const double c3[3], double R, const double e[3], const double r[3])
@@ -197,11 +202,11 @@ void tg_camera(Test *t, const double eye[3], const double pixel[3])
         c->tol[k] = t->hard ? HARD_PART3B_DIR_TOL_U * U : CORE_REL;
 
     double v[6] = { eye[0], eye[1], eye[2], dir.x, dir.y, dir.z };
-    add_hint(c, "the direction must have unit length: divide s - e by |s - e|", v, 6);
+    tg_add_hint(c, "the direction must have unit length: divide s - e by |s - e|", v, 6);
     double v2[6] = { eye[0], eye[1], eye[2], -u.x, -u.y, -u.z };
-    add_hint(c, "the direction is reversed: it points from the eye TO the pixel, s - e", v2, 6);
+    tg_add_hint(c, "the direction is reversed: it points from the eye TO the pixel, s - e", v2, 6);
     double v3[6] = { pixel[0], pixel[1], pixel[2], u.x, u.y, u.z };
-    add_hint(c, "the ray starts at the eye, not at the pixel", v3, 6);
+    tg_add_hint(c, "the ray starts at the eye, not at the pixel", v3, 6);
 }
 
 static void colour_of(const Test *t, int k, double out[3])
@@ -252,16 +257,16 @@ static void colour_case(Test *t, Case *c, const Scene *scene, Ray ray)
     double v[3];
     if (!ambiguous && first != k && first >= 0) {
         colour_of(t, first, v);
-        add_hint(c, "the first sphere hit is not the closest: keep the smallest t over all spheres", v, 3);
+        tg_add_hint(c, "the first sphere hit is not the closest: keep the smallest t over all spheres", v, 3);
     }
     if (!ambiguous && far != k && far >= 0) {
         colour_of(t, far, v);
-        add_hint(c, "that is the farthest hit: keep the SMALLEST t (tmin starts at infinity)", v, 3);
+        tg_add_hint(c, "that is the farthest hit: keep the SMALLEST t (tmin starts at infinity)", v, 3);
     }
     if (!ambiguous && k < 0) {
         double black[3] = { 0, 0, 0 };
         if (t->background[0] || t->background[1] || t->background[2])
-            add_hint(c, "a ray that hits nothing has the scene's background colour", black, 3);
+            tg_add_hint(c, "a ray that hits nothing has the scene's background colour", black, 3);
     }
 }
 

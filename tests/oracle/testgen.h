@@ -32,6 +32,32 @@ Test *tg_image(TestList *list, const char *name, const char *scene_path, int nx,
  * of every family (Part 3a: twice as many), as tests tagged hard. */
 void tg_hard(TestList *list, uint64_t seed, int first_round, int rounds, bool hidden);
 
+/* Adds a known mistake's output as a hint to c, unless it is the right
+ * answer anyway or another hint already gives it (the first one added
+ * wins: add the likelier mistake first). */
+void tg_add_hint(Case *c, const char *text, const double *out, int n);
+/* The same, keeping a hint whose output another already gives when
+ * unique_output is false: Parts 4 and 5 name a mistake only when it
+ * explains every case of a test, so each mistake needs all its outputs. */
+void tg_add_hint_as(Case *c, const char *text, const double *out, int n, bool unique_output);
+
+/* ---- Parts 4 and 5 (testgen_flat.c) ---- */
+
+/* One case of plane_intersect (p, n, e, r), of triangle_intersect
+ * (a, b, c, e, r), or a ray at the closed mesh of t's triangles. */
+void tg_planehit(Test *t, const double p[3], const double n[3], const double e[3], const double r[3]);
+void tg_triangle(Test *t, const double a[3], const double b[3], const double c[3],
+                 const double e[3], const double r[3]);
+void tg_mesh_ray(Test *t, const double e[3], const double r[3]);
+
+/* The hard cases of Parts 4 and 5 (hard_flat.c) as tests tagged hard, as
+ * tg_hard does for the others. */
+void tg_hard_flat(TestList *list, uint64_t seed, int first_round, int rounds, bool hidden);
+
+/* The public and hidden tests of Parts 4 and 5. */
+void testgen_public_flat(TestList *list);
+void testgen_hidden_flat(TestList *list, uint64_t seed);
+
 /* A small deterministic random number generator (splitmix64). */
 typedef struct { uint64_t s; } TgRandom;
 double tg_uniform(TgRandom *r, double lo, double hi);

@@ -2,7 +2,8 @@
 # The grader's self-test: the reference scores full marks, the untouched
 # skeleton 0 on every part, and every faulty or hostile submission under
 # tests/selftest loses its own part's points and no other's, with the hint
-# or message its expect file names.  Also the Gradescope bundle, run locally.
+# or message its expect file names.  By default the optional Parts 4 and 5
+# are not graded at all; turned on, they are graded like the others.
 set -u
 root=$(pwd)
 grade=out/build/bin/grade
@@ -14,28 +15,67 @@ failed=0
 pass() { passed=$((passed + 1)); }
 fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
 # check NAME CONDITION...: pass if the command succeeds
-check() { name=$1; shift; if "$@"; then pass; else fail "$name"; fi; }
+check() { what=$1; shift; if "$@"; then pass; else fail "$what"; fi; }
 
-max1=20; max2=20; max3a=30; max3b=30     # tests/weights.conf
+max1=20; max2=20; max3a=30; max3b=30; max4=20; max5=20     # tests/weights.conf
+# The same points with the optional Parts 4 and 5 turned on.
+all=$tmp/all-parts.conf
+sed 's/^parts .*/parts 1 2 3a 3b 4 5/' tests/weights.conf >"$all"
 
 # -- the reference and the skeleton ------------------------------------------
+# By default (Parts 1-3b) and with every part.
 $grade --submission solutions --results "$tmp/ref.json" --summary >"$tmp/ref.out" 2>&1
 status=$?
 check "the reference scores full marks (exit $status)" [ "$status" -eq 0 ]
-check "the reference's summary" grep -q "^summary $max1 $max2 $max3a $max3b " "$tmp/ref.out"
+check "the reference's summary" grep -q "^summary $max1 $max2 $max3a $max3b 0 0 " "$tmp/ref.out"
 check "results.json written for the reference" grep -q '"tests"' "$tmp/ref.json"
+check "by default Parts 4 and 5 are not graded" sh -c "! grep -q '\"Part [45]: ' '$tmp/ref.json'"
 [ "$status" -eq 0 ] || tail -n 30 "$tmp/ref.out"
+$grade --submission solutions --weights "$all" --results "$tmp/ref-all.json" --summary >"$tmp/ref-all.out" 2>&1
+status=$?
+check "the reference scores full marks on every part (exit $status)" [ "$status" -eq 0 ]
+check "the reference's summary, every part" \
+    grep -q "^summary $max1 $max2 $max3a $max3b $max4 $max5 " "$tmp/ref-all.out"
+check "Parts 4 and 5 in results.json when turned on" \
+    sh -c "grep -q '\"Part 4: ' '$tmp/ref-all.json' && grep -q '\"Part 5: ' '$tmp/ref-all.json'"
+[ "$status" -eq 0 ] || tail -n 30 "$tmp/ref-all.out"
+for p in 4 5; do
+    $grade --submission solutions --part $p >"$tmp/ref-$p.out" 2>&1
+    status=$?
+    check "make grade PART=$p grades Part $p whatever the parts line (exit $status)" \
+        sh -c "[ $status -eq 0 ] && grep -q '^Part $p: .* 20 / 20' '$tmp/ref-$p.out'"
+done
 
-$grade --submission labs --summary >"$tmp/labs.out" 2>&1
+$grade --submission labs --weights "$all" --summary >"$tmp/labs.out" 2>&1
 status=$?
 check "the skeleton loses points (exit $status, want 1)" [ "$status" -eq 1 ]
-check "the skeleton scores 0 on every part" grep -q "^summary 0 0 0 0 0 0 1" "$tmp/labs.out"
+check "the skeleton scores 0 on every part" grep -q "^summary 0 0 0 0 0 0 0 0 1" "$tmp/labs.out"
+check "the skeleton's Parts 4 and 5 ran without a crash" \
+    sh -c "! grep -q -e 'crashed' -e 'did not finish' '$tmp/labs.out'"
 
-# -- faulty and hostile submissions, graded as a class -----------------------
-mkdir "$tmp/subs"
+# A submission of Parts 1-3b alone keeps full marks by default.
+mkdir "$tmp/core-only"
+for f in part1_image_plane part2_pixel_coordinates part3a_sphere_intersect part3b_ray_color; do
+    cp "solutions/$f.c" "$tmp/core-only/"
+done
+chmod -R a+rX "$tmp/core-only"
+$grade --submission "$tmp/core-only" >"$tmp/core-only.out" 2>&1
+status=$?
+check "a Parts 1-3b submission keeps full marks by default (exit $status)" [ "$status" -eq 0 ]
+
+# -- faulty and hostile submissions, graded as two classes -------------------
+# Those of Parts 1-3b with the default points (Parts 1-3b), those of the
+# optional parts (a file part4_* or part5_*) with Parts 4 and 5 alone.  Every
+# part is graded on its own, so the parts left out could only be the
+# reference's full marks.
+only45=$tmp/parts45.conf
+sed 's/^parts .*/parts 4 5/' tests/weights.conf >"$only45"
+mkdir "$tmp/subs" "$tmp/subs45"
 for dir in tests/selftest/*/; do
     name=$(basename "$dir")
-    sub="$tmp/subs/$name"
+    class=subs
+    ls "$dir" | grep -q '^part[45]_' && class=subs45
+    sub="$tmp/$class/$name"
     mkdir "$sub"
     cp solutions/part*.c "$sub/"
     for f in "$dir"part*.c; do [ -f "$f" ] && cp "$f" "$sub/"; done
@@ -48,56 +88,77 @@ printf '#include "%s/solutions/part1_image_plane.c"\n' "$root" \
     >"$tmp/subs/hostile-include-reference/part1_image_plane.c"
 mkdir -p "$tmp/expect/hostile-include-reference"
 printf 'part 1\noutput refused\n' >"$tmp/expect/hostile-include-reference/expect"
-chmod -R a+rX "$tmp/subs"
+chmod -R a+rX "$tmp/subs" "$tmp/subs45"
 
-start=$(date +%s)
-$grade --all "$tmp/subs" --out "$tmp/grades" >"$tmp/all.out" 2>&1
-status=$?
-elapsed=$(( $(date +%s) - start ))
-check "grade --all ran (exit $status)" [ "$status" -le 1 ]
-check "gradebook.csv written" [ -f "$tmp/grades/gradebook.csv" ]
-echo "   graded $(ls "$tmp/subs" | wc -l | tr -d ' ') submissions in ${elapsed} s"
+for class in subs subs45; do
+    conf=tests/weights.conf
+    header=submission,part1,part2,part3a,part3b,hard,total,status
+    if [ "$class" = subs45 ]; then
+        conf=$only45
+        header=submission,part4,part5,hard,total,status
+    fi
+    start=$(date +%s)
+    $grade --all "$tmp/$class" --out "$tmp/grades-$class" --weights "$conf" >"$tmp/all.out" 2>&1
+    status=$?
+    elapsed=$(( $(date +%s) - start ))
+    check "grade --all ran (exit $status)" [ "$status" -le 1 ]
+    check "gradebook.csv written" [ -f "$tmp/grades-$class/gradebook.csv" ]
+    check "the gradebook has a column per graded part ($header)" \
+        grep -q "^$header\$" "$tmp/grades-$class/gradebook.csv"
+    echo "   graded $(ls "$tmp/$class" | wc -l | tr -d ' ') submissions in ${elapsed} s ($conf)"
+done
 
-score() {   # score NAME COLUMN: a cell of the gradebook
-    awk -F, -v n="$1" -v c="$2" '$1 == n { print $c }' "$tmp/grades/gradebook.csv"
+score() {   # score CLASS NAME COLUMN: a cell of a gradebook, by the column's name
+    awk -F, -v n="$2" -v c="$3" 'NR == 1 { for (k = 1; k <= NF; k++) col[$k] = k }
+        $1 == n { print (c in col) ? $col[c] : "-" }' "$tmp/grades-$1/gradebook.csv"
 }
-for sub in "$tmp/subs"/*/; do
-    name=$(basename "$sub")
-    expect="tests/selftest/$name/expect"
-    [ -f "$expect" ] || expect="$tmp/expect/$name/expect"
-    json="$tmp/grades/$name.json"
-    p1=$(score "$name" 2); p2=$(score "$name" 3); p3a=$(score "$name" 4); p3b=$(score "$name" 5)
+for sub in "$tmp/subs"/*/ "$tmp/subs45"/*/; do
+    sname=$(basename "$sub")
+    class=$(basename "$(dirname "$sub")")
+    conf=tests/weights.conf
+    [ "$class" = subs45 ] && conf=$only45
+    expect="tests/selftest/$sname/expect"
+    [ -f "$expect" ] || expect="$tmp/expect/$sname/expect"
+    json="$tmp/grades-$class/$sname.json"
+    # Each graded part's points and its maximum; "-" for a part not graded.
+    got_all="" max_all=""
+    for p in 1 2 3a 3b 4 5; do
+        case $p in 1) max=$max1;; 2) max=$max2;; 3a) max=$max3a;; 3b) max=$max3b;; 4) max=$max4;; 5) max=$max5;; esac
+        got=$(score "$class" "$sname" "part$p")
+        [ "$got" = "-" ] && max=-
+        got_all="$got_all $got" max_all="$max_all $max"
+    done
     if grep -q '^core full' "$expect"; then
-        check "$name: full core marks ($p1 $p2 $p3a $p3b)" \
-            [ "$p1 $p2 $p3a $p3b" = "$max1 $max2 $max3a $max3b" ]
+        check "$sname: full core marks ($got_all)" [ "$got_all" = "$max_all" ]
     fi
     part=$(sed -n 's/^part //p' "$expect")
     if [ -n "$part" ]; then
-        for p in 1 2 3a 3b; do
-            case $p in 1) got=$p1 max=$max1;; 2) got=$p2 max=$max2;; 3a) got=$p3a max=$max3a;; 3b) got=$p3b max=$max3b;; esac
+        for p in 1 2 3a 3b 4 5; do
+            case $p in 1) max=$max1;; 2) max=$max2;; 3a) max=$max3a;; 3b) max=$max3b;; 4) max=$max4;; 5) max=$max5;; esac
+            got=$(score "$class" "$sname" "part$p")
             if [ "$p" = "$part" ]; then
-                check "$name: Part $p loses points (got $got of $max)" [ -n "$got" -a "$got" != "$max" ]
-            else
-                check "$name: Part $p keeps full marks (got $got of $max)" [ "$got" = "$max" ]
+                check "$sname: Part $p loses points (got $got of $max)" [ -n "$got" -a "$got" != "$max" -a "$got" != "-" ]
+            elif [ "$got" != "-" ]; then
+                check "$sname: Part $p keeps full marks (got $got of $max)" [ "$got" = "$max" ]
             fi
         done
     fi
     want=$(sed -n 's/^output //p' "$expect")
     if [ -n "$want" ]; then
-        check "$name: the report says '$want'" grep -q "$want" "$json"
+        check "$sname: the report says '$want'" grep -q "$want" "$json"
     fi
     hardpart=$(sed -n 's/^hard lost //p' "$expect")
     if [ -n "$hardpart" ]; then
-        $grade --submission "$sub" --part "$hardpart" >"$tmp/$name.table" 2>&1
-        check "$name: some Part $hardpart hard cases fail" \
-            grep -q "FAIL  Part $hardpart: .*\[hard\]" "$tmp/$name.table"
+        $grade --submission "$sub" --part "$hardpart" >"$tmp/$sname.table" 2>&1
+        check "$sname: some Part $hardpart hard cases fail" \
+            grep -q "FAIL  Part $hardpart: .*\[hard\]" "$tmp/$sname.table"
     fi
 done
 check "forged results: the grader's own score stands" \
-    grep -q '"score": *[0-9.]*,' "$tmp/grades/hostile-forge-results.json"
-check "forged results: no score of 1000 anywhere" sh -c "! grep -rq '\"score\": 1000' '$tmp/grades'"
+    grep -q '"score": *[0-9.]*,' "$tmp/grades-subs/hostile-forge-results.json"
+check "forged results: no score of 1000 anywhere" sh -c "! grep -rq '\"score\": 1000' '$tmp/grades-subs'"
 check "forged results: nothing written beside the submissions" \
-    sh -c "[ \$(ls '$tmp/grades' | wc -l) -eq \$(( \$(ls '$tmp/subs' | wc -l) + 1 )) ]"
+    sh -c "[ \$(ls '$tmp/grades-subs' | wc -l) -eq \$(( \$(ls '$tmp/subs' | wc -l) + 1 )) ]"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -1,0 +1,354 @@
+/*
+ * testgen_flat.c - the building blocks of the tests of Parts 4 and 5:
+ * one case of a plane, of a triangle, of a ray at a closed mesh, with the
+ * oracle's answer (flat.c) and the outputs of known mistakes, written here
+ * in plain double as a student writes them; and the hard cases as tests.
+ *
+ * Tolerances: core tests accept any correct formula (relative 1e-9 for t,
+ * or the oracle's bound when larger); hard tests the oracle's bound, a few
+ * units of roundoff times the condition number of t.
+ */
+#include "testgen.h"
+#include "oracle.h"
+#include "hard.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define CORE_REL 1e-9
+
+static double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void sub3(const double a[3], const double b[3], double out[3])
+{
+    for (int k = 0; k < 3; k++)
+        out[k] = a[k] - b[k];
+}
+
+static void cross3(const double a[3], const double b[3], double out[3])
+{
+    double x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
+    out[0] = x, out[1] = y, out[2] = z;
+}
+
+static Vec3 v3(const double a[3])
+{
+    return vec3(a[0], a[1], a[2]);
+}
+
+/* The oracle's answer into c: want, tol, the flag for doubt and, for a ray
+ * parallel within rounding, the smallest t accepted (alt[1]). */
+static void expect(Test *t, Case *c, const OracleFlat *o)
+{
+    c->want[0] = o->hit ? 1 : 0;
+    c->want[1] = o->hit || o->ambiguous ? o->t : 0;
+    c->tol[1] = o->hit || o->ambiguous ? o->tol : 0;
+    if (o->hit && !t->hard)
+        c->tol[1] = fmax(c->tol[1], CORE_REL * o->t);
+    if (o->ambiguous) {
+        c->flags |= CASE_EITHER_HIT;
+        c->alt[1] = o->t_min;
+    }
+}
+
+/* A mistake's answer (hit, t) as a hint. */
+static void hint_hit(Case *c, const char *text, bool hit, double t)
+{
+    double v[2] = { hit ? 1 : 0, hit ? t : 0 };
+    tg_add_hint_as(c, text, v, 2, false);
+}
+
+/* ---- Part 4 ----------------------------------------------------------------- */
+/* The hints of a case are every known mistake whose answer differs from the
+ * right one; check.c names the mistake that explains all the cases of a
+ * test, the first in the order written here when several do. */
+
+/* A hit answer of a formula that checks t > 0 and nothing else. */
+static bool positive(double t)
+{
+    return t > 0 && t < INFINITY;
+}
+
+static void plane_hints(Case *c, const double p[3], const double n[3], const double e[3], const double r[3])
+{
+    double pe[3], ep[3], ne[3];
+    sub3(p, e, pe);
+    sub3(e, p, ep);
+    sub3(n, e, ne);
+    double rn = dot3(r, n), t = dot3(pe, n) / rn;
+    double len_n = sqrt(dot3(n, n)), len_r = sqrt(dot3(r, r));
+    bool right = positive(t);
+
+    if (rn != 0 && t >= 1e-300 && t < 1e-3)
+        hint_hit(c, "hits at small t count: is there a tmin such as 0.001? In this lab tmin = 0", false, 0);
+    if (rn != 0 && t == 0)
+        hint_hit(c, "t = 0 is the ray's own origin: a hit needs t > 0, not t >= 0", true, 0);
+    if (rn != 0 && t < 0)
+        hint_hit(c, "a hit behind the eye: only t > 0 is ahead of the ray", true, t);
+    if (rn == 0 && !(t <= 0))       /* NaN or +infinity got through "t <= 0: miss" */
+        hint_hit(c, "r.n = 0 (parallel to the plane, or in it) is a miss: check it before dividing", true, t);
+    if (right && rn > 0)
+        hint_hit(c, "the plane has two sides: a ray that meets it from behind (r.n > 0) hits too", false, 0);
+    double ts = dot3(ep, n) / rn;
+    hint_hit(c, "the sign: t = (p - e).n / (r.n), so that e + t r is on the plane", positive(ts), ts);
+    double tw = dot3(ne, p) / dot3(r, p);
+    hint_hit(c, "the point p and the normal n are swapped: t = (p - e).n / (r.n)", positive(tw), tw);
+    if (right && len_n != 1)
+        hint_hit(c, "t is off by the factor |n|: use the same n above and below the fraction line",
+                 true, t / len_n);
+    if (right && len_r != 1)
+        hint_hit(c, "t is the ray parameter, not a distance: do not normalise r (t scales as 1 / |r|)",
+                 true, t * len_r);
+}
+
+void tg_planehit(Test *t, const double p[3], const double n[3], const double e[3], const double r[3])
+{
+    Case *c = test_add_case(t);
+    memcpy(c->in, p, 3 * sizeof *p);
+    memcpy(c->in + 3, n, 3 * sizeof *n);
+    memcpy(c->in + 6, e, 3 * sizeof *e);
+    memcpy(c->in + 9, r, 3 * sizeof *r);
+    Plane pl = { v3(p), v3(n), vec3(1, 1, 1) };
+    Ray ray = { v3(e), v3(r) };
+    OracleFlat o = oracle_plane(&pl, &ray);
+    expect(t, c, &o);
+    plane_hints(c, p, n, e, r);
+}
+
+/* ---- Part 5 ----------------------------------------------------------------- */
+
+/* Moller-Trumbore as the skeleton's comment writes it, with the checks a
+ * student may leave out or get wrong switched by flags. */
+enum {
+    MT_NO_SUM = 1,       /* beta + gamma <= 1 not checked       */
+    MT_NO_T = 2,         /* t > 0 not checked                    */
+    MT_NO_DET = 4,       /* det = 0 not checked; "t < 0: miss"   */
+    MT_CULL = 8,         /* det < 0 a miss (one-sided)           */
+    MT_EPS = 16,         /* |det| < 1e-8 a miss                  */
+    MT_STRICT = 32,      /* beta > 0, gamma > 0, beta + gamma < 1 */
+    MT_TMIN = 64,        /* t > 0.001                            */
+    MT_GAMMA_SIGN = 128, /* e1 x s for s x e1                    */
+    MT_S_SIGN = 256,     /* s = a - e                            */
+};
+
+static bool mt(const double a[3], const double b[3], const double cc[3], const double e[3],
+               const double r[3], unsigned flags, double *t)
+{
+    double e1[3], e2[3], s[3], q[3], sx[3];
+    sub3(b, a, e1);
+    sub3(cc, a, e2);
+    if (flags & MT_S_SIGN)
+        sub3(a, e, s);
+    else
+        sub3(e, a, s);
+    cross3(r, e2, q);
+    double det = dot3(e1, q);
+    if (!(flags & MT_NO_DET) && det == 0)
+        return false;
+    if ((flags & MT_CULL) && det < 0)
+        return false;
+    if ((flags & MT_EPS) && fabs(det) < 1e-8)
+        return false;
+    double inv = 1 / det;
+    double beta = dot3(s, q) * inv;
+    if (flags & MT_GAMMA_SIGN)
+        cross3(e1, s, sx);
+    else
+        cross3(s, e1, sx);
+    double gamma = dot3(r, sx) * inv;
+    *t = dot3(e2, sx) * inv;
+    if (flags & MT_STRICT) {
+        if (!(beta > 0 && gamma > 0 && beta + gamma < 1))
+            return false;
+    } else if (beta < 0 || gamma < 0 || (!(flags & MT_NO_SUM) && beta + gamma > 1)) {
+        return false;
+    }
+    if (flags & MT_NO_T)
+        return true;
+    if (flags & MT_NO_DET)
+        return !(*t < 0);
+    if (flags & MT_TMIN)
+        return *t > 1e-3 && *t < INFINITY;
+    return *t > 0 && *t < INFINITY;
+}
+
+static void triangle_hints(Case *c, const double a[3], const double b[3], const double cc[3],
+                           const double e[3], const double r[3], const OracleFlat *o)
+{
+    static const struct {
+        unsigned flags;
+        const char *text;
+    } mistakes[] = {
+        { MT_TMIN, "hits at small t count: is there a tmin such as 0.001? In this lab tmin = 0" },
+        { MT_STRICT, "edges and vertices belong to the triangle: beta >= 0, gamma >= 0, beta + gamma <= 1" },
+        { MT_EPS, "a small or far triangle was missed: no epsilon on det (such as 1e-8), compare it with 0" },
+        { MT_NO_T, "a hit behind the eye: only t > 0 is ahead of the ray" },
+        { MT_NO_SUM, "beta + gamma <= 1 is missing: the ray passed outside the edge bc and still hit" },
+        { MT_NO_DET, "det = 0 (parallel to the triangle, or in its plane) is a miss: check it first" },
+        { MT_CULL, "both sides count: a ray that meets the triangle from behind (det < 0) hits too" },
+        { MT_GAMMA_SIGN, "gamma = r.(s x e1) / det and t = e2.(s x e1) / det: the order of a cross product matters" },
+        { MT_S_SIGN, "s = e - a (the ray's origin minus a), not a - e: it flips beta, gamma and t" },
+    };
+    for (size_t k = 0; k < sizeof mistakes / sizeof mistakes[0]; k++) {
+        double t = 0;
+        bool hit = mt(a, b, cc, e, r, mistakes[k].flags, &t);
+        /* A hint needs a different answer from a clear case: near an edge
+         * rounding alone may flip the right formula's answer. */
+        if (!o->ambiguous)
+            hint_hit(c, mistakes[k].text, hit, t);
+    }
+    double len_r = sqrt(dot3(r, r));
+    if (o->hit && len_r != 1)
+        hint_hit(c, "t is the ray parameter, not a distance: do not normalise r (t scales as 1 / |r|)",
+                 true, o->t * len_r);
+}
+
+void tg_triangle(Test *t, const double a[3], const double b[3], const double cc[3],
+                 const double e[3], const double r[3])
+{
+    Case *c = test_add_case(t);
+    memcpy(c->in, a, 3 * sizeof *a);
+    memcpy(c->in + 3, b, 3 * sizeof *b);
+    memcpy(c->in + 6, cc, 3 * sizeof *cc);
+    memcpy(c->in + 9, e, 3 * sizeof *e);
+    memcpy(c->in + 12, r, 3 * sizeof *r);
+    Triangle tr = { v3(a), v3(b), v3(cc), vec3(1, 1, 1) };
+    Ray ray = { v3(e), v3(r) };
+    OracleFlat o = oracle_triangle(&tr, &ray);
+    expect(t, c, &o);
+    triangle_hints(c, a, b, cc, e, r, &o);
+}
+
+void tg_mesh_ray(Test *t, const double e[3], const double r[3])
+{
+    Case *c = test_add_case(t);
+    memcpy(c->in, e, 3 * sizeof *e);
+    memcpy(c->in + 3, r, 3 * sizeof *r);
+    Triangle *tris = calloc((size_t)t->ntriangles + 1, sizeof *tris);
+    for (int k = 0; k < t->ntriangles; k++) {
+        const double *v = t->triangles[k].v;
+        tris[k] = (Triangle){ v3(v), v3(v + 3), v3(v + 6), vec3(1, 1, 1) };
+    }
+    Ray ray = { v3(e), v3(r) };
+    OracleFlat o = oracle_mesh(tris, t->ntriangles, &ray);
+    free(tris);
+    expect(t, c, &o);
+    /* A miss, or a first hit beyond the crossing (the far side of the
+     * mesh): the ray went between the triangles that share an edge or a
+     * vertex.  Both show as an answer that the checker reports with the
+     * watertightness hint (check.c), whatever the t. */
+}
+
+/* ---- the hard cases as tests ------------------------------------------------ */
+
+static Test *hard_test(TestList *l, int part, Kind kind, const char *family, bool hidden)
+{
+    char name[128];
+    snprintf(name, sizeof name, "Part %s: %shard: %s", part_label(part), hidden ? "hidden: " : "", family);
+    Test *t = testlist_add(l, part, kind, name);
+    t->hard = true;
+    t->hidden = hidden;
+    snprintf(t->note, sizeof t->note, "%s", "a hard case: see the handout's hard-case challenge");
+    return t;
+}
+
+static Test *family_test(TestList *l, int first, int part, Kind kind, const char *family, bool hidden)
+{
+    for (int k = first; k < l->n; k++)
+        if (l->tests[k].part == part && strstr(l->tests[k].name, family))
+            return &l->tests[k];
+    return hard_test(l, part, kind, family, hidden);
+}
+
+static void put3(double out[3], Vec3 v)
+{
+    out[0] = v.x, out[1] = v.y, out[2] = v.z;
+}
+
+/* Whether test t has a case whose certain answer is a hit: a family of
+ * misses alone would give the always-miss skeleton points. */
+static bool has_certain_hit(const Test *t)
+{
+    for (int c = 0; c < t->ncases; c++)
+        if (t->cases[c].want[0] == 1 && !(t->cases[c].flags & CASE_EITHER_HIT))
+            return true;
+    return false;
+}
+
+void tg_hard_flat(TestList *l, uint64_t seed, int first_round, int rounds, bool hidden)
+{
+    int first = l->n;
+    int n4 = (first_round + 2 * rounds) * HARD_PART4_FAMILIES;
+    HardCase4 *c4 = calloc((size_t)n4, sizeof *c4);
+    hard_part4(seed, c4, n4);
+    for (int k = first_round * HARD_PART4_FAMILIES; k < n4; k++) {
+        double p[3], n[3], e[3], r[3];
+        put3(p, c4[k].plane.point);
+        put3(n, c4[k].plane.normal);
+        put3(e, c4[k].ray.origin);
+        put3(r, c4[k].ray.direction);
+        tg_planehit(family_test(l, first, PART4, KIND_PLANEHIT, c4[k].family, hidden), p, n, e, r);
+    }
+    free(c4);
+
+    int n5 = (first_round + 2 * rounds) * HARD_PART5_FAMILIES;
+    HardCase5 *c5 = calloc((size_t)n5, sizeof *c5);
+    hard_part5(seed, c5, n5);
+    for (int k = first_round * HARD_PART5_FAMILIES; k < n5; k++) {
+        double a[3], b[3], cc[3], e[3], r[3];
+        put3(a, c5[k].tri.a);
+        put3(b, c5[k].tri.b);
+        put3(cc, c5[k].tri.c);
+        put3(e, c5[k].ray.origin);
+        put3(r, c5[k].ray.direction);
+        tg_triangle(family_test(l, first, PART5, KIND_TRIANGLE, c5[k].family, hidden), a, b, cc, e, r);
+    }
+    free(c5);
+    for (int k = first; k < l->n; k++) {
+        Test *t = &l->tests[k];
+        if (has_certain_hit(t))
+            continue;
+        if (t->part == PART4)
+            tg_planehit(t, (const double[3]){ 0, -1, 0 }, (const double[3]){ 0, 1, 0 },
+                        (const double[3]){ 0, 0, 0 }, (const double[3]){ 0.25, -0.5, -1 });
+        else
+            tg_triangle(t, (const double[3]){ -1, -1, -4 }, (const double[3]){ 1, -1, -4 },
+                        (const double[3]){ 0, 1, -4 }, (const double[3]){ 0, 0, 0 },
+                        (const double[3]){ 0.1, 0.05, -1 });
+    }
+
+    /* Closed meshes: one test per mesh family, its mesh's rays as cases
+     * (a test holds one mesh, so each round's mesh is a test of its own,
+     * weighted so that a family counts once). */
+    int nm = (first_round + rounds) * HARD_MESH_FAMILIES;
+    HardMesh *m = calloc((size_t)nm, sizeof *m);
+    hard_meshes(seed, m, nm);
+    for (int k = first_round * HARD_MESH_FAMILIES; k < nm; k++) {
+        char family[HARD_FAMILY_LEN + 16];
+        snprintf(family, sizeof family, "%s (%s)", m[k].family,
+                 m[k].ntris == 12 ? "a cube" : m[k].ntris == 8 ? "an octahedron" : "an icosahedron");
+        Test *t = hard_test(l, PART5, KIND_MESH, family, hidden);
+        t->weight = 1.0 / rounds;
+        snprintf(t->note, sizeof t->note, "%s",
+                 "a hard case: rays into a closed mesh through the edges and vertices its triangles share");
+        for (int i = 0; i < m[k].ntris; i++) {
+            double v[9];
+            put3(v, m[k].tris[i].a);
+            put3(v + 3, m[k].tris[i].b);
+            put3(v + 6, m[k].tris[i].c);
+            test_add_triangle(t, v);
+        }
+        for (int r = 0; r < HARD_MESH_RAYS; r++) {
+            double e[3], d[3];
+            put3(e, m[k].rays[r].origin);
+            put3(d, m[k].rays[r].direction);
+            tg_mesh_ray(t, e, d);
+        }
+    }
+    free(m);
+}

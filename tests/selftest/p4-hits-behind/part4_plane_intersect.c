@@ -1,0 +1,13 @@
+/* Self-test of the grader: p4-hits-behind. No check of t > 0. */
+#include "raytracer.h"
+
+bool plane_intersect(const Plane *plane, const Ray *ray, double *t)
+{
+    Vec3 n = plane->normal;
+    double rn = vec3_dot(ray->direction, n);
+    double num = vec3_dot(vec3_sub(plane->point, ray->origin), n);
+    if (rn == 0)
+        return false;
+    *t = num / rn;
+    return true;
+}

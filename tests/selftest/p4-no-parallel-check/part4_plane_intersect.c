@@ -1,0 +1,14 @@
+/* Self-test of the grader: p4-no-parallel-check. Divides by r.n without checking it. */
+#include "raytracer.h"
+
+bool plane_intersect(const Plane *plane, const Ray *ray, double *t)
+{
+    Vec3 n = plane->normal;
+    double rn = vec3_dot(ray->direction, n);
+    double num = vec3_dot(vec3_sub(plane->point, ray->origin), n);
+    double t0 = num / rn;
+    if (t0 <= 0)
+        return false;
+    *t = t0;
+    return true;
+}
