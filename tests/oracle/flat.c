@@ -123,7 +123,10 @@ static double quotient(const Expansion *num, const Expansion *den)
 /* The answer, once the exact signs and the scales are known. */
 typedef struct {
     bool nan, inf, lost;       /* NaN or infinite input; inexact arithmetic   */
-    bool exact;                /* small dyadic inputs along the axes          */
+    bool exact_den, exact_num; /* d.n and num computed without rounding by every
+                                  usual method, even after normalising         */
+    bool exact_edges;          /* the same for the edge values and barycentric
+                                  coordinates                                  */
     int sden, snum;            /* exact signs of den and num                  */
     double den, num;           /* their values (scaled units)                  */
     double sens_den, sens_num; /* their sensitivities (scaled units)           */
@@ -145,8 +148,8 @@ static OracleFlat answer(const Flat *F)
         return o;
     }
     double band = ORACLE_K_FLAT_BAND * U;
-    bool parallel = fabs(F->den) <= band * F->sens_den && !F->exact;
-    bool surface = fabs(F->num) <= band * F->sens_num && !F->exact;
+    bool parallel = fabs(F->den) <= band * F->sens_den && !F->exact_den;
+    bool surface = fabs(F->num) <= band * F->sens_num && !F->exact_num;
     o.ambiguous = parallel || surface || F->edge_doubt;
     if (F->sden == 0) {
         /* Parallel: a method that does not round d.n to 0 finds t of at
@@ -188,8 +191,13 @@ OracleFlat oracle_plane(const Plane *plane, const Ray *ray)
     F.inf = bad == 2;
     if (bad)
         return answer(&F);
-    F.exact = all_small_dyadic(pos, 6) && all_small_dyadic(nrm, 3) && all_small_dyadic(dir, 3)
-              && along_axis(nrm) && along_axis(dir);
+    /* Small dyadic inputs: every product and sum is exact, and a normalised
+     * n or d is exact along an axis; d.n = 0 then stays 0 when d or n lies
+     * along an axis, (p - o).n = 0 when n does or p = o. */
+    bool dyadic = all_small_dyadic(pos, 6) && all_small_dyadic(nrm, 3) && all_small_dyadic(dir, 3);
+    bool same = pos[0] == pos[3] && pos[1] == pos[4] && pos[2] == pos[5];
+    F.exact_den = dyadic && (along_axis(nrm) || along_axis(dir));
+    F.exact_num = dyadic && (along_axis(nrm) || same);
 
     /* Scale by powers of two (exact): positions, normal and direction each
      * to a largest component in [1/2, 1). */
@@ -260,7 +268,7 @@ OracleFlat oracle_triangle(const Triangle *tri, const Ray *ray)
     F.inf = bad == 2;
     if (bad)
         return answer(&F);
-    F.exact = all_small_dyadic(pos, 12) && all_small_dyadic(dir, 3) && along_axis(dir);
+    bool exact = all_small_dyadic(pos, 12) && all_small_dyadic(dir, 3) && along_axis(dir);
 
     int ep = exponent_of(pos, 12), ed = exponent_of(dir, 3);
     double v[3][3], o[3], d[3];
@@ -296,7 +304,8 @@ OracleFlat oracle_triangle(const Triangle *tri, const Ray *ray)
     /* Barycentric coordinates are the edge values divided by d.n: exact
      * for every method only when d.n is a power of two (or 0). */
     int e2x;
-    F.exact = F.exact && (F.den == 0 || frexp(F.den, &e2x) == 0.5 || frexp(F.den, &e2x) == -0.5);
+    F.exact_edges = exact && (F.den == 0 || frexp(F.den, &e2x) == 0.5 || frexp(F.den, &e2x) == -0.5);
+    F.exact_den = F.exact_num = F.exact_edges;
 
     /* Sensitivities: of each edge value, of d.n (their sum: the sum of
      * theirs bounds it) and of num = det[A, B, C]. */
@@ -324,7 +333,7 @@ OracleFlat oracle_triangle(const Triangle *tri, const Ray *ray)
     for (int i = 0; i < 3; i++) {
         sign[i] = exp_sign(&s[i]);
         double si = dd_to_double(exp_to_dd(&s[i]));
-        doubt[i] = fabs(si) <= band * sens[i] && !F.exact;
+        doubt[i] = fabs(si) <= band * sens[i] && !F.exact_edges;
     }
     bool pos_any = false, neg_any = false;
     for (int i = 0; i < 3; i++) {

@@ -176,5 +176,9 @@ bool hard_check_mesh(const HardMesh *m, int ray, bool hit, double t);
 #define HARD_MESH_SHAPES 3
 void hard_mesh_make(uint64_t *state, int shape, double size, Vec3 offset, HardMesh *m);
 Ray  hard_mesh_ray(uint64_t *state, const HardMesh *m, bool vertex);
+/* The same, with the ray parameter at which it enters the mesh (to about
+ * 1e-15 relative): a method that lets the ray through there hits nothing at
+ * that t (it may still hit the far side). */
+Ray  hard_mesh_ray_at(uint64_t *state, const HardMesh *m, bool vertex, double *t_entry);
 
 #endif

@@ -360,6 +360,12 @@ void hard_mesh_make(uint64_t *s, int shape, double size, Vec3 offset, HardMesh *
 
 Ray hard_mesh_ray(uint64_t *s, const HardMesh *m, bool vertex)
 {
+    double t_entry;
+    return hard_mesh_ray_at(s, m, vertex, &t_entry);
+}
+
+Ray hard_mesh_ray_at(uint64_t *s, const HardMesh *m, bool vertex, double *t_entry)
+{
     const Triangle *tr = &m->tris[draw_int(s, 0, m->ntris - 1)];
     int e = draw_int(s, 0, 2);
     Vec3 P = e == 0 ? tr->a : e == 1 ? tr->b : tr->c;
@@ -372,7 +378,9 @@ Ray hard_mesh_ray(uint64_t *s, const HardMesh *m, bool vertex)
     Vec3 o = vec3_add(vec3_add(X, vec3_scale(out, draw_uni(s, 0.5, 3))),
                       vec3_scale(draw_perp(s, out), dist * draw_uni(s, 0, 0.3)));
     Vec3 d = vec3_sub(X, o);
-    Ray ray = { o, vec3_scale(d, draw_len(s) / vec3_length(d)) };
+    double len = draw_len(s), dist_x = vec3_length(d);
+    Ray ray = { o, vec3_scale(d, len / dist_x) };
+    *t_entry = dist_x / len;
     return ray;
 }
 
