@@ -34,6 +34,20 @@ check "results.json for a correct submission" grep -q '"score": 1[01][0-9]' "$ag
 check "every test passed" sh -c "! grep -q '\"status\": \"failed\"' '$ag/results/results.json'"
 check "hidden tests are after_published" grep -q '"visibility": "after_published"' "$ag/results/results.json"
 check "hard tests are tagged" grep -q '"hard"' "$ag/results/results.json"
+check "Parts 4 and 5 are not graded by default" sh -c "! grep -q '\"Part [45]: ' '$ag/results/results.json'"
+
+# With Parts 4 and 5 turned on in the bundle's weights.conf, they are graded
+# too, from the same upload.
+sed 's/^parts .*/parts 1 2 3a 3b 4 5/' "$ag/source/tests/weights.conf" >"$tmp/weights.conf"
+chmod u+w "$ag/source/tests/weights.conf" 2>/dev/null
+cp "$ag/source/tests/weights.conf" "$tmp/weights.default"
+cp "$tmp/weights.conf" "$ag/source/tests/weights.conf"
+rm -f "$ag/results/results.json"
+AUTOGRADER_ROOT="$ag" "$ag/run_autograder" >"$tmp/run45.log" 2>&1
+check "Parts 4 and 5 graded when turned on" \
+    sh -c "grep -q '\"Part 4: ' '$ag/results/results.json' && grep -q '\"Part 5: ' '$ag/results/results.json'"
+check "every test passed with Parts 4 and 5" sh -c "! grep -q '\"status\": \"failed\"' '$ag/results/results.json'"
+cp "$tmp/weights.default" "$ag/source/tests/weights.conf"
 
 # An empty submission: every part missing, score 0, still a valid file.
 rm -rf "$ag/submission"/* "$ag/results/results.json"
