@@ -11,6 +11,10 @@
  * (the hard_check rules of hard.h: above 1 fails).  "fails" counts answers
  * the rule rejects, hit/miss included.  Medians and worsts of Part 3a are
  * over the cases both the oracle and the method call an unambiguous hit.
+ * Parts 4 and 5 likewise (relative error of t in u, tolerance K u kappa),
+ * next to the form p.n - e.n for planes and to Moller-Trumbore (the
+ * skeleton's formula) for triangles; for closed meshes, the rays whose
+ * first hit is not where they enter (shared edges and vertices).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -43,6 +47,35 @@ static bool textbook_intersect(const Sphere *sp, const Ray *ray, double *t)
     double t1 = (-B - sqrt(disc)) / A, t2 = (-B + sqrt(disc)) / A;
     *t = t1 > 0 ? t1 : t2;
     return *t > 0;
+}
+
+/* Part 4 as t = (p.n - e.n) / (r.n), with the plane's constant first. */
+static bool textbook_plane(const Plane *pl, const Ray *ray, double *t)
+{
+    double rn = vec3_dot(ray->direction, pl->normal);
+    double tt = (vec3_dot(pl->point, pl->normal) - vec3_dot(ray->origin, pl->normal)) / rn;
+    if (!(tt > 0 && tt < INFINITY))
+        return false;
+    *t = tt;
+    return true;
+}
+
+/* Part 5 as the skeleton's comment writes it (Moller-Trumbore). */
+static bool textbook_triangle(const Triangle *tr, const Ray *ray, double *t)
+{
+    Vec3 e1 = vec3_sub(tr->b, tr->a), e2 = vec3_sub(tr->c, tr->a), s = vec3_sub(ray->origin, tr->a);
+    Vec3 q = vec3_cross(ray->direction, e2);
+    double det = vec3_dot(e1, q);
+    if (det == 0)
+        return false;
+    double beta = vec3_dot(s, q) / det;
+    Vec3 sx = vec3_cross(s, e1);
+    double gamma = vec3_dot(ray->direction, sx) / det;
+    double tt = vec3_dot(e2, sx) / det;
+    if (beta < 0 || gamma < 0 || beta + gamma > 1 || !(tt > 0 && tt < INFINITY))
+        return false;
+    *t = tt;
+    return true;
 }
 
 /* ---- statistics per family ------------------------------------------------ */
@@ -230,6 +263,111 @@ static void part3b(uint64_t seed, int per)
     free(c);
 }
 
+/* Parts 4 and 5 share the table's shape: hit count, ambiguous count, then
+ * the reference and the textbook. */
+static void flat_row(const char *family, int hits, int amb, Stat *ref, Stat *tb)
+{
+    printf("| %s | %d | %d |", family, hits, amb);
+    stat_print(ref);
+    stat_print(tb);
+    printf("\n");
+}
+
+static void flat_answer(Stat *s, const OracleFlat *o, bool ok, bool hit, double t)
+{
+    s->fails += !ok;
+    if (hit && o->hit && !o->ambiguous)
+        stat_add(s, rel_u(t, o->t), fabs(t - o->t) / o->tol);
+}
+
+static const char FLAT_HEADER[] =
+    "| family | hits | ambiguous | reference worst | median | worst/tol | fails | %s worst | median | worst/tol | fails |\n"
+    "|---|---|---|---|---|---|---|---|---|---|---|\n";
+
+static void part4(uint64_t seed, int per)
+{
+    int nf = HARD_PART4_FAMILIES, n = nf * per;
+    HardCase4 *c = malloc((size_t)n * sizeof *c);
+    hard_part4(seed, c, n);
+    Stat *ref = stats_new(nf, per), *tb = stats_new(nf, per);
+    int *hits = calloc((size_t)nf, sizeof *hits), *amb = calloc((size_t)nf, sizeof *amb);
+    for (int k = 0; k < n; k++) {
+        hits[k % nf] += c[k].expect.hit;
+        amb[k % nf] += c[k].expect.ambiguous;
+        for (int m = 0; m < 2; m++) {
+            double t = 0;
+            bool hit = (m ? textbook_plane : plane_intersect)(&c[k].plane, &c[k].ray, &t);
+            flat_answer(m ? &tb[k % nf] : &ref[k % nf], &c[k].expect, hard_check4(&c[k], hit, t), hit, t);
+        }
+    }
+    printf("\n### Part 4: plane_intersect (relative error of t, in u; tolerance %g u kappa)\n\n", ORACLE_K_T);
+    printf(FLAT_HEADER, "p.n - e.n");
+    for (int f = 0; f < nf; f++)
+        flat_row(c[f].family, hits[f], amb[f], &ref[f], &tb[f]);
+    free(hits);
+    free(amb);
+    stats_free(ref, nf);
+    stats_free(tb, nf);
+    free(c);
+}
+
+static void part5(uint64_t seed, int per)
+{
+    int nf = HARD_PART5_FAMILIES, n = nf * per;
+    HardCase5 *c = malloc((size_t)n * sizeof *c);
+    hard_part5(seed, c, n);
+    Stat *ref = stats_new(nf + HARD_MESH_FAMILIES, per + HARD_MESH_RAYS);
+    Stat *tb = stats_new(nf + HARD_MESH_FAMILIES, per + HARD_MESH_RAYS);
+    int *hits = calloc((size_t)nf, sizeof *hits), *amb = calloc((size_t)nf, sizeof *amb);
+    for (int k = 0; k < n; k++) {
+        hits[k % nf] += c[k].expect.hit;
+        amb[k % nf] += c[k].expect.ambiguous;
+        for (int m = 0; m < 2; m++) {
+            double t = 0;
+            bool hit = (m ? textbook_triangle : triangle_intersect)(&c[k].tri, &c[k].ray, &t);
+            flat_answer(m ? &tb[k % nf] : &ref[k % nf], &c[k].expect, hard_check5(&c[k], hit, t), hit, t);
+        }
+    }
+    printf("\n### Part 5: triangle_intersect (relative error of t, in u; tolerance %g u kappa)\n\n", ORACLE_K_T);
+    printf(FLAT_HEADER, "Moller-Trumbore");
+    for (int f = 0; f < nf; f++)
+        flat_row(c[f].family, hits[f], amb[f], &ref[f], &tb[f]);
+
+    /* Closed meshes: per rays of HARD_MESH_RAYS, the first hit over the
+     * mesh must be where the ray enters. */
+    int nm = (per + HARD_MESH_RAYS - 1) / HARD_MESH_RAYS * HARD_MESH_FAMILIES;
+    HardMesh *ms = malloc((size_t)nm * sizeof *ms);
+    hard_meshes(seed, ms, nm);
+    char name[HARD_MESH_FAMILIES][HARD_FAMILY_LEN];
+    for (int k = 0; k < nm; k++) {
+        int f = k % HARD_MESH_FAMILIES;
+        snprintf(name[f], sizeof name[f], "%s", ms[k].family);
+        for (int r = 0; r < HARD_MESH_RAYS; r++)
+            for (int m = 0; m < 2; m++) {
+                bool any = false;
+                double best = INFINITY;
+                for (int i = 0; i < ms[k].ntris; i++) {
+                    double t;
+                    if ((m ? textbook_triangle : triangle_intersect)(&ms[k].tris[i], &ms[k].rays[r], &t)
+                        && t < best) {
+                        best = t;
+                        any = true;
+                    }
+                }
+                flat_answer(m ? &tb[nf + f] : &ref[nf + f], &ms[k].expect[r],
+                            hard_check_mesh(&ms[k], r, any, best), any, best);
+            }
+    }
+    for (int f = 0; f < HARD_MESH_FAMILIES; f++)
+        flat_row(name[f], nm / HARD_MESH_FAMILIES * HARD_MESH_RAYS, 0, &ref[nf + f], &tb[nf + f]);
+    free(ms);
+    free(hits);
+    free(amb);
+    stats_free(ref, nf + HARD_MESH_FAMILIES);
+    stats_free(tb, nf + HARD_MESH_FAMILIES);
+    free(c);
+}
+
 int main(int argc, char **argv)
 {
     int per = argc > 1 ? atoi(argv[1]) : 2000;
@@ -244,5 +382,7 @@ int main(int argc, char **argv)
     part2(seed, per);
     part3a(seed, per);
     part3b(seed, per);
+    part4(seed, per);
+    part5(seed, per);
     return 0;
 }
