@@ -34,7 +34,8 @@ HAVE_SOLUTIONS := $(wildcard solutions/part1_image_plane.c)
 
 # ---- the framework students use (labs/kit) ---------------------------------
 KIT_SRC    = labs/kit/image.c labs/kit/png.c labs/kit/zlib.c labs/kit/scene.c labs/kit/render.c \
-             labs/kit/numtext.c labs/kit/savefile.c
+             labs/kit/numtext.c labs/kit/savefile.c labs/kit/textfile.c labs/kit/obj.c \
+             labs/kit/closest.c
 KIT_HDR    = $(wildcard labs/*.h labs/kit/*.h)
 KIT_OBJ    = $(KIT_SRC:labs/kit/%.c=$(BUILD)/kit/%.o)
 KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
@@ -97,7 +98,8 @@ endif
 $(BUILD)/kit/lto/%.o: labs/kit/%.c $(KIT_HDR)
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) -c $< -o $@
-RENDER_OBJ = $(BUILD)/kit/lto/render_main.o $(BUILD)/kit/lto/render.o $(BUILD)/kit/lto/image.o
+RENDER_OBJ = $(BUILD)/kit/lto/render_main.o $(BUILD)/kit/lto/render.o $(BUILD)/kit/lto/image.o \
+             $(BUILD)/kit/lto/closest.o
 $(BUILD)/sub/%/render: $(RENDER_OBJ) \
                        $$(addprefix $(BUILD)/sub/$$*/lto/,$$(addsuffix .o,$$(STAGES))) $(BUILD)/kit/libkit.a
 	$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) $^ -o $@ $(LDLIBS)

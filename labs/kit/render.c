@@ -10,6 +10,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include "render.h"
+#include "closest.h"
 
 #include <pthread.h>
 #include <stdarg.h>
@@ -24,6 +25,17 @@
 #define RENDER_RUN           16     /* pixels whose rays are made before their colours */
 #define RENDER_PROGRESS_AFTER 1.0   /* seconds before the progress line appears */
 #define RENDER_PROGRESS_EVERY 0.25  /* seconds between its updates */
+
+/* The loop of render_rows inlines the stage files' functions (the renderer
+ * is built with link-time optimisation).  The compiler does so by itself
+ * for a function called from one place only; Parts 3a and 3b are also
+ * called from closest.c, for scenes with planes or triangles, so ask for it
+ * (gcc and clang; elsewhere the loop is merely slower). */
+#if defined(__GNUC__)
+#define RENDER_FLATTEN __attribute__((flatten))
+#else
+#define RENDER_FLATTEN
+#endif
 
 /* What the threads share: the inputs, and the counters of rows taken and drawn. */
 typedef struct {
@@ -80,7 +92,7 @@ static int render_cores(void)
  * them instead of waiting for each.  And a colour equal, bit for bit, to
  * the previous pixel's reuses its bytes: neighbouring pixels mostly see
  * the same sphere. */
-static void render_rows(const RenderJob *job, int j0, int j1)
+RENDER_FLATTEN static void render_rows(const RenderJob *job, int j0, int j1)
 {
     const Scene *scene = job->scene;
     const int nx = scene->nx, ny = scene->ny;
@@ -120,12 +132,16 @@ static void *render_worker(void *arg)
 {
     RenderJob *job = arg;
     const int ny = job->scene->ny;
+    const bool closest = job->scene->nplanes > 0 || job->scene->ntriangles > 0;
     for (;;) {
         int j0 = atomic_fetch_add(&job->next_row, job->rows_per_chunk);
         if (j0 >= ny)
             break;
         int j1 = ny - j0 < job->rows_per_chunk ? ny : j0 + job->rows_per_chunk;
-        render_rows(job, j0, j1);
+        if (closest)
+            closest_rows(job->scene, job->img, job->w, job->h, j0, j1);
+        else
+            render_rows(job, j0, j1);
         atomic_fetch_add(&job->rows_done, j1 - j0);
     }
     pthread_mutex_lock(&job->lock);

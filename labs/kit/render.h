@@ -5,6 +5,11 @@
  *     s = pixel_coordinates(i, j, nx, ny, w, h, d)       per pixel (Part 2)
  *     ray = camera_ray(scene->eye, s)                    per pixel (Part 3b)
  *     colour = ray_color(scene, &ray)                    per pixel (Part 3b)
+ *
+ * A scene with planes or triangles takes its colours from closest_color
+ * (closest.h) instead: the closest hit over spheres (Part 3a), planes
+ * (Part 4) and triangles (Part 5).  A scene of spheres alone never calls
+ * plane_intersect or triangle_intersect.
  */
 #ifndef KIT_RENDER_H
 #define KIT_RENDER_H

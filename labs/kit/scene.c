@@ -9,140 +9,41 @@
 #define _POSIX_C_SOURCE 200809L
 #include "scene.h"
 
-#include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "image.h"
-
-#define SCENE_MAX_LINE   4096                 /* characters, without the newline */
-#define SCENE_MAX_WORDS  8                    /* the most a line needs: sphere's */
-#define SCENE_MAX_BYTES  (64L * 1024 * 1024)  /* a larger file is not a scene    */
-
-/* What one line holds once split: its keyword and its numbers. */
-typedef struct {
-    const char *name;              /* the file's name, for messages */
-    int line;                      /* 1-based line number           */
-    char *words[SCENE_MAX_WORDS];  /* the first words of the line  */
-    int nwords;                    /* all of them, the keyword too  */
-} SceneLine;
+#include "obj.h"
+#include "textfile.h"
 
 /* The keywords that may appear once, and where they were first seen. */
 typedef struct {
     int image, fov, distance, background;    /* line numbers; 0 = not yet */
 } SceneSeen;
 
-/* Writes "name:line: message" (or "name: message" when line is 0) into err.
- * Never fails; a NULL err or errlen 0 writes nothing. */
-static void scene_error(char *err, size_t errlen, const char *name, int line,
-                        const char *fmt, ...) __attribute__((format(printf, 5, 6)));
-static void scene_error(char *err, size_t errlen, const char *name, int line,
-                        const char *fmt, ...)
-{
-    if (!err || errlen == 0)
-        return;
-    int used = line > 0 ? snprintf(err, errlen, "%s:%d: ", name, line)
-                        : snprintf(err, errlen, "%s: ", name);
-    if (used < 0 || (size_t)used >= errlen)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err + used, errlen - (size_t)used, fmt, ap);
-    va_end(ap);
-}
-
-/* Copies word into buf (SCENE_QUOTE_SIZE bytes) for a message: at most 40
- * characters, "..." after a cut, and '?' for any byte that is not printable
- * ASCII, so a binary file gives a readable message.  Returns buf. */
-#define SCENE_QUOTE_SIZE 44
-static const char *scene_quote(const char *word, char *buf)
-{
-    size_t n = 0;
-    for (; word[n] && n < SCENE_QUOTE_SIZE - 4; n++)
-        buf[n] = word[n] > ' ' && word[n] < 127 ? word[n] : '?';
-    strcpy(buf + n, word[n] ? "..." : "");
-    return buf;
-}
-
-/* True for the characters that separate words (a '\r' of a CRLF file too). */
-static int scene_is_space(char c)
-{
-    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
-}
-
-/* Splits buf (one line, NUL-terminated, modified in place) into words,
- * dropping everything from '#' on.  Stores the first SCENE_MAX_WORDS in
- * words and returns how many there are in all, so that a line with too
- * many is reported with its count. */
-static int scene_split(char *buf, char **words)
-{
-    char *hash = strchr(buf, '#');
-    if (hash)
-        *hash = '\0';
-    int n = 0;
-    char *p = buf;
-    for (;;) {
-        while (*p && scene_is_space(*p))
-            p++;
-        if (!*p)
-            return n;
-        if (n < SCENE_MAX_WORDS)
-            words[n] = p;
-        n++;
-        while (*p && !scene_is_space(*p))
-            p++;
-        if (*p)
-            *p++ = '\0';
-    }
-}
-
-/* Reads word k of the line (k >= 1) as a finite number into *value.
- * Returns 0, or -1 with a message when it is not a number, has trailing
- * characters, is NaN or infinite, or overflows. */
-static int scene_number(const SceneLine *ln, int k, double *value, char *err, size_t errlen)
-{
-    const char *word = ln->words[k];
-    char quoted[SCENE_QUOTE_SIZE], *end;
-    errno = 0;
-    double v = strtod(word, &end);
-    if (end == word || *end != '\0') {
-        scene_error(err, errlen, ln->name, ln->line, "%s: '%s' is not a number",
-                    ln->words[0], scene_quote(word, quoted));
-        return -1;
-    }
-    if (isnan(v)) {
-        scene_error(err, errlen, ln->name, ln->line, "%s: '%s' is not a number (NaN is refused)",
-                    ln->words[0], scene_quote(word, quoted));
-        return -1;
-    }
-    if (isinf(v)) {
-        scene_error(err, errlen, ln->name, ln->line, "%s: '%s' is %s (numbers must be finite)",
-                    ln->words[0], scene_quote(word, quoted),
-                    errno == ERANGE ? "out of range" : "infinite");
-        return -1;
-    }
-    *value = v;
-    return 0;
-}
+/* The growing arrays of a scene being read, and its file's directory (for
+ * the paths of meshes). */
+typedef struct {
+    int spheres, planes, triangles;          /* capacities */
+    const char *dir;                         /* "" for the current directory */
+} SceneBuild;
 
 /* Reads words 1 .. n of the line as numbers into values[0 .. n-1], after
  * checking the line has exactly n of them (usage lists their names).
  * Returns 0, or -1 with a message. */
-static int scene_numbers(const SceneLine *ln, int n, const char *usage, double *values,
+static int scene_numbers(const TextLine *ln, int n, const char *usage, double *values,
                          char *err, size_t errlen)
 {
     int got = ln->nwords - 1;
     if (got != n) {
-        scene_error(err, errlen, ln->name, ln->line, "%s needs %d number%s: %s, got %d",
-                    ln->words[0], n, n == 1 ? "" : "s", usage, got);
+        text_error(err, errlen, ln->name, ln->line, "%s needs %d number%s: %s, got %d",
+                   ln->words[0], n, n == 1 ? "" : "s", usage, got);
         return -1;
     }
     for (int k = 0; k < n; k++)
-        if (scene_number(ln, k + 1, &values[k], err, errlen) < 0)
+        if (text_number(ln, k + 1, &values[k], err, errlen) < 0)
             return -1;
     return 0;
 }
@@ -150,14 +51,14 @@ static int scene_numbers(const SceneLine *ln, int n, const char *usage, double *
 /* Checks that the three numbers at c, read from words first .. first + 2,
  * are a colour, each in [0, 1].  Returns 0, or -1 with a message naming the
  * first bad component. */
-static int scene_check_color(const SceneLine *ln, int first, const double *c,
+static int scene_check_color(const TextLine *ln, int first, const double *c,
                              char *err, size_t errlen)
 {
     static const char *const names[3] = { "r", "g", "b" };
     for (int k = 0; k < 3; k++) {
         if (!(c[k] >= 0 && c[k] <= 1)) {
-            scene_error(err, errlen, ln->name, ln->line, "%s colour %s must be in [0, 1], got %.40s",
-                        ln->words[0], names[k], ln->words[first + k]);
+            text_error(err, errlen, ln->name, ln->line, "%s colour %s must be in [0, 1], got %.40s",
+                       ln->words[0], names[k], ln->words[first + k]);
             return -1;
         }
     }
@@ -167,13 +68,13 @@ static int scene_check_color(const SceneLine *ln, int first, const double *c,
 /* Checks that a number read for the image size is a whole number of
  * pixels, 1 .. IMAGE_MAX_SIDE, and stores it in *side.
  * Returns 0, or -1 with a message quoting the word as written. */
-static int scene_check_side(const SceneLine *ln, int k, double value, const char *what,
+static int scene_check_side(const TextLine *ln, int k, double value, const char *what,
                             int *side, char *err, size_t errlen)
 {
     if (!(value >= 1 && value <= IMAGE_MAX_SIDE && value == floor(value))) {
-        scene_error(err, errlen, ln->name, ln->line,
-                    "image %s must be a whole number from 1 to %d, got %.40s",
-                    what, IMAGE_MAX_SIDE, ln->words[k]);
+        text_error(err, errlen, ln->name, ln->line,
+                   "image %s must be a whole number from 1 to %d, got %.40s",
+                   what, IMAGE_MAX_SIDE, ln->words[k]);
         return -1;
     }
     *side = (int)value;
@@ -182,52 +83,132 @@ static int scene_check_side(const SceneLine *ln, int k, double value, const char
 
 /* Records that keyword (first seen at *first, 0 if never) is on this line.
  * Returns 0, or -1 with a message when it was already given. */
-static int scene_once(const SceneLine *ln, int *first, char *err, size_t errlen)
+static int scene_once(const TextLine *ln, int *first, char *err, size_t errlen)
 {
     if (*first) {
-        scene_error(err, errlen, ln->name, ln->line, "%s given twice (first on line %d)",
-                    ln->words[0], *first);
+        text_error(err, errlen, ln->name, ln->line, "%s given twice (first on line %d)",
+                   ln->words[0], *first);
         return -1;
     }
     *first = ln->line;
     return 0;
 }
 
-/* Appends a sphere to scene->spheres, growing the array by doubling.
- * Returns 0, or -1 with a message when there are already SCENE_MAX_SPHERES
+/* Makes room for one more item in the array *items of *count items
+ * (capacity *capacity, elements of size bytes), at most max in all.
+ * Returns 0, or -1 with a message naming what when the limit is reached
  * or memory runs out (the array then still belongs to the scene). */
-static int scene_add_sphere(Scene *scene, int *capacity, const Sphere *sphere,
-                            const SceneLine *ln, char *err, size_t errlen)
+static int scene_grow(void **items, int *count, int *capacity, size_t size, int max,
+                      const char *what, const TextLine *ln, char *err, size_t errlen)
 {
-    if (scene->nspheres == SCENE_MAX_SPHERES) {
-        scene_error(err, errlen, ln->name, ln->line, "too many spheres: at most %d",
-                    SCENE_MAX_SPHERES);
+    if (*count == max) {
+        text_error(err, errlen, ln->name, ln->line, "too many %s: at most %d", what, max);
         return -1;
     }
-    if (scene->nspheres == *capacity) {
+    if (*count == *capacity) {
         int grown = *capacity ? 2 * *capacity : 16;
-        if (grown > SCENE_MAX_SPHERES)
-            grown = SCENE_MAX_SPHERES;
-        Sphere *more = realloc(scene->spheres, (size_t)grown * sizeof *more);
+        if (grown > max)
+            grown = max;
+        void *more = realloc(*items, (size_t)grown * size);
         if (!more) {
-            scene_error(err, errlen, ln->name, ln->line, "out of memory");
+            text_error(err, errlen, ln->name, ln->line, "out of memory");
             return -1;
         }
-        scene->spheres = more;
+        *items = more;
         *capacity = grown;
     }
-    scene->spheres[scene->nspheres++] = *sphere;
     return 0;
+}
+
+/* Appends a sphere to scene->spheres.  Returns 0, or -1 with a message. */
+static int scene_add_sphere(Scene *scene, SceneBuild *b, const Sphere *sphere,
+                            const TextLine *ln, char *err, size_t errlen)
+{
+    void *items = scene->spheres;
+    int status = scene_grow(&items, &scene->nspheres, &b->spheres, sizeof *scene->spheres,
+                            SCENE_MAX_SPHERES, "spheres", ln, err, errlen);
+    scene->spheres = items;
+    if (status == 0)
+        scene->spheres[scene->nspheres++] = *sphere;
+    return status;
+}
+
+static int scene_add_plane(Scene *scene, SceneBuild *b, const Plane *plane,
+                           const TextLine *ln, char *err, size_t errlen)
+{
+    void *items = scene->planes;
+    int status = scene_grow(&items, &scene->nplanes, &b->planes, sizeof *scene->planes,
+                            SCENE_MAX_PLANES, "planes", ln, err, errlen);
+    scene->planes = items;
+    if (status == 0)
+        scene->planes[scene->nplanes++] = *plane;
+    return status;
+}
+
+static int scene_add_triangle(Scene *scene, SceneBuild *b, const Triangle *tri,
+                              const TextLine *ln, char *err, size_t errlen)
+{
+    void *items = scene->triangles;
+    int status = scene_grow(&items, &scene->ntriangles, &b->triangles, sizeof *scene->triangles,
+                            SCENE_MAX_TRIANGLES, "triangles", ln, err, errlen);
+    scene->triangles = items;
+    if (status == 0)
+        scene->triangles[scene->ntriangles++] = *tri;
+    return status;
+}
+
+/* "mesh FILE s tx ty tz r g b": the OBJ file's triangles, read relative to
+ * the scene file's directory.  Returns 0, or -1 with a message naming the
+ * OBJ file and its line, then the scene's line that asked for it. */
+static int scene_mesh(Scene *scene, SceneBuild *b, const TextLine *ln, char *err, size_t errlen)
+{
+    double v[7];
+    int got = ln->nwords - 1;
+    if (got != 8) {
+        text_error(err, errlen, ln->name, ln->line,
+                   "mesh needs a file and 7 numbers: FILE s tx ty tz r g b, got %d word%s", got,
+                   got == 1 ? "" : "s");
+        return -1;
+    }
+    for (int k = 0; k < 7; k++)
+        if (text_number(ln, k + 2, &v[k], err, errlen) < 0)
+            return -1;
+    if (!(v[0] > 0)) {
+        text_error(err, errlen, ln->name, ln->line, "mesh scale s must be greater than 0, got %.40s",
+                   ln->words[2]);
+        return -1;
+    }
+    if (scene_check_color(ln, 6, v + 4, err, errlen) < 0)
+        return -1;
+    const char *file = ln->words[1];
+    size_t len = strlen(b->dir) + strlen(file) + 2;
+    char *path = malloc(len);
+    if (!path) {
+        text_error(err, errlen, ln->name, ln->line, "out of memory");
+        return -1;
+    }
+    if (file[0] == '/' || !b->dir[0])
+        snprintf(path, len, "%s", file);
+    else
+        snprintf(path, len, "%s/%s", b->dir, file);
+    char inner[512];
+    int status = obj_load(path, v[0], vec3(v[1], v[2], v[3]), vec3(v[4], v[5], v[6]),
+                          &scene->triangles, &scene->ntriangles, &b->triangles, SCENE_MAX_TRIANGLES,
+                          inner, sizeof inner);
+    if (status < 0 && err && errlen > 0)         /* the OBJ's file and line first */
+        snprintf(err, errlen, "%s (the mesh of %s:%d)", inner, ln->name, ln->line);
+    free(path);
+    return status;
 }
 
 /* Interprets one split, non-empty line into scene.
  * Returns 0, or -1 with a message. */
-static int scene_line(Scene *scene, SceneSeen *seen, int *capacity, const SceneLine *ln,
+static int scene_line(Scene *scene, SceneSeen *seen, SceneBuild *b, const TextLine *ln,
                       char *err, size_t errlen)
 {
     const char *key = ln->words[0];
-    char quoted[SCENE_QUOTE_SIZE];
-    double v[7];
+    char quoted[TEXT_QUOTE_SIZE];
+    double v[12];
 
     if (strcmp(key, "image") == 0) {
         if (scene_once(ln, &seen->image, err, errlen) < 0
@@ -240,9 +221,9 @@ static int scene_line(Scene *scene, SceneSeen *seen, int *capacity, const SceneL
             || scene_numbers(ln, 1, "degrees", v, err, errlen) < 0)
             return -1;
         if (!(v[0] > 0 && v[0] < 180)) {
-            scene_error(err, errlen, ln->name, ln->line,
-                        "fov must be between 0 and 180 degrees (both excluded), got %.40s",
-                        ln->words[1]);
+            text_error(err, errlen, ln->name, ln->line,
+                       "fov must be between 0 and 180 degrees (both excluded), got %.40s",
+                       ln->words[1]);
             return -1;
         }
         scene->fov_degrees = v[0];
@@ -251,8 +232,8 @@ static int scene_line(Scene *scene, SceneSeen *seen, int *capacity, const SceneL
             || scene_numbers(ln, 1, "d", v, err, errlen) < 0)
             return -1;
         if (!(v[0] > 0)) {
-            scene_error(err, errlen, ln->name, ln->line,
-                        "distance d must be greater than 0, got %.40s", ln->words[1]);
+            text_error(err, errlen, ln->name, ln->line,
+                       "distance d must be greater than 0, got %.40s", ln->words[1]);
             return -1;
         }
         scene->d = v[0];
@@ -266,22 +247,65 @@ static int scene_line(Scene *scene, SceneSeen *seen, int *capacity, const SceneL
         if (scene_numbers(ln, 7, "cx cy cz R r g b", v, err, errlen) < 0)
             return -1;
         if (!(v[3] > 0)) {
-            scene_error(err, errlen, ln->name, ln->line,
-                        "sphere radius R must be greater than 0, got %.40s", ln->words[4]);
+            text_error(err, errlen, ln->name, ln->line,
+                       "sphere radius R must be greater than 0, got %.40s", ln->words[4]);
             return -1;
         }
         if (scene_check_color(ln, 5, v + 4, err, errlen) < 0)
             return -1;
         Sphere sphere = { vec3(v[0], v[1], v[2]), v[3], vec3(v[4], v[5], v[6]) };
-        if (scene_add_sphere(scene, capacity, &sphere, ln, err, errlen) < 0)
+        if (scene_add_sphere(scene, b, &sphere, ln, err, errlen) < 0)
+            return -1;
+    } else if (strcmp(key, "plane") == 0) {
+        if (scene_numbers(ln, 9, "px py pz nx ny nz r g b", v, err, errlen) < 0
+            || scene_check_color(ln, 7, v + 6, err, errlen) < 0)
+            return -1;
+        if (v[3] == 0 && v[4] == 0 && v[5] == 0) {
+            text_error(err, errlen, ln->name, ln->line, "plane normal must not be zero");
+            return -1;
+        }
+        Plane plane = { vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]), vec3(v[6], v[7], v[8]) };
+        if (scene_add_plane(scene, b, &plane, ln, err, errlen) < 0)
+            return -1;
+    } else if (strcmp(key, "triangle") == 0) {
+        if (scene_numbers(ln, 12, "ax ay az bx by bz cx cy cz r g b", v, err, errlen) < 0
+            || scene_check_color(ln, 10, v + 9, err, errlen) < 0)
+            return -1;
+        Triangle tri = { vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]), vec3(v[6], v[7], v[8]),
+                         vec3(v[9], v[10], v[11]) };
+        Vec3 n = vec3_cross(vec3_sub(tri.b, tri.a), vec3_sub(tri.c, tri.a));
+        if (n.x == 0 && n.y == 0 && n.z == 0) {
+            text_error(err, errlen, ln->name, ln->line,
+                       "triangle has no area (two vertices are equal, or all three on a line)");
+            return -1;
+        }
+        if (scene_add_triangle(scene, b, &tri, ln, err, errlen) < 0)
+            return -1;
+    } else if (strcmp(key, "mesh") == 0) {
+        if (scene_mesh(scene, b, ln, err, errlen) < 0)
             return -1;
     } else {
-        scene_error(err, errlen, ln->name, ln->line,
-                    "unknown keyword '%s' (expected image, fov, distance, background or sphere)",
-                    scene_quote(key, quoted));
+        text_error(err, errlen, ln->name, ln->line,
+                   "unknown keyword '%s' (expected image, fov, distance, background, sphere, "
+                   "plane, triangle or mesh)", text_quote(key, quoted));
         return -1;
     }
     return 0;
+}
+
+/* The directory part of path ("" when it has none), in a fresh string. */
+static char *scene_dir(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    size_t n = slash ? (size_t)(slash - path) : 0;
+    if (slash && n == 0)
+        n = 1;                                    /* "/x.scene": the root */
+    char *dir = malloc(n + 1);
+    if (dir) {
+        memcpy(dir, path, n);
+        dir[n] = '\0';
+    }
+    return dir;
 }
 
 /* Parses text into scene (see scene.h).  Returns 0, or -1 with a message;
@@ -299,95 +323,39 @@ int scene_parse(Scene *scene, const char *text, const char *name, char *err, siz
         name = "(scene)";
 
     SceneSeen seen = { 0, 0, 0, 0 };
-    int capacity = 0;
-    char buf[SCENE_MAX_LINE + 1];
-    SceneLine ln;
+    SceneBuild b = { 0, 0, 0, NULL };
+    char *dir = scene_dir(name);
+    if (!dir) {
+        text_error(err, errlen, name, 0, "out of memory");
+        return -1;
+    }
+    b.dir = dir;
+    char buf[TEXT_MAX_LINE + 1];
+    TextLine ln;
     ln.name = name;
     ln.line = 0;
     const char *p = text ? text : "";
-    while (*p) {
-        ln.line++;
-        size_t len = strcspn(p, "\n");
-        if (len > SCENE_MAX_LINE) {
-            scene_error(err, errlen, name, ln.line, "line is longer than %d characters",
-                        SCENE_MAX_LINE);
+    int got;
+    while ((got = text_next_line(&p, buf, &ln, err, errlen)) > 0)
+        if (ln.nwords > 0 && scene_line(scene, &seen, &b, &ln, err, errlen) < 0)
             goto fail;
-        }
-        memcpy(buf, p, len);
-        buf[len] = '\0';
-        p += len;
-        if (*p == '\n')
-            p++;
-        ln.nwords = scene_split(buf, ln.words);
-        if (ln.nwords > 0 && scene_line(scene, &seen, &capacity, &ln, err, errlen) < 0)
-            goto fail;
-    }
+    if (got < 0)
+        goto fail;
     if (!seen.image) {
-        scene_error(err, errlen, name, 0, "no image line: 'image nx ny' is required");
+        text_error(err, errlen, name, 0, "no image line: 'image nx ny' is required");
         goto fail;
     }
     if (!seen.fov) {
-        scene_error(err, errlen, name, 0, "no fov line: 'fov degrees' is required");
+        text_error(err, errlen, name, 0, "no fov line: 'fov degrees' is required");
         goto fail;
     }
+    free(dir);
     return 0;
 
 fail:
+    free(dir);
     scene_free(scene);
     return -1;
-}
-
-/* Reads the whole of f into a fresh NUL-terminated buffer stored in *text.
- * Returns 0, or -1 with a message (read error, file too large, NUL byte,
- * out of memory); *text is then NULL. */
-static int scene_read_all(FILE *f, const char *path, char **text, char *err, size_t errlen)
-{
-    size_t size = 0, capacity = 4096;
-    char *buf = malloc(capacity);
-    *text = NULL;
-    if (!buf) {
-        scene_error(err, errlen, path, 0, "out of memory");
-        return -1;
-    }
-    for (;;) {
-        if (size + 1 == capacity) {
-            if (capacity >= (size_t)SCENE_MAX_BYTES) {
-                scene_error(err, errlen, path, 0, "larger than %ld MiB: not a scene file",
-                            SCENE_MAX_BYTES / (1024 * 1024));
-                free(buf);
-                return -1;
-            }
-            char *more = realloc(buf, 2 * capacity);
-            if (!more) {
-                scene_error(err, errlen, path, 0, "out of memory");
-                free(buf);
-                return -1;
-            }
-            buf = more;
-            capacity *= 2;
-        }
-        size_t got = fread(buf + size, 1, capacity - 1 - size, f);
-        size += got;
-        if (got == 0)
-            break;
-    }
-    if (ferror(f)) {
-        scene_error(err, errlen, path, 0, "%s", strerror(errno ? errno : EIO));
-        free(buf);
-        return -1;
-    }
-    buf[size] = '\0';
-    const char *nul = memchr(buf, '\0', size);
-    if (nul) {
-        int line = 1;
-        for (const char *q = buf; q < nul; q++)
-            line += *q == '\n';
-        scene_error(err, errlen, path, line, "contains a NUL byte: not a text file");
-        free(buf);
-        return -1;
-    }
-    *text = buf;
-    return 0;
 }
 
 /* Loads the scene file at path (see scene.h).  Returns 0, or -1 with a
@@ -397,32 +365,23 @@ int scene_load(Scene *scene, const char *path, char *err, size_t errlen)
 {
     Scene empty = { 0 };
     *scene = empty;
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        scene_error(err, errlen, path, 0, "%s", strerror(errno));
-        return -1;
-    }
-    struct stat st;
-    if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
-        scene_error(err, errlen, path, 0, "%s", strerror(EISDIR));
-        fclose(f);
-        return -1;
-    }
-    errno = 0;
     char *text;
-    int status = scene_read_all(f, path, &text, err, errlen);
-    fclose(f);
-    if (status < 0)
+    if (text_read_file(path, &text, err, errlen) < 0)
         return -1;
-    status = scene_parse(scene, text, path, err, errlen);
+    int status = scene_parse(scene, text, path, err, errlen);
     free(text);
     return status;
 }
 
-/* Frees the spheres and leaves an empty scene; safe to call twice. */
+/* Frees the spheres, planes and triangles and leaves an empty scene; safe
+ * to call twice. */
 void scene_free(Scene *scene)
 {
     free(scene->spheres);
+    free(scene->planes);
+    free(scene->triangles);
     scene->spheres = NULL;
-    scene->nspheres = 0;
+    scene->planes = NULL;
+    scene->triangles = NULL;
+    scene->nspheres = scene->nplanes = scene->ntriangles = 0;
 }

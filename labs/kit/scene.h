@@ -8,9 +8,19 @@
  *     distance    d                eye to image plane, d > 0    (default 1)
  *     background  r g b            colour in [0, 1]             (default 0 0 0)
  *     sphere      cx cy cz R r g b centre, radius R > 0, colour in [0, 1]
+ *     plane       px py pz nx ny nz r g b
+ *                                  a point, a normal (not zero), colour
+ *     triangle    ax ay az bx by bz cx cy cz r g b
+ *                                  three vertices (not on one line), colour
+ *     mesh        FILE s tx ty tz r g b
+ *                                  the triangles of a Wavefront OBJ file
+ *                                  (obj.h), its path relative to the scene
+ *                                  file's directory, each vertex moved to
+ *                                  s v + t (s > 0), all in one colour
  *
- * image and fov are required; each keyword but sphere appears at most once.
- * Numbers are decimal (or C hex floats); NaN and infinity are refused.
+ * image and fov are required; image, fov, distance and background appear at
+ * most once.  Numbers are decimal (or C hex floats); NaN and infinity are
+ * refused.
  */
 #ifndef KIT_SCENE_H
 #define KIT_SCENE_H
@@ -18,14 +28,17 @@
 #include <stddef.h>
 #include "../raytracer.h"
 
-#define SCENE_MAX_SPHERES 100000
+#define SCENE_MAX_SPHERES   100000
+#define SCENE_MAX_PLANES    100000
+#define SCENE_MAX_TRIANGLES 1000000
 
 /* Loads path into scene (eye at the origin).  Returns 0, or -1 with a
  * message "path:line: reason" (or "path: reason") in err.  On failure the
  * scene holds nothing that needs freeing. */
 int scene_load(Scene *scene, const char *path, char *err, size_t errlen);
 
-/* The same, from a string already in memory; name is used in messages. */
+/* The same, from a string already in memory; name is used in messages and
+ * its directory for the paths of meshes. */
 int scene_parse(Scene *scene, const char *text, const char *name, char *err, size_t errlen);
 
 void scene_free(Scene *scene);

@@ -1,0 +1,43 @@
+/*
+ * closest.c - see closest.h.
+ */
+#include "closest.h"
+
+Vec3 closest_color(const Scene *scene, const Ray *ray)
+{
+    Vec3 color = scene->background;
+    double tmin = INFINITY;             /* the closest hit so far */
+    double t;
+    for (int k = 0; k < scene->nspheres; k++)
+        if (sphere_intersect(&scene->spheres[k], ray, &t) && t < tmin) {
+            tmin = t;
+            color = scene->spheres[k].color;
+        }
+    for (int k = 0; k < scene->nplanes; k++)
+        if (plane_intersect(&scene->planes[k], ray, &t) && t < tmin) {
+            tmin = t;
+            color = scene->planes[k].color;
+        }
+    for (int k = 0; k < scene->ntriangles; k++)
+        if (triangle_intersect(&scene->triangles[k], ray, &t) && t < tmin) {
+            tmin = t;
+            color = scene->triangles[k].color;
+        }
+    return color;
+}
+
+void closest_rows(const Scene *scene, Image *img, double w, double h, int j0, int j1)
+{
+    const int nx = scene->nx, ny = scene->ny;
+    for (int j = j0; j < j1; j++) {
+        unsigned char *px = img->rgb + (size_t)3 * nx * (size_t)j;
+        for (int i = 0; i < nx; i++) {
+            Ray ray = camera_ray(scene->eye, pixel_coordinates(i, j, nx, ny, w, h, scene->d));
+            Vec3 color = closest_color(scene, &ray);
+            px[0] = image_channel(color.x);
+            px[1] = image_channel(color.y);
+            px[2] = image_channel(color.z);
+            px += 3;
+        }
+    }
+}

@@ -1,0 +1,58 @@
+/*
+ * textfile.h - the line-by-line reading shared by the scene reader
+ * (scene.c) and the OBJ reader (obj.c): a whole file into memory, a line
+ * split into words, a word read as a finite number, and messages that name
+ * the file and the line.
+ */
+#ifndef KIT_TEXTFILE_H
+#define KIT_TEXTFILE_H
+
+#include <stddef.h>
+
+#define TEXT_MAX_LINE   4096                  /* characters, without the newline */
+#define TEXT_MAX_BYTES  (64L * 1024 * 1024)   /* a larger file is not a text file we read */
+#define TEXT_MAX_WORDS  16                    /* words kept of a line (all are counted) */
+#define TEXT_QUOTE_SIZE 44                    /* a word quoted in a message, with its NUL */
+
+/* One line, once split: its words and where it came from. */
+typedef struct {
+    const char *name;              /* the file's name, for messages */
+    int line;                      /* 1-based line number           */
+    char *words[TEXT_MAX_WORDS];   /* the first words of the line  */
+    int nwords;                    /* all of them, the keyword too  */
+} TextLine;
+
+/* Writes "name:line: message" (or "name: message" when line is 0) into err.
+ * Never fails; a NULL err or errlen 0 writes nothing. */
+void text_error(char *err, size_t errlen, const char *name, int line, const char *fmt, ...)
+    __attribute__((format(printf, 5, 6)));
+
+/* Copies word into buf (TEXT_QUOTE_SIZE bytes) for a message: at most 40
+ * characters, "..." after a cut, '?' for a byte that is not printable
+ * ASCII.  Returns buf. */
+const char *text_quote(const char *word, char *buf);
+
+/* Splits buf (one line, NUL-terminated, modified in place) into words,
+ * dropping everything from '#' on; stores the first TEXT_MAX_WORDS in
+ * words.  Returns how many words there are in all. */
+int text_split(char *buf, char **words);
+
+/* Reads word k (k >= 1) of the line as a finite number into *value.
+ * Returns 0, or -1 with a message "name:line: KEYWORD: 'word' is ..." when
+ * it is not a number, has trailing characters, is NaN or infinite, or
+ * overflows. */
+int text_number(const TextLine *ln, int k, double *value, char *err, size_t errlen);
+
+/* Reads the whole file at path into a fresh NUL-terminated buffer *text.
+ * Returns 0, or -1 with "path: reason" or "path:line: reason" in err (it
+ * cannot be opened, is a directory, is larger than TEXT_MAX_BYTES, holds a
+ * NUL byte, or memory runs out); *text is then NULL. */
+int text_read_file(const char *path, char **text, char *err, size_t errlen);
+
+/* Walks text line by line: *pos is where the next line starts (set it to
+ * text first).  Copies the line, cut at '#' and split, into buf (at least
+ * TEXT_MAX_LINE + 1 bytes) and ln.  Returns 1 for a line, 0 at the end, -1
+ * with a message for a line longer than TEXT_MAX_LINE. */
+int text_next_line(const char **pos, char *buf, TextLine *ln, char *err, size_t errlen);
+
+#endif
