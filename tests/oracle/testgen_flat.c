@@ -329,7 +329,7 @@ void tg_hard_flat(TestList *l, uint64_t seed, int first_round, int rounds, bool 
     HardMesh *m = calloc((size_t)nm, sizeof *m);
     hard_meshes(seed, m, nm);
     for (int k = first_round * HARD_MESH_FAMILIES; k < nm; k++) {
-        char family[HARD_FAMILY_LEN + 16];
+        char family[HARD_FAMILY_LEN + 32];
         snprintf(family, sizeof family, "%s (%s)", m[k].family,
                  m[k].ntris == 12 ? "a cube" : m[k].ntris == 8 ? "an octahedron" : "an icosahedron");
         Test *t = hard_test(l, PART5, KIND_MESH, family, hidden);

@@ -4,6 +4,7 @@
 #   function bodies the stage files are identical;
 # - the committed public tests match what the oracle writes now;
 # - README.md and tests/bench/README.md show the same benchmark table;
+# - labs/scenes/cracks.obj is what tests/tools/cracks-mesh.sh writes;
 # - labs/raytracer.h keeps the lab contract (when the contract probe is
 #   beside the kit).
 set -u
@@ -32,6 +33,13 @@ if [ -x out/build/bin/gentests ]; then
     for f in tests/public/*.tests; do
         check "$f is out of date: run make public-tests" cmp -s "$f" "$tmp/public/$(basename "$f")"
     done
+fi
+
+# The closed mesh of cracks.scene is what its generator writes.
+if [ -f tests/tools/cracks-mesh.sh ]; then
+    sh tests/tools/cracks-mesh.sh >"$tmp/cracks.obj"
+    check "labs/scenes/cracks.obj is out of date: run sh tests/tools/cracks-mesh.sh >labs/scenes/cracks.obj" \
+        cmp -s labs/scenes/cracks.obj "$tmp/cracks.obj"
 fi
 
 # The benchmark's latest table stands in README.md and tests/bench/README.md:

@@ -65,7 +65,7 @@ check "a Parts 1-3b submission keeps full marks by default (exit $status)" [ "$s
 
 # -- faulty and hostile submissions, graded as two classes -------------------
 # Those of Parts 1-3b with the default points (Parts 1-3b), those of the
-# optional parts (a file part4_* or part5_*) with Parts 4 and 5 alone.  Every
+# optional parts alone (files part4_* or part5_* only) with Parts 4 and 5.  Every
 # part is graded on its own, so the parts left out could only be the
 # reference's full marks.
 only45=$tmp/parts45.conf
@@ -74,7 +74,9 @@ mkdir "$tmp/subs" "$tmp/subs45"
 for dir in tests/selftest/*/; do
     name=$(basename "$dir")
     class=subs
-    ls "$dir" | grep -q '^part[45]_' && class=subs45
+    if ls "$dir" | grep -q '^part[45]_' && ! ls "$dir" | grep '^part' | grep -qv '^part[45]_'; then
+        class=subs45
+    fi
     sub="$tmp/$class/$name"
     mkdir "$sub"
     cp solutions/part*.c "$sub/"

@@ -266,6 +266,22 @@ bad_scenes() {
     check_bad_scene "$p" "$tmp/bad/missing.scene" missing.scene - "No such file or directory"
     mkdir -p "$tmp/bad/dir.scene"
     check_bad_scene "$p" "$tmp/bad/dir.scene" dir.scene - "directory"
+
+    # planes, triangles and meshes (Parts 4 and 5)
+    bad_scene "$p" plane-short 3 "plane needs 9 numbers" "$head" "$fov" "plane 0 -1 0 0 1 0 1 1"
+    bad_scene "$p" plane-zero-normal 3 "plane normal must not be zero" "$head" "$fov" "plane 0 -1 0 0 0 0 1 1 1"
+    bad_scene "$p" triangle-no-area 4 "triangle has no area" "$head" "$fov" "sphere 0 0 -5 1 1 0 0" \
+        "triangle 0 0 -4 1 1 -4 2 2 -4 1 1 1"
+    bad_scene "$p" mesh-scale 3 "mesh scale s must be greater than 0" "$head" "$fov" "mesh m.obj 0 0 0 0 1 1 1"
+    # the OBJ, read beside the scene: missing, then bad on its line 4; the
+    # message names the OBJ file (and line), then the scene's line
+    printf '%s\n' "$head" "$fov" "mesh no-such.obj 1 0 0 0 1 1 1" >"$tmp/bad/mesh-missing.scene"
+    check_bad_scene "$p" "$tmp/bad/mesh-missing.scene" no-such.obj - \
+        "No such file or directory (the mesh of $tmp/bad/mesh-missing.scene:3)"
+    printf 'v 0 0 -4\nv 1 0 -4\nv 0 1 -4\nf 1 2 7\n' >"$tmp/bad/broken.obj"
+    printf '%s\n' "$head" "$fov" "mesh broken.obj 1 0 0 0 1 1 1" >"$tmp/bad/mesh-broken.scene"
+    check_bad_scene "$p" "$tmp/bad/mesh-broken.scene" broken.obj 4 \
+        "f: vertex 7 does not exist (3 vertices so far; indices start at 1) (the mesh of $tmp/bad/mesh-broken.scene:3)"
 }
 bad_scenes "$RENDER"
 
@@ -328,17 +344,26 @@ fi
 
 # A correct submission written independently of solutions/
 # (tests/selftest/independent: the geometric method, the plain pixel
-# formula) renders, through `make compare` as a student runs it, the same
-# image as the reference on every shipped scene but far.scene, which is
-# there to show what a plain formula loses on a small, far sphere.
+# formula, a plane through its constant n.p) renders, through `make
+# compare` as a student runs it, the same image as the reference on every
+# shipped scene but two hard cases: far.scene, which is there to show what
+# a plain formula loses on a small, far sphere, and cracks.scene, which
+# shows the cracks of a triangle test that is not watertight (Moller-
+# Trumbore, tests/selftest/moller-trumbore, the skeleton's formula).
 if [ -d solutions ] && [ -d tests/selftest/independent ]; then
     for scene in labs/scenes/*.scene; do
         name=$(basename "$scene" .scene)
-        run ${MAKE:-make} --no-print-directory compare SUBMISSION=tests/selftest/independent SCENE="$scene"
+        sub=tests/selftest/independent
+        [ "$name" = cracks ] && sub=tests/selftest/moller-trumbore
+        run ${MAKE:-make} --no-print-directory compare SUBMISSION="$sub" SCENE="$scene"
         # make turns compare's exit 1 (the images differ) into 2
         if [ "$name" = far ]; then
             if grep -q "the images differ" "$tmp/stdout"; then pass; else
                 fail "the independent submission renders far.scene like the reference (exit $status): the scene no longer shows the far sphere's rounding"
+            fi
+        elif [ "$name" = cracks ]; then
+            if grep -q "the images differ" "$tmp/stdout"; then pass; else
+                fail "Moller-Trumbore renders cracks.scene like the watertight reference (exit $status): the scene no longer shows cracks"
             fi
         elif [ "$status" -eq 0 ] && grep -q "^identical" "$tmp/stdout"; then
             pass

@@ -220,6 +220,28 @@ static void test_threads_byte_identical(void)
     check_threads_agree("labs/scenes/inside.scene", 480, 360, 4);
     check_threads_agree("labs/scenes/wide.scene", 960, 300, 3);
     check_threads_agree("labs/scenes/flip.scene", 320, 320, 0);
+    check_threads_agree("labs/scenes/ground.scene", 320, 240, 3);
+}
+
+/* The colour a ray should get, written here apart from the kit: Part 3b's
+ * ray_color for spheres alone; otherwise the closest hit over spheres,
+ * planes and triangles, the first of equal t winning. */
+static Vec3 expected_color(const Scene *scene, const Ray *ray)
+{
+    if (scene->nplanes == 0 && scene->ntriangles == 0)
+        return ray_color(scene, ray);
+    double best = INFINITY, t;
+    Vec3 color = scene->background;
+    for (int k = 0; k < scene->nspheres; k++)
+        if (sphere_intersect(&scene->spheres[k], ray, &t) && t < best)
+            best = t, color = scene->spheres[k].color;
+    for (int k = 0; k < scene->nplanes; k++)
+        if (plane_intersect(&scene->planes[k], ray, &t) && t < best)
+            best = t, color = scene->planes[k].color;
+    for (int k = 0; k < scene->ntriangles; k++)
+        if (triangle_intersect(&scene->triangles[k], ray, &t) && t < best)
+            best = t, color = scene->triangles[k].color;
+    return color;
 }
 
 /* Renders a shipped scene at nx x ny and checks every pixel against the
@@ -239,7 +261,7 @@ static void check_plain_loop(const char *path, int nx, int ny)
         for (int j = 0; j < ny; j++) {
             for (int i = 0; i < nx; i++) {
                 Ray ray = camera_ray(scene.eye, pixel_coordinates(i, j, nx, ny, w, h, scene.d));
-                if (!pixel_is(&img, i, j, ray_color(&scene, &ray)) && wrong++ == 0) {
+                if (!pixel_is(&img, i, j, expected_color(&scene, &ray)) && wrong++ == 0) {
                     first_i = i;
                     first_j = j;
                 }
@@ -262,6 +284,76 @@ static void test_same_as_plain_loop(void)
     check_plain_loop("labs/scenes/inside.scene", 161, 120);
     check_plain_loop("labs/scenes/behind.scene", 161, 120);
     check_plain_loop("labs/scenes/flip.scene", 47, 53);
+    check_plain_loop("labs/scenes/ground.scene", 161, 120);
+    check_plain_loop("labs/scenes/cracks.scene", 320, 240);
+}
+
+static const Vec3 BLUE = { 0.1, 0.3, 0.9 };
+
+/* A ground plane y = -1, its normal up or down: every pixel below the
+ * horizon (centre y < 0, the image having an even number of rows) is the
+ * ground, every pixel above it the background. */
+static void test_ground_plane_halves(void)
+{
+    for (int side = 0; side < 2; side++) {
+        Plane ground = { { 0, -1, 0 }, { 0, side ? -2 : 1, 0 }, GREEN };
+        Scene scene = make_scene(40, 30, 60, BACKGROUND, NULL, 0);
+        scene.planes = &ground;
+        scene.nplanes = 1;
+        Image img;
+        if (render_with(&scene, 2, &img, NULL) < 0)
+            return;
+        CHECK_EQ_INT(count_color(&img, 0, 40, 0, 15, BACKGROUND), 40 * 15);
+        CHECK_EQ_INT(count_color(&img, 0, 40, 15, 30, GREEN), 40 * 15);
+        image_free(&img);
+    }
+}
+
+/* A triangle in the plane z = -1 whose right edge is the line x = 0 and
+ * whose other edges lie outside the view: it covers exactly the left half
+ * of an image with an even number of columns. */
+static void test_triangle_left_half(void)
+{
+    Triangle tri = { { -100, -50, -1 }, { 0, -50, -1 }, { 0, 150, -1 }, RED };
+    Scene scene = make_scene(40, 30, 60, BACKGROUND, NULL, 0);
+    scene.triangles = &tri;
+    scene.ntriangles = 1;
+    Image img;
+    if (render_with(&scene, 2, &img, NULL) < 0)
+        return;
+    CHECK_EQ_INT(count_color(&img, 0, 20, 0, 30, RED), 20 * 30);
+    CHECK_EQ_INT(count_color(&img, 20, 40, 0, 30, BACKGROUND), 20 * 30);
+    image_free(&img);
+}
+
+/* The closest hit across kinds: a wall z = -5, a triangle at z = -4 over
+ * the right half, a sphere of radius 1 at z = -3 in the middle.  The centre
+ * pixel sees the sphere, a pixel left of it the wall, right of it the
+ * triangle; moving the sphere behind the wall hides it. */
+static void test_closest_across_kinds(void)
+{
+    Sphere sphere = { { 0, 0, -3 }, 1, GREEN };
+    Plane wall = { { 0, 0, -5 }, { 0, 0, 1 }, RED };
+    Triangle tri = { { 0.5, -100, -4 }, { 100, -100, -4 }, { 0.5, 100, -4 }, BLUE };
+    Scene scene = make_scene(41, 31, 90, BACKGROUND, &sphere, 1);
+    scene.planes = &wall;
+    scene.nplanes = 1;
+    scene.triangles = &tri;
+    scene.ntriangles = 1;
+    Image img;
+    if (render_with(&scene, 2, &img, NULL) < 0)
+        return;
+    CHECK_PIXEL(&img, 20, 15, GREEN, "the sphere, in front of the triangle and the wall");
+    CHECK_PIXEL(&img, 2, 15, RED, "the wall, left of the sphere");
+    CHECK_PIXEL(&img, 38, 15, BLUE, "the triangle, right of the sphere, in front of the wall");
+    CHECK_EQ_INT(count_color(&img, 0, 41, 0, 31, BACKGROUND), 0);
+    image_free(&img);
+    sphere.center.z = -30;                        /* behind the wall now */
+    if (render_with(&scene, 1, &img, NULL) < 0)
+        return;
+    CHECK_EQ_INT(count_color(&img, 0, 41, 0, 31, GREEN), 0);
+    CHECK_PIXEL(&img, 20, 15, RED, "the wall, where the sphere was");
+    image_free(&img);
 }
 
 /* The statistics are positive and consistent. */
@@ -312,6 +404,9 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_tiny_images),
     CHECK_TEST(test_threads_byte_identical),
     CHECK_TEST(test_same_as_plain_loop),
+    CHECK_TEST(test_ground_plane_halves),
+    CHECK_TEST(test_triangle_left_half),
+    CHECK_TEST(test_closest_across_kinds),
     CHECK_TEST(test_stats),
     CHECK_TEST(test_wrong_image_size),
 };

@@ -3,6 +3,7 @@
 #include "check.h"            /* first: it sets the POSIX feature level */
 #include <dirent.h>
 #include <errno.h>
+#include <sys/stat.h>
 #include "../../labs/kit/scene.h"
 #include "../../labs/kit/image.h"
 
@@ -82,6 +83,25 @@ static const BadScene bad_scenes[] = {
     { "# only a comment\n\n", "t.scene: ", "no image line" },
     /* words that are not separated by white space */
     { "image 64 48 fov 60\n", "t.scene:1: ", "got 4" },
+    /* planes: counts, a zero normal, colours, NaN */
+    { GOOD_HEAD "plane 0 -1 0 0 1 0 1 1\n", "t.scene:3: ", "plane needs 9 numbers: px py pz nx ny nz r g b, got 8" },
+    { GOOD_HEAD "plane 0 -1 0 0 0 0 1 1 1\n", "t.scene:3: ", "plane normal must not be zero" },
+    { GOOD_HEAD "plane 0 -1 0 0 -0 0 1 1 1\n", "t.scene:3: ", "plane normal must not be zero" },
+    { GOOD_HEAD "plane 0 -1 0 0 1 0 1 1 2\n", "t.scene:3: ", "plane colour b must be in [0, 1], got 2" },
+    { GOOD_HEAD "plane 0 nan 0 0 1 0 1 1 1\n", "t.scene:3: ", "NaN" },
+    /* triangles: counts, no area, colours */
+    { GOOD_HEAD "triangle 0 0 -4 1 0 -4 0 1 -4 1 1\n", "t.scene:3: ", "triangle needs 12 numbers" },
+    { GOOD_HEAD "triangle 0 0 -4 0 0 -4 0 1 -4 1 1 1\n", "t.scene:3: ", "triangle has no area" },
+    { GOOD_HEAD "triangle 0 0 -4 1 1 -4 2 2 -4 1 1 1\n", "t.scene:3: ", "all three on a line" },
+    { GOOD_HEAD "triangle 0 0 -4 1 0 -4 0 1 -4 1 -1 1\n", "t.scene:3: ", "triangle colour g" },
+    { GOOD_HEAD "triangle 0 0 -4 1 0 -4 0 1 inf 1 1 1\n", "t.scene:3: ", "infinite" },
+    /* meshes: the line itself */
+    { GOOD_HEAD "mesh box.obj 1 0 0 0 1 1\n", "t.scene:3: ", "mesh needs a file and 7 numbers: FILE s tx ty tz r g b, got 7 words" },
+    { GOOD_HEAD "mesh box.obj 0 0 0 0 1 1 1\n", "t.scene:3: ", "mesh scale s must be greater than 0, got 0" },
+    { GOOD_HEAD "mesh box.obj -2 0 0 0 1 1 1\n", "t.scene:3: ", "mesh scale" },
+    { GOOD_HEAD "mesh box.obj 1 0 0 0 1 1 1.5\n", "t.scene:3: ", "mesh colour b" },
+    { GOOD_HEAD "mesh no-such-file.obj 1 0 0 0 1 1 1\n", "no-such-file.obj: ", "(the mesh of t.scene:3)" },
+    { GOOD_HEAD "cone 0 0 -5 1 1 1 1\n", "t.scene:3: ", "expected image, fov, distance, background, sphere, plane, triangle or mesh" },
 };
 
 /* Every bad scene above: -1, an empty scene, and a message that starts with
@@ -371,13 +391,154 @@ static void test_shipped_scenes_load(void)
             CHECK(scene.ny >= 1 && scene.ny <= IMAGE_MAX_SIDE);
             CHECK(scene.fov_degrees > 0 && scene.fov_degrees < 180);
             CHECK(scene.d > 0);
-            CHECK(scene.nspheres >= 1);
+            CHECK(scene.nspheres + scene.nplanes + scene.ntriangles >= 1);
             scene_free(&scene);
         }
         count++;
     }
     closedir(dir);
-    CHECK_MSG(count >= 6, "found %d scenes in labs/scenes, want at least 6", count);
+    CHECK_MSG(count >= 8, "found %d scenes in labs/scenes, want at least 8", count);
+}
+
+/* Planes and triangles hold the values written, in file order, after the
+ * spheres' own list. */
+static void test_plane_and_triangle_values(void)
+{
+    Scene scene;
+    char err[256];
+    const char *text = GOOD_HEAD
+        "plane 0 -1 0  0 2 0  0.5 0.25 1\n"
+        "sphere 0 0 -5 1 1 0 0\n"
+        "triangle -1 -1 -4  1 -1 -4  0 1 -4  0 1 0.5\n"
+        "plane 0x1p-3 0 -40  0 0 -1  1 1 1\n";
+    CHECK_EQ_INT(scene_parse(&scene, text, "t.scene", err, sizeof err), 0);
+    CHECK_EQ_INT(scene.nspheres, 1);
+    CHECK_EQ_INT(scene.nplanes, 2);
+    CHECK_EQ_INT(scene.ntriangles, 1);
+    if (scene.nplanes == 2 && scene.ntriangles == 1) {
+        CHECK_EQ_DOUBLE(scene.planes[0].point.y, -1);
+        CHECK_EQ_DOUBLE(scene.planes[0].normal.y, 2);
+        CHECK_EQ_DOUBLE(scene.planes[0].color.y, 0.25);
+        CHECK_EQ_DOUBLE(scene.planes[1].point.x, 0.125);
+        CHECK_EQ_DOUBLE(scene.planes[1].normal.z, -1);
+        CHECK_EQ_DOUBLE(scene.triangles[0].a.x, -1);
+        CHECK_EQ_DOUBLE(scene.triangles[0].b.x, 1);
+        CHECK_EQ_DOUBLE(scene.triangles[0].c.y, 1);
+        CHECK_EQ_DOUBLE(scene.triangles[0].color.z, 0.5);
+    }
+    scene_free(&scene);
+    scene_free(&scene);                         /* safe twice */
+    CHECK(scene.planes == NULL && scene.triangles == NULL && scene.nplanes == 0);
+}
+
+/* A file under dir, written whole; 0 or -1. */
+static int write_file(const char *dir, const char *name, const char *text)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return -1;
+    int ok = fputs(text, f) >= 0;
+    return (fclose(f) == 0 && ok) ? 0 : -1;
+}
+
+/* A mesh: read next to the scene, faces of 3 and 4 vertices (a fan),
+ * index forms i, i/t, i//n, i/t/n and negative ones, the statements that
+ * are ignored; every vertex moved once to s v + t, so triangles that share
+ * a vertex share its bits. */
+static void test_mesh_files(void)
+{
+    char dir[] = "/tmp/test_mesh_XXXXXX", path[512], err[512];
+    CHECK(mkdtemp(dir) != NULL);
+    snprintf(path, sizeof path, "%s/meshes", dir);
+    CHECK(mkdir(path, 0700) == 0);
+    CHECK(write_file(dir, "meshes/quad.obj",
+                     "# a unit square split in a fan, and a triangle\n"
+                     "o square\nmtllib none.mtl\nusemtl red\ns off\ng one\n"
+                     "v 0 0 0\nv 1 0 0\nv 1 1 0 1\nv 0 1 0\n"
+                     "vt 0 0\nvn 0 0 1\nvp 0.5\n"
+                     "f 1 2/1 3//1 4/1/1\n"
+                     "v 0.1 0.3 0.7\n"
+                     "f -1 -3 -5\n"
+                     "l 1 2\n") == 0);
+    CHECK(write_file(dir, "box.scene",
+                     "image 8 8\nfov 60\nmesh meshes/quad.obj 0.1 1 2 -3 0.5 0.5 0.5\n") == 0);
+    snprintf(path, sizeof path, "%s/box.scene", dir);
+    Scene scene;
+    int status = scene_load(&scene, path, err, sizeof err);
+    CHECK_MSG(status == 0, "%s", err);
+    CHECK_EQ_INT(scene.ntriangles, 3);
+    if (status == 0 && scene.ntriangles == 3) {
+        const Triangle *t = scene.triangles;
+        /* s v + t as a double expression, computed once per vertex */
+        Vec3 v1 = vec3_add(vec3_scale(vec3(1, 0, 0), 0.1), vec3(1, 2, -3));
+        Vec3 v3 = vec3_add(vec3_scale(vec3(1, 1, 0), 0.1), vec3(1, 2, -3));
+        CHECK_EQ_DOUBLE(t[0].b.x, v1.x);
+        CHECK_EQ_DOUBLE(t[0].c.y, v3.y);
+        /* the fan (1 2 3) (1 3 4): vertex 3 is shared, bit for bit */
+        CHECK(memcmp(&t[0].c, &t[1].b, sizeof t[0].c) == 0);
+        CHECK(memcmp(&t[0].a, &t[1].a, sizeof t[0].a) == 0);
+        CHECK_EQ_DOUBLE(t[1].c.x, 0 * 0.1 + 1);
+        CHECK_EQ_DOUBLE(t[1].c.y, 1 * 0.1 + 2);
+        /* -1 -3 -5 after 5 vertices: 5, 3, 1 */
+        CHECK_EQ_DOUBLE(t[2].a.z, 0.7 * 0.1 - 3);
+        CHECK(memcmp(&t[2].b, &t[0].c, sizeof t[2].b) == 0);
+        CHECK(memcmp(&t[2].c, &t[0].a, sizeof t[2].c) == 0);
+        CHECK_EQ_DOUBLE(t[2].color.x, 0.5);
+    }
+    scene_free(&scene);
+
+    /* From the scene's text with its path as the name: the same. */
+    const char *text = "image 8 8\nfov 60\nmesh meshes/quad.obj 1 0 0 0 1 1 1\n";
+    CHECK_EQ_INT(scene_parse(&scene, text, path, err, sizeof err), 0);
+    CHECK_EQ_INT(scene.ntriangles, 3);
+    scene_free(&scene);
+
+    snprintf(path, sizeof path, "rm -rf '%s'", dir);
+    CHECK(system(path) == 0);
+}
+
+/* Bad OBJ files: the OBJ's own file and line first, then the scene's. */
+static void test_mesh_errors(void)
+{
+    static const struct { const char *obj, *line, *word; } bad[] = {
+        { "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", ":4: ", "f: vertex 4 does not exist (3 vertices so far" },
+        { "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", ":4: ", "vertex 0 does not exist" },
+        { "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n", ":4: ", "vertex -4 does not exist" },
+        { "v 0 0 0\nv 1 0 0\nf 1 2\n", ":3: ", "f needs at least 3 vertices, got 2" },
+        { "v 0 0\n", ":1: ", "v needs 3 numbers: x y z, got 2" },
+        { "v 0 nan 0\n", ":1: ", "NaN" },
+        { "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n", ":4: ", "f: 'x' is not a vertex index" },
+        { "v 0 0 0\ncurv 0 1\n", ":2: ", "unknown statement 'curv'" },
+        { "v 0 0 0\nv 1 0 0\nv 0 1 0\n", ": ", "no faces" },
+        { "v 0 0 0\n\0 1 0\n", ":2: ", "NUL" },
+    };
+    char dir[] = "/tmp/test_mesh_XXXXXX", path[512], err[512], want[600];
+    CHECK(mkdtemp(dir) != NULL);
+    for (int k = 0; k < CHECK_COUNT(bad); k++) {
+        snprintf(path, sizeof path, "%s/bad.obj", dir);
+        FILE *f = fopen(path, "wb");
+        CHECK(f != NULL);
+        if (!f)
+            continue;
+        size_t len = strlen(bad[k].obj);
+        if (strstr(bad[k].word, "NUL"))
+            len = 14;                           /* the text holds a NUL: write it too */
+        fwrite(bad[k].obj, 1, len, f);
+        fclose(f);
+        Scene scene;
+        char scene_text[700];
+        snprintf(scene_text, sizeof scene_text, "image 8 8\nfov 60\n\nmesh %s 1 0 0 0 1 1 1\n", path);
+        CHECK_EQ_INT(scene_parse(&scene, scene_text, "m.scene", err, sizeof err), -1);
+        snprintf(want, sizeof want, "%s%s", path, bad[k].line);
+        CHECK_MSG(strncmp(err, want, strlen(want)) == 0, "obj %d: \"%s\" does not start with \"%s\"", k, err, want);
+        CHECK_MSG(strstr(err, bad[k].word) != NULL, "obj %d: \"%s\" does not say \"%s\"", k, err, bad[k].word);
+        CHECK_STR_CONTAINS(err, "(the mesh of m.scene:4)");
+        CHECK(scene.triangles == NULL && scene.ntriangles == 0);
+    }
+    snprintf(path, sizeof path, "rm -rf '%s'", dir);
+    CHECK(system(path) == 0);
 }
 
 /* The default scene holds what its file says. */
@@ -413,6 +574,9 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_load_files),
     CHECK_TEST(test_shipped_scenes_load),
     CHECK_TEST(test_default_scene_values),
+    CHECK_TEST(test_plane_and_triangle_values),
+    CHECK_TEST(test_mesh_files),
+    CHECK_TEST(test_mesh_errors),
 };
 
 int main(int argc, char **argv)
