@@ -11,9 +11,10 @@
 #                        rendered with `make render`, then compare's
 #                        side-by-side image: the mistake | the reference |
 #                        a heat map of their difference;
-#   hard-*.png           the same for the hard case (far.scene): the lecture's
-#                        textbook quadratic (tests/selftest/textbook), in
-#                        double and, made from it here, in float.
+#   hard-*.png           the same for the hard cases: far.scene with the
+#                        lecture's textbook quadratic (tests/selftest/textbook),
+#                        in double and, made from it here, in float; and
+#                        cracks.scene with Moller-Trumbore's triangle test.
 # Sizes are kept small so that each PNG stays a few kilobytes.  The output
 # depends only on the sources: rerunning changes no byte of an unchanged
 # figure.  Needs solutions/, out/build/sub/solutions/render and
@@ -80,6 +81,8 @@ reference wide    480x150
 reference behind  320x240
 reference inside  320x240
 reference far     256x256
+reference ground  320x240
+reference cracks  320x240      # its own size: the pixel rays run along its edges
 
 # ---- common mistakes, one faulty stage file each -------------------------
 mistake mistake-degrees-to-tan  p1-degrees-to-tan  flip    240x240   # Part 1
@@ -90,6 +93,9 @@ mistake mistake-hits-behind     p3a-hits-behind    behind  320x240   # Part 3a
 mistake mistake-inside-miss     p3a-inside-miss    inside  320x240
 mistake mistake-far-root        p3a-far-root       default 320x240
 mistake mistake-first-hit       p3b-first-hit      default 320x240   # Part 3b
+mistake mistake-plane-behind    p4-hits-behind     ground  320x240   # Part 4
+mistake mistake-plane-one-sided p4-one-sided       ground  320x240
+mistake mistake-triangle-no-sum p5-no-sum-check    cracks  320x240   # Part 5
 
 # ---- the hard case: a small sphere 10^7 radii away -----------------------
 # The textbook quadratic in double, at the scene's own size (as make compare).
@@ -101,3 +107,8 @@ sed 's/^\( *\)double /\1float /; s/sqrt(/sqrtf(/g' \
     tests/selftest/textbook/part3a_sphere_intersect.c \
     >"$work/hard-far-textbook-float/part3a_sphere_intersect.c"
 side_by_side hard-far-textbook-float far 256x256
+
+# ---- Part 5's hard case: a closed box whose edges lie along pixel rays -----
+# Moller-Trumbore in double (tests/selftest/moller-trumbore), the skeleton's
+# formula: rays slip through between triangles that share an edge.
+mistake hard-cracks-moller-trumbore moller-trumbore cracks 320x240
