@@ -77,21 +77,22 @@ bool triangle_intersect(const Triangle *tri, const Ray *ray, double *t)
     /* The edge values, U for the edge BC, V for CA, W for AB: for the edge
      * PQ, Q.x P.y - Q.y P.x.  When that difference is larger than 4 u times
      * the sum of its two products it has the sign of the exact value; when
-     * it is not, Kahan's difference of products recomputes it with fma,
-     * whose relative error is at most 2 u, so the sign is exact there too
-     * (and 0 exactly when the exact value is 0).  This holds while the
-     * products stay in double's normal range. */
-    const double X[3] = { Ax, Bx, Cx }, Y[3] = { Ay, By, Cy };
-    double E[3];
-    for (int k = 0; k < 3; k++) {
-        const int p = (k + 1) % 3, q = (k + 2) % 3;
-        const double qp = X[q] * Y[p], pq = Y[q] * X[p];
-        double e = qp - pq;
-        if (!(fabs(e) > 0x1p-51 * (fabs(qp) + fabs(pq))))
-            e = fma(X[q], Y[p], -pq) + fma(-Y[q], X[p], pq);
-        E[k] = e;
-    }
-    const double U = E[0], V = E[1], W = E[2];
+     * it is not (rarely: the ray passes within rounding of the edge),
+     * Kahan's difference of products recomputes it with fma, whose
+     * relative error is at most 2 u, so the sign is exact there too (and 0
+     * exactly when the exact value is 0).  This holds while the products
+     * stay in double's normal range. */
+    double U = Cx * By - Cy * Bx;
+    if (!(fabs(U) > 0x1p-51 * (fabs(Cx * By) + fabs(Cy * Bx))))
+        U = fma(Cx, By, -(Cy * Bx)) + fma(-Cy, Bx, Cy * Bx);
+    double V = Ax * Cy - Ay * Cx;
+    if (!(fabs(V) > 0x1p-51 * (fabs(Ax * Cy) + fabs(Ay * Cx))))
+        V = fma(Ax, Cy, -(Ay * Cx)) + fma(-Ay, Cx, Ay * Cx);
+    if ((U < 0 && V > 0) || (U > 0 && V < 0))   /* most misses end here */
+        return false;
+    double W = Bx * Ay - By * Ax;
+    if (!(fabs(W) > 0x1p-51 * (fabs(Bx * Ay) + fabs(By * Ax))))
+        W = fma(Bx, Ay, -(By * Ax)) + fma(-By, Ax, By * Ax);
     /* Inside (edges and vertices included) when the three signs agree,
      * from either side; NaN fails both tests. */
     if (!((U >= 0 && V >= 0 && W >= 0) || (U <= 0 && V <= 0 && W <= 0)))

@@ -16,6 +16,10 @@
  *   renders.c    the lab's scenes rendered at full HD, against exact renders
  *   svg.c        the plot, drawn directly as SVG (svg.h)
  *   report.c     results.csv, results_by_family.csv, renders.csv, report.md
+ *   tri_methods.c  Part 5: the ray/triangle formulations
+ *   triangles.c  Part 5: their speed, their error and their cracks, with
+ *                results_triangles.csv, plot_triangles.svg and a section
+ *                of report.md
  *   bench_main.c options, progress line, the order of the stages
  *
  * Everything the bench writes goes to one directory (out/bench by default).
@@ -26,6 +30,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include "raytracer.h"
 
 /* ---- float counterparts of the lab's types ------------------------------ */
@@ -162,6 +167,55 @@ extern const Method bench_methods[];
 extern const int bench_nmethods;
 int method_find(const char *name, Precision p);   /* index, or -1 */
 
+/* ---- tri_methods.c, triangles.c: Part 5 ------------------------------------- */
+typedef struct { Vec3f a, b, c; } Trianglef;
+
+bool tri_moller_trumbore_d(const Triangle *tri, const Ray *ray, double *t);
+bool tri_moller_trumbore_f(const Trianglef *tri, const Rayf *ray, float *t);
+bool tri_wbw_plain_d(const Triangle *tri, const Ray *ray, double *t);
+bool tri_geometric_d(const Triangle *tri, const Ray *ray, double *t);
+
+typedef struct {
+    const char *name;
+    Precision precision;
+    bool (*fn_d)(const Triangle *tri, const Ray *ray, double *t);     /* or */
+    bool (*fn_f)(const Trianglef *tri, const Rayf *ray, float *t);
+} TriMethod;
+
+#define TRI_MAX_METHODS 8
+extern const TriMethod tri_methods[];
+extern const int tri_nmethods;
+
+typedef struct {
+    long ambiguous;           /* cases either answer is right for          */
+    long wrong;               /* hit/miss not the oracle's, not ambiguous   */
+    long hits;                /* both hit, not ambiguous: t compared        */
+    long hard_failed;         /* the grader's rule (hard_check5)            */
+    double max_rel, median_rel, max_rel_ordinary, max_over_kappa;
+} TriErrors;
+
+typedef struct {
+    bool ran;
+    int tp_rays, tp_triangles;             /* the throughput workload         */
+    double mtests[TRI_MAX_METHODS];        /* million tests per second        */
+    int error_cases;
+    TriErrors err[TRI_MAX_METHODS];
+    long cracks[TRI_MAX_METHODS][4];       /* rays through: edges, vertices,
+                                              far edges, far vertices        */
+    long crack_rays_per_kind;
+} TriResults;
+
+/* Runs the three stages (scenes: the directory of cracks.scene).  Returns
+ * 0, or -1 with a reason in err. */
+int triangle_bench(const char *scenes, bool quick, uint64_t seed, TriResults *tr, char *err,
+                   size_t errlen);
+double tri_cracks_per_million(const TriResults *tr, int m);
+/* results_triangles.csv and plot_triangles.svg in dir; 0, or -1 with err. */
+int triangles_write(const TriResults *tr, const char *dir, const char *subtitle, char *err,
+                    size_t errlen);
+/* The section of report.md. */
+void triangles_md(FILE *f, const TriResults *tr);
+
 /* ---- measure.c: time, clock, ceiling ------------------------------------ */
 double now_seconds(void);                    /* CLOCK_MONOTONIC */
 double median(double *v, int n);             /* sorts v */
@@ -237,7 +291,8 @@ typedef struct {
 
 /* Renders the scene at path at nx x ny with every method, reps times
  * interleaved, and compares each with the exact render (oracle_closest).
- * Returns 0, or -1 with a reason in err. */
+ * Returns 0, 1 for a scene with planes or triangles (skipped: the methods
+ * are ray/sphere ones), or -1 with a reason in err. */
 int render_bench(const char *path, int nx, int ny, int reps, RenderResult *res,
                  char *err, size_t errlen);
 
@@ -275,6 +330,7 @@ typedef struct {
     Ceiling ceiling;
     RenderResult renders[BENCH_MAX_SCENES];
     int nrenders;
+    TriResults tri;                      /* Part 5 (triangles.c)              */
 } BenchResults;
 
 /* Writes results.csv, results_by_family.csv, renders.csv, report.md and

@@ -10,10 +10,13 @@
  *   2. the ceiling: clock and floating-point pipes, measured
  *   3. errors: every method against the exact answers, on the ordinary scene
  *      and on the hard families
- *   4. renders: each lab scene at full HD with every method, against an
- *      exact render
- *   5. the report: results.csv, results_by_family.csv, renders.csv,
- *      report.md, plot.svg in DIR (default out/bench)
+ *   4. renders: each lab scene of spheres at full HD with every method,
+ *      against an exact render
+ *   5. Part 5: the ray/triangle formulations' speed, errors and cracks
+ *      (triangles.c)
+ *   6. the report: results.csv, results_by_family.csv, renders.csv,
+ *      results_triangles.csv, report.md, plot.svg, plot_triangles.svg in
+ *      DIR (default out/bench)
  * --quick does the same with small sizes, in a few seconds (make test).
  * Exit status: 0, or 1 if something could not run (the reason on stderr).
  */
@@ -372,11 +375,12 @@ static int stage_renders(const Options *o, BenchResults *br, char *err, size_t e
     int status = 0;
     br->nrenders = 0;
     for (int s = 0; s < n; s++) {
-        if (status == 0 && render_bench(paths[s], o->width, o->height, br->render_reps,
-                                        &br->renders[br->nrenders], err, errlen) == 0)
+        int got = status == 0 ? render_bench(paths[s], o->width, o->height, br->render_reps,
+                                             &br->renders[br->nrenders], err, errlen) : -1;
+        if (got == 0)
             br->nrenders++;
-        else
-            status = -1;
+        else if (got < 0)
+            status = -1;                /* 1: a scene of planes or triangles, skipped */
         free(paths[s]);
     }
     return status;
@@ -451,6 +455,8 @@ int main(int argc, char **argv)
         status = stage_grader(&o, &br, err, sizeof err);
     if (status == 0)
         status = stage_renders(&o, &br, err, sizeof err);
+    if (status == 0)
+        status = triangle_bench(o.scenes, o.quick, o.seed, &br.tri, err, sizeof err);
     br.load_after = load_average();
     br.seconds_total = now_seconds() - start_time;
     if (status == 0) {

@@ -58,6 +58,10 @@ int render_bench(const char *path, int nx, int ny, int reps, RenderResult *res,
     Scene scene;
     if (scene_load(&scene, path, err, errlen) != 0)
         return -1;
+    if (scene.nplanes > 0 || scene.ntriangles > 0) {
+        scene_free(&scene);
+        return 1;
+    }
     if (bench_nmethods > (int)(sizeof res->seconds / sizeof res->seconds[0])) {
         snprintf(err, errlen, "render_bench: too many methods");
         scene_free(&scene);

@@ -580,6 +580,8 @@ static int write_md(const BenchResults *br, const char *dir, char *err, size_t e
     fprintf(f, "\n## The ceiling\n\n");
     md_ceiling(f, br);
 
+    triangles_md(f, &br->tri);
+
     fprintf(f, "\n## How it is measured\n\n");
     fprintf(f, "- Every method is timed in the same run: each round times every method once "
                "(about 5 ms each) in an order rotated by one every round, so drift in the clock "
@@ -605,5 +607,14 @@ int report_write(const BenchResults *br, const char *dir, char *err, size_t errl
         return -1;
     if (write_plot(br, dir, err, errlen) != 0)
         return -1;
+    if (br->tri.ran) {
+        char sub[400];
+        snprintf(sub, sizeof sub, "%s%s, one thread, -O2; throughput on cracks.scene (%d rays x %d "
+                                  "triangles); errors on %d hard cases", br->quick ? "QUICK RUN "
+                 "(small sizes): " : "", br->cpu, br->tri.tp_rays, br->tri.tp_triangles,
+                 br->tri.error_cases);
+        if (triangles_write(&br->tri, dir, sub, err, errlen) != 0)
+            return -1;
+    }
     return write_md(br, dir, err, errlen);
 }

@@ -88,5 +88,34 @@ if [ -s "$md" ]; then
         grep -q 'transliteration: agrees' "$md"
 fi
 
+# Part 5: results_triangles.csv and plot_triangles.svg.  Whatever the
+# timing: the watertight reference lets no ray through a closed mesh and
+# passes the grader's hard cases; Moller-Trumbore in double lets some
+# through (the meshes' rays do probe the shared edges); float fails hard
+# cases.
+tcsv=$dir/results_triangles.csv
+tsvg=$dir/plot_triangles.svg
+check "results_triangles.csv was written" test -s "$tcsv"
+check "plot_triangles.svg was written, an SVG document" \
+    sh -c "grep -q '<svg xmlns=' '$tsvg' && tail -n 1 '$tsvg' | grep -qx '</svg>'"
+col() {   # col METHOD PRECISION COLUMN: a cell of results_triangles.csv
+    awk -F, -v m="$1,$2" -v c="$3" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i }
+                                   $1 "," $2 == m { print $k }' "$tcsv"
+}
+if [ -s "$tcsv" ]; then
+    check "results_triangles.csv: a row per triangle method (at least 4)" \
+        test "$(tail -n +2 "$tcsv" | grep -c .)" -ge 4
+    check "the reference lets no ray through a closed mesh" [ "$(col reference double cracks_per_million)" = 0 ]
+    check "the reference passes Part 5's hard cases" [ "$(col reference double hard_failed)" = 0 ]
+    check "the reference gives no wrong hit/miss answer" [ "$(col reference double wrong_per_million)" = 0 ]
+    check "Moller-Trumbore in double lets rays through" \
+        awk -v x="$(col moller-trumbore double cracks_per_million)" 'BEGIN { exit !(x > 0) }'
+    check "Moller-Trumbore in float fails hard cases" \
+        awk -v x="$(col moller-trumbore float hard_failed)" 'BEGIN { exit !(x > 0) }'
+fi
+if [ -s "$md" ]; then
+    check "report.md has the heading '## Part 5: ray/triangle'" grep -qx '## Part 5: ray/triangle' "$md"
+fi
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
