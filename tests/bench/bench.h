@@ -192,6 +192,7 @@ typedef struct {
     long hits;                /* both hit, not ambiguous: t compared        */
     long hard_failed;         /* the grader's rule (hard_check5)            */
     double max_rel, median_rel, max_rel_ordinary, max_over_kappa;
+    double max_u_well;        /* max error in u where kappa <= 100         */
 } TriErrors;
 
 typedef struct {
