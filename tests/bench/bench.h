@@ -16,7 +16,8 @@
  *   renders.c    the lab's scenes rendered at full HD, against exact renders
  *   svg.c        the plot, drawn directly as SVG (svg.h)
  *   report.c     results.csv, results_by_family.csv, renders.csv, report.md
- *   tri_methods.c  Part 5: the ray/triangle formulations
+ *   tri_methods.c  Part 5: the ray/triangle formulations (Moller-Trumbore's
+ *                body in tri_methods_body.h, for double and float)
  *   triangles.c  Part 5: their speed, their error and their cracks, with
  *                results_triangles.csv, plot_triangles.svg and a section
  *                of report.md

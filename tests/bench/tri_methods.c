@@ -3,8 +3,8 @@
  * the benchmark (triangles.c), written here apart from solutions/:
  *
  *   moller-trumbore   the skeleton's formula (Moller and Trumbore 1997),
- *                     in double and in float: det = 0 a miss, beta and
- *                     gamma by one division each;
+ *                     in double and in float (tri_methods_body.h, written
+ *                     once for both): det = 0 a miss, one division;
  *   wbw-plain         Woop, Benthin and Wald's shear-and-project test
  *                     (JCGT 2013) in plain double, without the reference's
  *                     exact edge signs: two triangles that share an edge
@@ -21,27 +21,6 @@
  */
 #include <math.h>
 #include "bench.h"
-
-bool tri_moller_trumbore_d(const Triangle *tri, const Ray *ray, double *t)
-{
-    Vec3 e1 = vec3_sub(tri->b, tri->a), e2 = vec3_sub(tri->c, tri->a);
-    Vec3 s = vec3_sub(ray->origin, tri->a), q = vec3_cross(ray->direction, e2);
-    double det = vec3_dot(e1, q);
-    if (det == 0)
-        return false;
-    double inv = 1 / det, beta = vec3_dot(s, q) * inv;
-    if (beta < 0 || beta > 1)
-        return false;
-    Vec3 sx = vec3_cross(s, e1);
-    double gamma = vec3_dot(ray->direction, sx) * inv;
-    if (gamma < 0 || beta + gamma > 1)
-        return false;
-    double tt = vec3_dot(e2, sx) * inv;
-    if (!(tt > 0 && tt < INFINITY))
-        return false;
-    *t = tt;
-    return true;
-}
 
 static Vec3f sub_f(Vec3f a, Vec3f b)
 {
@@ -60,26 +39,41 @@ static float dot_f(Vec3f a, Vec3f b)
     return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
-bool tri_moller_trumbore_f(const Trianglef *tri, const Rayf *ray, float *t)
-{
-    Vec3f e1 = sub_f(tri->b, tri->a), e2 = sub_f(tri->c, tri->a);
-    Vec3f s = sub_f(ray->origin, tri->a), q = cross_f(ray->direction, e2);
-    float det = dot_f(e1, q);
-    if (det == 0)
-        return false;
-    float inv = 1 / det, beta = dot_f(s, q) * inv;
-    if (beta < 0 || beta > 1)
-        return false;
-    Vec3f sx = cross_f(s, e1);
-    float gamma = dot_f(ray->direction, sx) * inv;
-    if (gamma < 0 || beta + gamma > 1)
-        return false;
-    float tt = dot_f(e2, sx) * inv;
-    if (!(tt > 0 && tt < INFINITY))
-        return false;
-    *t = tt;
-    return true;
-}
+#define REAL double
+#define VEC Vec3
+#define TRI Triangle
+#define RAY Ray
+#define SUB vec3_sub
+#define CROSS vec3_cross
+#define DOT vec3_dot
+#define NAME tri_moller_trumbore_d
+#include "tri_methods_body.h"
+#undef REAL
+#undef VEC
+#undef TRI
+#undef RAY
+#undef SUB
+#undef CROSS
+#undef DOT
+#undef NAME
+
+#define REAL float
+#define VEC Vec3f
+#define TRI Trianglef
+#define RAY Rayf
+#define SUB sub_f
+#define CROSS cross_f
+#define DOT dot_f
+#define NAME tri_moller_trumbore_f
+#include "tri_methods_body.h"
+#undef REAL
+#undef VEC
+#undef TRI
+#undef RAY
+#undef SUB
+#undef CROSS
+#undef DOT
+#undef NAME
 
 bool tri_wbw_plain_d(const Triangle *tri, const Ray *ray, double *t)
 {

@@ -314,7 +314,7 @@ Test *tg_image(TestList *list, const char *name, const char *scene_path, int nx,
 
 /* ---- the hard cases (hard.c), as tests tagged "hard" ------------------------ */
 
-static Test *hard_test(TestList *l, int part, Kind kind, const char *family, bool hidden)
+Test *tg_hard_test(TestList *l, int part, Kind kind, const char *family, bool hidden)
 {
     char name[128];
     snprintf(name, sizeof name, "Part %s: %shard: %s", part_label(part), hidden ? "hidden: " : "", family);
@@ -326,12 +326,12 @@ static Test *hard_test(TestList *l, int part, Kind kind, const char *family, boo
 }
 
 /* Finds the test of this family made by this call, or makes it. */
-static Test *family_test(TestList *l, int first, int part, Kind kind, const char *family, bool hidden)
+Test *tg_family_test(TestList *l, int first, int part, Kind kind, const char *family, bool hidden)
 {
     for (int k = first; k < l->n; k++)
         if (l->tests[k].part == part && strstr(l->tests[k].name, family))
             return &l->tests[k];
-    return hard_test(l, part, kind, family, hidden);
+    return tg_hard_test(l, part, kind, family, hidden);
 }
 
 void tg_hard(TestList *l, uint64_t seed, int first_round, int rounds, bool hidden)
@@ -341,7 +341,7 @@ void tg_hard(TestList *l, uint64_t seed, int first_round, int rounds, bool hidde
     HardCase1 *c1 = calloc((size_t)n1, sizeof *c1);
     hard_part1(seed, c1, n1);
     for (int k = first_round * HARD_PART1_FAMILIES; k < n1; k++)
-        tg_plane(family_test(l, first, PART1, KIND_PLANE, c1[k].family, hidden),
+        tg_plane(tg_family_test(l, first, PART1, KIND_PLANE, c1[k].family, hidden),
                  c1[k].fov_degrees, c1[k].aspect, c1[k].d);
     free(c1);
 
@@ -349,7 +349,7 @@ void tg_hard(TestList *l, uint64_t seed, int first_round, int rounds, bool hidde
     HardCase2 *c2 = calloc((size_t)n2, sizeof *c2);
     hard_part2(seed, c2, n2);
     for (int k = first_round * HARD_PART2_FAMILIES; k < n2; k++)
-        tg_pixel(family_test(l, first, PART2, KIND_PIXEL, c2[k].family, hidden),
+        tg_pixel(tg_family_test(l, first, PART2, KIND_PIXEL, c2[k].family, hidden),
                  c2[k].i, c2[k].j, c2[k].nx, c2[k].ny, c2[k].w, c2[k].h, c2[k].d);
     free(c2);
 
@@ -362,7 +362,7 @@ void tg_hard(TestList *l, uint64_t seed, int first_round, int rounds, bool hidde
         double c[3] = { sp->center.x, sp->center.y, sp->center.z };
         double e[3] = { r->origin.x, r->origin.y, r->origin.z };
         double d[3] = { r->direction.x, r->direction.y, r->direction.z };
-        tg_sphere(family_test(l, first, PART3A, KIND_SPHERE, c3[k].family, hidden), c, sp->radius, e, d);
+        tg_sphere(tg_family_test(l, first, PART3A, KIND_SPHERE, c3[k].family, hidden), c, sp->radius, e, d);
     }
     free(c3);
     /* A family of misses (spheres behind, grazing rays) would give the
@@ -382,12 +382,12 @@ void tg_hard(TestList *l, uint64_t seed, int first_round, int rounds, bool hidde
     int n4 = (first_round + rounds) * HARD_PART3B_FAMILIES;
     HardCase3b *c4 = calloc((size_t)n4, sizeof *c4);
     hard_part3b(seed, c4, n4);
-    Test *cam = hard_test(l, PART3B, KIND_CAMERA, "camera rays through pixels of huge images", hidden);
+    Test *cam = tg_hard_test(l, PART3B, KIND_CAMERA, "camera rays through pixels of huge images", hidden);
     for (int k = first_round * HARD_PART3B_FAMILIES; k < n4; k++) {
         double e[3] = { c4[k].eye.x, c4[k].eye.y, c4[k].eye.z };
         double p[3] = { c4[k].pixel.x, c4[k].pixel.y, c4[k].pixel.z };
         tg_camera(cam, e, p);
-        Test *t = hard_test(l, PART3B, KIND_COLOR, c4[k].family, hidden);
+        Test *t = tg_hard_test(l, PART3B, KIND_COLOR, c4[k].family, hidden);
         t->weight = 1.0 / rounds;
         t->background[0] = c4[k].background.x;
         t->background[1] = c4[k].background.y;

@@ -32,6 +32,11 @@ Test *tg_image(TestList *list, const char *name, const char *scene_path, int nx,
  * of every family (Part 3a: twice as many), as tests tagged hard. */
 void tg_hard(TestList *list, uint64_t seed, int first_round, int rounds, bool hidden);
 
+/* A test of the hard-case group ("Part P: [hidden: ]hard: FAMILY"), and the
+ * one of this family among the tests from index first on (made if none). */
+Test *tg_hard_test(TestList *list, int part, Kind kind, const char *family, bool hidden);
+Test *tg_family_test(TestList *list, int first, int part, Kind kind, const char *family, bool hidden);
+
 /* Adds a known mistake's output as a hint to c, unless it is the right
  * answer anyway or another hint already gives it (the first one added
  * wins: add the likelier mistake first). */

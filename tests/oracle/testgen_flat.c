@@ -246,25 +246,6 @@ void tg_mesh_ray(Test *t, const double e[3], const double r[3])
 
 /* ---- the hard cases as tests ------------------------------------------------ */
 
-static Test *hard_test(TestList *l, int part, Kind kind, const char *family, bool hidden)
-{
-    char name[128];
-    snprintf(name, sizeof name, "Part %s: %shard: %s", part_label(part), hidden ? "hidden: " : "", family);
-    Test *t = testlist_add(l, part, kind, name);
-    t->hard = true;
-    t->hidden = hidden;
-    snprintf(t->note, sizeof t->note, "%s", "a hard case: see the handout's hard-case challenge");
-    return t;
-}
-
-static Test *family_test(TestList *l, int first, int part, Kind kind, const char *family, bool hidden)
-{
-    for (int k = first; k < l->n; k++)
-        if (l->tests[k].part == part && strstr(l->tests[k].name, family))
-            return &l->tests[k];
-    return hard_test(l, part, kind, family, hidden);
-}
-
 static void put3(double out[3], Vec3 v)
 {
     out[0] = v.x, out[1] = v.y, out[2] = v.z;
@@ -292,7 +273,7 @@ void tg_hard_flat(TestList *l, uint64_t seed, int first_round, int rounds, bool 
         put3(n, c4[k].plane.normal);
         put3(e, c4[k].ray.origin);
         put3(r, c4[k].ray.direction);
-        tg_planehit(family_test(l, first, PART4, KIND_PLANEHIT, c4[k].family, hidden), p, n, e, r);
+        tg_planehit(tg_family_test(l, first, PART4, KIND_PLANEHIT, c4[k].family, hidden), p, n, e, r);
     }
     free(c4);
 
@@ -306,7 +287,7 @@ void tg_hard_flat(TestList *l, uint64_t seed, int first_round, int rounds, bool 
         put3(cc, c5[k].tri.c);
         put3(e, c5[k].ray.origin);
         put3(r, c5[k].ray.direction);
-        tg_triangle(family_test(l, first, PART5, KIND_TRIANGLE, c5[k].family, hidden), a, b, cc, e, r);
+        tg_triangle(tg_family_test(l, first, PART5, KIND_TRIANGLE, c5[k].family, hidden), a, b, cc, e, r);
     }
     free(c5);
     for (int k = first; k < l->n; k++) {
@@ -332,7 +313,7 @@ void tg_hard_flat(TestList *l, uint64_t seed, int first_round, int rounds, bool 
         char family[HARD_FAMILY_LEN + 32];
         snprintf(family, sizeof family, "%s (%s)", m[k].family,
                  m[k].ntris == 12 ? "a cube" : m[k].ntris == 8 ? "an octahedron" : "an icosahedron");
-        Test *t = hard_test(l, PART5, KIND_MESH, family, hidden);
+        Test *t = tg_hard_test(l, PART5, KIND_MESH, family, hidden);
         t->weight = 1.0 / rounds;
         snprintf(t->note, sizeof t->note, "%s",
                  "a hard case: rays into a closed mesh through the edges and vertices its triangles share");
