@@ -83,6 +83,7 @@ reference inside  320x240
 reference far     256x256
 reference ground  320x240
 reference cracks  320x240      # its own size: the pixel rays run along its edges
+reference triangles 320x240
 
 # ---- common mistakes, one faulty stage file each -------------------------
 mistake mistake-degrees-to-tan  p1-degrees-to-tan  flip    240x240   # Part 1
@@ -96,6 +97,9 @@ mistake mistake-first-hit       p3b-first-hit      default 320x240   # Part 3b
 mistake mistake-plane-behind    p4-hits-behind     ground  320x240   # Part 4
 mistake mistake-plane-one-sided p4-one-sided       ground  320x240
 mistake mistake-triangle-no-sum p5-no-sum-check    cracks  320x240   # Part 5
+mistake mistake-triangle-one-sided p5-one-sided    triangles 320x240
+mistake mistake-triangle-epsilon p5-det-epsilon    triangles 320x240
+mistake mistake-triangle-behind p5-hits-behind     triangles 320x240
 
 # ---- the hard case: a small sphere 10^7 radii away -----------------------
 # The textbook quadratic in double, at the scene's own size (as make compare).
