@@ -23,7 +23,8 @@ tmp=$(mktemp -d "${TMPDIR:-/tmp}/render_cli.XXXXXX") || {
     echo "0 passed, 1 failed"
     exit 1
 }
-trap 'rm -rf "$tmp"' EXIT
+# `make compare SUBMISSION=$tmp/...` builds in out/build/sub/<path with / as _>.
+trap 'rm -rf "$tmp" "$top/out/build/sub/$(printf "%s" "$tmp" | tr / _)"_*' EXIT
 trap 'exit 1' HUP INT TERM
 
 # absolute PATH: prints PATH made absolute (relative to the top directory).
@@ -348,15 +349,15 @@ fi
 # compare` as a student runs it, the same image as the reference on every
 # shipped scene but two hard cases: far.scene, which is there to show what
 # a plain formula loses on a small, far sphere, and cracks.scene, which
-# shows the cracks of a triangle test that is not watertight.  Scenes with
-# triangles are drawn with Moller-Trumbore (tests/selftest/moller-trumbore,
-# the skeleton's formula, also written apart from the reference).
-if [ -d solutions ] && [ -d tests/selftest/independent ]; then
+# shows the cracks of a triangle test that is not watertight: its Part 5
+# is Moller-Trumbore (tests/selftest/moller-trumbore, the skeleton's
+# formula).
+if [ -d solutions ] && [ -d tests/selftest/independent ] && [ -d tests/selftest/moller-trumbore ]; then
+    sub=$tmp/independent
+    mkdir "$sub"
+    cp tests/selftest/independent/*.c tests/selftest/moller-trumbore/*.c "$sub/"
     for scene in labs/scenes/*.scene; do
         name=$(basename "$scene" .scene)
-        sub=tests/selftest/independent
-        # scenes with triangles: Moller-Trumbore, written apart too
-        grep -q -e '^ *triangle' -e '^ *mesh' "$scene" && sub=tests/selftest/moller-trumbore
         run ${MAKE:-make} --no-print-directory compare SUBMISSION="$sub" SCENE="$scene"
         # make turns compare's exit 1 (the images differ) into 2
         if [ "$name" = far ]; then
