@@ -187,24 +187,37 @@ typedef struct {
 extern const TriMethod tri_methods[];
 extern const int tri_nmethods;
 
+/* Errors of one method on one workload, against oracle_triangle. */
 typedef struct {
+    long cases;
     long ambiguous;           /* cases either answer is right for          */
     long wrong;               /* hit/miss not the oracle's, not ambiguous   */
     long hits;                /* both hit, not ambiguous: t compared        */
     long hard_failed;         /* the grader's rule (hard_check5)            */
-    double max_rel, median_rel, max_rel_ordinary, max_over_kappa;
+    double max_rel, median_rel, max_over_kappa;
     double max_u_well;        /* max error in u where kappa <= 100         */
 } TriErrors;
+
+/* The four kinds of crack rays: at shared edges and shared vertices, of
+ * meshes near the origin and at offsets 10^3 to 10^6. */
+enum { CRACK_EDGE, CRACK_VERTEX, CRACK_FAR_EDGE, CRACK_FAR_VERTEX, CRACK_KINDS };
 
 typedef struct {
     bool ran;
     int tp_rays, tp_triangles;             /* the throughput workload         */
     double mtests[TRI_MAX_METHODS];        /* million tests per second        */
-    int error_cases;
-    TriErrors err[TRI_MAX_METHODS];
-    long cracks[TRI_MAX_METHODS][4];       /* rays through: edges, vertices,
-                                              far edges, far vertices        */
-    long crack_rays_per_kind;
+    TriErrors ordinary[TRI_MAX_METHODS];   /* triangles in view, camera rays  */
+    TriErrors hard[TRI_MAX_METHODS];       /* Part 5's hard families          */
+    long crack_rays_per_kind;              /* rays aimed, per kind            */
+    long rays[TRI_MAX_METHODS][CRACK_KINDS];   /* of them, judged for the
+                                              method: those whose mesh its
+                                              precision can place           */
+    long cracks[TRI_MAX_METHODS][CRACK_KINDS]; /* of those, rays through     */
+    long missed_all[TRI_MAX_METHODS];      /* judged rays no triangle hit
+                                              anywhere                       */
+    double min_chord;                      /* shortest chord / entry t seen  */
+    double max_entry_gap;                  /* largest |clipped entry t -
+                                              constructed entry t| / t     */
 } TriResults;
 
 /* Runs the three stages (scenes: the directory of cracks.scene).  Returns

@@ -597,7 +597,8 @@ static int write_md(const BenchResults *br, const char *dir, char *err, size_t e
     fprintf(f, "- Float methods get the double inputs rounded to float, as a float renderer "
                "would: that rounding is part of their error.\n");
     fprintf(f, "- Files: results.csv (the table above), results_by_family.csv, renders.csv, "
-               "plot.svg. Source: tests/bench (bench.h lists the files).\n");
+               "plot.svg; for Part 5, results_triangles.csv and plot_triangles.svg. Source: "
+               "tests/bench (bench.h lists the files).\n");
     return close_out(f, "report.md", err, errlen);
 }
 
@@ -610,9 +611,9 @@ int report_write(const BenchResults *br, const char *dir, char *err, size_t errl
     if (br->tri.ran) {
         char sub[400];
         snprintf(sub, sizeof sub, "%s%s, one thread, -O2; throughput on cracks.scene (%d rays x %d "
-                                  "triangles); errors on %d hard cases", br->quick ? "QUICK RUN "
+                                  "triangles); errors on %ld hard cases", br->quick ? "QUICK RUN "
                  "(small sizes): " : "", br->cpu, br->tri.tp_rays, br->tri.tp_triangles,
-                 br->tri.error_cases);
+                 br->tri.hard[0].cases);
         if (triangles_write(&br->tri, dir, sub, err, errlen) != 0)
             return -1;
     }
