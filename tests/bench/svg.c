@@ -294,9 +294,16 @@ int svg_plot(const char *path, const char *title, const char *subtitle,
     fprintf(f, "</text>\n<text x=\"%d\" y=\"50\" fill=\"#555\">", LEFT);
     xml_text(f, subtitle);
     fprintf(f, "</text>\n");
-    /* legend, once, under the title */
+    /* legend, once, under the title: the groups that have points */
+    bool present[3] = { false, false, false };
+    for (int k = 0; k < npanels; k++)
+        for (int i = 0; i < panels[k].n; i++)
+            if (panels[k].pts[i].group >= 0 && panels[k].pts[i].group < 3)
+                present[panels[k].pts[i].group] = true;
     double lx = LEFT, ly = 76;
     for (int g = 0; g < 3; g++) {
+        if (!present[g])
+            continue;
         marker(f, g, lx + 6, ly - 4);
         fprintf(f, "<text x=\"%.1f\" y=\"%.1f\">%s</text>\n", lx + 18, ly, group_name[g]);
         lx += 30 + FONT_W * (double)strlen(group_name[g]);
