@@ -26,16 +26,6 @@
 #define RENDER_PROGRESS_AFTER 1.0   /* seconds before the progress line appears */
 #define RENDER_PROGRESS_EVERY 0.25  /* seconds between its updates */
 
-/* The loop of render_rows inlines the stage files' functions (the renderer
- * is built with link-time optimisation).  The compiler does so by itself
- * for a function called from one place only; Parts 3a and 3b are also
- * called from closest.c, for scenes with planes or triangles, so ask for it
- * (gcc and clang; elsewhere the loop is merely slower). */
-#if defined(__GNUC__)
-#define RENDER_FLATTEN __attribute__((flatten))
-#else
-#define RENDER_FLATTEN
-#endif
 
 /* What the threads share: the inputs, and the counters of rows taken and drawn. */
 typedef struct {
@@ -92,7 +82,7 @@ static int render_cores(void)
  * them instead of waiting for each.  And a colour equal, bit for bit, to
  * the previous pixel's reuses its bytes: neighbouring pixels mostly see
  * the same sphere. */
-RENDER_FLATTEN static void render_rows(const RenderJob *job, int j0, int j1)
+static void render_rows(const RenderJob *job, int j0, int j1)
 {
     const Scene *scene = job->scene;
     const int nx = scene->nx, ny = scene->ny;
