@@ -20,27 +20,30 @@
 Vec3 closest_color(const Scene *scene, const Ray *ray) CLOSEST_APART;
 void closest_rows(const Scene *scene, Image *img, double w, double h, int j0, int j1) CLOSEST_APART;
 
+/* Makes (t, color) the nearest so far when a hit is nearer than *nearest:
+ * strictly, so that of equal t the first one offered stays. */
+static void closest_keep(bool hit, double t, Vec3 color, double *nearest, Vec3 *seen)
+{
+    if (hit && t < *nearest) {
+        *nearest = t;
+        *seen = color;
+    }
+}
+
 Vec3 closest_color(const Scene *scene, const Ray *ray)
 {
-    Vec3 color = scene->background;
-    double tmin = INFINITY;             /* the closest hit so far */
-    double t;
+    double nearest = INFINITY, t = 0;
+    Vec3 seen = scene->background;
     for (int k = 0; k < scene->nspheres; k++)
-        if (sphere_intersect(&scene->spheres[k], ray, &t) && t < tmin) {
-            tmin = t;
-            color = scene->spheres[k].color;
-        }
+        closest_keep(sphere_intersect(&scene->spheres[k], ray, &t), t, scene->spheres[k].color,
+                     &nearest, &seen);
     for (int k = 0; k < scene->nplanes; k++)
-        if (plane_intersect(&scene->planes[k], ray, &t) && t < tmin) {
-            tmin = t;
-            color = scene->planes[k].color;
-        }
+        closest_keep(plane_intersect(&scene->planes[k], ray, &t), t, scene->planes[k].color,
+                     &nearest, &seen);
     for (int k = 0; k < scene->ntriangles; k++)
-        if (triangle_intersect(&scene->triangles[k], ray, &t) && t < tmin) {
-            tmin = t;
-            color = scene->triangles[k].color;
-        }
-    return color;
+        closest_keep(triangle_intersect(&scene->triangles[k], ray, &t), t,
+                     scene->triangles[k].color, &nearest, &seen);
+    return seen;
 }
 
 void closest_rows(const Scene *scene, Image *img, double w, double h, int j0, int j1)
