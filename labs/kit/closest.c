@@ -20,11 +20,11 @@
 Vec3 closest_color(const Scene *scene, const Ray *ray) CLOSEST_APART;
 void closest_rows(const Scene *scene, Image *img, double w, double h, int j0, int j1) CLOSEST_APART;
 
-/* Makes (t, color) the nearest so far when a hit is nearer than *nearest:
+/* Makes (t, color) the nearest so far when t is nearer than *nearest:
  * strictly, so that of equal t the first one offered stays. */
-static void closest_keep(bool hit, double t, Vec3 color, double *nearest, Vec3 *seen)
+static void closest_keep(double t, Vec3 color, double *nearest, Vec3 *seen)
 {
-    if (hit && t < *nearest) {
+    if (t < *nearest) {
         *nearest = t;
         *seen = color;
     }
@@ -32,17 +32,19 @@ static void closest_keep(bool hit, double t, Vec3 color, double *nearest, Vec3 *
 
 Vec3 closest_color(const Scene *scene, const Ray *ray)
 {
-    double nearest = INFINITY, t = 0;
+    double nearest = INFINITY, t;
     Vec3 seen = scene->background;
+    /* Each test first, then its t: the order in which a call's arguments
+     * are evaluated is not fixed in C. */
     for (int k = 0; k < scene->nspheres; k++)
-        closest_keep(sphere_intersect(&scene->spheres[k], ray, &t), t, scene->spheres[k].color,
-                     &nearest, &seen);
+        if (sphere_intersect(&scene->spheres[k], ray, &t))
+            closest_keep(t, scene->spheres[k].color, &nearest, &seen);
     for (int k = 0; k < scene->nplanes; k++)
-        closest_keep(plane_intersect(&scene->planes[k], ray, &t), t, scene->planes[k].color,
-                     &nearest, &seen);
+        if (plane_intersect(&scene->planes[k], ray, &t))
+            closest_keep(t, scene->planes[k].color, &nearest, &seen);
     for (int k = 0; k < scene->ntriangles; k++)
-        closest_keep(triangle_intersect(&scene->triangles[k], ray, &t), t,
-                     scene->triangles[k].color, &nearest, &seen);
+        if (triangle_intersect(&scene->triangles[k], ray, &t))
+            closest_keep(t, scene->triangles[k].color, &nearest, &seen);
     return seen;
 }
 
