@@ -303,26 +303,38 @@ static void flat_evidence(Text *t, const Test *test, const Case *c, const double
         say(t, "    hint:      t = %.17g is a whole number: is t, or a value it comes from, an int?\n", tg);
 }
 
-bool check_answers(const Test *test, const char *answers, size_t len, char **out)
+void answers_free(Answers *a)
+{
+    free(a->got);
+    free(a->ok);
+    memset(a, 0, sizeof *a);
+}
+
+bool case_is_right(Kind kind, const Case *c, const double *got)
+{
+    return case_ok(kind, c, c->want, got, 1);
+}
+
+bool check_answers(const Test *test, const char *answers, size_t len, char **out, Answers *keep)
 {
     Text t = { 0 };
     int nout = kind_nout(test->kind);
     const char *p = answers, *end = answers + len;
-    int failed = 0, first_bad = -1, answered = 0;
-    bool complete = false;
     bool flat = test->kind == KIND_PLANEHIT || test->kind == KIND_TRIANGLE || test->kind == KIND_MESH;
-    double (*all)[CASE_MAX_OUT] = flat ? calloc((size_t)test->ncases + 1, sizeof *all) : NULL;
-    bool *oks = flat ? calloc((size_t)test->ncases + 1, sizeof *oks) : NULL;
-    if (flat && (!all || !oks)) {
-        free(all);
-        free(oks);
-        all = NULL;
-        oks = NULL;
-        flat = false;
+    Answers a = { 0 };
+    a.first_bad = -1;
+    a.got = calloc((size_t)test->ncases + 1, sizeof *a.got);
+    a.ok = calloc((size_t)test->ncases + 1, sizeof *a.ok);
+    if (!a.got || !a.ok) {
+        answers_free(&a);
+        *out = strdup("  the grader ran out of memory judging this test\n");
+        if (keep)
+            memset(keep, 0, sizeof *keep);
+        return false;
     }
 
     for (int c = 0; c < test->ncases; c++) {
-        double got[CASE_MAX_OUT] = { 0 };
+        double *got = a.got[c];
         bool have = p < end;
         for (int k = 0; k < nout && have; k++) {
             char *q;
@@ -336,55 +348,53 @@ bool check_answers(const Test *test, const char *answers, size_t len, char **out
             have = p < end && *p == '\n';
             p++;
         }
-        if (!have)
+        if (!have) {
+            memset(got, 0, sizeof a.got[c]);
             break;
-        answered++;
-        bool ok = case_ok(test->kind, &test->cases[c], test->cases[c].want, got, 1);
-        if (flat) {
-            memcpy(all[c], got, sizeof got);
-            oks[c] = ok;
         }
-        if (!ok) {
-            if (failed++ == 0) {
-                first_bad = c;
-                describe_case(&t, test, c, &test->cases[c], got, true);
-                if (!flat)
-                    hint(&t, test->kind, &test->cases[c], got);
-            }
+        a.answered++;
+        a.ok[c] = case_ok(test->kind, &test->cases[c], test->cases[c].want, got, 1);
+        if (!a.ok[c] && a.failed++ == 0) {
+            a.first_bad = c;
+            describe_case(&t, test, c, &test->cases[c], got, true);
+            if (!flat)
+                hint(&t, test->kind, &test->cases[c], got);
         }
     }
-    if (flat && first_bad >= 0) {
-        const Case *bad = &test->cases[first_bad];
+    if (flat && a.first_bad >= 0) {
+        const Case *bad = &test->cases[a.first_bad];
         bool nan_in = false;
         for (int k = 0; k < kind_nin(test->kind); k++)
             nan_in = nan_in || isnan(bad->in[k]);
-        const char *why = flat_diagnosis(test, (const double (*)[CASE_MAX_OUT])all, oks, answered);
-        if (nan_in && all[first_bad][0] == 1)
+        const char *why = flat_diagnosis(test, (const double (*)[CASE_MAX_OUT])a.got, a.ok, a.answered);
+        if (nan_in && a.got[a.first_bad][0] == 1)
             say(&t, "    hint:      NaN input must be a miss: a test written as \"t < 0: miss\" lets "
                     "NaN through (every comparison with NaN is false); write it as !(t > 0)\n");
         else if (why)
             say(&t, "    hint:      %s\n", why);
         else
-            flat_evidence(&t, test, &test->cases[first_bad], all[first_bad], failed);
+            flat_evidence(&t, test, bad, a.got[a.first_bad], a.failed);
     }
-    free(all);
-    free(oks);
-    if (answered == test->ncases) {
+    if (a.answered == test->ncases) {
         int n = -1;
-        complete = p < end && sscanf(p, "end %d", &n) == 1 && n == test->ncases;
+        a.complete = p < end && sscanf(p, "end %d", &n) == 1 && n == test->ncases;
     }
-    if (!complete) {
-        say(&t, "  the answers stopped after case %d of %d", answered, test->ncases);
-        if (answered < test->ncases) {
+    if (!a.complete) {
+        say(&t, "  the answers stopped after case %d of %d", a.answered, test->ncases);
+        if (a.answered < test->ncases) {
             say(&t, ": this case did not finish\n");
-            describe_case(&t, test, answered, &test->cases[answered], NULL, false);
+            describe_case(&t, test, a.answered, &test->cases[a.answered], NULL, false);
         } else {
             say(&t, ": the program did not finish normally\n");
         }
     }
-    if (failed > 1)
-        say(&t, "  %d of %d cases were wrong; the first is shown.\n", failed, test->ncases);
-    (void)first_bad;
+    if (a.failed > 1)
+        say(&t, "  %d of %d cases were wrong; the first is shown.\n", a.failed, test->ncases);
     *out = t.s ? t.s : calloc(1, 1);
-    return complete && failed == 0;
+    bool right = a.complete && a.failed == 0;
+    if (keep)
+        *keep = a;
+    else
+        answers_free(&a);
+    return right;
 }

@@ -107,7 +107,8 @@ static void run_test(const GradeOptions *opt, const Build *b, const Test *t, Tes
     r->seconds = res.seconds;
 
     char *verdict = NULL;
-    bool ok = check_answers(t, res.answer, res.answer_len, &verdict);
+    bool ok = check_answers(t, res.answer, res.answer_len, &verdict, &r->answers);
+    r->ran = true;
     const char *why = "";
     char whybuf[200] = "";
     if (res.timed_out) {
@@ -232,8 +233,10 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
 void grade_free(Grade *g)
 {
     if (g->results)
-        for (int k = 0; k < g->tests->n; k++)
+        for (int k = 0; k < g->tests->n; k++) {
             free(g->results[k].output);
+            answers_free(&g->results[k].answers);
+        }
     free(g->results);
     for (int p = 0; p < NPARTS; p++)
         free(g->build_messages[p]);

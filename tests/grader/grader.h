@@ -113,17 +113,35 @@ void testlist_free(TestList *list);
 int tests_read(TestList *list, const char *path, bool hidden, char *err, size_t errlen);
 int tests_write(const TestList *list, const char *path, const char *header, char *err, size_t errlen);
 
+/* A child's answers to a test's cases, as the parent read and judged them. */
+typedef struct {
+    int answered;                  /* cases answered before the answers stopped */
+    int failed;                    /* of those, the wrong ones                  */
+    int first_bad;                 /* the first wrong case, or -1               */
+    bool complete;                 /* every case answered, then "end N"         */
+    double (*got)[CASE_MAX_OUT];   /* one row per case answered (malloc'd)      */
+    bool *ok;                      /* per case answered: right?  (malloc'd)     */
+} Answers;
+
+void answers_free(Answers *a);
+
 /* The outcome of one test. */
 typedef struct {
+    bool ran;                      /* the child ran (answers holds its answers) */
     bool passed;
     double score, max_score;
     char *output;                  /* what the student is told (malloc'd)      */
     double seconds;
+    Answers answers;
 } TestResult;
 
 /* Checks a child's answers against the test.  answers holds one line per
  * case ("%a ..." numbers) and the final "end N" line.  Returns true when
- * every case is right; out receives the message for the student. */
-bool check_answers(const Test *test, const char *answers, size_t len, char **out);
+ * every case is right; out receives the message for the student, and a,
+ * when not NULL, every answer and whether it was right. */
+bool check_answers(const Test *test, const char *answers, size_t len, char **out, Answers *a);
+
+/* Is got the right answer to case c of a test of this kind? */
+bool case_is_right(Kind kind, const Case *c, const double *got);
 
 #endif
