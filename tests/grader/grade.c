@@ -238,7 +238,10 @@ void grade_free(Grade *g)
             answers_free(&g->results[k].answers);
         }
     free(g->results);
-    for (int p = 0; p < NPARTS; p++)
+    for (int p = 0; p < NPARTS; p++) {
         free(g->build_messages[p]);
+        free(g->diagnosis[p]);
+        free(g->causes[p]);
+    }
     memset(g, 0, sizeof *g);
 }

@@ -21,6 +21,11 @@ typedef struct {
     TestResult *results;       /* one per test; max_score 0 where not graded  */
     bool graded[NPARTS];
     char *build_messages[NPARTS];
+    /* Per part, when it lost points: the causes its probes confirmed, as
+     * text for the student (malloc'd, NULL when none was confirmed), and
+     * their keys, space-separated (tests/selftest/README.md lists them). */
+    char *diagnosis[NPARTS];
+    char *causes[NPARTS];
     double core[NPARTS], core_max[NPARTS];
     double hard[NPARTS], hard_max[NPARTS];
     double total, total_max;   /* core, plus hard when it is not a bonus      */
