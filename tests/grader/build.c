@@ -4,6 +4,7 @@
 #define _XOPEN_SOURCE 700
 #include "build.h"
 #include "grader.h"
+#include "includes.h"
 #include "sandbox.h"
 
 #include <dirent.h>
@@ -122,37 +123,84 @@ static int run_cc(const BuildConfig *cfg, Build *b, char **argv, char *err, size
     return ok ? 0 : 1;
 }
 
-/* Where the compiler says it looked: refuse any file inside the kit (the
- * reference, the hidden tests).  Returns 0, or 1 with a message. */
+/* Appends a line to b->messages. */
+static void note(Build *b, const char *fmt, const char *what)
+{
+    size_t old = b->messages ? strlen(b->messages) : 0;
+    size_t add = strlen(fmt) + strlen(what) + 1;
+    char *m = realloc(b->messages, old + add);
+    if (m) {
+        snprintf(m + old, add, fmt, what);
+        b->messages = m;
+    }
+}
+
+/* Is name, as the compiler would find it from the build's src directory,
+ * a file of the kit (the reference, the hidden tests)?  The grader's own
+ * realpath, not the compiler's reading, decides: the compiler may run as a
+ * user who cannot read the kit at all. */
+static bool inside_kit(const BuildConfig *cfg, const Build *b, const char *name)
+{
+    char root[PATH_MAX], path[PATH_MAX + 700], real[PATH_MAX];
+    if (!realpath(cfg->root, root))
+        return false;
+    size_t rootlen = strlen(root);
+    if (name[0] == '/')
+        snprintf(path, sizeof path, "%s", name);
+    else
+        snprintf(path, sizeof path, "%s/src/%s", b->dir, name);
+    return realpath(path, real) && strncmp(real, root, rootlen) == 0 &&
+           (real[rootlen] == '/' || real[rootlen] == '\0');
+}
+
+#define REFUSED "refused: the file includes %s, which is part of the grader\n"
+
+typedef struct {
+    const BuildConfig *cfg;
+    Build *b;
+    int refused;
+} Scan;
+
+static int refuse_kit_include(const char *name, bool angled, void *ctx)
+{
+    Scan *s = ctx;
+    (void)angled;
+    if (inside_kit(s->cfg, s->b, name)) {
+        note(s->b, REFUSED, name);
+        s->refused++;
+    }
+    return 0;
+}
+
+/* Before compiling: the literal #include lines of the copied file.
+ * Returns 0, or 1 with a message when one names a file of the kit. */
+static int check_includes(const BuildConfig *cfg, Build *b, const char *file)
+{
+    FILE *f = fopen(file, "rb");
+    if (!f)
+        return 0;
+    static char text[SOURCE_MAX + 1];
+    size_t n = fread(text, 1, SOURCE_MAX, f);
+    fclose(f);
+    Scan s = { cfg, b, 0 };
+    includes_scan(text, n, refuse_kit_include, &s);
+    return s.refused > 0;
+}
+
+/* After compiling: where the compiler says it looked (includes through
+ * macros too).  Returns 0, or 1 with a message. */
 static int check_dependencies(const BuildConfig *cfg, Build *b, const char *depfile)
 {
     FILE *f = fopen(depfile, "r");
     if (!f)
         return 0;
-    char root[PATH_MAX];
-    if (!realpath(cfg->root, root)) {
-        fclose(f);
-        return 0;
-    }
-    size_t rootlen = strlen(root);
     char word[PATH_MAX];
     int status = 0;
     while (fscanf(f, "%4095s", word) == 1) {
         if (strchr(word, ':') || strcmp(word, "\\") == 0)
             continue;
-        char path[PATH_MAX + 700], real[PATH_MAX];
-        if (word[0] == '/')
-            snprintf(path, sizeof path, "%s", word);
-        else
-            snprintf(path, sizeof path, "%s/src/%s", b->dir, word);
-        if (realpath(path, real) && strncmp(real, root, rootlen) == 0 &&
-            (real[rootlen] == '/' || real[rootlen] == '\0')) {
-            size_t old = b->messages ? strlen(b->messages) : 0;
-            char *m = realloc(b->messages, old + strlen(word) + 120);
-            if (m) {
-                sprintf(m + old, "refused: the file includes %s, which is part of the grader\n", word);
-                b->messages = m;
-            }
+        if (inside_kit(cfg, b, word)) {
+            note(b, REFUSED, word);
             status = 1;
         }
     }
@@ -206,24 +254,16 @@ int build_part(const BuildConfig *cfg, int part, const char *submission, Build *
         snprintf(path, sizeof path, "%s/%s.c", submission, stage);
         snprintf(to, sizeof to, "%s/%s.c", src, stage);
         if (access(path, F_OK) != 0) {
-            size_t old = strlen(b->messages);
-            char *m = realloc(b->messages, old + 200);
-            if (m) {
-                sprintf(m + old, "missing: the submission has no %s.c\n", stage);
-                b->messages = m;
-            }
+            note(b, "missing: the submission has no %s.c\n", stage);
             return 0;
         }
         char cerr[512];
         if (copy_file(path, to, SOURCE_MAX, cerr, sizeof cerr)) {
-            size_t old = strlen(b->messages);
-            char *m = realloc(b->messages, old + strlen(cerr) + 2);
-            if (m) {
-                sprintf(m + old, "%s\n", cerr);
-                b->messages = m;
-            }
+            note(b, "%s\n", cerr);
             return 0;
         }
+        if (check_includes(cfg, b, to))
+            return 0;
         char cfile[80], ofile[80], dfile[80];
         snprintf(cfile, sizeof cfile, "%s.c", stage);
         snprintf(ofile, sizeof ofile, "%s.o", stage);
