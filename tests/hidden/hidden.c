@@ -81,6 +81,21 @@ void testgen_hidden(TestList *l, uint64_t seed)
         tg_sphere(t, c, R, e, dir);
     }
 
+    t = hidden_test(l, PART3A, KIND_SPHERE, "Part 3a: hidden: random rays from just outside spheres",
+                    "each ray starts a hair outside the sphere, hits it at t from 1e-9 to 1e-2 "
+                    "(tmin = 0), and a plain hit farther on");
+    for (int k = 0; k < 12; k++) {
+        double R = tg_log_uniform(&g, 0.5, 5), c[3] = { -1, 2, -6 }, u[3], e[3], dir[3];
+        double gap = tg_log_uniform(&g, 1e-9, 1e-2);
+        random_direction(&g, 1, u);
+        for (int q = 0; q < 3; q++) {
+            e[q] = c[q] + (R + gap) * u[q];        /* on the line through c, gap outside */
+            dir[q] = -u[q];                          /* back towards c: t about gap */
+        }
+        tg_sphere(t, c, R, e, dir);
+        if (k % 3 == 0)
+            tg_sphere(t, c, R, (const double[3]){ 0, 0, 0 }, (const double[3]){ -1, 2, -6 });
+    }
     t = hidden_test(l, PART3B, KIND_CAMERA, "Part 3b: hidden: camera_ray through random pixels",
                     "eyes anywhere, pixels anywhere: origin e, unit direction towards the pixel");
     for (int k = 0; k < 20; k++) {

@@ -107,6 +107,16 @@ static void part3a(TestList *l)
     tg_sphere(t, V(0, 0, -1), 5, V(0, 0, 0), V(0, 0, -1));
     tg_sphere(t, V(0, 0, -1), 5, V(0, 0, 0), V(0, 0, 1));
     tg_sphere(t, V(1, 2, 3), 50, V(0, 0, 0), V(0.36, 0.48, -0.8));
+    /* tmin = 0 is the lecture's rule: a hit however close to e counts.
+     * The origins are exact binary fractions just outside the sphere, so
+     * the near root is exactly e.z + 1 in the axis-aligned cases. */
+    t = new_test(l, PART3A, KIND_SPHERE, 2, "Part 3a: hits just ahead of the ray's origin (t = 5e-4, 1e-7)",
+                 "tmin = 0: a hit at any t > 0 counts, however small (tutorials' tmin = 0.001 is for "
+                 "shadow rays, next week)");
+    tg_sphere(t, V(0, 0, -2), 1, V(0, 0, -1 + 0x1.0cp-11), V(0, 0, -1));
+    tg_sphere(t, V(0, 0, -2), 1, V(0, 0, -1 + 0x1.ap-24), V(0, 0, -1));
+    tg_sphere(t, V(3, -1, -7), 2.5, V(3, -1, -4.5 + 0x1p-12), V(0, 0.6, -0.8));
+    tg_sphere(t, V(0, 0, -5), 1, V(0, 0, 0), V(0, 0, -1));
     t = new_test(l, PART3A, KIND_SPHERE, 1, "Part 3a: a tangent ray touches the sphere",
                  "B^2 - A C = 0 exactly: one root, a hit");
     tg_sphere(t, V(2, 0, -10), 2, V(0, 0, 0), V(0, 0, -1));

@@ -382,11 +382,13 @@ void tg_hard(TestList *l, uint64_t seed, int first_round, int rounds, bool hidde
     int n4 = (first_round + rounds) * HARD_PART3B_FAMILIES;
     HardCase3b *c4 = calloc((size_t)n4, sizeof *c4);
     hard_part3b(seed, c4, n4);
-    Test *cam = tg_hard_test(l, PART3B, KIND_CAMERA, "camera rays through pixels of huge images", hidden);
+    /* By index: adding the colour tests may move the list. */
+    int cam = l->n;
+    tg_hard_test(l, PART3B, KIND_CAMERA, "camera rays through pixels of huge images", hidden);
     for (int k = first_round * HARD_PART3B_FAMILIES; k < n4; k++) {
         double e[3] = { c4[k].eye.x, c4[k].eye.y, c4[k].eye.z };
         double p[3] = { c4[k].pixel.x, c4[k].pixel.y, c4[k].pixel.z };
-        tg_camera(cam, e, p);
+        tg_camera(&l->tests[cam], e, p);
         Test *t = tg_hard_test(l, PART3B, KIND_COLOR, c4[k].family, hidden);
         t->weight = 1.0 / rounds;
         t->background[0] = c4[k].background.x;

@@ -11,6 +11,8 @@
 #include "../oracle/oracle.h"
 #include "../oracle/dd.h"
 #include "../oracle/hard.h"
+#include "../oracle/testgen.h"
+#include "../grader/cases.c"           /* the test lists testgen fills */
 
 #define U ORACLE_U
 #define SEED 20240901u
@@ -743,6 +745,31 @@ static void test_reference_part3b_hard(void)
     CHECK(ambiguous > 0 && ambiguous < n);
 }
 
+/* The hard group has one camera case per family and round however the
+ * list grows around it.  The camera test used to be filled through a
+ * pointer that adding the colour tests left dangling whenever the list
+ * had to grow then: lists of every length up to two growths' worth make
+ * sure it does (the sanitizer build of this test reports the bad write;
+ * the plain build sees cases missing). */
+static void test_hard_camera_cases(void)
+{
+    for (int n0 = 0; n0 < 70; n0++) {
+        TestList l = { 0 };
+        for (int k = 0; k < n0; k++)
+            test_add_case(testlist_add(&l, PART1, KIND_PLANE, "filler"));
+        tg_hard(&l, 1234, 0, 1, false);
+        int found = 0;
+        for (int k = 0; k < l.n; k++)
+            if (strstr(l.tests[k].name, "hard: camera rays")) {
+                found++;
+                CHECK_MSG(l.tests[k].ncases == HARD_PART3B_FAMILIES, "after %d tests: %d camera cases",
+                          n0, l.tests[k].ncases);
+            }
+        CHECK_EQ_INT(found, 1);
+        testlist_free(&l);
+    }
+}
+
 static const CheckTest tests[] = {
     CHECK_TEST(test_dd_error_free),
     CHECK_TEST(test_dd_arithmetic),
@@ -765,6 +792,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_reference_part3a_hard),
     CHECK_TEST(test_textbook_part3a),
     CHECK_TEST(test_reference_part3b_hard),
+    CHECK_TEST(test_hard_camera_cases),
 };
 
 int main(int argc, char **argv)
