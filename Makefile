@@ -161,7 +161,8 @@ HAVE_ORACLE := $(wildcard tests/oracle/oracle.h)
 HAVE_HIDDEN := $(wildcard tests/hidden/hidden.c)
 GRADER_LIB_SRC = tests/grader/cases.c tests/grader/check.c tests/grader/sandbox.c \
                  tests/grader/build.c tests/grader/config.c tests/grader/grade.c \
-                 tests/grader/report_table.c tests/grader/report_json.c tests/grader/includes.c
+                 tests/grader/report_table.c tests/grader/report_json.c tests/grader/includes.c \
+                 tests/grader/diagnose.c
 GRADER_HDR = $(wildcard tests/grader/*.h) $(KIT_HDR)
 GRADER_OBJ = $(GRADER_LIB_SRC:tests/grader/%.c=$(BUILD)/grader/%.o)
 HARNESS    = $(BUILD)/grader/harness_1.o $(BUILD)/grader/harness_2.o \

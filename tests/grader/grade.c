@@ -7,6 +7,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "grade.h"
 #include "sandbox.h"
+#include "diagnose.h"
 
 #include <signal.h>
 #include <stdarg.h>
@@ -85,25 +86,37 @@ static const char *signal_story(int sig)
     }
 }
 
-/* Runs one test in the sandbox and judges it. */
-static void run_test(const GradeOptions *opt, const Build *b, const Test *t, TestResult *r)
+/* Runs test t in a fresh sandboxed child of the part's program; 0 when
+ * it ran (res then holds what it did), -1 with a reason in err. */
+static int run_child(const GradeOptions *opt, const Build *b, const Test *t, SandboxResult *res,
+                     char *err, size_t errlen)
 {
     size_t len = 0;
     char *input = test_input(t, &len);
+    if (!input) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
     char *argv[] = { (char *)b->runner, NULL };
     SandboxSpec spec = {
         .argv = argv, .workdir = b->rundir, .input = input, .input_len = len,
         .timeout = opt->cfg->timeout, .answer_max = 512 + (size_t)t->ncases * 160,
         .output_max = 64 * 1024, .memory_mb = 1024, .max_procs = 0, .max_file_mb = 0,
     };
+    int status = sandbox_run(&spec, res, err, errlen);
+    free(input);
+    return status;
+}
+
+/* Runs one test in the sandbox and judges it. */
+static void run_test(const GradeOptions *opt, const Build *b, const Test *t, TestResult *r)
+{
     SandboxResult res;
     char err[256];
-    if (!input || sandbox_run(&spec, &res, err, sizeof err) != 0) {
-        r->output = xasprintf("the grader could not run this test: %s", input ? err : "out of memory");
-        free(input);
+    if (run_child(opt, b, t, &res, err, sizeof err) != 0) {
+        r->output = xasprintf("the grader could not run this test: %s", err);
         return;
     }
-    free(input);
     r->seconds = res.seconds;
 
     char *verdict = NULL;
@@ -140,6 +153,25 @@ static void run_test(const GradeOptions *opt, const Build *b, const Test *t, Tes
     }
     free(verdict);
     sandbox_result_free(&res);
+}
+
+/* The diagnosis's probes run as tests do, each in its own child. */
+typedef struct {
+    const GradeOptions *opt;
+    const Build *b;
+} ProbeContext;
+
+static int run_probe(void *ctx, const Test *t, Answers *a)
+{
+    const ProbeContext *pc = ctx;
+    SandboxResult res;
+    char err[256], *verdict = NULL;
+    if (run_child(pc->opt, pc->b, t, &res, err, sizeof err) != 0)
+        return -1;
+    check_answers(t, res.answer, res.answer_len, &verdict, a);
+    free(verdict);
+    sandbox_result_free(&res);
+    return 0;
 }
 
 int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
@@ -199,6 +231,15 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
                     timeouts++;
             }
             first = false;
+        }
+        if (b.ok) {
+            ProbeContext pc = { opt, &b };
+            Probes probes = { run_probe, &pc, p == PART3B && !opt->build->reference, false };
+            for (int k = 0; k < tests->n; k++)
+                probes.part3a_failed = probes.part3a_failed ||
+                    (tests->tests[k].part == PART3A && !tests->tests[k].hard && g->results[k].ran &&
+                     !g->results[k].passed);
+            diagnose_part(p, tests, g->results, &probes, &g->diagnosis[p], &g->causes[p]);
         }
         build_remove(&b);
     }

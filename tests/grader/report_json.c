@@ -47,7 +47,7 @@ int report_json(const char *path, const Grade *g, const GradeConfig *cfg,
     json_number(&j, g->total + g->bonus);
     json_key(&j, "execution_time");
     json_number(&j, g->seconds);
-    char summary[1024];
+    char summary[16384];
     int n = snprintf(summary, sizeof summary, "Graded %s: %g / %g", submission, g->total, g->total_max);
     if (g->bonus_max > 0)
         n += snprintf(summary + n, sizeof summary - (size_t)n, ", hard-case bonus %g / %g%s",
@@ -58,8 +58,28 @@ int report_json(const char *path, const Grade *g, const GradeConfig *cfg,
         n += snprintf(summary + n, sizeof summary - (size_t)n, "\nPart %s: %g / %g", part_label(p),
                       g->core[p], g->core_max[p]);
     }
+    for (int p = 0; p < NPARTS; p++) {
+        if (!g->diagnosis[p] || (size_t)n >= sizeof summary)
+            continue;
+        n += snprintf(summary + n, sizeof summary - (size_t)n,
+                      "\n\nPart %s, what went wrong (probes run on your code confirmed it):\n%s",
+                      part_label(p), g->diagnosis[p]);
+    }
     json_key(&j, "output");
     json_string(&j, summary);
+    /* The causes' keys (tests/selftest/README.md), for instructors' tools. */
+    json_key(&j, "extra_data");
+    json_begin_object(&j);
+    json_key(&j, "causes");
+    json_begin_object(&j);
+    for (int p = 0; p < NPARTS; p++) {
+        if (!g->causes[p])
+            continue;
+        json_key(&j, part_label(p));
+        json_string(&j, g->causes[p]);
+    }
+    json_end_object(&j);
+    json_end_object(&j);
     json_key(&j, "tests");
     json_begin_array(&j);
     for (int k = 0; k < g->tests->n; k++)

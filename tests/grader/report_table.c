@@ -30,6 +30,10 @@ void report_table(FILE *f, const Grade *g, const GradeConfig *cfg, const char *s
             fprintf(f, "   (hard cases: %g / %g%s)", g->hard[p], g->hard_max[p],
                     cfg->hard_is_bonus ? " bonus" : "");
         fprintf(f, "\n");
+        if (g->diagnosis[p]) {
+            fprintf(f, "  What went wrong (probes run on your code confirmed it):\n");
+            print_indented(f, g->diagnosis[p]);
+        }
         for (int group = 0; group < 2; group++)
             for (int k = 0; k < g->tests->n; k++) {
                 const Test *t = &g->tests->tests[k];

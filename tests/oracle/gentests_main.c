@@ -34,7 +34,7 @@ int main(int argc, char **argv)
         snprintf(path, sizeof path, "%s/part%s.tests", argv[1], part_label(p));
         snprintf(header, sizeof header,
                  "# The public tests of Part %s, with expected values from the oracle\n"
-                 "# (double-double) and the outputs of known mistakes, for hints.\n"
+                 "# (double-double), and for Parts 4 and 5 the outputs of known mistakes, for hints.\n"
                  "# Written by `make public-tests` (tests/oracle/gentests_main.c): do not edit.\n",
                  part_label(p));
         if (tests_write(&one, path, header, err, sizeof err) != 0) {

@@ -23,11 +23,6 @@
 
 /* Adds a known mistake's output, unless it is the right answer anyway
  * (d missing when d = 1, say) or another hint already has it. */
-void tg_add_hint(Case *c, const char *text, const double *out, int n)
-{
-    tg_add_hint_as(c, text, out, n, true);
-}
-
 void tg_add_hint_as(Case *c, const char *text, const double *out, int n, bool unique_output)
 {
     if (c->nhints == CASE_MAX_HINTS)
@@ -59,26 +54,6 @@ void tg_plane(Test *t, double fov, double aspect, double d)
     c->tol[0] = rel * fabs(c->want[0]);
     c->tol[1] = rel * fabs(c->want[1]);
 
-    double rad = fov * M_PI / 180, h, v[2];
-    h = 2 * d * tan(fov / 2);
-    v[0] = aspect * h, v[1] = h;
-    tg_add_hint(c, "tan takes radians: convert the field of view from degrees (times pi / 180)", v, 2);
-    h = 2 * d * tan(rad);
-    v[0] = aspect * h, v[1] = h;
-    tg_add_hint(c, "use half the field of view: h = 2 d tan(alpha / 2)", v, 2);
-    h = d * tan(rad / 2);
-    v[0] = aspect * h, v[1] = h;
-    tg_add_hint(c, "the factor 2 is missing: h = 2 d tan(alpha / 2)", v, 2);
-    h = 2 * tan(rad / 2);
-    v[0] = aspect * h, v[1] = h;
-    tg_add_hint(c, "d is missing: h = 2 d tan(alpha / 2) grows with the distance d", v, 2);
-    h = 2 * d * tan(rad / 2);
-    v[0] = h / aspect, v[1] = h;
-    tg_add_hint(c, "the aspect ratio is inverted: w = aspect h, with aspect = nx / ny", v, 2);
-    v[0] = h, v[1] = aspect * h;
-    tg_add_hint(c, "w and h are swapped", v, 2);
-    v[0] = h, v[1] = h / aspect;
-    tg_add_hint(c, "the field of view is the VERTICAL one: it gives h, then w = aspect h", v, 2);
 }
 
 /* ---- Part 2 ---------------------------------------------------------------- */
@@ -95,47 +70,9 @@ void tg_pixel(Test *t, int i, int j, int nx, int ny, double w, double h, double 
     c->tol[1] = rel * fabs(h);
     c->tol[2] = 0;
 
-    double x = -w / 2 + w * (i + 0.5) / nx, y = -h / 2 + h * (ny - 0.5 - j) / ny, v[3];
-    v[0] = -w / 2 + w * i / nx, v[1] = -h / 2 + h * (ny - j) / ny, v[2] = -d;
-    tg_add_hint(c, "that is a pixel's corner: the centre is at i + 0.5 (and ny - 0.5 - j)", v, 3);
-    v[0] = -w / 2 + w * i / nx, v[1] = -h / 2 + h * (ny - 1 - j) / ny;
-    tg_add_hint(c, "that is a pixel's corner: the centre is at i + 0.5 (and ny - 0.5 - j)", v, 3);
-    v[0] = x, v[1] = -h / 2 + h * (j + 0.5) / ny;
-    tg_add_hint(c, "y is upside down: row j = 0 is the TOP of the image, where y = +h/2", v, 3);
-    v[0] = x, v[1] = y, v[2] = d;
-    tg_add_hint(c, "z has the wrong sign: the eye looks down -z, so the plane is at z = -d", v, 3);
-    v[0] = x, v[1] = -h / 2 + h * (ny - 0.5 - j) / nx, v[2] = -d;
-    tg_add_hint(c, "y divides by nx: rows are counted by ny", v, 3);
-    v[0] = -h / 2 + h * (i + 0.5) / nx, v[1] = -w / 2 + w * (ny - 0.5 - j) / ny;
-    tg_add_hint(c, "w and h are swapped: x spans the width w, y the height h", v, 3);
-    v[0] = w * (i + 0.5) / nx, v[1] = h * (ny - 0.5 - j) / ny;
-    tg_add_hint(c, "the plane is centred on the axis: x runs from -w/2 to w/2, not 0 to w", v, 3);
-    v[0] = -w / 2, v[1] = -h / 2;
-    tg_add_hint(c, "an integer division: in C, (2 * i + 1) / (2 * nx) is 0 for ints -- use 0.5 or a double", v, 3);
 }
 
 /* ---- Part 3a ---------------------------------------------------------------- */
-
-/* The mistakes, in the lecture's notation with f = e - c. */
-typedef struct { double A, B, C, disc; } Quad;
-
-static Quad quad(const double c[3], double R, const double e[3], const double r[3])
-{
-    double f[3] = { e[0] - c[0], e[1] - c[1], e[2] - c[2] };
-    Quad q;
-    q.A = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
-    q.B = f[0] * r[0] + f[1] * r[1] + f[2] * r[2];
-    q.C = f[0] * f[0] + f[1] * f[1] + f[2] * f[2] - R * R;
-    q.disc = q.B * q.B - q.A * q.C;
-    return q;
-}
-
-static void hint_t(Case *c, const char *text, bool hit, double t)
-{
-    double v[2] = { hit ? 1 : 0, hit ? t : 0 };
-    if (v[0] != c->want[0] || (hit && fabs(t - c->want[1]) > 1e-6 * fabs(c->want[1])))
-        tg_add_hint(c, text, v, 2);
-}
 
 void tg_sphere(Test *t, const double c3[3], double R, const double e[3], const double r[3])
 {
@@ -156,35 +93,6 @@ void tg_sphere(Test *t, const double c3[3], double R, const double e[3], const d
         c->tol[1] = t->hard ? tol : fmax(tol, CORE_REL * o.t);
     }
 
-    Quad q = quad(c3, R, e, r);
-    if (!(q.disc >= 0) || !(q.A > 0))
-        return;
-    double sq = sqrt(q.disc);
-    double tn = (-q.B - sq) / q.A, tf = (-q.B + sq) / q.A;
-    if (tf > 0)
-        hint_t(c, "the far root: the first hit is the smaller t > 0, (-B - sqrt(B^2 - A C)) / A", true, tf);
-    hint_t(c, "a hit behind the eye: only roots t > 0 are ahead of the ray", true, tn);
-    if (q.C < 0)
-        hint_t(c, "from inside the sphere (C < 0) the near root is behind: the hit is the far root", false, 0);
-    if (q.disc == 0)
-        hint_t(c, "a tangent ray (B^2 - A C = 0) touches the sphere: that is a hit", false, 0);
-    double d1 = q.B * q.B - q.C;
-    if (d1 >= 0) {
-        double t1 = -q.B - sqrt(d1);
-        if (t1 > 0)
-            hint_t(c, "A is not 1: the direction need not have unit length, so A = r.r", true, t1);
-    }
-    double tb = (q.B - sq) / q.A;
-    if (tb > 0)
-        hint_t(c, "the sign of B: with f = e - c, B = f.r and t = (-B -+ sqrt(B^2 - A C)) / A", true, tb);
-    if (tn > 0)
-        hint_t(c, "t is halved: with B = f.r (not 2 f.r) the roots are (-B -+ sqrt(B^2 - A C)) / A", true, tn / 2);
-    double d4 = q.B * q.B - 4 * q.A * q.C;
-    if (d4 >= 0) {
-        double t4 = (-q.B - sqrt(d4)) / (2 * q.A);
-        if (t4 > 0)
-            hint_t(c, "B^2 - 4 A C mixes two forms: with B = f.r the discriminant is B^2 - A C", true, t4);
-    }
 }
 
 /* ---- Part 3b ---------------------------------------------------------------- */
@@ -194,19 +102,12 @@ void tg_camera(Test *t, const double eye[3], const double pixel[3])
     Case *c = test_add_case(t);
     memcpy(c->in, eye, 3 * sizeof *eye);
     memcpy(c->in + 3, pixel, 3 * sizeof *pixel);
-    Vec3 dir = { pixel[0] - eye[0], pixel[1] - eye[1], pixel[2] - eye[2] };
     Vec3 u = oracle_unit(vec3(pixel[0] - eye[0], pixel[1] - eye[1], pixel[2] - eye[2]));
     double want[6] = { eye[0], eye[1], eye[2], u.x, u.y, u.z };
     memcpy(c->want, want, sizeof want);
     for (int k = 3; k < 6; k++)
         c->tol[k] = t->hard ? HARD_PART3B_DIR_TOL_U * U : CORE_REL;
 
-    double v[6] = { eye[0], eye[1], eye[2], dir.x, dir.y, dir.z };
-    tg_add_hint(c, "the direction must have unit length: divide s - e by |s - e|", v, 6);
-    double v2[6] = { eye[0], eye[1], eye[2], -u.x, -u.y, -u.z };
-    tg_add_hint(c, "the direction is reversed: it points from the eye TO the pixel, s - e", v2, 6);
-    double v3[6] = { pixel[0], pixel[1], pixel[2], u.x, u.y, u.z };
-    tg_add_hint(c, "the ray starts at the eye, not at the pixel", v3, 6);
 }
 
 static void colour_of(const Test *t, int k, double out[3])
@@ -241,33 +142,6 @@ static void colour_case(Test *t, Case *c, const Scene *scene, Ray ray)
         colour_of(t, alt, c->alt);
     }
     /* tol stays 0: ray_color returns a sphere's colour unchanged */
-    /* The mistakes: the first sphere hit in list order, the farthest hit,
-     * black (not the background) for a miss. */
-    int first = -1, far = -1;
-    double tfar = 0;
-    for (int s = 0; s < scene->nspheres; s++) {
-        OracleHit o = oracle_sphere(&scene->spheres[s], &ray);
-        if (o.hit && !o.ambiguous) {
-            if (first < 0)
-                first = s;
-            if (o.t > tfar)
-                tfar = o.t, far = s;
-        }
-    }
-    double v[3];
-    if (!ambiguous && first != k && first >= 0) {
-        colour_of(t, first, v);
-        tg_add_hint(c, "the first sphere hit is not the closest: keep the smallest t over all spheres", v, 3);
-    }
-    if (!ambiguous && far != k && far >= 0) {
-        colour_of(t, far, v);
-        tg_add_hint(c, "that is the farthest hit: keep the SMALLEST t (tmin starts at infinity)", v, 3);
-    }
-    if (!ambiguous && k < 0) {
-        double black[3] = { 0, 0, 0 };
-        if (t->background[0] || t->background[1] || t->background[2])
-            tg_add_hint(c, "a ray that hits nothing has the scene's background colour", black, 3);
-    }
 }
 
 void tg_color(Test *t, const double e[3], const double r[3])

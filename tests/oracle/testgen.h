@@ -37,13 +37,10 @@ void tg_hard(TestList *list, uint64_t seed, int first_round, int rounds, bool hi
 Test *tg_hard_test(TestList *list, int part, Kind kind, const char *family, bool hidden);
 Test *tg_family_test(TestList *list, int first, int part, Kind kind, const char *family, bool hidden);
 
-/* Adds a known mistake's output as a hint to c, unless it is the right
- * answer anyway or another hint already gives it (the first one added
- * wins: add the likelier mistake first). */
-void tg_add_hint(Case *c, const char *text, const double *out, int n);
-/* The same, keeping a hint whose output another already gives when
- * unique_output is false: Parts 4 and 5 name a mistake only when it
- * explains every case of a test, so each mistake needs all its outputs. */
+/* Adds a known mistake's output as a hint to c (Parts 4 and 5, whose
+ * tests name a mistake when it alone explains every answer), unless it is
+ * the right answer anyway.  Another hint with the same output is kept
+ * unless unique_output is true: each mistake needs all its outputs. */
 void tg_add_hint_as(Case *c, const char *text, const double *out, int n, bool unique_output);
 
 /* ---- Parts 4 and 5 (testgen_flat.c) ---- */

@@ -90,6 +90,17 @@ printf '#include "%s/solutions/part1_image_plane.c"\n' "$root" \
     >"$tmp/subs/hostile-include-reference/part1_image_plane.c"
 mkdir -p "$tmp/expect/hostile-include-reference"
 printf 'part 1\noutput refused\n' >"$tmp/expect/hostile-include-reference/expect"
+# The same, where the compiler cannot read the file (a kit inside a directory
+# only its owner may enter, graded as root: the compiler runs as nobody).
+# The refusal must not depend on that.
+mkdir -p out/tests/private && chmod 700 out/tests/private
+cp solutions/part1_image_plane.c out/tests/private/secret.c
+mkdir "$tmp/subs/hostile-include-unreadable"
+cp solutions/part*.c "$tmp/subs/hostile-include-unreadable/"
+printf '#include "%s/out/tests/private/secret.c"\n' "$root" \
+    >"$tmp/subs/hostile-include-unreadable/part1_image_plane.c"
+mkdir -p "$tmp/expect/hostile-include-unreadable"
+printf 'part 1\noutput refused\n' >"$tmp/expect/hostile-include-unreadable/expect"
 chmod -R a+rX "$tmp/subs" "$tmp/subs45"
 
 for class in subs subs45; do
@@ -113,6 +124,10 @@ done
 score() {   # score CLASS NAME COLUMN: a cell of a gradebook, by the column's name
     awk -F, -v n="$2" -v c="$3" 'NR == 1 { for (k = 1; k <= NF; k++) col[$k] = k }
         $1 == n { print (c in col) ? $col[c] : "-" }' "$tmp/grades-$1/gradebook.csv"
+}
+causes_of() {   # causes_of JSON PART: the keys of the part's diagnosis in extra_data
+    tr -d '\n' <"$1" | sed -n 's/.*"causes": *{\([^}]*\)}.*/\1/p' | tr ',' '\n' |
+        sed -n "s/^ *\"$2\": *\"\\([^\"]*\\)\".*/\\1/p"
 }
 for sub in "$tmp/subs"/*/ "$tmp/subs45"/*/; do
     sname=$(basename "$sub")
@@ -149,6 +164,13 @@ for sub in "$tmp/subs"/*/ "$tmp/subs45"/*/; do
     if [ -n "$want" ]; then
         check "$sname: the report says '$want'" grep -q "$want" "$json"
     fi
+    # The diagnosis: exactly the causes the expect file names, part by part.
+    for p in $(sed -n 's/^cause \([^ ]*\) .*/\1/p; s/^nocause \([^ ]*\).*/\1/p' "$expect" | sort -u); do
+        want_causes=$(sed -n "s/^cause $p //p" "$expect" | tr ' ' '\n' | sort | tr '\n' ' ')
+        got_causes=$(causes_of "$json" "$p" | tr ' ' '\n' | sed '/^$/d' | sort | tr '\n' ' ')
+        check "$sname: Part $p's diagnosis names '${want_causes% }' (got '${got_causes% }')" \
+            [ "$want_causes" = "$got_causes" ]
+    done
     hardpart=$(sed -n 's/^hard lost //p' "$expect")
     if [ -n "$hardpart" ]; then
         $grade --submission "$sub" --part "$hardpart" >"$tmp/$sname.table" 2>&1

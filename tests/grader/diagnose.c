@@ -1,0 +1,1153 @@
+/*
+ * diagnose.c - see diagnose.h.  One section per part: its models (what
+ * each cause computes, in plain double), its probes, and the reading of
+ * the probes' answers.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "diagnose.h"
+#include "../../labs/raytracer.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define U 0x1p-53                      /* unit roundoff of double */
+#define MATCH_REL 1e-6                 /* an answer is a model's to 6 digits */
+
+/* ---- the diagnosis being written ------------------------------------------ */
+
+#define MAX_CAUSES 16
+#define TAG_ALL (-1)                   /* a cause of a part's combined model */
+#define TAG_UNWRITTEN (-2)             /* the skeleton's answer, whatever the input */
+
+typedef struct {
+    char key[32];
+    char text[1200];               /* what it is, the evidence, the fix */
+    int tag;                       /* which model explains its cases    */
+    int explained;                 /* failing cases it explains         */
+} Cause;
+
+typedef struct {
+    Cause cause[MAX_CAUSES];
+    int ncauses;
+} Found;
+
+static void append(char **s, size_t *len, const char *add)
+{
+    size_t n = strlen(add);
+    char *ns = realloc(*s, *len + n + 1);
+    if (!ns)
+        return;
+    memcpy(ns + *len, add, n + 1);
+    *s = ns;
+    *len += n;
+}
+
+/* Names a cause the probes confirmed: its key, the model (tag) that says
+ * which failing cases it explains, and its explanation. */
+static void name_cause(Found *f, const char *key, int tag, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+static void name_cause(Found *f, const char *key, int tag, const char *fmt, ...)
+{
+    if (f->ncauses == MAX_CAUSES)
+        return;
+    Cause *c = &f->cause[f->ncauses++];
+    snprintf(c->key, sizeof c->key, "%s", key);
+    c->tag = tag;
+    c->explained = 0;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(c->text, sizeof c->text, fmt, ap);
+    va_end(ap);
+}
+
+/* ---- probes ------------------------------------------------------------------ */
+
+typedef struct {
+    const Probes *probes;
+    TestList list;
+} ProbeSet;
+
+static Test *probe_test(ProbeSet *ps, int part, Kind kind, const char *name)
+{
+    return testlist_add(&ps->list, part, kind, name);
+}
+
+static Case *probe_case(Test *t, const double *in, int nin)
+{
+    Case *c = test_add_case(t);
+    memcpy(c->in, in, (size_t)nin * sizeof *in);
+    return c;
+}
+
+/* Runs a probe; its answers in a (a->answered == 0 when it did not run). */
+static void probe_run(ProbeSet *ps, const Test *t, Answers *a)
+{
+    memset(a, 0, sizeof *a);
+    if (ps->probes->run(ps->probes->ctx, t, a) != 0)
+        memset(a, 0, sizeof *a);
+}
+
+static bool same(double got, double model, double scale)
+{
+    return fabs(got - model) <= MATCH_REL * scale;      /* false for NaN */
+}
+
+static bool is_float(double x)
+{
+    return (double)(float)x == x;
+}
+
+/* Every answer of a probe present and, where a model exists, float-exact
+ * while that model's double answer is not (at least half the cases). */
+static bool all_float(const Answers *a, int nout, const double (*model)[CASE_MAX_OUT], int ncases)
+{
+    if (a->answered < ncases)
+        return false;
+    int telling = 0;
+    for (int c = 0; c < ncases; c++)
+        for (int k = 0; k < nout; k++) {
+            if (!is_float(a->got[c][k]))
+                return false;
+            telling += !is_float(model[c][k]);
+        }
+    return 2 * telling >= ncases;
+}
+
+/* What the untouched skeleton answers to a case (labs/part*.c). */
+static void skeleton_answer(const Test *t, const Case *c, double *out)
+{
+    memset(out, 0, CASE_MAX_OUT * sizeof *out);
+    if (t->kind == KIND_CAMERA)
+        memcpy(out, c->in, 3 * sizeof *out);            /* origin = eye, direction 0 */
+    else if (t->kind == KIND_COLOR || t->kind == KIND_IMAGE)
+        memcpy(out, t->background, 3 * sizeof *out);
+}
+
+static bool is_skeleton_answer(const Test *t, const Case *c, const double *got)
+{
+    double v[CASE_MAX_OUT];
+    skeleton_answer(t, c, v);
+    for (int k = 0; k < kind_nout(t->kind); k++)
+        if (got[k] != v[k])
+            return false;
+    return true;
+}
+
+/* Every answer of every probe run is the skeleton's: the function is not
+ * written yet (or returns before its work).  Names that and returns true. */
+static bool unwritten(Found *f, const ProbeSet *ps, const Answers *a, int nprobes)
+{
+    int answered = 0;
+    for (int k = 0; k < nprobes; k++) {
+        const Test *t = &ps->list.tests[k];
+        for (int c = 0; c < a[k].answered; c++, answered++)
+            if (!is_skeleton_answer(t, &t->cases[c], a[k].got[c]))
+                return false;
+    }
+    if (answered == 0)
+        return false;
+    name_cause(f, "unwritten", TAG_UNWRITTEN, "every answer is the skeleton's answer, %s, whatever the "
+               "input: the function is not written yet, or returns before its work is done.",
+               ps->list.tests[0].kind == KIND_PLANE ? "w = h = 0"
+               : ps->list.tests[0].kind == KIND_PIXEL ? "(0, 0, 0)"
+               : ps->list.tests[0].kind == KIND_SPHERE ? "always a miss"
+               : "the eye and a zero direction; the background");
+    return true;
+}
+
+/* Counts the failing cases of the part's tests each cause explains, drops
+ * the causes that explain none (a flaw no failing test shows is not why
+ * points were lost), and writes the diagnosis. */
+typedef bool (*Explains)(const void *ctx, int tag, const Test *t, const Case *c, const double *got);
+
+static void write_diagnosis(Found *f, int part, const TestList *tests, const TestResult *results,
+                            Explains explains, const void *ctx, char **text, char **keys)
+{
+    int failing = 0, explained = 0;
+    for (int k = 0; k < tests->n; k++) {
+        const Test *t = &tests->tests[k];
+        const Answers *a = &results[k].answers;
+        if (t->part != part || !results[k].ran)
+            continue;
+        for (int c = 0; c < a->answered; c++) {
+            if (a->ok[c])
+                continue;
+            failing++;
+            bool any = false;
+            for (int q = 0; q < f->ncauses; q++)
+                if (f->cause[q].tag == TAG_UNWRITTEN ? is_skeleton_answer(t, &t->cases[c], a->got[c])
+                                                     : explains(ctx, f->cause[q].tag, t, &t->cases[c], a->got[c])) {
+                    f->cause[q].explained++;
+                    any = true;
+                }
+            explained += any;
+        }
+    }
+    size_t tlen = 0, klen = 0;
+    int named = 0;
+    for (int q = 0; q < f->ncauses; q++) {
+        if (failing > 0 && f->cause[q].explained == 0)
+            continue;
+        if (klen)
+            append(keys, &klen, " ");
+        append(keys, &klen, f->cause[q].key);
+        append(text, &tlen, "- ");
+        append(text, &tlen, f->cause[q].text);
+        append(text, &tlen, "\n");
+        named++;
+    }
+    if (named == 0 || failing == 0)
+        return;
+    char line[240];
+    if (explained == failing)
+        snprintf(line, sizeof line, "%s every failing case of this part (%d).\n",
+                 named > 1 ? "Together these explain" : "This explains", failing);
+    else
+        snprintf(line, sizeof line, "%s %d of the %d failing cases of this part; the others have a "
+                 "cause the probes did not find.\n", named > 1 ? "Together these explain" : "This explains",
+                 explained, failing);
+    append(text, &tlen, line);
+}
+
+/* ==== Part 1 ================================================================ */
+
+/* A model of image_plane_size: each way of getting it wrong, combined. */
+typedef struct {
+    int angle;      /* 0: alpha/2 in radians; 1: alpha/2 taken as radians;
+                       2: the whole alpha in radians; 3: the whole alpha taken as radians */
+    int factor2;    /* the 2 of h = 2 d tan */
+    int use_d;
+    int shape;      /* 0: w = aspect h; 1: w = h / aspect; 2: w and h swapped;
+                       3: alpha horizontal (w from tan, h = w / aspect) */
+} P1Model;
+
+static void p1_eval(P1Model m, const double *in, double *out)
+{
+    double fov = in[0], aspect = in[1], d = in[2];
+    double theta = m.angle == 0 ? fov / 2 * (M_PI / 180) : m.angle == 1 ? fov / 2
+                 : m.angle == 2 ? fov * (M_PI / 180) : fov;
+    double h0 = (m.factor2 ? 2 : 1) * (m.use_d ? d : 1) * tan(theta);
+    switch (m.shape) {
+    case 0:  out[0] = aspect * h0, out[1] = h0; break;
+    case 1:  out[0] = h0 / aspect, out[1] = h0; break;
+    case 2:  out[0] = h0, out[1] = aspect * h0; break;
+    default: out[0] = h0, out[1] = h0 / aspect; break;
+    }
+}
+
+static int p1_mistakes(P1Model m)
+{
+    return (m.angle != 0) + (m.angle == 3) + !m.factor2 + !m.use_d + (m.shape != 0);
+}
+
+static bool p1_matches(P1Model m, const double *in, const double *got)
+{
+    double v[2];
+    p1_eval(m, in, v);
+    return same(got[0], v[0], fabs(v[0])) && same(got[1], v[1], fabs(v[1]));
+}
+
+typedef struct {
+    bool have_model;
+    P1Model model;
+    bool tan90;
+} P1Found;
+
+/* tan(alpha/2) from its complement: 180 - alpha is exact near 180. */
+static double p1_h_near_180(double fov, double d)
+{
+    return 2 * d / tan((180 - fov) * (M_PI / 360));
+}
+
+/* Does got look like a correct formula whose angle was rounded: is the
+ * angle it implies within a few roundings of alpha pi / 360? */
+static bool p1_angle_rounding(const double *in, const double *got, double units)
+{
+    double fov = in[0], d = in[2];
+    if (!(got[1] > 0) || fov < 90)
+        return false;
+    double eps = (180 - fov) * (M_PI / 360);            /* pi/2 - theta, to a few u */
+    double implied = atan(2 * d / got[1]);              /* pi/2 - the theta got used */
+    return fabs(implied - eps) <= units * U * (M_PI / 2);
+}
+
+static bool p1_explains(const void *ctx, int tag, const Test *t, const Case *c, const double *got)
+{
+    const P1Found *p = ctx;
+    (void)tag;
+    (void)t;
+    if (p->have_model && p1_matches(p->model, c->in, got))
+        return true;
+    return p->tan90 && p1_angle_rounding(c->in, got, 8) && fabs(got[0] - c->in[1] * got[1]) <= 1e-12 * got[0];
+}
+
+static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
+{
+    static const double basic[][3] = {
+        { 60, 2, 1.5 }, { 90, 0.5, 3 }, { 30, 1.5, 0.5 }, { 120, 1.25, 2 }, { 10, 4.0 / 3, 0.75 },
+    };
+    static const double near180[][3] = {
+        { 179.99, 1, 1 }, { 179.9999, 1, 1 }, { 179.999999, 1, 1 }, { 179.99999999, 1, 1 },
+    };
+    enum { NB = sizeof basic / sizeof *basic, NF = sizeof near180 / sizeof *near180 };
+    Test *tb = probe_test(ps, PART1, KIND_PLANE, "probe: ordinary fields of view");
+    for (int k = 0; k < NB; k++)
+        probe_case(tb, basic[k], 3);
+    Test *tf = probe_test(ps, PART1, KIND_PLANE, "probe: fields of view near 180 degrees");
+    for (int k = 0; k < NF; k++)
+        probe_case(tf, near180[k], 3);
+    Answers a2[2];
+    probe_run(ps, &ps->list.tests[0], &a2[0]);
+    probe_run(ps, &ps->list.tests[1], &a2[1]);
+    Answers ab = a2[0], af = a2[1];
+    if (unwritten(f, ps, a2, 2)) {
+        answers_free(&ab);
+        answers_free(&af);
+        return;
+    }
+
+    /* The simplest model that explains every ordinary answer. */
+    if (ab.answered == NB) {
+        int best = 99;
+        for (int angle = 0; angle < 4; angle++)
+            for (int f2 = 0; f2 < 2; f2++)
+                for (int ud = 0; ud < 2; ud++)
+                    for (int shape = 0; shape < 4; shape++) {
+                        P1Model m = { angle, f2, ud, shape };
+                        bool all = true;
+                        for (int c = 0; c < NB && all; c++)
+                            all = p1_matches(m, basic[c], ab.got[c]);
+                        if (all && p1_mistakes(m) < best) {
+                            best = p1_mistakes(m);
+                            out->model = m;
+                            out->have_model = true;
+                        }
+                    }
+    }
+    double model[NB][CASE_MAX_OUT];
+    for (int c = 0; c < NB; c++)
+        p1_eval(out->have_model ? out->model : (P1Model){ 0, 1, 1, 0 }, basic[c], model[c]);
+    bool in_float = all_float(&ab, 2, (const double (*)[CASE_MAX_OUT])model, NB);
+
+    const P1Model m = out->model;
+    const double *g = ab.answered ? ab.got[1] : NULL;     /* alpha = 90, aspect 0.5, d = 3 */
+    if (out->have_model && p1_mistakes(m) > 0) {
+        if (m.angle == 1 || m.angle == 3)
+            name_cause(f, "degrees-as-radians", TAG_ALL, "tan was given the angle in degrees: for alpha = 90, "
+                       "aspect = 0.5, d = 3 your code returned h = %.6g, which is %s tan(%s) with %s "
+                       "read as radians. tan takes radians: multiply degrees by pi / 180 (and if your "
+                       "function treats the field of view as radians, it is given in degrees here).",
+                       g[1], m.factor2 ? "2 d" : "d", m.angle == 1 ? "45" : "90", m.angle == 1 ? "45" : "90");
+        if (m.angle >= 2)
+            name_cause(f, "full-angle", TAG_ALL, "tan of the whole field of view: h = 2 d tan(alpha / 2) "
+                       "uses half the angle (the plane spans alpha / 2 above the axis and alpha / 2 below).");
+        if (!m.factor2)
+            name_cause(f, "no-factor-2", TAG_ALL, "the factor 2 is missing: tan(alpha / 2) gives half the "
+                       "plane's height, h / (2 d); h = 2 d tan(alpha / 2).");
+        if (!m.use_d)
+            name_cause(f, "d-ignored", TAG_ALL, "the plane is sized as if d = 1 (for d = 3 your h is a third "
+                       "of the right one): h = 2 d tan(alpha / 2) grows with d. Tutorials such as "
+                       "Scratchapixel put the plane at distance 1; this lab's is at d.");
+        if (m.shape == 1)
+            name_cause(f, "aspect-inverted", TAG_ALL, "the aspect ratio is inverted: w = aspect h, with "
+                       "aspect = nx / ny (for aspect 0.5 the plane is half as wide as it is tall).");
+        if (m.shape == 2)
+            name_cause(f, "w-h-swapped", TAG_ALL, "w and h are swapped: h = 2 d tan(alpha / 2) is the "
+                       "height, and w = aspect h the width.");
+        if (m.shape == 3)
+            name_cause(f, "horizontal-fov", TAG_ALL, "the field of view is taken as the horizontal one "
+                       "(w = 2 d tan(alpha / 2), h = w / aspect): in this lab alpha is VERTICAL, so "
+                       "h = 2 d tan(alpha / 2) and w = aspect h.");
+    }
+    if (in_float && (!out->have_model || m.angle == 0))
+        name_cause(f, "float", TAG_ALL, "computed in float: every answer is a float (24 bits, about 7 digits), "
+                   "e.g. h = %.17g for alpha = 90, aspect = 0.5, d = 3. Use double throughout "
+                   "(tan, not tanf; 180.0, not 180.0f).", g ? g[1] : 0);
+
+    /* Near 180: a right formula whose rounded angle tan amplifies. */
+    if (out->have_model && p1_mistakes(m) == 0 && !in_float && af.answered == NF) {
+        bool wrong = false, rounding = true;
+        double worst = 0, worst_fov = 0;
+        for (int c = 0; c < NF; c++) {
+            double h = p1_h_near_180(near180[c][0], 1);
+            double rel = fabs(af.got[c][1] - h) / h;
+            if (rel > 32 * U) {
+                wrong = true;
+                rounding = rounding && p1_angle_rounding(near180[c], af.got[c], 8);
+                if (rel > worst)
+                    worst = rel, worst_fov = near180[c][0];
+            }
+        }
+        if (wrong && rounding) {
+            out->tan90 = true;
+            name_cause(f, "tan-near-90", TAG_ALL, "your formula is right, but near 180 degrees it loses "
+                       "digits (at alpha = %.12g, h is off by %.2g of itself): alpha pi / 360 is "
+                       "rounded to a double like any number, and tan is so steep near 90 degrees that "
+                       "this rounding of 1e-16 is magnified many times. Above 45 degrees use "
+                       "tan(alpha / 2) = 1 / tan(90 - alpha / 2): 180 - alpha is exact (the hard-case "
+                       "challenge in the handout).", worst_fov, worst);
+        }
+    }
+    answers_free(&ab);
+    answers_free(&af);
+}
+
+/* ==== Part 2 ================================================================ */
+
+/* Models of each coordinate, one at a time: x depends on i, nx, w; y on
+ * j, ny, h; z on d. */
+enum { X_RIGHT, X_CORNER, X_FAR_CORNER, X_NOT_CENTRED, X_SWAPPED, X_INT, NX_MODELS };
+enum { Y_RIGHT, Y_BOTTOM, Y_CORNER, Y_FAR_CORNER, Y_BOTTOM_CORNER, Y_NX, Y_NOT_CENTRED, Y_SWAPPED,
+       Y_INT, NY_MODELS };
+enum { Z_RIGHT, Z_PLUS, Z_ONE, NZ_MODELS };
+
+static double p2_x(int m, const double *in)
+{
+    double i = in[0], nx = in[2], w = in[4], h = in[5];
+    switch (m) {
+    case X_RIGHT:       return -w / 2 + w * (i + 0.5) / nx;
+    case X_CORNER:      return -w / 2 + w * i / nx;
+    case X_FAR_CORNER:  return -w / 2 + w * (i + 1) / nx;
+    case X_NOT_CENTRED: return w * (i + 0.5) / nx;
+    case X_SWAPPED:     return -h / 2 + h * (i + 0.5) / nx;
+    default:            return -w / 2;
+    }
+}
+
+static double p2_y(int m, const double *in)
+{
+    double j = in[1], nx = in[2], ny = in[3], w = in[4], h = in[5];
+    switch (m) {
+    case Y_RIGHT:         return h / 2 - h * (j + 0.5) / ny;
+    case Y_BOTTOM:        return -h / 2 + h * (j + 0.5) / ny;
+    case Y_CORNER:        return h / 2 - h * j / ny;
+    case Y_FAR_CORNER:    return h / 2 - h * (j + 1) / ny;
+    case Y_BOTTOM_CORNER: return -h / 2 + h * j / ny;
+    case Y_NX:            return -h / 2 + h * (ny - 0.5 - j) / nx;
+    case Y_NOT_CENTRED:   return h * (ny - 0.5 - j) / ny;
+    case Y_SWAPPED:       return w / 2 - w * (j + 0.5) / ny;
+    default:              return -h / 2;
+    }
+}
+
+static double p2_z(int m, const double *in)
+{
+    double d = in[6];
+    return m == Z_RIGHT ? -d : m == Z_PLUS ? d : -1;
+}
+
+typedef struct {
+    int x, y, z;                   /* the model of each coordinate, or -1 */
+} P2Found;
+
+static double p2_scale(const double *in)
+{
+    return fmax(fmax(fabs(in[4]), fabs(in[5])), fabs(in[6]));
+}
+
+static bool p2_coord_matches(int coord, int m, const double *in, double got)
+{
+    double v = coord == 0 ? p2_x(m, in) : coord == 1 ? p2_y(m, in) : p2_z(m, in);
+    return same(got, v, p2_scale(in));
+}
+
+static bool p2_explains(const void *ctx, int tag, const Test *t, const Case *c, const double *got)
+{
+    const P2Found *p = ctx;
+    (void)tag;
+    (void)t;
+    const int m[3] = { p->x, p->y, p->z };
+    for (int k = 0; k < 3; k++) {
+        if (c->tol[k] >= 0 && fabs(got[k] - c->want[k]) <= c->tol[k])
+            continue;                                   /* this coordinate is right */
+        if (m[k] < 0 || !p2_coord_matches(k, m[k], c->in, got[k]))
+            return false;
+    }
+    return true;
+}
+
+static void diagnose_part2(ProbeSet *ps, Found *f, P2Found *out)
+{
+    /* i j nx ny w h d: pixels not square, w / h far from nx / ny, d not 1 */
+    static const double cases[][7] = {
+        { 1, 0, 4, 3, 2.5, 1.2, 1.5 }, { 3, 2, 5, 4, 4, 3, 2 }, { 0, 3, 6, 4, 6.4, 2.2, 0.5 },
+        { 2, 1, 3, 5, 1.2, 2.6, 1.25 }, { 4, 0, 5, 7, 2, 3, 3 }, { 6, 5, 7, 6, 3.3, 1.7, 0.8 },
+    };
+    enum { N = sizeof cases / sizeof *cases };
+    Test *t = probe_test(ps, PART2, KIND_PIXEL, "probe: pixels of images that are not square");
+    for (int k = 0; k < N; k++)
+        probe_case(t, cases[k], 7);
+    Answers a;
+    probe_run(ps, &ps->list.tests[0], &a);
+    out->x = out->y = out->z = -1;
+    if (a.answered < N || unwritten(f, ps, &a, 1)) {
+        answers_free(&a);
+        return;
+    }
+    const int nmodels[3] = { NX_MODELS, NY_MODELS, NZ_MODELS };
+    int *which[3] = { &out->x, &out->y, &out->z };
+    for (int coord = 0; coord < 3; coord++)
+        for (int m = 0; m < nmodels[coord] && *which[coord] < 0; m++) {
+            bool all = true;
+            for (int c = 0; c < N && all; c++)
+                all = p2_coord_matches(coord, m, cases[c], a.got[c][coord]);
+            if (all)
+                *which[coord] = m;
+        }
+    double model[N][CASE_MAX_OUT];
+    for (int c = 0; c < N; c++) {
+        model[c][0] = p2_x(X_RIGHT, cases[c]);
+        model[c][1] = p2_y(Y_RIGHT, cases[c]);
+        model[c][2] = p2_z(Z_RIGHT, cases[c]);
+    }
+    const double *g = a.got[0], *in = cases[0];
+    int x = out->x, y = out->y;
+    if (x == X_INT && y == Y_INT) {
+        name_cause(f, "integer-division", TAG_ALL, "every pixel came back as the plane's corner (-w/2, -h/2): "
+                   "an integer division such as (2 * i + 1) / (2 * nx) is 0 in C when both are ints. "
+                   "Write 0.5 or convert to double first: (i + 0.5) / nx.");
+        x = y = X_RIGHT;
+    }
+    if (x == X_CORNER || x == X_FAR_CORNER || y == Y_CORNER || y == Y_FAR_CORNER || y == Y_BOTTOM_CORNER)
+        name_cause(f, "pixel-corner", TAG_ALL, "that is a pixel's corner, not its centre: for pixel (%g, %g) "
+                   "of a %g x %g image your code returned (%.6g, %.6g), half a pixel from the centre "
+                   "(%.6g, %.6g). The centre is at i + 0.5 and j + 0.5.",
+                   in[0], in[1], in[2], in[3], g[0], g[1], model[0][0], model[0][1]);
+    if (y == Y_BOTTOM || y == Y_BOTTOM_CORNER)
+        name_cause(f, "bottom-origin", TAG_ALL, "y is upside down: row j = 0 came out at the bottom of the "
+                   "plane (y < 0), as in OpenGL and many image libraries. In this lab row 0 is the TOP "
+                   "row: y = h/2 - h (j + 0.5) / ny.");
+    if (y == Y_NX)
+        name_cause(f, "nx-for-y", TAG_ALL, "y divides by nx: rows are counted by ny, y = -h/2 + h (ny - 0.5 - j) / ny.");
+    if (x == X_NOT_CENTRED || y == Y_NOT_CENTRED)
+        name_cause(f, "not-centred", TAG_ALL, "the plane is not centred on the axis: x runs from -w/2 to w/2 "
+                   "(and y from -h/2 to h/2), not from 0.");
+    if (x == X_SWAPPED || y == Y_SWAPPED)
+        name_cause(f, "w-h-swapped", TAG_ALL, "w and h are swapped: x spans the width w (with nx columns), "
+                   "y the height h (with ny rows).");
+    if (out->z == Z_PLUS)
+        name_cause(f, "z-sign", TAG_ALL, "z has the wrong sign: the eye looks down -z, so the plane is at "
+                   "z = -d (your z was +d).");
+    if (out->z == Z_ONE)
+        name_cause(f, "z-sign", TAG_ALL, "z is -1 whatever d: the plane is at z = -d.");
+    if (x == X_RIGHT && y == Y_RIGHT && out->z == Z_RIGHT &&
+        all_float(&a, 3, (const double (*)[CASE_MAX_OUT])model, N))
+        name_cause(f, "float", TAG_ALL, "computed in float: every coordinate is a float (24 bits, about 7 "
+                   "digits), e.g. x = %.17g. Use double throughout.", g[0]);
+    answers_free(&a);
+}
+
+/* ==== Part 3a ================================================================ */
+
+typedef struct {
+    double A, B, C, disc;
+    bool real;
+    double t0, t1;                 /* the roots, t0 <= t1, when real */
+} Quad;
+
+static Quad quad(const double *in)
+{
+    const double *c = in, *e = in + 4, *r = in + 7;
+    double R = in[3], f[3] = { e[0] - c[0], e[1] - c[1], e[2] - c[2] };
+    Quad q;
+    q.A = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+    q.B = f[0] * r[0] + f[1] * r[1] + f[2] * r[2];
+    q.C = f[0] * f[0] + f[1] * f[1] + f[2] * f[2] - R * R;
+    q.disc = q.B * q.B - q.A * q.C;
+    q.real = q.disc >= 0 && q.A > 0;
+    q.t0 = q.t1 = NAN;
+    if (q.real) {
+        double sq = sqrt(q.disc);
+        double qq = q.B < 0 ? sq - q.B : -(q.B + sq);
+        double r0 = qq != 0 ? q.C / qq : -q.B / q.A, r1 = qq / q.A;
+        q.t0 = fmin(r0, r1);
+        q.t1 = fmax(r0, r1);
+    }
+    return q;
+}
+
+/* A hit/miss answer as a pair; miss is (0, 0). */
+static void hit(double *out, bool h, double t)
+{
+    out[0] = h ? 1 : 0;
+    out[1] = h ? t : 0;
+}
+
+/* The smallest root above tmin, as the lecture's rule with tmin = 0. */
+static void first_root_above(const Quad *q, double tmin, double *out)
+{
+    if (!q->real)
+        hit(out, false, 0);
+    else if (q->t0 > tmin)
+        hit(out, true, q->t0);
+    else
+        hit(out, q->t1 > tmin, q->t1);
+}
+
+enum { M_RIGHT, M_FAR, M_HALVED, M_DISC4, M_UNIT, M_DISTANCE, M_BEHIND, M_BSIGN, M_INSIDE_MISS,
+       M_TANGENT_MISS, M_TMIN, M_NAN, M_FLOAT, NMODELS3, M_CANCEL = NMODELS3 };
+
+/* What cause m answers to a case.  tmin is the epsilon M_TMIN uses. */
+static void p3_eval(int m, const double *in, double tmin, double *out)
+{
+    Quad q = quad(in);
+    const double *r = in + 7;
+    double len = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    switch (m) {
+    case M_FAR:
+        hit(out, q.real && q.t1 > 0, q.t1);
+        break;
+    case M_HALVED:
+        first_root_above(&q, 0, out);
+        out[1] /= 2;
+        break;
+    case M_DISC4: {
+        double d4 = q.B * q.B - 4 * q.A * q.C;
+        double t = d4 >= 0 ? (-q.B - sqrt(d4)) / (2 * q.A) : -1;
+        hit(out, t > 0, t);
+        break;
+    }
+    case M_UNIT: {                                  /* A = 1 whatever r */
+        double d1 = q.B * q.B - q.C;
+        double t0 = -q.B - sqrt(d1), t1 = -q.B + sqrt(d1);
+        hit(out, d1 >= 0 && (t0 > 0 || t1 > 0), t0 > 0 ? t0 : t1);
+        break;
+    }
+    case M_DISTANCE:                                /* the distance along the ray, t |r| */
+        first_root_above(&q, 0, out);
+        out[1] *= len;
+        break;
+    case M_BEHIND:                                  /* the smaller root, whatever its sign */
+        hit(out, q.real, q.t0);
+        break;
+    case M_BSIGN: {                                 /* t = (B -+ sqrt) / A */
+        Quad m2 = q;
+        m2.t0 = -q.t1, m2.t1 = -q.t0;
+        first_root_above(&m2, 0, out);
+        break;
+    }
+    case M_INSIDE_MISS:
+        if (q.C < 0)
+            hit(out, false, 0);
+        else
+            first_root_above(&q, 0, out);
+        break;
+    case M_TANGENT_MISS:
+        if (q.disc == 0)
+            hit(out, false, 0);
+        else
+            first_root_above(&q, 0, out);
+        break;
+    case M_TMIN:
+        first_root_above(&q, tmin, out);
+        break;
+    case M_FLOAT:
+        first_root_above(&q, 0, out);
+        out[1] = (float)out[1];
+        break;
+    default:
+        first_root_above(&q, 0, out);
+        break;
+    }
+}
+
+static bool p3_same(const double *got, const double *model)
+{
+    if (got[0] != model[0])
+        return false;
+    return model[0] == 0 || same(got[1], model[1], fabs(model[1]));
+}
+
+/* Right as the core tests judge an ordinary case: to 1e-9. */
+static bool p3_right(const double *got, const double *in)
+{
+    double v[2];
+    p3_eval(M_RIGHT, in, 0, v);
+    if (got[0] != v[0])
+        return false;
+    return v[0] == 0 || fabs(got[1] - v[1]) <= 1e-9 * fabs(v[1]);
+}
+
+typedef struct {
+    bool model[NMODELS3];          /* causes with a model, confirmed */
+    double tmin;                   /* the epsilon M_TMIN confirmed   */
+    bool cancellation;
+} P3Found;
+
+static bool p3_explains(const void *ctx, int tag, const Test *t, const Case *c, const double *got)
+{
+    const P3Found *p = ctx;
+    if (tag == M_CANCEL)                 /* the textbook's losses: the hard cases */
+        return t->hard;
+    if (tag == M_NAN)
+        return got[0] == 1 && isnan(got[1]);
+    double v[2];
+    p3_eval(tag, c->in, p->tmin, v);
+    return p3_same(got, v) && (tag != M_FLOAT || is_float(got[1]));
+}
+
+/* Every answer of a probe is model m's (and, somewhere, not the right one). */
+static bool p3_all(const Answers *a, const double (*in)[CASE_MAX_IN], int n, int m, double tmin)
+{
+    if (a->answered < n)
+        return false;
+    bool differs = false;
+    for (int c = 0; c < n; c++) {
+        double v[2];
+        p3_eval(m, in[c], tmin, v);
+        if (!p3_same(a->got[c], v))
+            return false;
+        differs = differs || !p3_right(a->got[c], in[c]);
+    }
+    return differs;
+}
+
+static bool p3_all_right(const Answers *a, const double (*in)[CASE_MAX_IN], int n)
+{
+    if (a->answered < n)
+        return false;
+    for (int c = 0; c < n; c++)
+        if (!p3_right(a->got[c], in[c]))
+            return false;
+    return true;
+}
+
+#define SPH(cx, cy, cz, R, ex, ey, ez, rx, ry, rz) { cx, cy, cz, R, ex, ey, ez, rx, ry, rz }
+
+static void add_probe3(ProbeSet *ps, const char *name, const double (*in)[CASE_MAX_IN], int n)
+{
+    Test *t = probe_test(ps, PART3A, KIND_SPHERE, name);
+    for (int k = 0; k < n; k++)
+        probe_case(t, in[k], 10);
+}
+
+static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
+{
+    /* Ordinary hits from outside, unit directions, answers not floats. */
+    static const double basic[][CASE_MAX_IN] = {
+        SPH(0.1, 0.2, -5.3, 1.3, 0, 0, 0, 0, 0, -1),
+        SPH(1, 2, -8, 2.2, 0, 0, 0, 0.6, 0, -0.8),
+        SPH(-2, 0.5, -6.1, 1.7, 0.3, 0.1, 0.2, -0.28, 0.96, 0),
+        SPH(0, -1, -4.7, 1.1, 0, 0, 0, 0, -0.28, -0.96),
+        SPH(0.05, 0, -1.9, 1.7, 0, 0, 0, 0, 0, -1),         /* near: B^2 - 4 A C >= 0 */
+    };
+    /* The same rays, directions scaled by 3 and by 1/4: t scales by 1/3 and 4. */
+    double scaled[8][CASE_MAX_IN];
+    for (int k = 0; k < 8; k++) {
+        memcpy(scaled[k], basic[k % 4], sizeof scaled[k]);
+        for (int q = 7; q < 10; q++)
+            scaled[k][q] *= k < 4 ? 3 : 0.25;
+    }
+    /* Spheres wholly behind the origin (misses), then one ahead. */
+    static const double behind[][CASE_MAX_IN] = {
+        SPH(0, 0, 5.2, 1.3, 0, 0, 0, 0, 0, -1),
+        SPH(1, 1, 9, 2.5, 0, 0, 0, -0.6, 0, -0.8),
+        SPH(0, 0.5, 7.3, 1, 0, 0, 0, 0, 0, -2),
+        SPH(0, 0, -5.2, 1.3, 0, 0, 0, 0, 0, -1),
+    };
+    /* From inside: the hit is the exit point. */
+    static const double inside[][CASE_MAX_IN] = {
+        SPH(0, 0, 0, 10.3, 0, 0, 0, 0, 0, -1),
+        SPH(0.5, -0.2, -1, 5.1, 0, 0, 0, 0.6, 0, -0.8),
+        SPH(1, 2, 3, 50.7, 0, 0, 0, 0, 0.28, 0.96),
+    };
+    /* Exact tangents: B^2 - A C is 0 in any order of operations. */
+    static const double tangent[][CASE_MAX_IN] = {
+        SPH(2, 0, -10, 2, 0, 0, 0, 0, 0, -1),
+        SPH(0, -3, -6, 3, 0, 0, 0, 0, 0, -2),
+        SPH(-1.5, 0, -4, 1.5, 0, 0, 0, 0, 0, -0.5),
+    };
+    /* Hits just ahead of the origin: e a gap g outside the sphere, so the
+     * hit is at t = g exactly (binary fractions), the far root at g + 2. */
+    static const double gaps[] = { 0x1p-30, 0x1p-23, 0x1p-17, 0x1p-14, 0x1p-12, 0x1.4p-11,
+                                   0x1p-9, 0x1p-7, 0x1p-5, 0x1p-3, 1 };
+    enum { NG = sizeof gaps / sizeof *gaps };
+    double near[NG][CASE_MAX_IN];
+    for (int k = 0; k < NG; k++) {
+        double row[CASE_MAX_IN] = SPH(0, 0, -2, 1, 0, 0, -1 + gaps[k], 0, 0, -1);
+        memcpy(near[k], row, sizeof row);
+    }
+    /* A zero direction, and NaN input: misses. */
+    static const double nan_cases[][CASE_MAX_IN] = {
+        SPH(0, 0, -5, 1, 0, 0, 0, 0, 0, 0),
+        SPH(NAN, 0, -5, 1, 0, 0, 0, 0, 0, -1),
+    };
+    /* Far, small spheres: B^2 and A C agree to 16 digits; the hit is at
+     * D - sqrt(R^2 - rho^2), rho the line's distance from c. */
+    static const double far[][CASE_MAX_IN] = {
+        SPH(0.5, 0, -(0x1p27 + 1), 1, 0, 0, 0, 0, 0, -1),
+        SPH(0, 0.6, -(0x1p28 + 3), 1, 0, 0, 0, 0, 0, -1),
+        SPH(0.75, 0, -(0x1p29 + 5), 1, 0, 0, 0, 0, 0, -1),
+    };
+    enum { NB = 5, NS = 8, NBH = 4, NI = 3, NT = 3, NN = 2, NF = 3 };
+    add_probe3(ps, "probe: ordinary hits", basic, NB);
+    add_probe3(ps, "probe: directions scaled by 3 and by 1/4", (const double (*)[CASE_MAX_IN])scaled, NS);
+    add_probe3(ps, "probe: spheres behind the origin", behind, NBH);
+    add_probe3(ps, "probe: from inside the sphere", inside, NI);
+    add_probe3(ps, "probe: tangent rays", tangent, NT);
+    add_probe3(ps, "probe: hits just ahead of the origin", (const double (*)[CASE_MAX_IN])near, NG);
+    add_probe3(ps, "probe: a zero direction and NaN input", nan_cases, NN);
+    add_probe3(ps, "probe: far, small spheres", far, NF);
+    Answers a[8];
+    for (int k = 0; k < 8; k++)
+        probe_run(ps, &ps->list.tests[k], &a[k]);
+    if (unwritten(f, ps, a, 8)) {
+        for (int k = 0; k < 8; k++)
+            answers_free(&a[k]);
+        return;
+    }
+    const Answers *ab = &a[0], *as = &a[1], *abh = &a[2], *ai = &a[3], *at = &a[4], *an = &a[5],
+                  *anan = &a[6], *afar = &a[7];
+
+    /* Ordinary hits: right, or one mistake's answers. */
+    bool basic_right = p3_all_right(ab, basic, NB);
+    /* b-sign misses every sphere ahead: the spheres behind confirm it. */
+    static const int plain[] = { M_FAR, M_HALVED, M_BSIGN, M_DISC4 };
+    int basic_model = basic_right ? M_RIGHT : -1;
+    for (int k = 0; k < 4 && basic_model < 0; k++)
+        if (p3_all(ab, basic, NB, plain[k], 0) &&
+            (plain[k] != M_BSIGN || p3_all(abh, behind, NBH, M_BSIGN, 0)))
+            basic_model = plain[k];
+    double model[NB][CASE_MAX_OUT];
+    for (int c = 0; c < NB; c++)
+        p3_eval(M_RIGHT, basic[c], 0, model[c]);
+    if (!basic_right && ab->answered == NB) {
+        bool close = true;
+        for (int c = 0; c < NB; c++)
+            close = close && ab->got[c][0] == 1 && same(ab->got[c][1], model[c][1], model[c][1]);
+        if (close && all_float(ab, 2, (const double (*)[CASE_MAX_OUT])model, NB)) {
+            out->model[M_FLOAT] = true;
+            name_cause(f, "float", M_FLOAT, "computed in float: every t is a float (24 bits, about 7 digits), "
+                       "e.g. t = %.17g where the hit is at %.17g. Use double throughout (sqrt, not "
+                       "sqrtf).", ab->got[0][1], model[0][1]);
+            basic_model = M_RIGHT;
+        }
+    }
+    const double *g = ab->answered ? ab->got[0] : NULL;
+    if (basic_model == M_FAR) {
+        out->model[M_FAR] = true;
+        name_cause(f, "far-root", M_FAR, "the far root: for a ray that enters the sphere at t = %.6g and "
+                   "leaves at t = %.6g your code returned %.6g. The first hit is the smaller root "
+                   "t > 0, (-B - sqrt(B^2 - A C)) / A.", quad(basic[0]).t0, quad(basic[0]).t1, g[1]);
+    } else if (basic_model == M_HALVED) {
+        out->model[M_HALVED] = true;
+        name_cause(f, "t-halved", M_HALVED, "every t is half the right one: with B = f.r (not 2 f.r) the roots "
+                   "are (-B -+ sqrt(B^2 - A C)) / A, without the 2 of the school formula's 2a.");
+    } else if (basic_model == M_DISC4) {
+        out->model[M_DISC4] = true;
+        name_cause(f, "disc-4ac", M_DISC4, "B^2 - 4 A C mixes two forms: with the lecture's B = f.r the "
+                   "discriminant is B^2 - A C and t = (-B -+ sqrt(B^2 - A C)) / A; the 4 and the 2 "
+                   "belong with b = 2 f.r.");
+    } else if (basic_model == M_BSIGN) {
+        out->model[M_BSIGN] = true;
+        name_cause(f, "b-sign", M_BSIGN, "the sign of B: spheres ahead were missed and spheres behind were "
+                   "hit, as if the ray pointed backwards. With f = e - c, B = f.r and "
+                   "t = (-B -+ sqrt(B^2 - A C)) / A.");
+    }
+
+    /* Scaled directions: A = 1 assumed, or the distance returned. */
+    if (basic_model == M_RIGHT && as->answered == NS && !p3_all_right(as, (const double (*)[CASE_MAX_IN])scaled, NS)) {
+        if (p3_all(as, (const double (*)[CASE_MAX_IN])scaled, NS, M_UNIT, 0)) {
+            out->model[M_UNIT] = true;
+            name_cause(f, "unit-direction", M_UNIT, "the direction is assumed to have unit length: the same "
+                       "ray with its direction r scaled by 3 must hit at a third of the t (%.6g), but "
+                       "your code returned %.6g. r need not be a unit vector, so A = r.r is not 1 "
+                       "(smallpt, Inigo Quilez's and tinyraytracer's tests assume |r| = 1).",
+                       quad(scaled[0]).t0, as->got[0][1]);
+        } else if (p3_all(as, (const double (*)[CASE_MAX_IN])scaled, NS, M_DISTANCE, 0)) {
+            out->model[M_DISTANCE] = true;
+            name_cause(f, "distance-not-t", M_DISTANCE, "the distance along the ray is returned, not t: with "
+                       "the direction scaled by 3 the hit must be at a third of the t (%.6g), but "
+                       "your code returned the same %.6g. If you normalise r, divide the distance "
+                       "by |r| to get t.", quad(scaled[0]).t0, as->got[0][1]);
+        }
+    }
+
+    /* Roots at t <= 0: behind the origin, or the near root from inside. */
+    bool behind_neg = false, inside_neg = false;
+    for (int c = 0; c < abh->answered; c++)
+        behind_neg = behind_neg || (abh->got[c][0] == 1 && abh->got[c][1] <= 0);
+    for (int c = 0; c < ai->answered; c++)
+        inside_neg = inside_neg || (ai->got[c][0] == 1 && ai->got[c][1] <= 0);
+    if (behind_neg || inside_neg) {
+        out->model[M_BEHIND] = true;
+        name_cause(f, "hits-behind", M_BEHIND, "a root with t <= 0 was returned as a hit (%s): t <= 0 is "
+                   "behind the ray's origin, so it is no hit. Take the smaller root if it is > 0, "
+                   "else the larger if it is > 0, else report a miss.",
+                   inside_neg ? "from inside the sphere, the near root, which is behind the origin"
+                              : "a sphere wholly behind the origin");
+    }
+    /* From inside, a miss. */
+    if (basic_model == M_RIGHT && ai->answered == NI && !inside_neg && p3_all(ai, inside, NI, M_INSIDE_MISS, 0)) {
+        out->model[M_INSIDE_MISS] = true;
+        name_cause(f, "inside-miss", M_INSIDE_MISS, "from inside the sphere (C < 0) every ray was a miss: one root is "
+                   "behind the origin and the other, t = %.6g here, is where the ray leaves the "
+                   "sphere; that is the hit.", quad(inside[0]).t1);
+    }
+    /* Exact tangents, missed. */
+    if (basic_model == M_RIGHT && at->answered == NT && p3_all(at, tangent, NT, M_TANGENT_MISS, 0)) {
+        out->model[M_TANGENT_MISS] = true;
+        name_cause(f, "tangent-miss", M_TANGENT_MISS, "a tangent ray (B^2 - A C = 0 exactly) was a miss: it touches "
+                   "the sphere at t = -B / A, and touching is a hit (test disc < 0 for a miss, not "
+                   "disc <= 0).");
+    }
+    /* Hits just ahead: right from some gap up, wrong below: an epsilon. */
+    if (an->answered == NG && (basic_model == M_RIGHT || basic_model < 0)) {
+        int lowest_right = NG;
+        bool threshold = true;
+        for (int c = NG - 1; c >= 0; c--) {
+            if (p3_right(an->got[c], near[c]) && lowest_right == c + 1)
+                lowest_right = c;
+        }
+        for (int c = 0; c < lowest_right && threshold; c++) {
+            double v[2];
+            p3_eval(M_TMIN, near[c], gaps[c] * 1.0000001, v);       /* the far root */
+            threshold = p3_same(an->got[c], v) || an->got[c][0] == 0;
+        }
+        if (threshold && lowest_right > 0 && lowest_right < NG) {
+            double lo = gaps[lowest_right - 1], hi = gaps[lowest_right];
+            out->model[M_TMIN] = true;
+            out->tmin = sqrt(lo * hi);
+            const char *like = lo < 1e-3 && 1e-3 <= hi ? ": it looks like Ray Tracing in One Weekend's "
+                                                         "t_min = 0.001"
+                             : lo < 1e-4 && 1e-4 <= hi ? ": it looks like smallpt's eps = 1e-4" : "";
+            double v[2];
+            p3_eval(M_RIGHT, near[lowest_right - 1], 0, v);
+            name_cause(f, "tmin-epsilon", M_TMIN, "hits closer than a tmin between %.3g and %.3g are ignored%s. "
+                       "Asked for a hit at t = %.3g (the ray starts just outside the sphere), your code "
+                       "answered %s; from t = %.3g on it was right. This lab's rule is tmin = 0: every "
+                       "hit with t > 0 counts. Tutorials use an epsilon against shadow acne, next "
+                       "week's topic.", lo, hi, like, v[1],
+                       an->got[lowest_right - 1][0] == 0 ? "a miss" : "the far root", hi);
+        }
+    }
+    /* A zero direction or NaN input answered as a hit at NaN. */
+    bool nan_hit = false;
+    for (int c = 0; c < anan->answered; c++)
+        nan_hit = nan_hit || (anan->got[c][0] == 1 && !isfinite(anan->got[c][1]));
+    if (nan_hit) {
+        out->model[M_NAN] = true;
+        name_cause(f, "nan-hit", M_NAN, "a hit at t = NaN was returned (%s): with r = 0, A = 0 and the "
+                   "roots are 0/0 = NaN, and every comparison with NaN is false, so a test written "
+                   "as \"if (t < tmin) return false\" lets it through. Write it as "
+                   "\"if (!(t > tmin)) return false\", or reject A = 0 first.",
+                   anan->answered > 0 && anan->got[0][0] == 1 ? "for a zero direction" : "for NaN input");
+    }
+    /* Far, small spheres: right on ordinary rays, wrong here. */
+    if (basic_model == M_RIGHT && !out->model[M_FLOAT] && afar->answered == NF) {
+        bool wrong = false;
+        for (int c = 0; c < NF; c++) {
+            double rho = hypot(far[c][0], far[c][1]), D = -far[c][2];
+            double t = D - sqrt(1 - rho * rho);
+            wrong = wrong || afar->got[c][0] != 1 || !(fabs(afar->got[c][1] - t) <= 1e-10 * t);
+        }
+        if (wrong) {
+            out->cancellation = true;
+            name_cause(f, "cancellation", M_CANCEL, "your formula is right, but it loses the sphere when it is "
+                       "small and far (a sphere of radius 1 at 2^27): B^2 and A C (or |L|^2 and "
+                       "tca^2) agree to 16 digits there, and their difference, the part that says "
+                       "where the ray is, is rounding error. The hard-case challenge in the handout "
+                       "computes the discriminant without that cancellation: A R^2 - |f x r|^2.");
+        }
+    }
+    for (int k = 0; k < 8; k++)
+        answers_free(&a[k]);
+}
+
+/* ==== Part 3b ================================================================ */
+
+enum { C_RIGHT, C_UNNORMALISED, C_REVERSED, C_AT_PIXEL, C_AT_PIXEL_REVERSED, NC_MODELS };
+
+static void p3b_camera(int m, const double *in, double *out)
+{
+    const double *e = in, *p = in + 3;
+    double d[3] = { p[0] - e[0], p[1] - e[1], p[2] - e[2] };
+    double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    bool at_pixel = m == C_AT_PIXEL || m == C_AT_PIXEL_REVERSED;
+    double sign = m == C_REVERSED || m == C_AT_PIXEL_REVERSED ? -1 : 1;
+    for (int k = 0; k < 3; k++) {
+        out[k] = at_pixel ? p[k] : e[k];
+        out[3 + k] = m == C_UNNORMALISED ? d[k] : sign * d[k] / len;
+    }
+}
+
+enum { K_RIGHT, K_FIRST, K_FARTHEST, K_BLACK, NK_MODELS };
+
+/* The colour model m gives a ray in test t's scene. */
+static void p3b_colour(int m, const Test *t, const double *in, double *out)
+{
+    int best = -1, first = -1;
+    double tbest = INFINITY, tfar = -INFINITY;
+    int far = -1;
+    for (int s = 0; s < t->nspheres; s++) {
+        const TestSphere *sp = &t->spheres[s];
+        double row[CASE_MAX_IN] = SPH(sp->c[0], sp->c[1], sp->c[2], sp->R, in[0], in[1], in[2],
+                                      in[3], in[4], in[5]);
+        double h[2];
+        p3_eval(M_RIGHT, row, 0, h);
+        if (h[0] != 1)
+            continue;
+        if (first < 0)
+            first = s;
+        if (h[1] < tbest)
+            tbest = h[1], best = s;
+        if (h[1] > tfar)
+            tfar = h[1], far = s;
+    }
+    int k = m == K_FIRST ? first : m == K_FARTHEST ? far : best;
+    for (int q = 0; q < 3; q++)
+        out[q] = k >= 0 ? t->spheres[k].color[q] : m == K_BLACK ? 0 : t->background[q];
+}
+
+typedef struct {
+    int camera, colour;            /* the confirmed models, or -1 */
+} PBFound;
+
+static bool vec_same(const double *got, const double *v, int n)
+{
+    for (int k = 0; k < n; k++)
+        if (!same(got[k], v[k], fmax(1, fabs(v[k]))))
+            return false;
+    return true;
+}
+
+static bool p3b_explains(const void *ctx, int tag, const Test *t, const Case *c, const double *got)
+{
+    const PBFound *p = ctx;
+    double v[6], ray[6];
+    (void)tag;
+    if (t->kind == KIND_CAMERA) {
+        p3b_camera(p->camera > 0 ? p->camera : C_RIGHT, c->in, v);
+        return p->camera > 0 && vec_same(got, v, 6);
+    }
+    if (t->kind == KIND_COLOR) {
+        memcpy(ray, c->in, sizeof ray);
+    } else {                                        /* an image: the ray from the eye at 0 */
+        double in[6] = { 0, 0, 0, c->in[0], c->in[1], c->in[2] };
+        p3b_camera(p->camera > 0 ? p->camera : C_RIGHT, in, ray);
+    }
+    p3b_colour(p->colour > 0 ? p->colour : K_RIGHT, t, ray, v);
+    return (p->camera > 0 || p->colour > 0) && vec_same(got, v, 3);
+}
+
+static void diagnose_part3b(ProbeSet *ps, Found *f, PBFound *out)
+{
+    static const double cams[][6] = {
+        { 0, 0, 0, 3, 0, -4 }, { 1, 2, 3, 4, -2, 3 }, { 0, 0, 0, 0.1, 0.2, -1 }, { -1, 0.5, 2, 2, 2.5, -4 },
+    };
+    enum { NCAM = sizeof cams / sizeof *cams };
+    Test *tc = probe_test(ps, PART3B, KIND_CAMERA, "probe: camera rays");
+    for (int k = 0; k < NCAM; k++)
+        probe_case(tc, cams[k], 6);
+    /* Spheres listed neither near to far nor far to near. */
+    Test *tk = probe_test(ps, PART3B, KIND_COLOR, "probe: colours of the closest hit");
+    tk->background[0] = 0.2, tk->background[1] = 0.4, tk->background[2] = 0.6;
+    test_add_sphere(tk, (const double[3]){ 0, 0, -10 }, 2, (const double[3]){ 0, 1, 0 });
+    test_add_sphere(tk, (const double[3]){ 0, 0, -20 }, 5, (const double[3]){ 0, 0, 1 });
+    test_add_sphere(tk, (const double[3]){ 0.5, 0, -5 }, 1, (const double[3]){ 1, 0, 0 });
+    static const double rays[][6] = {
+        { 0, 0, 0, 0, 0, -1 }, { 0, 0, 0, 0.05, 0.02, -1 }, { 0, 0, 0, 0, 0.6, -0.8 }, { 0, 0, 0, 0.1, 0.2, -1 },
+    };
+    enum { NR = sizeof rays / sizeof *rays };
+    for (int k = 0; k < NR; k++)
+        probe_case(tk, rays[k], 6);
+    Answers a2[2];
+    probe_run(ps, &ps->list.tests[0], &a2[0]);
+    probe_run(ps, &ps->list.tests[1], &a2[1]);
+    Answers ac = a2[0], ak = a2[1];
+    tk = &ps->list.tests[1];
+    if (unwritten(f, ps, a2, 2)) {
+        answers_free(&ac);
+        answers_free(&ak);
+        return;
+    }
+    out->camera = out->colour = -1;
+    for (int m = 0; m < NC_MODELS && out->camera < 0 && ac.answered == NCAM; m++) {
+        bool all = true;
+        for (int c = 0; c < NCAM && all; c++) {
+            double v[6];
+            p3b_camera(m, cams[c], v);
+            all = vec_same(ac.got[c], v, 6);
+        }
+        if (all)
+            out->camera = m;
+    }
+    for (int m = 0; m < NK_MODELS && out->colour < 0 && ak.answered == NR; m++) {
+        bool all = true;
+        for (int c = 0; c < NR && all; c++) {
+            double v[3];
+            p3b_colour(m, tk, rays[c], v);
+            all = vec_same(ak.got[c], v, 3);
+        }
+        if (all)
+            out->colour = m;
+    }
+    if (out->camera == C_UNNORMALISED)
+        name_cause(f, "unnormalised", TAG_ALL, "camera_ray's direction is not unit length: for the eye at "
+                   "the origin and the pixel (3, 0, -4) it returned (%.6g, %.6g, %.6g); divide s - e "
+                   "by its length |s - e| = 5.", ac.got[0][3], ac.got[0][4], ac.got[0][5]);
+    if (out->camera == C_REVERSED || out->camera == C_AT_PIXEL_REVERSED)
+        name_cause(f, "reversed", TAG_ALL, "camera_ray's direction is reversed: it points from the pixel to "
+                   "the eye; the ray goes from the eye e TOWARDS the pixel s, (s - e) / |s - e|.");
+    if (out->camera == C_AT_PIXEL || out->camera == C_AT_PIXEL_REVERSED)
+        name_cause(f, "origin-at-pixel", TAG_ALL, "camera_ray starts at the pixel: the ray's origin is the eye e.");
+    if (out->colour == K_FIRST)
+        name_cause(f, "first-hit", TAG_ALL, "ray_color returns the first sphere hit in the list, not the "
+                   "closest: with the spheres listed in another order than by distance, the ray "
+                   "through the middle got the colour of a sphere behind the nearest one. Keep the "
+                   "smallest t over ALL spheres.");
+    if (out->colour == K_FARTHEST)
+        name_cause(f, "farthest-hit", TAG_ALL, "ray_color returns the farthest sphere hit: keep the SMALLEST t "
+                   "(start tmin at infinity and keep a hit only when its t is smaller).");
+    if (out->colour == K_BLACK)
+        name_cause(f, "background-ignored", TAG_ALL, "a ray that hits nothing came back black: it has the "
+                   "scene's background colour, scene->background.");
+    answers_free(&ac);
+    answers_free(&ak);
+}
+
+/* ==== every part ============================================================= */
+
+void diagnose_part(int part, const TestList *tests, const TestResult *results, const Probes *probes,
+                   char **text, char **keys)
+{
+    *text = *keys = NULL;
+    bool failed = false;
+    for (int k = 0; k < tests->n; k++)
+        failed = failed || (tests->tests[k].part == part && results[k].ran && !results[k].passed);
+    if (!failed || part > PART3B)
+        return;
+    Found f = { .ncauses = 0 };
+    ProbeSet ps = { probes, { 0 } };
+    P1Found p1 = { 0 };
+    P2Found p2 = { -1, -1, -1 };
+    P3Found p3 = { { false }, 0, false };
+    PBFound pb = { -1, -1 };
+    switch (part) {
+    case PART1:
+        diagnose_part1(&ps, &f, &p1);
+        write_diagnosis(&f, part, tests, results, p1_explains, &p1, text, keys);
+        break;
+    case PART2:
+        diagnose_part2(&ps, &f, &p2);
+        write_diagnosis(&f, part, tests, results, p2_explains, &p2, text, keys);
+        break;
+    case PART3A:
+        diagnose_part3a(&ps, &f, &p3);
+        write_diagnosis(&f, part, tests, results, p3_explains, &p3, text, keys);
+        break;
+    default:
+        diagnose_part3b(&ps, &f, &pb);
+        write_diagnosis(&f, part, tests, results, p3b_explains, &pb, text, keys);
+        if (probes->own_part3a && probes->part3a_failed) {
+            size_t len = *text ? strlen(*text) : 0;
+            append(text, &len, "Part 3b calls your own sphere_intersect here, and Part 3a lost points: "
+                   "put Part 3a right first, then look at Part 3b again.\n");
+        }
+        break;
+    }
+    testlist_free(&ps.list);
+}
