@@ -221,7 +221,8 @@ typedef struct {
     int factor2;    /* the 2 of h = 2 d tan */
     int use_d;
     int shape;      /* 0: w = aspect h; 1: w = h / aspect; 2: w and h swapped;
-                       3: alpha horizontal (w from tan, h = w / aspect) */
+                       3: alpha horizontal (w from tan, h = w / aspect);
+                       4: alpha along the shorter side (pbrt): 0 when aspect >= 1, else 3 */
 } P1Model;
 
 static void p1_eval(P1Model m, const double *in, double *out)
@@ -230,7 +231,7 @@ static void p1_eval(P1Model m, const double *in, double *out)
     double theta = m.angle == 0 ? fov / 2 * (M_PI / 180) : m.angle == 1 ? fov / 2
                  : m.angle == 2 ? fov * (M_PI / 180) : fov;
     double h0 = (m.factor2 ? 2 : 1) * (m.use_d ? d : 1) * tan(theta);
-    switch (m.shape) {
+    switch (m.shape == 4 ? (aspect >= 1 ? 0 : 3) : m.shape) {
     case 0:  out[0] = aspect * h0, out[1] = h0; break;
     case 1:  out[0] = h0 / aspect, out[1] = h0; break;
     case 2:  out[0] = h0, out[1] = aspect * h0; break;
@@ -315,7 +316,7 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
         for (int angle = 0; angle < 4; angle++)
             for (int f2 = 0; f2 < 2; f2++)
                 for (int ud = 0; ud < 2; ud++)
-                    for (int shape = 0; shape < 4; shape++) {
+                    for (int shape = 0; shape < 5; shape++) {
                         P1Model m = { angle, f2, ud, shape };
                         bool all = true;
                         for (int c = 0; c < NB && all; c++)
@@ -357,6 +358,10 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
         if (m.shape == 2)
             name_cause(f, "w-h-swapped", TAG_ALL, "w and h are swapped: h = 2 d tan(alpha / 2) is the "
                        "height, and w = aspect h the width.");
+        if (m.shape == 4)
+            name_cause(f, "shorter-axis", TAG_ALL, "for tall images the field of view was taken "
+                       "along the width, the image's shorter side (pbrt's convention): in this lab "
+                       "alpha is always VERTICAL, h = 2 d tan(alpha / 2), whatever the aspect.");
         if (m.shape == 3)
             name_cause(f, "horizontal-fov", TAG_ALL, "the field of view is taken as the horizontal one "
                        "(w = 2 d tan(alpha / 2), h = w / aspect): in this lab alpha is VERTICAL, so "
@@ -368,7 +373,7 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
                    "(tan, not tanf; 180.0, not 180.0f).", g ? g[1] : 0);
 
     /* Near 180: a right formula whose rounded angle tan amplifies. */
-    if (out->have_model && p1_mistakes(m) == 0 && !in_float && af.answered == NF) {
+    if (out->have_model && m.angle == 0 && m.factor2 && m.use_d && !in_float && af.answered == NF) {
         bool wrong = false, rounding = true;
         double worst = 0, worst_fov = 0;
         for (int c = 0; c < NF; c++) {
@@ -399,9 +404,9 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
 
 /* Models of each coordinate, one at a time: x depends on i, nx, w; y on
  * j, ny, h; z on d. */
-enum { X_RIGHT, X_CORNER, X_FAR_CORNER, X_NOT_CENTRED, X_SWAPPED, X_INT, NX_MODELS };
+enum { X_RIGHT, X_CORNER, X_FAR_CORNER, X_NOT_CENTRED, X_SWAPPED, X_INT, X_NM1, X_SQUARE, NX_MODELS };
 enum { Y_RIGHT, Y_BOTTOM, Y_CORNER, Y_FAR_CORNER, Y_BOTTOM_CORNER, Y_NX, Y_NOT_CENTRED, Y_SWAPPED,
-       Y_INT, NY_MODELS };
+       Y_INT, Y_NM1, Y_BOTTOM_NM1, NY_MODELS };
 enum { Z_RIGHT, Z_PLUS, Z_ONE, NZ_MODELS };
 
 static double p2_x(int m, const double *in)
@@ -413,6 +418,8 @@ static double p2_x(int m, const double *in)
     case X_FAR_CORNER:  return -w / 2 + w * (i + 1) / nx;
     case X_NOT_CENTRED: return w * (i + 0.5) / nx;
     case X_SWAPPED:     return -h / 2 + h * (i + 0.5) / nx;
+    case X_NM1:         return -w / 2 + w * i / (nx - 1);         /* nx - 1 steps: edge to edge */
+    case X_SQUARE:      return h * (i + 0.5 - nx / 2) / in[3];    /* in units of h / ny */
     default:            return -w / 2;
     }
 }
@@ -429,6 +436,8 @@ static double p2_y(int m, const double *in)
     case Y_NX:            return -h / 2 + h * (ny - 0.5 - j) / nx;
     case Y_NOT_CENTRED:   return h * (ny - 0.5 - j) / ny;
     case Y_SWAPPED:       return w / 2 - w * (j + 0.5) / ny;
+    case Y_NM1:           return h / 2 - h * j / (ny - 1);
+    case Y_BOTTOM_NM1:    return -h / 2 + h * j / (ny - 1);
     default:              return -h / 2;
     }
 }
@@ -516,7 +525,16 @@ static void diagnose_part2(ProbeSet *ps, Found *f, P2Found *out)
                    "of a %g x %g image your code returned (%.6g, %.6g), half a pixel from the centre "
                    "(%.6g, %.6g). The centre is at i + 0.5 and j + 0.5.",
                    in[0], in[1], in[2], in[3], g[0], g[1], model[0][0], model[0][1]);
-    if (y == Y_BOTTOM || y == Y_BOTTOM_CORNER)
+    if (x == X_NM1 || y == Y_NM1 || y == Y_BOTTOM_NM1)
+        name_cause(f, "n-minus-1", TAG_ALL, "x and y step by w / (nx - 1) and h / (ny - 1), so the "
+                   "first and last pixels sit on the plane's edges (as in early versions of Ray Tracing "
+                   "in One Weekend): each pixel's centre is w / nx apart, x = -w/2 + w (i + 0.5) / nx, "
+                   "y = h/2 - h (j + 0.5) / ny.");
+    if (x == X_SQUARE)
+        name_cause(f, "square-pixels", TAG_ALL, "x is measured in units of h / ny (Shadertoy's uv "
+                   "= (fragCoord - 0.5 iResolution) / iResolution.y): right only where pixels are "
+                   "square, w / nx = h / ny. x uses the plane's width: x = -w/2 + w (i + 0.5) / nx.");
+    if (y == Y_BOTTOM || y == Y_BOTTOM_CORNER || y == Y_BOTTOM_NM1)
         name_cause(f, "bottom-origin", TAG_ALL, "y is upside down: row j = 0 came out at the bottom of the "
                    "plane (y < 0), as in OpenGL and many image libraries. In this lab row 0 is the TOP "
                    "row: y = h/2 - h (j + 0.5) / ny.");
@@ -532,9 +550,9 @@ static void diagnose_part2(ProbeSet *ps, Found *f, P2Found *out)
         name_cause(f, "z-sign", TAG_ALL, "z has the wrong sign: the eye looks down -z, so the plane is at "
                    "z = -d (your z was +d).");
     if (out->z == Z_ONE)
-        name_cause(f, "z-sign", TAG_ALL, "z is -1 whatever d: the plane is at z = -d.");
-    if (x == X_RIGHT && y == Y_RIGHT && out->z == Z_RIGHT &&
-        all_float(&a, 3, (const double (*)[CASE_MAX_OUT])model, N))
+        name_cause(f, "d-ignored", TAG_ALL, "z is -1 whatever d: the plane is at z = -d (tutorials "
+                   "such as Scratchapixel put it at distance 1; this lab's is at d).");
+    if (x == X_RIGHT && y == Y_RIGHT && all_float(&a, 2, (const double (*)[CASE_MAX_OUT])model, N))
         name_cause(f, "float", TAG_ALL, "computed in float: every coordinate is a float (24 bits, about 7 "
                    "digits), e.g. x = %.17g. Use double throughout.", g[0]);
     answers_free(&a);
@@ -588,7 +606,7 @@ static void first_root_above(const Quad *q, double tmin, double *out)
 }
 
 enum { M_RIGHT, M_FAR, M_HALVED, M_DISC4, M_UNIT, M_DISTANCE, M_BEHIND, M_BSIGN, M_INSIDE_MISS,
-       M_TANGENT_MISS, M_TMIN, M_NAN, M_FLOAT, NMODELS3, M_CANCEL = NMODELS3 };
+       M_CENTRE_BEHIND, M_TANGENT_MISS, M_TMIN, M_NAN, M_FLOAT, NMODELS3, M_CANCEL = NMODELS3 };
 
 /* What cause m answers to a case.  tmin is the epsilon M_TMIN uses. */
 static void p3_eval(int m, const double *in, double tmin, double *out)
@@ -635,6 +653,12 @@ static void p3_eval(int m, const double *in, double tmin, double *out)
         else
             first_root_above(&q, 0, out);
         break;
+    case M_CENTRE_BEHIND:                           /* "if (tca < 0) return false" */
+        if (q.B > 0)
+            hit(out, false, 0);
+        else
+            first_root_above(&q, 0, out);
+        break;
     case M_TANGENT_MISS:
         if (q.disc == 0)
             hit(out, false, 0);
@@ -654,27 +678,30 @@ static void p3_eval(int m, const double *in, double tmin, double *out)
     }
 }
 
-static bool p3_same(const double *got, const double *model)
+/* Is got model's answer, t to a relative rel (at least 6 digits)? */
+static bool p3_same(const double *got, const double *model, double rel)
 {
     if (got[0] != model[0])
         return false;
-    return model[0] == 0 || same(got[1], model[1], fabs(model[1]));
+    return model[0] == 0 || fabs(got[1] - model[1]) <= fmax(rel, MATCH_REL) * fabs(model[1]);
 }
 
-/* Right as the core tests judge an ordinary case: to 1e-9. */
-static bool p3_right(const double *got, const double *in)
+/* Right as the core tests judge an ordinary case: to 1e-9 (rel), or for
+ * code found to compute in float, to float's precision. */
+static bool p3_right(const double *got, const double *in, double rel)
 {
     double v[2];
     p3_eval(M_RIGHT, in, 0, v);
     if (got[0] != v[0])
         return false;
-    return v[0] == 0 || fabs(got[1] - v[1]) <= 1e-9 * fabs(v[1]);
+    return v[0] == 0 || fabs(got[1] - v[1]) <= rel * fabs(v[1]);
 }
 
 typedef struct {
     bool model[NMODELS3];          /* causes with a model, confirmed */
     double tmin;                   /* the epsilon M_TMIN confirmed   */
     bool cancellation;
+    double rel;                    /* "right" to this relative error */
 } P3Found;
 
 static bool p3_explains(const void *ctx, int tag, const Test *t, const Case *c, const double *got)
@@ -684,13 +711,15 @@ static bool p3_explains(const void *ctx, int tag, const Test *t, const Case *c, 
         return t->hard;
     if (tag == M_NAN)
         return got[0] == 1 && isnan(got[1]);
+    if (tag == M_FLOAT)                  /* a t rounded to float, right or not */
+        return got[0] == 1 && is_float(got[1]) && !(c->want[0] == 1 && is_float(c->want[1]));
     double v[2];
     p3_eval(tag, c->in, p->tmin, v);
-    return p3_same(got, v) && (tag != M_FLOAT || is_float(got[1]));
+    return p3_same(got, v, p->rel);
 }
 
 /* Every answer of a probe is model m's (and, somewhere, not the right one). */
-static bool p3_all(const Answers *a, const double (*in)[CASE_MAX_IN], int n, int m, double tmin)
+static bool p3_all(const Answers *a, const double (*in)[CASE_MAX_IN], int n, int m, double tmin, double rel)
 {
     if (a->answered < n)
         return false;
@@ -698,19 +727,19 @@ static bool p3_all(const Answers *a, const double (*in)[CASE_MAX_IN], int n, int
     for (int c = 0; c < n; c++) {
         double v[2];
         p3_eval(m, in[c], tmin, v);
-        if (!p3_same(a->got[c], v))
+        if (!p3_same(a->got[c], v, rel))
             return false;
-        differs = differs || !p3_right(a->got[c], in[c]);
+        differs = differs || !p3_right(a->got[c], in[c], rel);
     }
     return differs;
 }
 
-static bool p3_all_right(const Answers *a, const double (*in)[CASE_MAX_IN], int n)
+static bool p3_all_right(const Answers *a, const double (*in)[CASE_MAX_IN], int n, double rel)
 {
     if (a->answered < n)
         return false;
     for (int c = 0; c < n; c++)
-        if (!p3_right(a->got[c], in[c]))
+        if (!p3_right(a->got[c], in[c], rel))
             return false;
     return true;
 }
@@ -729,9 +758,10 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
     /* Ordinary hits from outside, unit directions, answers not floats. */
     static const double basic[][CASE_MAX_IN] = {
         SPH(0.1, 0.2, -5.3, 1.3, 0, 0, 0, 0, 0, -1),
-        SPH(1, 2, -8, 2.2, 0, 0, 0, 0.6, 0, -0.8),
-        SPH(-2, 0.5, -6.1, 1.7, 0.3, 0.1, 0.2, -0.28, 0.96, 0),
+        SPH(4.5, 0.5, -6.2, 2.2, 0, 0, 0, 0.6, 0, -0.8),
+        SPH(-2, 0.5, -6.1, 1.7, 0.3, 0.1, 0.2, -0.28, 0, -0.96),
         SPH(0, -1, -4.7, 1.1, 0, 0, 0, 0, -0.28, -0.96),
+        SPH(0.3, -0.7, -9.1, 2.9, 0, 0, 0, 0, 0, -1),
         SPH(0.05, 0, -1.9, 1.7, 0, 0, 0, 0, 0, -1),         /* near: B^2 - 4 A C >= 0 */
     };
     /* The same rays, directions scaled by 3 and by 1/4: t scales by 1/3 and 4. */
@@ -753,6 +783,8 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
         SPH(0, 0, 0, 10.3, 0, 0, 0, 0, 0, -1),
         SPH(0.5, -0.2, -1, 5.1, 0, 0, 0, 0.6, 0, -0.8),
         SPH(1, 2, 3, 50.7, 0, 0, 0, 0, 0.28, 0.96),
+        SPH(0, 0, 1.3, 5.1, 0, 0, 0, 0, 0, -1),             /* the centre behind the origin */
+        SPH(-0.5, 1, 2, 4.2, 0, 0, 0, 0.6, 0, -0.8),
     };
     /* Exact tangents: B^2 - A C is 0 in any order of operations. */
     static const double tangent[][CASE_MAX_IN] = {
@@ -763,7 +795,7 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
     /* Hits just ahead of the origin: e a gap g outside the sphere, so the
      * hit is at t = g exactly (binary fractions), the far root at g + 2. */
     static const double gaps[] = { 0x1p-30, 0x1p-23, 0x1p-17, 0x1p-14, 0x1p-12, 0x1.4p-11,
-                                   0x1p-9, 0x1p-7, 0x1p-5, 0x1p-3, 1 };
+                                   0x1p-9, 0x1p-7, 0x1p-5, 0x1p-3, 0.5, 1.5, 4 };
     enum { NG = sizeof gaps / sizeof *gaps };
     double near[NG][CASE_MAX_IN];
     for (int k = 0; k < NG; k++) {
@@ -782,7 +814,7 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
         SPH(0, 0.6, -(0x1p28 + 3), 1, 0, 0, 0, 0, 0, -1),
         SPH(0.75, 0, -(0x1p29 + 5), 1, 0, 0, 0, 0, 0, -1),
     };
-    enum { NB = 5, NS = 8, NBH = 4, NI = 3, NT = 3, NN = 2, NF = 3 };
+    enum { NB = 6, NS = 8, NBH = 4, NI = 5, NT = 3, NN = 2, NF = 3 };
     add_probe3(ps, "probe: ordinary hits", basic, NB);
     add_probe3(ps, "probe: directions scaled by 3 and by 1/4", (const double (*)[CASE_MAX_IN])scaled, NS);
     add_probe3(ps, "probe: spheres behind the origin", behind, NBH);
@@ -802,30 +834,78 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
     const Answers *ab = &a[0], *as = &a[1], *abh = &a[2], *ai = &a[3], *at = &a[4], *an = &a[5],
                   *anan = &a[6], *afar = &a[7];
 
-    /* Ordinary hits: right, or one mistake's answers. */
-    bool basic_right = p3_all_right(ab, basic, NB);
+    /* Float first: every t of the probes a float, where the right ones are
+     * not.  Then "right" means right to float's precision throughout. */
+    const Answers *pf[] = { ab, as, ai, at };
+    const double (*pin[])[CASE_MAX_IN] = { basic, (const double (*)[CASE_MAX_IN])scaled, inside, tangent };
+    const int pn[] = { NB, NS, NI, NT };
+    int float_t = 0, double_t = 0;
+    for (int k = 0; k < 4; k++)
+        for (int c = 0; c < pf[k]->answered && c < pn[k]; c++) {
+            double right[2];
+            p3_eval(M_RIGHT, pin[k][c], 0, right);
+            if (pf[k]->got[c][0] != 1 || right[0] != 1 || is_float(right[1]))
+                continue;
+            if (!(fabs(pf[k]->got[c][1] - right[1]) <= 1e-5 * right[1]))
+                continue;                   /* wrong for another cause: no evidence */
+            if (is_float(pf[k]->got[c][1]))
+                float_t++;
+            else
+                double_t++;
+        }
+    double rel = 1e-9;
+    if (float_t >= 3 && double_t == 0) {
+        out->model[M_FLOAT] = true;
+        rel = 1e-5;
+        name_cause(f, "float", M_FLOAT, "computed in float: every t is a float (24 bits, about 7 digits): "
+                   "e.g. t = %.17g where the hit is at %.17g. Use double throughout (double, sqrt, not "
+                   "float, sqrtf).", ab->got[0][1], quad(basic[0]).t0);
+    }
+    out->rel = rel;
+
+    /* Hits just ahead: right from some gap up, wrong below: an epsilon. */
+    if (an->answered == NG) {
+        int lowest_right = NG;
+        bool threshold = true;
+        for (int c = NG - 1; c >= 0; c--) {
+            if (p3_right(an->got[c], near[c], rel) && lowest_right == c + 1)
+                lowest_right = c;
+        }
+        for (int c = 0; c < lowest_right && threshold; c++) {
+            double v[2];
+            p3_eval(M_TMIN, near[c], gaps[c] * 1.0000001, v);       /* the far root */
+            threshold = p3_same(an->got[c], v, rel) || an->got[c][0] == 0;
+        }
+        if (threshold && lowest_right > 0 && lowest_right < NG) {
+            double lo = gaps[lowest_right - 1], hi = gaps[lowest_right];
+            out->model[M_TMIN] = true;
+            out->tmin = sqrt(lo * hi);
+            const char *like = lo < 1e-3 && 1e-3 <= hi ? ": it looks like Ray Tracing in One Weekend's "
+                                                         "t_min = 0.001"
+                             : lo < 1e-4 && 1e-4 <= hi ? ": it looks like smallpt's eps = 1e-4"
+                             : lo < 1 && 1 <= hi ? ": it looks like a t_min of 1 (Computer Graphics from "
+                                                   "Scratch's, which starts rays at the projection plane)"
+                             : "";
+            double v[2];
+            p3_eval(M_RIGHT, near[lowest_right - 1], 0, v);
+            name_cause(f, "tmin-epsilon", M_TMIN, "hits closer than a tmin between %.3g and %.3g are ignored%s. "
+                       "Asked for a hit at t = %.3g (the ray starts just outside the sphere), your code "
+                       "answered %s; from t = %.3g on it was right. This lab's rule is tmin = 0: every "
+                       "hit with t > 0 counts. Tutorials use an epsilon against shadow acne, next "
+                       "week's topic.", lo, hi, like, v[1],
+                       an->got[lowest_right - 1][0] == 0 ? "a miss" : "the far root", hi);
+        }
+    }
+    /* Ordinary hits: right (but for a tmin confirmed), or one mistake's answers. */
+    bool basic_right = p3_all_right(ab, basic, NB, rel) ||
+                       (out->model[M_TMIN] && p3_all(ab, basic, NB, M_TMIN, out->tmin, rel));
     /* b-sign misses every sphere ahead: the spheres behind confirm it. */
     static const int plain[] = { M_FAR, M_HALVED, M_BSIGN, M_DISC4 };
     int basic_model = basic_right ? M_RIGHT : -1;
     for (int k = 0; k < 4 && basic_model < 0; k++)
-        if (p3_all(ab, basic, NB, plain[k], 0) &&
-            (plain[k] != M_BSIGN || p3_all(abh, behind, NBH, M_BSIGN, 0)))
+        if (p3_all(ab, basic, NB, plain[k], 0, rel) &&
+            (plain[k] != M_BSIGN || p3_all(abh, behind, NBH, M_BSIGN, 0, rel)))
             basic_model = plain[k];
-    double model[NB][CASE_MAX_OUT];
-    for (int c = 0; c < NB; c++)
-        p3_eval(M_RIGHT, basic[c], 0, model[c]);
-    if (!basic_right && ab->answered == NB) {
-        bool close = true;
-        for (int c = 0; c < NB; c++)
-            close = close && ab->got[c][0] == 1 && same(ab->got[c][1], model[c][1], model[c][1]);
-        if (close && all_float(ab, 2, (const double (*)[CASE_MAX_OUT])model, NB)) {
-            out->model[M_FLOAT] = true;
-            name_cause(f, "float", M_FLOAT, "computed in float: every t is a float (24 bits, about 7 digits), "
-                       "e.g. t = %.17g where the hit is at %.17g. Use double throughout (sqrt, not "
-                       "sqrtf).", ab->got[0][1], model[0][1]);
-            basic_model = M_RIGHT;
-        }
-    }
     const double *g = ab->answered ? ab->got[0] : NULL;
     if (basic_model == M_FAR) {
         out->model[M_FAR] = true;
@@ -849,15 +929,15 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
     }
 
     /* Scaled directions: A = 1 assumed, or the distance returned. */
-    if (basic_model == M_RIGHT && as->answered == NS && !p3_all_right(as, (const double (*)[CASE_MAX_IN])scaled, NS)) {
-        if (p3_all(as, (const double (*)[CASE_MAX_IN])scaled, NS, M_UNIT, 0)) {
+    if (basic_model == M_RIGHT && as->answered == NS && !p3_all_right(as, (const double (*)[CASE_MAX_IN])scaled, NS, rel)) {
+        if (p3_all(as, (const double (*)[CASE_MAX_IN])scaled, NS, M_UNIT, 0, rel)) {
             out->model[M_UNIT] = true;
             name_cause(f, "unit-direction", M_UNIT, "the direction is assumed to have unit length: the same "
                        "ray with its direction r scaled by 3 must hit at a third of the t (%.6g), but "
                        "your code returned %.6g. r need not be a unit vector, so A = r.r is not 1 "
                        "(smallpt, Inigo Quilez's and tinyraytracer's tests assume |r| = 1).",
                        quad(scaled[0]).t0, as->got[0][1]);
-        } else if (p3_all(as, (const double (*)[CASE_MAX_IN])scaled, NS, M_DISTANCE, 0)) {
+        } else if (p3_all(as, (const double (*)[CASE_MAX_IN])scaled, NS, M_DISTANCE, 0, rel)) {
             out->model[M_DISTANCE] = true;
             name_cause(f, "distance-not-t", M_DISTANCE, "the distance along the ray is returned, not t: with "
                        "the direction scaled by 3 the hit must be at a third of the t (%.6g), but "
@@ -881,48 +961,27 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
                               : "a sphere wholly behind the origin");
     }
     /* From inside, a miss. */
-    if (basic_model == M_RIGHT && ai->answered == NI && !inside_neg && p3_all(ai, inside, NI, M_INSIDE_MISS, 0)) {
+    bool ordinary = basic_model == M_RIGHT;
+    if (ordinary && ai->answered == NI && !inside_neg && p3_all(ai, inside, NI, M_INSIDE_MISS, 0, rel)) {
         out->model[M_INSIDE_MISS] = true;
         name_cause(f, "inside-miss", M_INSIDE_MISS, "from inside the sphere (C < 0) every ray was a miss: one root is "
                    "behind the origin and the other, t = %.6g here, is where the ray leaves the "
                    "sphere; that is the hit.", quad(inside[0]).t1);
     }
+    if (ordinary && ai->answered == NI && !inside_neg && !out->model[M_INSIDE_MISS] &&
+        p3_all(ai, inside, NI, M_CENTRE_BEHIND, 0, rel)) {
+        out->model[M_CENTRE_BEHIND] = true;
+        name_cause(f, "inside-miss", M_CENTRE_BEHIND, "from inside the sphere, a ray pointing away from "
+                   "its centre was a miss: an early exit such as \"if (tca < 0) return false\" (the "
+                   "centre behind the origin) is right only from outside. From inside, the ray leaves "
+                   "the sphere ahead, at t = %.6g here.", quad(inside[3]).t1);
+    }
     /* Exact tangents, missed. */
-    if (basic_model == M_RIGHT && at->answered == NT && p3_all(at, tangent, NT, M_TANGENT_MISS, 0)) {
+    if (basic_model == M_RIGHT && at->answered == NT && p3_all(at, tangent, NT, M_TANGENT_MISS, 0, rel)) {
         out->model[M_TANGENT_MISS] = true;
         name_cause(f, "tangent-miss", M_TANGENT_MISS, "a tangent ray (B^2 - A C = 0 exactly) was a miss: it touches "
                    "the sphere at t = -B / A, and touching is a hit (test disc < 0 for a miss, not "
                    "disc <= 0).");
-    }
-    /* Hits just ahead: right from some gap up, wrong below: an epsilon. */
-    if (an->answered == NG && (basic_model == M_RIGHT || basic_model < 0)) {
-        int lowest_right = NG;
-        bool threshold = true;
-        for (int c = NG - 1; c >= 0; c--) {
-            if (p3_right(an->got[c], near[c]) && lowest_right == c + 1)
-                lowest_right = c;
-        }
-        for (int c = 0; c < lowest_right && threshold; c++) {
-            double v[2];
-            p3_eval(M_TMIN, near[c], gaps[c] * 1.0000001, v);       /* the far root */
-            threshold = p3_same(an->got[c], v) || an->got[c][0] == 0;
-        }
-        if (threshold && lowest_right > 0 && lowest_right < NG) {
-            double lo = gaps[lowest_right - 1], hi = gaps[lowest_right];
-            out->model[M_TMIN] = true;
-            out->tmin = sqrt(lo * hi);
-            const char *like = lo < 1e-3 && 1e-3 <= hi ? ": it looks like Ray Tracing in One Weekend's "
-                                                         "t_min = 0.001"
-                             : lo < 1e-4 && 1e-4 <= hi ? ": it looks like smallpt's eps = 1e-4" : "";
-            double v[2];
-            p3_eval(M_RIGHT, near[lowest_right - 1], 0, v);
-            name_cause(f, "tmin-epsilon", M_TMIN, "hits closer than a tmin between %.3g and %.3g are ignored%s. "
-                       "Asked for a hit at t = %.3g (the ray starts just outside the sphere), your code "
-                       "answered %s; from t = %.3g on it was right. This lab's rule is tmin = 0: every "
-                       "hit with t > 0 counts. Tutorials use an epsilon against shadow acne, next "
-                       "week's topic.", lo, hi, like, v[1],
-                       an->got[lowest_right - 1][0] == 0 ? "a miss" : "the far root", hi);
-        }
     }
     /* A zero direction or NaN input answered as a hit at NaN. */
     bool nan_hit = false;
@@ -1124,7 +1183,7 @@ void diagnose_part(int part, const TestList *tests, const TestResult *results, c
     ProbeSet ps = { probes, { 0 } };
     P1Found p1 = { 0 };
     P2Found p2 = { -1, -1, -1 };
-    P3Found p3 = { { false }, 0, false };
+    P3Found p3 = { { false }, 0, false, 1e-9 };
     PBFound pb = { -1, -1 };
     switch (part) {
     case PART1:
