@@ -231,6 +231,12 @@ gradescope: $(BUILD)/bin/pack
 	$(BUILD)/bin/pack zip out/gradescope/autograder.zip out/gradescope/bundle
 	@echo "wrote out/gradescope/autograder.zip"
 
+# The PrairieLearn question: info.json, question.html, and tests/ with the
+# grading entrypoint and the kit it builds (tests/prairielearn/question.sh).
+.PHONY: prairielearn
+prairielearn:
+	sh tests/prairielearn/question.sh out/prairielearn/raytracer-lab
+
 # The student kit: skeletons, framework, scenes and their reference renders,
 # the grader with the public tests, the handouts.  No solutions/, no hidden
 # tests, no oracle, and none of the instructor's test material.

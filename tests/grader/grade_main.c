@@ -167,7 +167,7 @@ static int grade_one(const char *submission, const char *part, const char *resul
     if (!quiet)
         report_table(stdout, &g, &cfg, submission);
     int status = g.total < g.total_max || g.bonus < g.bonus_max ? 1 : 0;
-    if (results && (results_prairielearn ? report_prairielearn(results, &g, submission, err, sizeof err)
+    if (results && (results_prairielearn ? report_prairielearn(results, &g, err, sizeof err)
                                          : report_json(results, &g, &cfg, submission, err, sizeof err)) != 0) {
         fprintf(stderr, "grade: %s\n", err);
         status = 2;

@@ -89,7 +89,7 @@ static void test_entry(JsonWriter *j, const Test *t, const TestResult *r, size_t
 }
 
 /* The whole document, each test's output cut to output_max bytes. */
-static void write_results(JsonWriter *j, const Grade *g, const char *submission, size_t output_max)
+static void write_results(JsonWriter *j, const Grade *g, size_t output_max)
 {
     double core = 0, core_max = 0, hard = 0, hard_max = 0;
     for (int p = 0; p < NPARTS; p++) {
@@ -112,11 +112,10 @@ static void write_results(JsonWriter *j, const Grade *g, const char *submission,
     } else {
         append(&message, "Nothing could be graded: no file of the graded parts could be built.");
     }
-    append(&output, "Graded %s\n", submission);
     for (int p = 0; p < NPARTS; p++) {
         if (!g->graded[p])
             continue;
-        append(&output, "\n%s: %g / %g", part_title(p), g->core[p], g->core_max[p]);
+        append(&output, "%s%s: %g / %g", output ? "\n" : "", part_title(p), g->core[p], g->core_max[p]);
         if (g->hard_max[p] > 0)
             append(&output, "   (hard cases: %g / %g)", g->hard[p], g->hard_max[p]);
         append(&output, "\n");
@@ -155,17 +154,16 @@ static void write_results(JsonWriter *j, const Grade *g, const char *submission,
     free(format_errors);
 }
 
-int report_prairielearn(const char *path, const Grade *g, const char *submission, char *err,
-                        size_t errlen)
+int report_prairielearn(const char *path, const Grade *g, char *err, size_t errlen)
 {
     JsonWriter j;
     size_t len = 0;
     json_init(&j, 2);
-    write_results(&j, g, submission, OUTPUT_MAX);
+    write_results(&j, g, OUTPUT_MAX);
     if (json_text(&j, &len) && len > RESULTS_MAX) {
         json_free(&j);
         json_init(&j, 2);
-        write_results(&j, g, submission, OUTPUT_MAX / 4);
+        write_results(&j, g, OUTPUT_MAX / 4);
     }
     int status = json_write_file(&j, path, err, errlen);
     json_free(&j);

@@ -22,8 +22,7 @@
  *                them in no sum); hidden tests keep their details to
  *                themselves.
  * Returns 0, or -1 with the reason in err. */
-int report_prairielearn(const char *path, const Grade *g, const char *submission, char *err,
-                        size_t errlen);
+int report_prairielearn(const char *path, const Grade *g, char *err, size_t errlen);
 
 /* Results for a submission the grader could not grade at all: gradable
  * false, with the message. */
