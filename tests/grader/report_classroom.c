@@ -16,7 +16,11 @@
 #include <string.h>
 #include <unistd.h>
 
-#define MESSAGE_MAX 1000      /* bytes of the grader's message kept per test */
+/* Bytes of the grader's message kept per test: a runner's results reach
+ * the reporter in one environment variable, which Linux limits to 128 KB,
+ * and the runner "hard" holds every hard case. */
+#define MESSAGE_MAX 1000
+#define HARD_MESSAGE_MAX 200
 
 /* The reporter's word for a test: pass, fail, or error when the test did
  * not run (its file is missing or did not build, or it was skipped). */
@@ -28,7 +32,7 @@ static const char *status_word(const TestResult *r)
 /* One test of a runner.  The reporter prints the message of an "error"
  * test and the test_code of any test: a test that did not pass gets the
  * command that shows its details. */
-static void test_entry(JsonWriter *j, const Test *t, const TestResult *r, bool counted)
+static void test_entry(JsonWriter *j, const Test *t, const TestResult *r, bool counted, size_t max)
 {
     json_begin_object(j);
     json_key(j, "name");
@@ -45,7 +49,7 @@ static void test_entry(JsonWriter *j, const Test *t, const TestResult *r, bool c
     else {
         const char *out = r->output ? r->output : "";
         size_t n = strlen(out);
-        json_string_bytes(j, out, n < MESSAGE_MAX ? n : MESSAGE_MAX);
+        json_string_bytes(j, out, n < max ? n : max);
     }
     json_key(j, "line_no");               /* 0: the reporter prints no line number */
     json_int(j, 0);
@@ -90,7 +94,7 @@ static int core_runner(KitBuf *out, const char *name, const Test *t, const TestR
     json_number(&j, r->max_score);
     json_key(&j, "tests");
     json_begin_array(&j);
-    test_entry(&j, t, r, true);
+    test_entry(&j, t, r, true, MESSAGE_MAX);
     json_end_array(&j);
     json_end_object(&j);
     int status = add_line(out, name, &j);
@@ -118,7 +122,7 @@ static int hard_runner(KitBuf *out, const Grade *g)
     for (int k = 0; k < g->tests->n; k++) {
         const Test *t = &g->tests->tests[k];
         if (g->graded[t->part] && t->hard) {
-            test_entry(&j, t, &g->results[k], false);
+            test_entry(&j, t, &g->results[k], false, HARD_MESSAGE_MAX);
             n++;
         }
     }

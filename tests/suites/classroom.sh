@@ -212,8 +212,12 @@ grade_kit() {
     while read -r var id; do
         printf '%s=%s\n' "$var" "$(sed -n "s/^$id=//p" "$tmp/$label.outputs")"
     done <"$tmp/envmap" >"$tmp/$label.env"
-    check "$label: no test name is a hidden test's" sh -c "! sed -n 's/^[^=]*=//p' '$tmp/$label.outputs' |
-        while read -r b; do printf '%s' \"\$b\" | base64 -d 2>/dev/null; echo; done | grep -q 'hidden'"
+    longest=$(awk '{ if (length($0) > n) n = length($0) } END { print n + 0 }' "$tmp/$label.outputs")
+    check "$label: every runner's results are under 64 KB (an environment variable may hold 128 KB): $longest bytes" \
+        [ "$longest" -lt 65536 ]
+    "$totals" --dump "$runners" "$tmp/$label.env" >"$tmp/$label.dump" 2>&1
+    check "$label: every runner decodes" [ "$(wc -l <"$tmp/$label.dump")" -eq "$nrun" ]
+    check "$label: no test is a hidden test" sh -c "! grep -q '\"name\":\"[^\"]*hidden' '$tmp/$label.dump'"
 }
 grade_kit student-full "$tmp/full"
 totals "student kit, reference" "$tmp/student-full.kit" "$runners" "$tmp/student-full.env" pass
@@ -225,6 +229,26 @@ check "student kit, partial: partial credit" \
 grade_kit student-zero "$kit/labs"
 totals "student kit, skeleton" "$tmp/student-zero.kit" "$runners" "$tmp/student-zero.env" fail
 check "student kit, skeleton: 0 points" grep -q '^Score: 0 / 100' "$tmp/student-zero.kit"
+
+# With Parts 4 and 5 turned on, the workflow written for that kit lists
+# their runners too, and the totals are out of 140.
+sed 's/^parts .*/parts 1 2 3a 3b 4 5/' "$kit/tests/weights.conf" >"$tmp/weights.all"
+cp "$tmp/weights.all" "$kit/tests/weights.conf"
+(cd "$kit" && sh "$top/tests/classroom/workflow.sh" "$top/tests/classroom/classroom.yml") >"$tmp/all.yml"
+runners_all=$(sed -n 's/^          runners: //p' "$tmp/all.yml")
+check "Parts 4 and 5 on: the workflow lists their runners" \
+    sh -c "printf '%s' '$runners_all' | grep -q 'part4test1,.*part5test1,.*,hard\$'"
+sed -n 's/^          \([A-Za-z0-9_-]*\): "\${{ steps\.grade\.outputs\.\([A-Za-z0-9_-]*\) }}"$/\1 \2/p' \
+    "$tmp/all.yml" >"$tmp/envmap.all"
+: >"$tmp/all.outputs"
+(cd "$kit" && make grade SUBMISSION="$tmp/full" CLASSROOM="$tmp/all.outputs") >"$tmp/all.kit" 2>&1
+check "Parts 4 and 5 on: the grader writes the workflow's runners, in its order" \
+    sh -c "cut -d= -f1 '$tmp/all.outputs' | paste -s -d, - | grep -qx '$runners_all'"
+while read -r var id; do
+    printf '%s=%s\n' "$var" "$(sed -n "s/^$id=//p" "$tmp/all.outputs")"
+done <"$tmp/envmap.all" >"$tmp/all.env"
+totals "student kit, Parts 1 to 5, reference" "$tmp/all.kit" "$runners_all" "$tmp/all.env" pass
+check "student kit, Parts 1 to 5, reference: 140 / 140" grep -q '^Score: 140 / 140' "$tmp/all.kit"
 
 # ---- the instructor's kit: hidden tests, a part that does not build --------
 # The runners are those the file holds (the workflow is the student kit's).
@@ -240,10 +264,9 @@ for case in full partial broken zero; do
     [ "$case" = full ] && want=pass
     totals "instructor's kit, $case" "$tmp/i-$case.kit" "$ids" "$tmp/i-$case.env" "$want"
 done
-check "instructor's kit: hidden tests are among the runners" \
-    sh -c "sed -n 's/^[^=]*=//p' '$tmp/i-full.outputs' | while read -r b; do printf '%s' \"\$b\" | base64 -d; echo; done |
-           grep -q '\"name\":\"Part 3a: hidden: '"
-grep '^part2test1=' "$tmp/i-broken.outputs" | sed 's/^[^=]*=//' | base64 -d >"$tmp/broken.json" 2>/dev/null
+"$totals" --dump "$(cut -d= -f1 "$tmp/i-full.outputs" | paste -s -d, -)" "$tmp/i-full.env" >"$tmp/i-full.dump" 2>&1
+check "instructor's kit: hidden tests are among the runners" grep -q '"name":"Part 3a: hidden: ' "$tmp/i-full.dump"
+"$totals" --dump part2test1 "$tmp/i-broken.env" >"$tmp/broken.json" 2>&1
 check "a part that does not build: its runners are errors that say so" \
     sh -c "grep -q '\"status\":\"error\"' '$tmp/broken.json' && grep -q 'did not build' '$tmp/broken.json'"
 
