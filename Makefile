@@ -24,6 +24,8 @@ SCENE      ?= labs/scenes/default.scene
 SIZE       ?=
 PART       ?=
 RESULTS    ?=
+FORMAT     ?=
+CLASSROOM  ?=
 SUBMISSIONS ?=
 
 BUILD      = out/build
@@ -53,8 +55,9 @@ help:
 	@echo "make render  [SUBMISSION=dir] [SCENE=file] [SIZE=WxH] [OUT=file]"
 	@echo "make compare [SUBMISSION=dir] [SCENE=file]"
 	@echo "make grade   [SUBMISSION=dir] [PART=1|2|3a|3b|4|5] [RESULTS=file]"
+	@echo "             [FORMAT=gradescope|prairielearn] [CLASSROOM=file]"
 	@echo "make grade-all SUBMISSIONS=dir [OUT=dir]"
-	@echo "make gradescope | student-kit | bench | handouts | test | clean"
+	@echo "make gradescope | prairielearn | student-kit | bench | handouts | test | clean"
 
 $(BUILD)/kit/%.o: labs/kit/%.c $(KIT_HDR)
 	@mkdir -p $(@D)
@@ -163,6 +166,7 @@ GRADER_LIB_SRC = tests/grader/cases.c tests/grader/check.c tests/grader/sandbox.
                  tests/grader/build.c tests/grader/config.c tests/grader/grade.c \
                  tests/grader/report_table.c tests/grader/report_json.c tests/grader/includes.c \
                  tests/grader/diagnose.c
+GRADER_LIB_SRC += tests/grader/report_classroom.c tests/grader/report_prairielearn.c
 GRADER_HDR = $(wildcard tests/grader/*.h) $(KIT_HDR)
 GRADER_OBJ = $(GRADER_LIB_SRC:tests/grader/%.c=$(BUILD)/grader/%.o)
 HARNESS    = $(BUILD)/grader/harness_1.o $(BUILD)/grader/harness_2.o \
@@ -206,7 +210,8 @@ grader: $(BUILD)/bin/grade $(HARNESS) $(GRADER_REF)
 
 grade: grader
 	@$(BUILD)/bin/grade --submission "$(SUBMISSION)" $(if $(PART),--part $(PART)) \
-	    $(if $(RESULTS),--results "$(RESULTS)")
+	    $(if $(RESULTS),--results "$(RESULTS)") $(if $(FORMAT),--format "$(FORMAT)") \
+	    $(if $(CLASSROOM),--classroom "$(CLASSROOM)")
 
 grade-all: grader
 	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade-all SUBMISSIONS=dir [OUT=dir]"; exit 2; }
@@ -227,6 +232,12 @@ gradescope: $(BUILD)/bin/pack
 	$(BUILD)/bin/pack zip out/gradescope/autograder.zip out/gradescope/bundle
 	@echo "wrote out/gradescope/autograder.zip"
 
+# The PrairieLearn question: info.json, question.html, and tests/ with the
+# grading entrypoint and the kit it builds (tests/prairielearn/question.sh).
+.PHONY: prairielearn
+prairielearn:
+	sh tests/prairielearn/question.sh out/prairielearn/raytracer-lab
+
 # The student kit: skeletons, framework, scenes and their reference renders,
 # the grader with the public tests, the handouts.  No solutions/, no hidden
 # tests, no oracle, and none of the instructor's test material.
@@ -235,6 +246,8 @@ student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 	rm -rf $(KIT_DIR) && mkdir -p $(KIT_DIR)/tests/unit $(KIT_DIR)/labs/reference
 	cp -R Makefile labs handouts $(KIT_DIR)/
 	cp handouts/student-readme.md $(KIT_DIR)/README.md
+	mkdir -p $(KIT_DIR)/.github/workflows
+	sh tests/classroom/workflow.sh >$(KIT_DIR)/.github/workflows/classroom.yml
 	cp -R tests/grader tests/public tests/tools tests/weights.conf tests/run.sh $(KIT_DIR)/tests/
 	cp tests/unit/check.h tests/unit/test_vec3.c tests/unit/test_png.c tests/unit/test_scene.c \
 	   $(KIT_DIR)/tests/unit/

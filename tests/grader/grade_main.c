@@ -10,6 +10,10 @@
  *       OUT/gradebook.csv and OUT/<submission>.json.
  *   --weights FILE reads the points and parts from FILE instead of
  *       tests/weights.conf (either form).
+ *   --format gradescope|prairielearn: the form of the --results file
+ *       (Gradescope's results.json by default; report_prairielearn.h).
+ *   --classroom FILE appends GitHub Classroom's runner results to FILE,
+ *       one NAME=BASE64 line per runner (report_classroom.h).
  *
  * Run it from the kit's root (make does).  Student code never runs in this
  * process: each test runs in a fresh sandboxed child (sandbox.c).
@@ -20,6 +24,8 @@
 #include "grade.h"
 #include "grader.h"
 #include "report.h"
+#include "report_classroom.h"
+#include "report_prairielearn.h"
 #include "sandbox.h"
 #ifdef GRADER_ORACLE
 #include "../oracle/testgen.h"
@@ -39,18 +45,24 @@ static void usage(void)
 {
     fprintf(stderr,
             "usage: grade [--submission DIR] [--part 1|2|3a|3b|4|5] [--results FILE] [--quiet]\n"
+            "             [--format gradescope|prairielearn] [--classroom FILE]\n"
             "       grade --all DIR [--out DIR] [--jobs N]\n"
             "       either with --weights FILE (default tests/weights.conf)\n"
             "exit status: 0 full marks, 1 points lost, 2 the grader could not run\n");
     exit(2);
 }
 
+/* The --format of the results file, and the --classroom file (or NULL). */
+static bool results_prairielearn;
+static const char *classroom_path;
+
 static int fail(const char *results, const char *fmt, const char *what)
 {
     char msg[1024], err[512];
     snprintf(msg, sizeof msg, fmt, what);
     fprintf(stderr, "grade: %s\n", msg);
-    if (results && report_json_error(results, msg, err, sizeof err) != 0)
+    if (results && (results_prairielearn ? report_prairielearn_error(results, msg, err, sizeof err)
+                                         : report_json_error(results, msg, err, sizeof err)) != 0)
         fprintf(stderr, "grade: %s\n", err);
     return 2;
 }
@@ -155,7 +167,12 @@ static int grade_one(const char *submission, const char *part, const char *resul
     if (!quiet)
         report_table(stdout, &g, &cfg, submission);
     int status = g.total < g.total_max || g.bonus < g.bonus_max ? 1 : 0;
-    if (results && report_json(results, &g, &cfg, submission, err, sizeof err) != 0) {
+    if (results && (results_prairielearn ? report_prairielearn(results, &g, err, sizeof err)
+                                         : report_json(results, &g, &cfg, submission, err, sizeof err)) != 0) {
+        fprintf(stderr, "grade: %s\n", err);
+        status = 2;
+    }
+    if (classroom_path && report_classroom(classroom_path, &g, err, sizeof err) != 0) {
         fprintf(stderr, "grade: %s\n", err);
         status = 2;
     }
@@ -341,7 +358,7 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
 int main(int argc, char **argv)
 {
     const char *submission = "labs", *part = NULL, *results = NULL, *all = NULL, *out = "out/grades";
-    const char *weights = "tests/weights.conf";
+    const char *weights = "tests/weights.conf", *format = NULL;
     bool quiet = false, summary = false;
     long jobs = sysconf(_SC_NPROCESSORS_ONLN);
     for (int k = 1; k < argc; k++) {
@@ -365,9 +382,18 @@ int main(int argc, char **argv)
             quiet = true;
         else if (!strcmp(a, "--summary"))
             summary = true;
+        else if (!strcmp(a, "--format") && v)
+            format = v, k++;
+        else if (!strcmp(a, "--classroom") && v)
+            classroom_path = *v ? v : NULL, k++;
         else
             usage();
     }
+    if (format && *format && strcmp(format, "gradescope") != 0 && strcmp(format, "prairielearn") != 0) {
+        fprintf(stderr, "grade: FORMAT must be gradescope or prairielearn, not '%s'\n", format);
+        return 2;
+    }
+    results_prairielearn = format && !strcmp(format, "prairielearn");
     if (part && *part && part_from_label(part) < 0) {
         fprintf(stderr, "grade: PART must be 1, 2, 3a, 3b, 4 or 5, not '%s'\n", part);
         return 2;

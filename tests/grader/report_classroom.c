@@ -1,0 +1,200 @@
+/*
+ * report_classroom.c - GitHub Classroom's runner results: one NAME=BASE64
+ * line per runner, appended to a file ($GITHUB_OUTPUT in a workflow).
+ * See report_classroom.h for the runners and why their totals are the
+ * kit's core score.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "report_classroom.h"
+#include "../tools/base64.h"
+#include "../tools/json.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+/* Bytes of the grader's message kept per test: a runner's results reach
+ * the reporter in one environment variable, which Linux limits to 128 KB,
+ * and the runner "hard" holds every hard case. */
+#define MESSAGE_MAX 1000
+#define HARD_MESSAGE_MAX 200
+
+/* The reporter's word for a test: pass, fail, or error when the test did
+ * not run (its file is missing or did not build, or it was skipped). */
+static const char *status_word(const TestResult *r)
+{
+    return r->passed ? "pass" : r->ran ? "fail" : "error";
+}
+
+/* One test of a runner.  The reporter prints the message of an "error"
+ * test and the test_code of any test: a test that did not pass gets the
+ * command that shows its details. */
+static void test_entry(JsonWriter *j, const Test *t, const TestResult *r, bool counted, size_t max)
+{
+    json_begin_object(j);
+    json_key(j, "name");
+    json_string(j, t->name);
+    json_key(j, "status");
+    json_string(j, status_word(r));
+    json_key(j, "score");
+    json_number(j, counted ? r->score : 0);
+    json_key(j, "message");
+    if (r->passed)
+        json_string(j, "");
+    else if (t->hidden)
+        json_string(j, "a hidden test: its details are not shown");
+    else {
+        const char *out = r->output ? r->output : "";
+        size_t n = strlen(out);
+        json_string_bytes(j, out, n < max ? n : max);
+    }
+    json_key(j, "line_no");               /* 0: the reporter prints no line number */
+    json_int(j, 0);
+    if (!r->passed) {
+        char code[64];
+        snprintf(code, sizeof code, "make grade PART=%s", part_label(t->part));
+        json_key(j, "test_code");
+        json_string(j, code);
+    }
+    json_end_object(j);
+}
+
+/* Appends "name=" and the base64 of the runner's JSON, and a newline. */
+static int add_line(KitBuf *out, const char *name, JsonWriter *j)
+{
+    size_t len;
+    const char *text = json_text(j, &len);
+    if (!text)
+        return -1;
+    size_t n = base64_encoded_length(len);
+    char *coded = malloc(n + 1);
+    if (!coded)
+        return -1;
+    base64_encode(text, len, coded);
+    int status = kit_buf_append(out, name, strlen(name)) || kit_buf_push(out, '=') ||
+                 kit_buf_append(out, coded, n) || kit_buf_push(out, '\n') ? -1 : 0;
+    free(coded);
+    return status;
+}
+
+/* The runner of one core test. */
+static int core_runner(KitBuf *out, const char *name, const Test *t, const TestResult *r)
+{
+    JsonWriter j;
+    json_init(&j, 0);
+    json_begin_object(&j);
+    json_key(&j, "version");
+    json_int(&j, 1);
+    json_key(&j, "status");
+    json_string(&j, status_word(r));
+    json_key(&j, "max_score");
+    json_number(&j, r->max_score);
+    json_key(&j, "tests");
+    json_begin_array(&j);
+    test_entry(&j, t, r, true, MESSAGE_MAX);
+    json_end_array(&j);
+    json_end_object(&j);
+    int status = add_line(out, name, &j);
+    json_free(&j);
+    return status;
+}
+
+/* The runner "hard": every hard-case test of the graded parts, worth 0
+ * here (the reporter would otherwise divide by no tests, so an empty list
+ * gets one line saying so). */
+static int hard_runner(KitBuf *out, const Grade *g)
+{
+    JsonWriter j;
+    json_init(&j, 0);
+    json_begin_object(&j);
+    json_key(&j, "version");
+    json_int(&j, 1);
+    json_key(&j, "status");
+    json_string(&j, "pass");              /* extra credit never fails the workflow */
+    json_key(&j, "max_score");
+    json_int(&j, 0);
+    json_key(&j, "tests");
+    json_begin_array(&j);
+    int n = 0;
+    for (int k = 0; k < g->tests->n; k++) {
+        const Test *t = &g->tests->tests[k];
+        if (g->graded[t->part] && t->hard) {
+            test_entry(&j, t, &g->results[k], false, HARD_MESSAGE_MAX);
+            n++;
+        }
+    }
+    if (n == 0) {
+        json_begin_object(&j);
+        json_key(&j, "name");
+        json_string(&j, "no hard cases are graded");
+        json_key(&j, "status");
+        json_string(&j, "pass");
+        json_key(&j, "score");
+        json_int(&j, 0);
+        json_key(&j, "line_no");
+        json_int(&j, 0);
+        json_end_object(&j);
+    }
+    json_end_array(&j);
+    json_end_object(&j);
+    int status = add_line(out, "hard", &j);
+    json_free(&j);
+    return status;
+}
+
+int report_classroom(const char *path, const Grade *g, char *err, size_t errlen)
+{
+    KitBuf out;
+    kit_buf_init(&out);
+    int status = 0;
+    for (int p = 0; p < NPARTS && status == 0; p++) {
+        if (!g->graded[p])
+            continue;
+        int index = 0;
+        for (int k = 0; k < g->tests->n && status == 0; k++) {
+            const Test *t = &g->tests->tests[k];
+            if (t->part != p || t->hard)
+                continue;
+            char name[32];
+            snprintf(name, sizeof name, "part%stest%d", part_label(p), ++index);
+            status = core_runner(&out, name, t, &g->results[k]);
+        }
+    }
+    if (status == 0)
+        status = hard_runner(&out, g);
+    if (status != 0) {
+        snprintf(err, errlen, "%s: out of memory", path);
+        kit_buf_free(&out);
+        return -1;
+    }
+    /* One write of every line, appended: the file may hold other steps'
+     * outputs already. */
+    int fd = open(path, O_WRONLY | O_APPEND | O_CREAT, 0666);
+    if (fd < 0) {
+        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        kit_buf_free(&out);
+        return -1;
+    }
+    size_t done = 0;
+    while (done < out.len) {
+        ssize_t w = write(fd, out.data + done, out.len - done);
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w <= 0) {
+            snprintf(err, errlen, "%s: %s", path, w < 0 ? strerror(errno) : "nothing written");
+            close(fd);
+            kit_buf_free(&out);
+            return -1;
+        }
+        done += (size_t)w;
+    }
+    kit_buf_free(&out);
+    if (close(fd) != 0) {
+        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        return -1;
+    }
+    return 0;
+}

@@ -1,0 +1,195 @@
+/*
+ * report_prairielearn.c - PrairieLearn's results.json.  See
+ * report_prairielearn.h for the fields and the choice of "gradable".
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "report_prairielearn.h"
+#include "../tools/json.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* PrairieLearn refuses results over 1 MB: each test's output is cut to
+ * OUTPUT_MAX bytes, and to a quarter of that if the whole is still over
+ * RESULTS_MAX. */
+#define OUTPUT_MAX 3000
+#define RESULTS_MAX (900 * 1024)
+
+/* Appends printf-style text to a malloc'd string (left as it was if memory
+ * runs out). */
+static void append(char **s, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void append(char **s, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    size_t old = *s ? strlen(*s) : 0;
+    char *t = n >= 0 ? realloc(*s, old + (size_t)n + 1) : NULL;
+    if (!t)
+        return;
+    va_start(ap, fmt);
+    vsnprintf(t + old, (size_t)n + 1, fmt, ap);
+    va_end(ap);
+    *s = t;
+}
+
+/* Whether any test of a graded part ran: the submission could be graded. */
+static bool any_test_ran(const Grade *g)
+{
+    for (int k = 0; k < g->tests->n; k++)
+        if (g->graded[g->tests->tests[k].part] && g->results[k].ran)
+            return true;
+    return false;
+}
+
+/* A string cut to at most max bytes, with a note when cut. */
+static void cut_string(JsonWriter *j, const char *s, size_t max)
+{
+    size_t n = s ? strlen(s) : 0;
+    if (n <= max) {
+        json_string(j, s ? s : "");
+        return;
+    }
+    char *t = malloc(max + 40);
+    if (!t) {
+        json_string(j, "[output cut: out of memory]");
+        return;
+    }
+    memcpy(t, s, max);
+    strcpy(t + max, "\n[... the rest cut]");
+    json_string(j, t);
+    free(t);
+}
+
+static void test_entry(JsonWriter *j, const Test *t, const TestResult *r, size_t output_max)
+{
+    json_begin_object(j);
+    json_key(j, "name");
+    json_string(j, t->name);
+    json_key(j, "description");
+    json_string(j, t->hard ? "a hard case: extra credit, not counted in this question's score"
+                           : t->note[0] ? t->note : "");
+    json_key(j, "points");
+    json_number(j, t->hard ? 0 : r->score);
+    json_key(j, "max_points");
+    json_number(j, t->hard ? 0 : r->max_score);
+    json_key(j, "message");
+    json_string(j, r->passed ? "passed" : r->ran ? "failed" : "not run");
+    json_key(j, "output");
+    if (r->passed)
+        json_string(j, "");
+    else if (t->hidden)
+        json_string(j, "This is a hidden test: its inputs and answers are not shown.");
+    else
+        cut_string(j, r->output, output_max);
+    json_end_object(j);
+}
+
+/* The whole document, each test's output cut to output_max bytes. */
+static void write_results(JsonWriter *j, const Grade *g, size_t output_max)
+{
+    double core = 0, core_max = 0, hard = 0, hard_max = 0;
+    for (int p = 0; p < NPARTS; p++) {
+        if (!g->graded[p])
+            continue;
+        core += g->core[p];
+        core_max += g->core_max[p];
+        hard += g->hard[p];
+        hard_max += g->hard_max[p];
+    }
+    double score = core_max > 0 ? core / core_max : 0;
+    score = score < 0 ? 0 : score > 1 ? 1 : score;
+    bool gradable = any_test_ran(g);
+
+    char *message = NULL, *output = NULL, *format_errors = NULL;
+    if (gradable) {
+        append(&message, "Core points: %g / %g.", core, core_max);
+        if (hard_max > 0)
+            append(&message, " Hard cases: %g / %g (extra credit, not counted here).", hard, hard_max);
+    } else {
+        append(&message, "Nothing could be graded: no file of the graded parts could be built.");
+    }
+    for (int p = 0; p < NPARTS; p++) {
+        if (!g->graded[p])
+            continue;
+        append(&output, "%s%s: %g / %g", output ? "\n" : "", part_title(p), g->core[p], g->core_max[p]);
+        if (g->hard_max[p] > 0)
+            append(&output, "   (hard cases: %g / %g)", g->hard[p], g->hard_max[p]);
+        append(&output, "\n");
+        if (g->build_messages[p] && g->build_messages[p][0]) {
+            append(&output, "%s", g->build_messages[p]);
+            if (!gradable)
+                append(&format_errors, "Part %s: %s", part_label(p), g->build_messages[p]);
+        }
+        if (g->diagnosis[p])
+            append(&output, "%s\n", g->diagnosis[p]);
+    }
+    append(&output, "\nCore points: %g / %g\n", core, core_max);
+
+    json_begin_object(j);
+    json_key(j, "gradable");
+    json_bool(j, gradable);
+    json_key(j, "score");
+    json_number(j, gradable ? score : 0);
+    json_key(j, "message");
+    json_string(j, message ? message : "");
+    if (!gradable) {
+        json_key(j, "format_errors");
+        cut_string(j, format_errors ? format_errors : "no stage file was submitted", 4 * OUTPUT_MAX);
+    }
+    json_key(j, "output");
+    cut_string(j, output, 16 * OUTPUT_MAX);
+    json_key(j, "tests");
+    json_begin_array(j);
+    for (int k = 0; k < g->tests->n; k++)
+        if (g->graded[g->tests->tests[k].part])
+            test_entry(j, &g->tests->tests[k], &g->results[k], output_max);
+    json_end_array(j);
+    json_end_object(j);
+    free(message);
+    free(output);
+    free(format_errors);
+}
+
+int report_prairielearn(const char *path, const Grade *g, char *err, size_t errlen)
+{
+    JsonWriter j;
+    size_t len = 0;
+    json_init(&j, 2);
+    write_results(&j, g, OUTPUT_MAX);
+    if (json_text(&j, &len) && len > RESULTS_MAX) {
+        json_free(&j);
+        json_init(&j, 2);
+        write_results(&j, g, OUTPUT_MAX / 4);
+    }
+    int status = json_write_file(&j, path, err, errlen);
+    json_free(&j);
+    return status;
+}
+
+int report_prairielearn_error(const char *path, const char *message, char *err, size_t errlen)
+{
+    JsonWriter j;
+    json_init(&j, 2);
+    json_begin_object(&j);
+    json_key(&j, "gradable");
+    json_bool(&j, false);
+    json_key(&j, "score");
+    json_number(&j, 0);
+    json_key(&j, "message");
+    json_string(&j, "The autograder could not grade this submission. Please tell the course staff.");
+    json_key(&j, "format_errors");
+    json_string(&j, message);
+    json_key(&j, "output");
+    json_string(&j, message);
+    json_key(&j, "tests");
+    json_begin_array(&j);
+    json_end_array(&j);
+    json_end_object(&j);
+    int status = json_write_file(&j, path, err, errlen);
+    json_free(&j);
+    return status;
+}

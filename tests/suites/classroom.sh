@@ -1,0 +1,279 @@
+#!/bin/sh
+# GitHub Classroom: the student kit's workflow and the runner results that
+# `make grade CLASSROOM=file` appends, totalled by the grading reporter's
+# own rules (tests/classroom/reporter_totals.c, which cites the action's
+# source), for a full-marks, a partial and a zero submission.  Each time,
+# both of the reporter's totals -- the points it shows, (tests passed /
+# tests) x max_score added over the runners, and the points it sends the
+# classroom, the tests' scores added up -- must be the kit's own core score
+# (its "Score: X / Y" line, and each part's line), out of the core total.
+#
+#   - in the unpacked student kit (no hidden tests), through its workflow:
+#     the runner ids of its "runners:" input, the environment variables its
+#     reporter step sets from the grade step's outputs, the CLASSROOM file
+#     standing in for $GITHUB_OUTPUT (a line already in it is kept);
+#   - in the instructor's kit (hidden tests, points such as 30/14), with
+#     the runners straight from the file, and a part that does not compile;
+#   - the workflow itself: the reporter action, the grade step, one
+#     environment variable per runner, runner ids the action accepts;
+#     parsed as YAML too when python3 has its yaml module;
+#   - with node installed, the totals worked out again in JavaScript from
+#     the same environment, by Node's own base64 and JSON.
+#
+# Usage: sh tests/suites/classroom.sh   (from the kit's top directory, after
+# make).  KEEP=1 keeps the temporary directory.
+set -u
+unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
+top=$(pwd)
+passed=0
+failed=0
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtclassroom.XXXXXX") || { echo "0 passed, 1 failed"; exit 1; }
+trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
+chmod 755 "$tmp"
+pass() { passed=$((passed + 1)); }
+fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
+check() { what=$1; shift; if "$@"; then pass; else fail "$what"; fi; }
+finish() { echo "$passed passed, $failed failed"; [ "$failed" -eq 0 ]; exit $?; }
+
+# ---- the reporter's rules, in C ---------------------------------------------
+totals="$tmp/reporter_totals"
+${CC:-cc} -std=c11 -O2 -ffp-contract=off -Wall -Wextra -Wpedantic -Werror -o "$totals" \
+    tests/classroom/reporter_totals.c tests/tools/base64.c tests/tools/json_read.c labs/kit/numtext.c \
+    -lm >"$tmp/cc.log" 2>&1
+check "tests/classroom/reporter_totals.c builds without a warning" [ -x "$totals" ]
+[ -x "$totals" ] || { cat "$tmp/cc.log"; finish; }
+have_node=
+if command -v node >/dev/null 2>&1; then
+    have_node=1
+else
+    echo "node is not installed: skipped the JavaScript check of the totals"
+fi
+
+# The JavaScript check: the reporter's rules again, written from its source
+# in JavaScript, reading the same environment file with Node's own base64
+# and JSON.  Prints the four totals.
+cat >"$tmp/totals.js" <<'EOF_JS'
+const fs = require("fs");
+const [runnersInput, envFile] = process.argv.slice(2);
+const env = {};
+for (const line of fs.readFileSync(envFile, "utf-8").split("\n")) {
+  const at = line.indexOf("=");
+  if (at > 0) env[line.slice(0, at)] = line.slice(at + 1);
+}
+let shown = 0, shownMax = 0, counted = 0, countedMax = 0;
+for (const id of runnersInput.split(",")) {
+  const r = JSON.parse(Buffer.from(env[id.trim().toUpperCase() + "_RESULTS"], "base64").toString("utf-8"));
+  const max = r.max_score || 0;
+  const passing = r.tests.filter((t) => t.status === "pass").length;
+  shown += (passing / r.tests.length) * max;
+  shownMax += max;
+  if (r.max_score) {
+    countedMax += r.max_score;
+    for (const t of r.tests) counted += t.score;
+  }
+}
+console.log(`shown_total ${shown}\nshown_max ${shownMax}\ncounted_total ${counted}\ncounted_max ${countedMax}`);
+EOF_JS
+
+# value NAME FILE: the number after NAME in the checker's output
+value() { sed -n "s/^$1 //p" "$2"; }
+# g NUMBER: the number as the kit prints its scores (%g)
+g() { awk -v x="$1" 'BEGIN { printf "%g", x + 0 }'; }
+
+# totals LABEL KIT_OUTPUT RUNNERS ENVFILE WANT_WORKFLOW: runs the checker and
+# compares both totals with the kit's score and each part's points.
+totals() {
+    label=$1 kitout=$2 runners=$3 envfile=$4 want_workflow=$5
+    if ! "$totals" "$runners" "$envfile" >"$tmp/totals.out" 2>"$tmp/totals.err"; then
+        fail "$label: the reporter could not read the results: $(cat "$tmp/totals.err")"
+        return
+    fi
+    pass
+    score=$(sed -n 's/^Score: \([^ ]*\) \/ \([^ ]*\).*/\1/p' "$kitout")
+    max=$(sed -n 's/^Score: \([^ ]*\) \/ \([^ ]*\).*/\2/p' "$kitout")
+    shown=$(value shown_total "$tmp/totals.out")
+    counted=$(value counted_total "$tmp/totals.out")
+    check "$label: the kit printed its score" [ -n "$score" ]
+    check "$label: the points shown ($shown) are the kit's core score ($score)" [ "$(g "$shown")" = "$score" ]
+    check "$label: the points sent to the classroom ($counted) are the kit's core score ($score)" \
+        [ "$(g "$counted")" = "$score" ]
+    check "$label: both totals are the same number ($shown, $counted)" [ "$shown" = "$counted" ]
+    check "$label: the maximum shown is the core total ($max)" \
+        [ "$(g "$(value shown_max "$tmp/totals.out")")" = "$max" ]
+    check "$label: the maximum sent is the core total ($max)" \
+        [ "$(g "$(value counted_max "$tmp/totals.out")")" = "$max" ]
+    check "$label: the reporter's step ends with '$want_workflow'" \
+        [ "$(value workflow "$tmp/totals.out")" = "$want_workflow" ]
+    # Each part: its runners' points against the kit's line for the part.
+    for p in 1 2 3a 3b 4 5; do
+        line=$(sed -n "s/^Part $p: .*   \([^ ]*\) \/ \([^ ]*\).*/\1 \2/p" "$kitout" | head -n 1)
+        [ -n "$line" ] || continue
+        got=$(awk -v p="$p" '$1 == "runner" && $2 ~ ("^part" p "test") { s += $12; m += $10 }
+                             END { printf "%g %g", s, m }' "$tmp/totals.out")
+        check "$label: Part $p's runners add up to the kit's $line (got $got)" [ "$got" = "$line" ]
+    done
+    hard=$(awk '$1 == "runner" && $2 == "hard" { print $10, $12, $14 }' "$tmp/totals.out")
+    check "$label: the runner 'hard' is there and worth 0 ($hard)" [ "$hard" = "0 0 0" ]
+    if [ -n "$have_node" ]; then
+        if node "$tmp/totals.js" "$runners" "$envfile" >"$tmp/node.out" 2>"$tmp/node.err"; then
+            grep '_\(total\|max\) ' "$tmp/totals.out" >"$tmp/c.out"
+            check "$label: JavaScript's totals are the C checker's" cmp -s "$tmp/c.out" "$tmp/node.out"
+            cmp -s "$tmp/c.out" "$tmp/node.out" || diff "$tmp/c.out" "$tmp/node.out" | sed 's/^/    | /'
+        else
+            fail "$label: the JavaScript check failed: $(head -n 3 "$tmp/node.err")"
+        fi
+    fi
+}
+
+# Submissions: the reference; a partial one (two mistakes in two parts,
+# each losing some of its part's tests, and in the student kit Part 3b's
+# renders through the faulty Part 3a); nothing but the untouched skeleton.
+mkdir -p "$tmp/full" "$tmp/partial" "$tmp/broken"
+cp solutions/*.c "$tmp/full/"
+cp solutions/*.c "$tmp/partial/"
+cp tests/selftest/p1-aspect-inverted/*.c tests/selftest/p3a-tangent-miss/*.c "$tmp/partial/"
+cp solutions/*.c "$tmp/broken/"
+cp tests/selftest/hostile-compile-error/*.c tests/selftest/p1-aspect-inverted/*.c "$tmp/broken/"
+chmod -R a+rX "$tmp/full" "$tmp/partial" "$tmp/broken"
+
+# ---- the student kit: its workflow, its grader ------------------------------
+make -s student-kit >"$tmp/kit.log" 2>&1
+check "make student-kit" [ -f out/student-kit/Makefile ]
+kit="$tmp/kit"
+cp -R out/student-kit "$kit"
+wf="$kit/.github/workflows/classroom.yml"
+check "the student kit has .github/workflows/classroom.yml" [ -s "$wf" ]
+check "the student kit has no hidden tests" [ ! -e "$kit/tests/hidden" ]
+[ -s "$wf" ] || finish
+
+check "the workflow has no tab" sh -c "! grep -q '	' '$wf'"
+check "the workflow's indentation is in steps of two spaces" \
+    sh -c "! awk '/^ *[^ #]/ { match(\$0, /^ */); if (RLENGTH % 2) bad = 1 } END { exit !bad }' '$wf'"
+check "the workflow runs on push" grep -q '^  - push$' "$wf"
+check "the workflow names the reporter action" \
+    grep -q '^        uses: classroom-resources/autograding-grading-reporter@v1$' "$wf"
+check "the workflow's grade step has id 'grade'" grep -q '^        id: grade$' "$wf"
+check "the grade step appends to \$GITHUB_OUTPUT" \
+    grep -q '^        run: make grade CLASSROOM="\$GITHUB_OUTPUT"' "$wf"
+runners=$(sed -n 's/^          runners: //p' "$wf")
+check "the workflow has a runners: line" [ -n "$runners" ]
+check "its runner ids are letters and digits, comma-separated (as the action asks)" \
+    sh -c "printf '%s' '$runners' | grep -Eq '^([a-zA-Z0-9]+,)*[a-zA-Z0-9]+\$'"
+# The reporter step's environment: NAME_RESULTS from steps.grade.outputs.id
+sed -n 's/^          \([A-Za-z0-9_-]*\): "\${{ steps\.grade\.outputs\.\([A-Za-z0-9_-]*\) }}"$/\1 \2/p' \
+    "$wf" >"$tmp/envmap"
+nenv=$(wc -l <"$tmp/envmap")
+nrun=$(printf '%s' "$runners" | tr ',' '\n' | grep -c .)
+check "one environment variable per runner ($nenv for $nrun)" [ "$nenv" -eq "$nrun" ]
+check "each runner's variable is its id in capitals with _RESULTS" sh -c "
+    printf '%s' '$runners' | tr ',' '\n' | while read -r id; do
+        up=\$(printf '%s' \"\$id\" | tr 'a-z' 'A-Z')
+        grep -qx \"\${up}_RESULTS \$id\" '$tmp/envmap' || exit 1
+    done"
+if command -v python3 >/dev/null 2>&1 && python3 -c 'import yaml' 2>/dev/null; then
+    python3 - "$wf" "$runners" >"$tmp/yaml.out" 2>&1 <<'EOF_PY'
+import sys, yaml
+doc = yaml.safe_load(open(sys.argv[1]))
+runners = sys.argv[2].split(",")
+on = doc.get("on", doc.get(True))
+assert "push" in on, "not run on push"
+steps = [s for job in doc["jobs"].values() for s in job["steps"]]
+grade = [s for s in steps if s.get("id") == "grade"]
+assert len(grade) == 1 and 'CLASSROOM="$GITHUB_OUTPUT"' in grade[0]["run"], "no grade step"
+rep = [s for s in steps if s.get("uses") == "classroom-resources/autograding-grading-reporter@v1"]
+assert len(rep) == 1, "no reporter step"
+assert steps.index(rep[0]) > steps.index(grade[0]), "the reporter runs before grading"
+assert rep[0]["with"]["runners"] == ",".join(runners), "runners differ"
+want = {r.upper() + "_RESULTS": "${{ steps.grade.outputs.%s }}" % r for r in runners}
+assert rep[0]["env"] == want, "env differs"
+print("ok")
+EOF_PY
+    check "the workflow parses as YAML with the steps, runners and env ($(tail -n 1 "$tmp/yaml.out"))" \
+        grep -qx ok "$tmp/yaml.out"
+else
+    echo "python3 with its yaml module is not installed: skipped parsing the workflow as YAML"
+fi
+
+(cd "$kit" && make -s grader) >"$tmp/build.log" 2>&1
+check "the student kit's grader builds" [ -x "$kit/out/build/bin/grade" ]
+[ -x "$kit/out/build/bin/grade" ] || { tail -n 20 "$tmp/build.log"; finish; }
+
+# grade_kit LABEL SUBMISSION: make grade in the kit, CLASSROOM standing in
+# for $GITHUB_OUTPUT (with an earlier step's line in it), then the
+# environment the workflow gives the reporter.
+grade_kit() {
+    label=$1 sub=$2
+    printf 'earlier=an output of an earlier step\n' >"$tmp/$label.outputs"
+    (cd "$kit" && make grade SUBMISSION="$sub" CLASSROOM="$tmp/$label.outputs") >"$tmp/$label.kit" 2>&1
+    check "$label: the earlier step's output is kept" \
+        sh -c "head -n 1 '$tmp/$label.outputs' | grep -qx 'earlier=an output of an earlier step'"
+    check "$label: one line per runner of the workflow, in its order" \
+        sh -c "sed -n '2,\$p' '$tmp/$label.outputs' | cut -d= -f1 | paste -s -d, - | grep -qx '$runners'"
+    while read -r var id; do
+        printf '%s=%s\n' "$var" "$(sed -n "s/^$id=//p" "$tmp/$label.outputs")"
+    done <"$tmp/envmap" >"$tmp/$label.env"
+    longest=$(awk '{ if (length($0) > n) n = length($0) } END { print n + 0 }' "$tmp/$label.outputs")
+    check "$label: every runner's results are under 64 KB (an environment variable may hold 128 KB): $longest bytes" \
+        [ "$longest" -lt 65536 ]
+    "$totals" --dump "$runners" "$tmp/$label.env" >"$tmp/$label.dump" 2>&1
+    check "$label: every runner decodes" [ "$(wc -l <"$tmp/$label.dump")" -eq "$nrun" ]
+    check "$label: no test is a hidden test" sh -c "! grep -q '\"name\":\"[^\"]*hidden' '$tmp/$label.dump'"
+}
+grade_kit student-full "$tmp/full"
+totals "student kit, reference" "$tmp/student-full.kit" "$runners" "$tmp/student-full.env" pass
+check "student kit, reference: full marks" grep -q '^Score: 100 / 100' "$tmp/student-full.kit"
+grade_kit student-partial "$tmp/partial"
+totals "student kit, partial" "$tmp/student-partial.kit" "$runners" "$tmp/student-partial.env" fail
+check "student kit, partial: partial credit" \
+    sh -c "grep '^Score: ' '$tmp/student-partial.kit' | grep -qv '^Score: \(0\|100\) '"
+grade_kit student-zero "$kit/labs"
+totals "student kit, skeleton" "$tmp/student-zero.kit" "$runners" "$tmp/student-zero.env" fail
+check "student kit, skeleton: 0 points" grep -q '^Score: 0 / 100' "$tmp/student-zero.kit"
+
+# With Parts 4 and 5 turned on, the workflow written for that kit lists
+# their runners too, and the totals are out of 140.
+sed 's/^parts .*/parts 1 2 3a 3b 4 5/' "$kit/tests/weights.conf" >"$tmp/weights.all"
+cp "$tmp/weights.all" "$kit/tests/weights.conf"
+(cd "$kit" && sh "$top/tests/classroom/workflow.sh" "$top/tests/classroom/classroom.yml") >"$tmp/all.yml"
+runners_all=$(sed -n 's/^          runners: //p' "$tmp/all.yml")
+check "Parts 4 and 5 on: the workflow lists their runners" \
+    sh -c "printf '%s' '$runners_all' | grep -q 'part4test1,.*part5test1,.*,hard\$'"
+sed -n 's/^          \([A-Za-z0-9_-]*\): "\${{ steps\.grade\.outputs\.\([A-Za-z0-9_-]*\) }}"$/\1 \2/p' \
+    "$tmp/all.yml" >"$tmp/envmap.all"
+: >"$tmp/all.outputs"
+(cd "$kit" && make grade SUBMISSION="$tmp/full" CLASSROOM="$tmp/all.outputs") >"$tmp/all.kit" 2>&1
+check "Parts 4 and 5 on: the grader writes the workflow's runners, in its order" \
+    sh -c "cut -d= -f1 '$tmp/all.outputs' | paste -s -d, - | grep -qx '$runners_all'"
+while read -r var id; do
+    printf '%s=%s\n' "$var" "$(sed -n "s/^$id=//p" "$tmp/all.outputs")"
+done <"$tmp/envmap.all" >"$tmp/all.env"
+totals "student kit, Parts 1 to 5, reference" "$tmp/all.kit" "$runners_all" "$tmp/all.env" pass
+check "student kit, Parts 1 to 5, reference: 140 / 140" grep -q '^Score: 140 / 140' "$tmp/all.kit"
+
+# ---- the instructor's kit: hidden tests, a part that does not build --------
+# The runners are those the file holds (the workflow is the student kit's).
+for case in full partial broken zero; do
+    sub=$tmp/$case
+    [ "$case" = zero ] && sub=labs
+    : >"$tmp/i-$case.outputs"
+    out/build/bin/grade --submission "$sub" --classroom "$tmp/i-$case.outputs" >"$tmp/i-$case.kit" 2>&1
+    ids=$(cut -d= -f1 "$tmp/i-$case.outputs" | paste -s -d, -)
+    awk -F= '{ id = $1; sub(/^[^=]*=/, ""); print toupper(id) "_RESULTS=" $0 }' \
+        "$tmp/i-$case.outputs" >"$tmp/i-$case.env"
+    want=fail
+    [ "$case" = full ] && want=pass
+    totals "instructor's kit, $case" "$tmp/i-$case.kit" "$ids" "$tmp/i-$case.env" "$want"
+done
+"$totals" --dump "$(cut -d= -f1 "$tmp/i-full.outputs" | paste -s -d, -)" "$tmp/i-full.env" >"$tmp/i-full.dump" 2>&1
+check "instructor's kit: hidden tests are among the runners" grep -q '"name":"Part 3a: hidden: ' "$tmp/i-full.dump"
+"$totals" --dump part2test1 "$tmp/i-broken.env" >"$tmp/broken.json" 2>&1
+check "a part that does not build: its runners are errors that say so" \
+    sh -c "grep -q '\"status\":\"error\"' '$tmp/broken.json' && grep -q 'did not build' '$tmp/broken.json'"
+
+# ---- bad input ---------------------------------------------------------------
+out/build/bin/grade --submission "$tmp/full" --classroom "$tmp/no/such/dir/file" --quiet >"$tmp/bad.out" 2>&1
+status=$?
+check "an unwritable CLASSROOM file: status 2 (got $status)" [ "$status" -eq 2 ]
+check "an unwritable CLASSROOM file: the error names it" grep -q 'no/such/dir/file' "$tmp/bad.out"
+
+finish
