@@ -125,7 +125,7 @@ static void write_results(JsonWriter *j, const Grade *g, size_t output_max)
                 append(&format_errors, "Part %s: %s", part_label(p), g->build_messages[p]);
         }
         if (g->diagnosis[p])
-            append(&output, "%s\n", g->diagnosis[p]);
+            append(&output, "What went wrong (probes run on your code confirmed it):\n%s\n", g->diagnosis[p]);
     }
     append(&output, "\nCore points: %g / %g\n", core, core_max);
 

@@ -113,7 +113,7 @@ check "partial: score $score is the kit's core score over the core total ($core)
 check "partial: partial credit" sh -c "[ '$score' != 0 ] && [ '$score' != 1 ]"
 check "partial: the message gives the core points" grep -q "\"message\": \"Core points: ${core% *} / ${core#* }\." \
     "$tmp/partial.json"
-check "partial: a failed test's hint reaches the student" grep -q 'hint:' "$tmp/partial.json"
+check "partial: what went wrong reaches the student" grep -q 'What went wrong (probes run on your code confirmed it)' "$tmp/partial.json"
 
 # The untouched skeleton.
 rm -rf "$job/student"/*
