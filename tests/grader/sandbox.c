@@ -260,7 +260,7 @@ int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t e
     if (in_fd < 0)
         close(in_p[1]);
     int status = 0;
-    bool exited = false;
+    bool exited = false, reaped = false;
     double deadline = start + spec->timeout, next_watch = start;
 
     while (!exited) {
@@ -293,11 +293,9 @@ int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t e
             close(out_fd);
             out_fd = -1;
         }
-        /* Exited (a zombie still holds its group's id, so killing the group
-         * cannot reach anyone else), out of time, or over its memory? */
-        siginfo_t si;
-        si.si_pid = 0;
-        if (waitid(P_PID, (id_t)pid, &si, WEXITED | WNOHANG | WNOWAIT) == 0 && si.si_pid == pid) {
+        /* Exited, out of time, or over its memory? */
+        if (waitpid(pid, &status, WNOHANG) == pid) {
+            reaped = true;
             exited = true;
         } else if (sandbox_now() > deadline) {
             res->timed_out = true;
@@ -310,12 +308,15 @@ int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t e
             }
         }
     }
-    /* Kill whatever is left of the group, reap the child, then take what is
-     * already in the pipes without waiting for anyone to close them. */
+    /* Kill whatever is left of the group (its id stays reserved while any
+     * member lives, so this reaches no one else), reap the child, then take
+     * what is already in the pipes without waiting for anyone to close them. */
     kill(-pid, SIGKILL);
-    kill(pid, SIGKILL);
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
-        continue;
+    if (!reaped) {
+        kill(pid, SIGKILL);
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+            continue;
+    }
     for (int round = 0; round < 64 && (ans_fd >= 0 || out_fd >= 0); round++) {
         if (ans_fd >= 0 && pump(ans_fd, &res->answer, &res->answer_len, &ans_cap,
                                 spec->answer_max, &res->answer_truncated) <= 0) {

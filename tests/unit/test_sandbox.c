@@ -157,10 +157,30 @@ static void test_no_file_output(void)
     sandbox_result_free(&res);
 }
 
+/* max_procs 0: the child itself runs (RLIMIT_NPROC is checked at fork, and
+ * on Linux at exec only after a setuid that found the user over it, which
+ * the limit, set after the setuid, cannot cause), but it cannot fork. */
+static void test_no_processes(void)
+{
+    SandboxResult res;
+    SandboxSpec spec = { .memory_mb = 48, .max_procs = 0 };
+    if (run_sh("echo ran >&3; /bin/echo forked >&3", spec, &res) != 0)
+        return;
+    CHECK_STR_CONTAINS(res.answer, "ran");
+    CHECK_MSG(!strstr(res.answer, "forked"), "the child could fork: %s", res.answer);
+    CHECK(res.exit_code != 0);                     /* the shell says it cannot fork */
+    sandbox_result_free(&res);
+    spec.max_procs = -1;                           /* the compiler's: it must fork */
+    if (run_sh("/bin/echo forked >&3", spec, &res) != 0)
+        return;
+    CHECK_STR_CONTAINS(res.answer, "forked");
+    sandbox_result_free(&res);
+}
+
 static const CheckTest tests[] = {
     CHECK_TEST(test_memory_watch),     CHECK_TEST(test_memory_stops_hog), CHECK_TEST(test_small_program_runs),
     CHECK_TEST(test_oom_score_adj),    CHECK_TEST(test_killed_reported),  CHECK_TEST(test_cpu_limit),
-    CHECK_TEST(test_wall_clock),       CHECK_TEST(test_no_file_output),
+    CHECK_TEST(test_wall_clock),       CHECK_TEST(test_no_file_output),   CHECK_TEST(test_no_processes),
 };
 
 int main(int argc, char **argv)
