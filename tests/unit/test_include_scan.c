@@ -59,7 +59,7 @@ static void test_devices_by_name(void)
     REFUSED("#include </dev/random>\n");
     REFUSED("#include \"/dev/stdin\"\n");
     REFUSED("#include \"/dev/fd/0\"\n");
-    REFUSED("#include \"/proc/self/fd/0\"\n");
+    REFUSED("#include \"/proc/self/fd/0\"\n");     /* portable: only a name */
     REFUSED("#include \"/sys/kernel/notes\"\n");
     REFUSED("#include \"//dev//zero\"\n");
     REFUSED("#include \"/dev/./zero\"\n");
