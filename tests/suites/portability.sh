@@ -306,7 +306,7 @@ else
     wait $!
     status1=$?
     cat "$tmp/werror1.log" "$tmp/werror2.log" 2>/dev/null >"$tmp/werror.log"
-    check "$cc -std=c11 -pedantic -Werror compiles $# C files: $(grep -E 'error|warning' "$tmp/werror.log" | head -n 5 | tr '\n' ' ')" \
+    check "$cc -std=c11 -pedantic -Werror compiles $# C files: $(grep -E 'error:|warning:' "$tmp/werror.log" | head -n 5 | tr '\n' ' ')" \
         test "$status1" -eq 0 -a "$status2" -eq 0
     [ "$status1" -eq 0 ] && [ "$status2" -eq 0 ] && : >"$stamp"
 fi
@@ -321,7 +321,7 @@ else
     mkdir -p "$root"
     ${MAKE:-make} -j2 OUT_ROOT="$root" CC="$other" STD="-std=c11 -Werror" all >"$tmp/other.log" 2>&1
     status=$?
-    check "make all with $other -std=c11 -pedantic -Werror (exit $status): $(grep -E 'error|warning' "$tmp/other.log" | head -n 5 | tr '\n' ' ')" \
+    check "make all with $other -std=c11 -pedantic -Werror (exit $status): $(grep -E 'error:|warning:' "$tmp/other.log" | head -n 5 | tr '\n' ' ')" \
         test "$status" -eq 0
     # Its unit tests; one that passed before and was not rebuilt since is not run again.
     ran=0 kept=0
@@ -357,7 +357,7 @@ if [ -n "${MACOS_SDK:-}" ]; then
             # shellcheck disable=SC2046,SC2086
             clang --target=$target -isysroot "$MACOS_SDK" $cflags -Werror -fsyntax-only -Ilabs \
                 -DHARNESS_PART=1 -DGRADER_ORACLE $(grep '\.c$' "$tmp/csrc") >>"$tmp/mac.log" 2>&1
-            check "every C file against $MACOS_SDK for $target: $(grep -E 'error|warning' "$tmp/mac.log" | head -n 5 | tr '\n' ' ')" \
+            check "every C file against $MACOS_SDK for $target: $(grep -E 'error:|warning:' "$tmp/mac.log" | head -n 5 | tr '\n' ' ')" \
                 test $? -eq 0
         done
     else
