@@ -323,28 +323,52 @@ else
     status=$?
     check "make all with $other -std=c11 -pedantic -Werror (exit $status): $(grep -E 'error:|warning:' "$tmp/other.log" | head -n 5 | tr '\n' ' ')" \
         test "$status" -eq 0
-    # Its unit tests; one that passed before and was not rebuilt since is not run again.
-    ran=0 kept=0
+    # Its unit tests, two at a time; one that passed before and was not
+    # rebuilt since is not run again.  Each runner writes "pass NAME",
+    # "kept NAME" or "fail NAME STATUS" lines.
+    units() {
+        for t in "$@"; do
+            stamp="$t.passed"
+            if [ -z "${PORT_FULL:-}" ] && [ -f "$stamp" ] && [ -z "$(find "$t" -newer "$stamp")" ]; then
+                echo "kept ${t##*/}"
+                continue
+            fi
+            rm -f "$stamp"
+            "$t" >"$tmp/unit-${t##*/}.out" 2>&1
+            status=$?
+            if [ "$status" -eq 0 ] && tail -n 1 "$tmp/unit-${t##*/}.out" | grep -q ' 0 failed'; then
+                : >"$stamp"
+                echo "pass ${t##*/}"
+            else
+                echo "fail ${t##*/} $status"
+            fi
+        done
+    }
+    first="" second="" k=0
     for t in "$root"/build/tests/test_*; do
+        case $t in *.passed) continue ;; esac
         [ -x "$t" ] || continue
-        stamp="$t.passed"
-        if [ -z "${PORT_FULL:-}" ] && [ -f "$stamp" ] && [ -z "$(find "$t" -newer "$stamp")" ]; then
-            kept=$((kept + 1))
-            pass
-            continue
-        fi
-        ran=$((ran + 1))
-        rm -f "$stamp"
-        "$t" >"$tmp/unit.out" 2>&1
-        status=$?
-        if [ "$status" -eq 0 ] && tail -n 1 "$tmp/unit.out" | grep -q ' 0 failed'; then
-            : >"$stamp"
-            pass
-        else
-            fail "${t##*/} built with $other (exit $status)"
-            grep -E 'FAIL|: ' "$tmp/unit.out" | head -n 10
-        fi
+        k=$((k + 1))
+        if [ $((k % 2)) -eq 1 ]; then first="$first $t"; else second="$second $t"; fi
     done
+    # shellcheck disable=SC2086
+    units $first >"$tmp/units1" &
+    # shellcheck disable=SC2086
+    units $second >"$tmp/units2"
+    wait $!
+    ran=0 kept=0
+    cat "$tmp/units1" "$tmp/units2" >"$tmp/units"
+    while read -r verdict unit status; do
+        case $verdict in
+        kept) kept=$((kept + 1)); pass ;;
+        pass) ran=$((ran + 1)); pass ;;
+        *)
+            ran=$((ran + 1))
+            fail "$unit built with $other (exit $status)"
+            grep -E 'FAIL|: ' "$tmp/unit-$unit.out" | head -n 10
+            ;;
+        esac
+    done <"$tmp/units"
     echo "   ran $ran unit tests built with $name; $kept unchanged since they passed"
     check "the unit tests were built with $other" test $((ran + kept)) -gt 0
 fi
