@@ -28,8 +28,11 @@ FORMAT     ?=
 CLASSROOM  ?=
 SUBMISSIONS ?=
 
-BUILD      = out/build
-ASAN       = out/asan
+# Where the builds go: OUT_ROOT=dir builds into dir/build and dir/asan (the
+# portability suite builds with a second compiler beside the first).
+OUT_ROOT  ?= out
+BUILD      = $(OUT_ROOT)/build
+ASAN       = $(OUT_ROOT)/asan
 STAGES     = part1_image_plane part2_pixel_coordinates part3a_sphere_intersect part3b_ray_color \
              part4_plane_intersect part5_triangle_intersect
 HAVE_SOLUTIONS := $(wildcard solutions/part1_image_plane.c)
@@ -163,7 +166,7 @@ $(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)
 HAVE_ORACLE := $(wildcard tests/oracle/oracle.h)
 HAVE_HIDDEN := $(wildcard tests/hidden/hidden.c)
 GRADER_LIB_SRC = tests/grader/cases.c tests/grader/check.c tests/grader/sandbox.c \
-                 tests/grader/build.c tests/grader/config.c tests/grader/grade.c \
+                 tests/grader/build.c tests/grader/include_scan.c tests/grader/config.c tests/grader/grade.c \
                  tests/grader/report_table.c tests/grader/report_json.c tests/grader/includes.c \
                  tests/grader/diagnose.c
 GRADER_LIB_SRC += tests/grader/report_classroom.c tests/grader/report_prairielearn.c
@@ -191,7 +194,7 @@ $(BUILD)/grader/libgrader.a: $(GRADER_OBJ)
 	rm -f $@ && ar rcs $@ $^
 $(BUILD)/grader/grade_main.o: tests/grader/grade_main.c $(GRADER_HDR) $(wildcard tests/oracle/*.h)
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) $(GRADE_DEFS) -Ilabs -c $< -o $@
+	$(CC) $(CFLAGS) $(GRADE_DEFS) -DGRADER_BUILD='"$(BUILD)"' -Ilabs -c $< -o $@
 $(BUILD)/bin/grade: $(BUILD)/grader/grade_main.o $(GRADE_EXTRA) $(BUILD)/grader/libgrader.a \
                     $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $(HARNESS) $(GRADER_REF)
 	@mkdir -p $(@D)
@@ -291,6 +294,17 @@ $(BUILD)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS)
 $(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN)
 	@mkdir -p $(@D)
 	$(CC) $(SANFLAGS) $(THREADS) -Ilabs $< $(REF_ASAN) $(UNIT_LIBS_ASAN) -o $@ $(LDLIBS)
+
+# The unit tests of the grader's sandbox and include scan link the part alone.
+GRADER_UNITS = sandbox include_scan
+$(GRADER_UNITS:%=$(BUILD)/tests/test_%): $(BUILD)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
+                                         tests/grader/%.c tests/grader/%.h
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $< tests/grader/$*.c -o $@ $(LDLIBS)
+$(GRADER_UNITS:%=$(ASAN)/tests/test_%): $(ASAN)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
+                                        tests/grader/%.c tests/grader/%.h
+	@mkdir -p $(@D)
+	$(CC) $(SANFLAGS) $< tests/grader/$*.c -o $@ $(LDLIBS)
 
 # ---- bench: speed against accuracy (tests/bench) ----------------------------
 # `make bench` writes out/bench/: results.csv, report.md, plot.svg and more

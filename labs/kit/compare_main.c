@@ -9,6 +9,7 @@
  * their difference.  Exit status: 0 identical, 1 different, 2 error.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>

@@ -3,6 +3,7 @@
  * PPM files.  See image.h.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 
 #include "image.h"
 #include "savefile.h"

@@ -6,6 +6,7 @@
  * split into the triangles (v0, v[k], v[k + 1]) of a fan.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "obj.h"
 
 #include <errno.h>

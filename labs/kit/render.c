@@ -9,6 +9,7 @@
  * far the render has got once it has taken more than a second.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "render.h"
 #include "closest.h"
 

@@ -7,6 +7,7 @@
  * success, 1 when the scene or the output fails, 2 on bad usage.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include <ctype.h>
 #include <errno.h>
 #include <stdbool.h>

@@ -7,6 +7,7 @@
  * bad line with a message naming the file, the line and what was expected.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "scene.h"
 
 #include <math.h>

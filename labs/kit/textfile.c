@@ -2,6 +2,7 @@
  * textfile.c - see textfile.h.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "textfile.h"
 
 #include <errno.h>

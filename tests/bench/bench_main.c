@@ -21,6 +21,7 @@
  * Exit status: 0, or 1 if something could not run (the reason on stderr).
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include <dirent.h>
 #include <math.h>
 #include <stdio.h>
@@ -71,7 +72,7 @@ static void progress_done(void)
 
 static double load_average(void)
 {
-    FILE *f = fopen("/proc/loadavg", "r");
+    FILE *f = fopen("/proc/loadavg", "r");     /* portable: -1 without /proc */
     double v = -1;
     if (f) {
         if (fscanf(f, "%lf", &v) != 1)
@@ -84,7 +85,7 @@ static double load_average(void)
 static void cpu_model(char *out, size_t len)
 {
     snprintf(out, len, "unknown CPU");
-    FILE *f = fopen("/proc/cpuinfo", "r");
+    FILE *f = fopen("/proc/cpuinfo", "r");     /* portable: "unknown CPU" without /proc */
     if (!f)
         return;
     char line[256];

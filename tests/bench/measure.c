@@ -10,6 +10,7 @@
  *                   scene's arithmetic allows
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -52,7 +53,7 @@ double median(double *v, int n)
  * virtual machine it is often the nominal clock, not the one running. */
 static double cpuinfo_mhz(void)
 {
-    FILE *f = fopen("/proc/cpuinfo", "r");
+    FILE *f = fopen("/proc/cpuinfo", "r");     /* portable: 0 without /proc */
     if (!f)
         return 0;
     char line[256];

@@ -453,7 +453,7 @@ static void md_ceiling(FILE *f, const BenchResults *br)
                "(two one-cycle operations per iteration, so two cycles), timed after every "
                "throughput round; the median of %d readings. ", c->mhz_measured, br->rounds);
     if (c->mhz_cpuinfo > 0)
-        fprintf(f, "/proc/cpuinfo says %.0f MHz: the nominal clock, which a core under load "
+        fprintf(f, "/proc/cpuinfo says %.0f MHz: the nominal clock, which a core under load " /* portable: */
                    "exceeds; the measured clock is the one the tests ran at.\n", c->mhz_cpuinfo);
     else
         fprintf(f, "(No /proc/cpuinfo on this system.)\n");

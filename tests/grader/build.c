@@ -2,15 +2,18 @@
  * build.c - see build.h.
  */
 #define _XOPEN_SOURCE 700
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "build.h"
 #include "grader.h"
 #include "includes.h"
+#include "include_scan.h"
 #include "sandbox.h"
 
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,6 +21,16 @@
 #include <unistd.h>
 
 #define SOURCE_MAX (1 << 20)        /* a stage file larger than 1 MiB is refused */
+
+/* The compiler's limits, per run (tests/grader/README in the kit's README,
+ * "Limits").  Compiling a stage file takes gcc 0.2 s and 30 MiB resident
+ * (49 MiB of address space), clang 0.5 s and 98 MiB (228 MiB of address
+ * space); linking the test program less.  Objects are a few KiB. */
+#define CC_SECONDS   20             /* wall clock: a pipe can only be timed out */
+#define CC_CPU       10             /* CPU seconds of each of its processes */
+#define CC_MEMORY_MB 512            /* address space of each process (resident
+                                       memory of the group on macOS) */
+#define CC_FILE_MB   16             /* largest file it may write */
 
 const char *const stage_names[NPARTS] = {
     "part1_image_plane", "part2_pixel_coordinates", "part3a_sphere_intersect", "part3b_ray_color",
@@ -96,28 +109,48 @@ static int copy_file(const char *src, const char *dst, size_t max, char *err, si
     return status;
 }
 
-/* Runs the compiler in the sandbox in b->dir/src; 0 if it succeeded. */
+/* Appends text to b->messages (nothing if out of memory). */
+static void say(Build *b, const char *text)
+{
+    size_t old = b->messages ? strlen(b->messages) : 0, n = strlen(text);
+    char *m = realloc(b->messages, old + n + 1);
+    if (m) {
+        memcpy(m + old, text, n + 1);
+        b->messages = m;
+    }
+}
+
+/* Runs the compiler in the sandbox in b->dir/src; 0 if it succeeded, 1 if
+ * not (its messages, and why it was stopped, in b->messages), -1 when the
+ * sandbox itself failed. */
 static int run_cc(const BuildConfig *cfg, Build *b, char **argv, char *err, size_t errlen)
 {
     char src[600];
     snprintf(src, sizeof src, "%s/src", b->dir);
     SandboxSpec spec = {
-        .argv = argv, .workdir = src, .timeout = 60, .answer_max = 0,
-        .output_max = 16384, .memory_mb = 4096, .max_procs = -1,
-        .max_file_mb = 256, .inherit_path = true,
+        .argv = argv, .workdir = src, .timeout = CC_SECONDS, .cpu_seconds = CC_CPU, .answer_max = 0,
+        .output_max = 16384, .memory_mb = CC_MEMORY_MB, .max_procs = -1,
+        .max_file_mb = CC_FILE_MB, .inherit_path = true,
     };
     SandboxResult res;
     (void)cfg;
     if (sandbox_run(&spec, &res, err, errlen) != 0)
         return -1;
-    size_t old = b->messages ? strlen(b->messages) : 0;
-    char *m = realloc(b->messages, old + res.output_len + 64);
-    if (m) {
-        memcpy(m + old, res.output, res.output_len + 1);
-        if (res.timed_out)
-            strcpy(m + old + res.output_len, "the compiler took more than 60 s\n");
-        b->messages = m;
-    }
+    say(b, res.output);
+    char why[200] = "";
+    if (res.timed_out)
+        snprintf(why, sizeof why, "the compiler took more than %d s, and was stopped\n", CC_SECONDS);
+    else if (res.memory_exceeded)
+        snprintf(why, sizeof why, "the compiler used more than %d MiB of memory, and was stopped\n", CC_MEMORY_MB);
+    else if (res.signal == SIGXCPU)
+        snprintf(why, sizeof why, "the compiler used more than %d s of CPU time, and was stopped\n", CC_CPU);
+    else if (res.signal == SIGXFSZ)
+        snprintf(why, sizeof why, "the compiler wrote a file larger than %d MiB, and was stopped\n", CC_FILE_MB);
+    else if (res.signal == SIGKILL)
+        snprintf(why, sizeof why, "the compiler was killed (signal 9): most likely the system ran out of memory\n");
+    else if (res.signal)
+        snprintf(why, sizeof why, "the compiler was killed by signal %d\n", res.signal);
+    say(b, why);
     int ok = res.exit_code == 0;
     sandbox_result_free(&res);
     return ok ? 0 : 1;
@@ -187,6 +220,25 @@ static int check_includes(const BuildConfig *cfg, Build *b, const char *file)
     return s.refused > 0;
 }
 
+/* Refuses a stage file (copied to path) that names a device, a pipe or a
+ * system file to the preprocessor (include_scan.h); 1 with a message, or 0. */
+static int scan_includes(Build *b, const char *path, const char *dir)
+{
+    FILE *f = fopen(path, "rb");
+    char *text = malloc(SOURCE_MAX + 1);
+    size_t n = f && text ? fread(text, 1, SOURCE_MAX, f) : 0;
+    if (f)
+        fclose(f);
+    char why[400], line[460];
+    int refused = text ? include_scan(text, n, dir, why, sizeof why) : 0;
+    free(text);
+    if (refused) {
+        snprintf(line, sizeof line, "refused: %s\n", why);
+        say(b, line);
+    }
+    return refused;
+}
+
 /* After compiling: where the compiler says it looked (includes through
  * macros too).  Returns 0, or 1 with a message. */
 static int check_dependencies(const BuildConfig *cfg, Build *b, const char *depfile)
@@ -194,7 +246,7 @@ static int check_dependencies(const BuildConfig *cfg, Build *b, const char *depf
     FILE *f = fopen(depfile, "r");
     if (!f)
         return 0;
-    char word[PATH_MAX];
+    char word[4096];                /* PATH_MAX is only 1024 on macOS */
     int status = 0;
     while (fscanf(f, "%4095s", word) == 1) {
         if (strchr(word, ':') || strcmp(word, "\\") == 0)
@@ -262,7 +314,7 @@ int build_part(const BuildConfig *cfg, int part, const char *submission, Build *
             note(b, "%s\n", cerr);
             return 0;
         }
-        if (check_includes(cfg, b, to))
+        if (check_includes(cfg, b, to) || scan_includes(b, to, src))
             return 0;
         char cfile[80], ofile[80], dfile[80];
         snprintf(cfile, sizeof cfile, "%s.c", stage);

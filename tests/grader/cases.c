@@ -17,6 +17,7 @@
  * same double, so they survive the round trip exactly.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "grader.h"
 #include "../../labs/kit/numtext.h"
 

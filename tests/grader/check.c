@@ -4,6 +4,7 @@
  * the tolerance, and, when the answer matches a known mistake, a hint.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "grader.h"
 
 #include <math.h>

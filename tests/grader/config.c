@@ -2,6 +2,7 @@
  * config.c - reading tests/weights.conf (see the comments in that file).
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "config.h"
 
 #include <errno.h>

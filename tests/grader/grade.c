@@ -5,6 +5,7 @@
  * own points.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "grade.h"
 #include "sandbox.h"
 #include "diagnose.h"
@@ -16,6 +17,7 @@
 #include <string.h>
 
 #define OUTPUT_SHOWN 1500     /* bytes of the student's own printing shown */
+#define TEST_MEMORY_MB 256    /* a test program needs 13 to 16 MiB of address space */
 
 static const char *kind_word[NKINDS] = { "plane", "pixel", "sphere", "camera", "color", "image",
                                          "planehit", "triangle", "mesh" };
@@ -81,7 +83,7 @@ static const char *signal_story(int sig)
     case SIGABRT: return " (SIGABRT: abort() or a failed assert)";
     case SIGXCPU: return " (SIGXCPU: too much CPU time)";
     case SIGXFSZ: return " (SIGXFSZ: it tried to write a file; tests may not)";
-    case SIGKILL: return " (SIGKILL)";
+    case SIGKILL: return " (SIGKILL: killed from outside, most likely because the system ran out of memory)";
     default:      return "";
     }
 }
@@ -101,7 +103,7 @@ static int run_child(const GradeOptions *opt, const Build *b, const Test *t, San
     SandboxSpec spec = {
         .argv = argv, .workdir = b->rundir, .input = input, .input_len = len,
         .timeout = opt->cfg->timeout, .answer_max = 512 + (size_t)t->ncases * 160,
-        .output_max = 64 * 1024, .memory_mb = 1024, .max_procs = 0, .max_file_mb = 0,
+        .output_max = 64 * 1024, .memory_mb = TEST_MEMORY_MB, .max_procs = 0, .max_file_mb = 0,
     };
     int status = sandbox_run(&spec, res, err, errlen);
     free(input);
@@ -126,6 +128,8 @@ static void run_test(const GradeOptions *opt, const Build *b, const Test *t, Tes
     char whybuf[200] = "";
     if (res.timed_out) {
         snprintf(whybuf, sizeof whybuf, "  it did not finish within %g s: an endless loop?\n", opt->cfg->timeout);
+    } else if (res.memory_exceeded) {
+        snprintf(whybuf, sizeof whybuf, "  it used more than %d MiB of memory, and was stopped\n", TEST_MEMORY_MB);
     } else if (res.signal) {
         snprintf(whybuf, sizeof whybuf, "  it crashed: signal %d%s\n", res.signal, signal_story(res.signal));
     } else if (res.exit_code != 0) {
@@ -133,7 +137,7 @@ static void run_test(const GradeOptions *opt, const Build *b, const Test *t, Tes
                  "(does your code call exit?)\n", res.exit_code);
     }
     why = whybuf;
-    ok = ok && res.exit_code == 0 && !res.timed_out;
+    ok = ok && res.exit_code == 0 && !res.timed_out && !res.memory_exceeded;
     r->passed = ok;
     r->score = ok ? r->max_score : 0;
 

@@ -12,6 +12,7 @@
  * It knows nothing of the expected answers: the parent judges.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "raytracer.h"
 
 #include <stdio.h>

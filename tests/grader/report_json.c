@@ -5,6 +5,7 @@
  * into place, by the grader alone, after every part is graded.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "report.h"
 #include "../tools/json.h"
 

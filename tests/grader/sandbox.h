@@ -8,6 +8,14 @@
  * as the unprivileged user "nobody".  The parent enforces the wall-clock
  * limit by killing the whole process group -- nothing the child does (alarm,
  * signals, exit, fork, closing descriptors) can stall it or forge a result.
+ *
+ * Memory: the kernel enforces memory_mb as each process's address space
+ * (RLIMIT_AS) on Linux.  macOS refuses so small an address space (every
+ * process maps gigabytes of shared libraries), so there the parent watches
+ * the physical footprint of the child's whole group every 20 ms and kills
+ * the group over memory_mb; on Linux it watches the child's resident size
+ * the same way, behind RLIMIT_AS.  On Linux the child also asks the
+ * out-of-memory killer to take it, not the grader, should memory run out.
  */
 #ifndef SANDBOX_H
 #define SANDBOX_H
@@ -23,7 +31,11 @@ typedef struct {
     double timeout;            /* wall-clock seconds before the group is killed */
     size_t answer_max;         /* bytes kept from fd 3 (the rest is dropped)  */
     size_t output_max;         /* bytes kept from stdout and stderr           */
-    long memory_mb;            /* address-space limit; 0 = none              */
+    long memory_mb;            /* memory limit (see above); 0 = none          */
+    long address_mb;           /* RLIMIT_AS when not memory_mb (0: memory_mb,
+                                  -1: none); the tests of the sandbox set it
+                                  above memory_mb to reach the watch alone   */
+    int cpu_seconds;           /* RLIMIT_CPU; 0: the timeout plus 2 s         */
     int max_procs;             /* -1: no limit (the compiler needs its own);
                                   0: the child may not create processes       */
     long max_file_mb;          /* largest file the child may write; 0 = none  */
@@ -38,6 +50,8 @@ typedef struct {
     size_t output_len;
     bool output_truncated;
     bool timed_out;
+    bool memory_exceeded;      /* killed by the parent for using more than
+                                  memory_mb                                   */
     int exit_code;             /* the exit status, or -1 when killed          */
     int signal;                /* the signal that ended it, or 0             */
     double seconds;
@@ -47,6 +61,10 @@ typedef struct {
  * the sandbox itself failed, with a reason in err. */
 int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t errlen);
 void sandbox_result_free(SandboxResult *res);
+
+/* True where the parent can see the child's memory (Linux, macOS), so that
+ * memory_mb holds even where the kernel ignores RLIMIT_AS. */
+bool sandbox_watches_memory(void);
 
 /* True when the grader runs as root and so drops children to "nobody". */
 bool sandbox_drops_privileges(void);

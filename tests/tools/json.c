@@ -2,6 +2,7 @@
  * json.c - the streaming JSON writer.  See json.h.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 
 #include "json.h"
 #include "../../labs/kit/numtext.h"

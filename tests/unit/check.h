@@ -16,6 +16,7 @@
 #define CHECK_H
 
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>

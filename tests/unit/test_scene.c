@@ -277,7 +277,8 @@ static void test_sphere_limit(void)
     if (!text)
         return;
     char *p = text;
-    p += sprintf(p, "%s", GOOD_HEAD);
+    memcpy(p, GOOD_HEAD, strlen(GOOD_HEAD));
+    p += strlen(GOOD_HEAD);
     for (size_t k = 0; k < n - 1; k++, p += len)
         memcpy(p, line, len);
     *p = '\0';

@@ -1,0 +1,394 @@
+#!/bin/sh
+# Portability: the kit must build and run on Linux and macOS (and WSL),
+# with gcc or clang, GNU make 3.81 (macOS's /usr/bin/make) or newer, and a
+# /bin/sh that is dash (Debian, Ubuntu, WSL) or bash 3.2 (macOS).  This
+# machine has only some of them, so the suite checks what it can run and
+# greps for the rest:
+#
+# 1. the other compiler (clang when cc is gcc, gcc when cc is clang), when
+#    installed: `make all` into out/port/<compiler> with -std=c11 -pedantic
+#    -Werror (incremental, like the main build), then the unit tests it
+#    built; and the default compiler's -Werror over every C file (syntax
+#    only: the main build compiled them already);
+# 2. every shell script of the kit through `dash -n` and a check for
+#    bashisms (checkbashisms when installed, and always the grep below);
+#    the scripts that need no build run under every POSIX shell installed;
+# 3. the Makefile for features newer than GNU make 3.81;
+# 4. the C sources for calls, headers and feature macros that Linux has and
+#    macOS lacks or hides, and the shell scripts for GNU-only tools and flags.
+#
+# Every grep check is first run on a planted violation, so that a check
+# that could never fail fails here.  PORT_FULL=1 runs the other compiler's
+# unit tests even when they passed before unchanged; MACOS_SDK=dir (a macOS
+# SDK, dir/usr/include) also compiles every C file against Apple's headers
+# with clang.
+set -u
+top=$(pwd)
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtport.XXXXXX") || { echo "no temporary directory"; echo "0 passed, 1 failed"; exit 1; }
+trap 'rm -rf "$tmp"' EXIT
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); }
+fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
+check() { what=$1; shift; if "$@"; then pass; else fail "$what"; fi; }
+have() { command -v "$1" >/dev/null 2>&1; }
+start=$(date +%s)
+
+# ---- the kit's files -------------------------------------------------------
+# Shell scripts: *.sh and anything whose first line runs sh, outside out/.
+find . -name out -prune -o -name .git -prune -o -name selftest -prune -o -type f -print |
+    sed 's|^\./||' | sort >"$tmp/all"
+grep '\.sh$' "$tmp/all" >"$tmp/scripts"
+# shellcheck disable=SC2046
+awk 'FNR == 1 && /^#! *(\/bin\/|\/usr\/bin\/env )sh/ { print FILENAME }' \
+    $(grep -v -E '\.[A-Za-z0-9]+$|(^|/)Makefile$' "$tmp/all") /dev/null >>"$tmp/scripts"
+grep '\.[ch]$' "$tmp/all" >"$tmp/csrc"
+check "the kit has shell scripts ($(wc -l <"$tmp/scripts" | tr -d ' '))" test -s "$tmp/scripts"
+
+# ---- the grep checks ---------------------------------------------------------
+# Each prints "file:line: text" for what it finds, and succeeds when it
+# found something.  A line that ends with the comment "portable:" and a
+# reason is allowed (the reason says why the use is guarded).
+
+# findings NAME FILE...: grep -n -E pattern (in $pat) over files, minus
+# comment-only lines and lines marked portable.
+findings() {
+    grep -n -E -e "$pat" "$@" /dev/null 2>/dev/null |
+        grep -v -E '^[^:]*:[0-9]+:[[:space:]]*(#|//|/?\*)' | grep -v 'portable:'
+}
+
+# Bashisms, for /bin/sh scripts (dash, bash 3.2 in sh mode).
+bashisms() {
+    pat='(^|[;&|({[:space:]])\[\[[[:space:]]'  # portable: a pattern
+    pat="$pat|(^|[;&|[:space:]])function[[:space:]]+[A-Za-z_][A-Za-z0-9_]*[[:space:]]*(\(\))?[[:space:]]*\{"  # portable: a pattern
+    pat="$pat|(^|[;&|[:space:]])(source|let|declare|typeset|shopt|readarray|mapfile|select)[[:space:]]"  # portable: a pattern
+    pat="$pat|echo[[:space:]]+-[a-zA-Z]*e"  # portable: a pattern
+    pat="$pat|(\[|test)[[:space:]][^]]*[[:space:]]==[[:space:]]"  # portable: a pattern
+    pat="$pat|&>|\|&|<<<|>\(|<\("  # portable: a pattern
+    pat="$pat|\\\$\{[A-Za-z_][A-Za-z0-9_]*(//?|\^|,|:[0-9 ])"  # portable: a pattern
+    pat="$pat|\\\$\{![A-Za-z_]|\\\$\{[A-Za-z_][A-Za-z0-9_]*\[|^[[:space:]]*[A-Za-z_][A-Za-z0-9_]*(\[[^]]*\])?\+?=\("  # portable: a pattern
+    pat="$pat|pipefail|set[[:space:]]+-o[[:space:]]+(errtrace|functrace)|trap[[:space:]].*[[:space:]](ERR|DEBUG|RETURN)\$"  # portable: a pattern
+    pat="$pat|^[[:space:]]*\(\(|\\\$\(<"  # portable: a pattern
+    pat="$pat|\\\$\{?(RANDOM|BASH[A-Z_]*|PIPESTATUS|FUNCNAME|EUID|UID|HOSTNAME|OSTYPE|SECONDS)\b"  # portable: a pattern
+    pat="$pat|read[[:space:]]+-[a-qs-z]|printf[[:space:]]+-v|wait[[:space:]]+-n|export[[:space:]]+-f"  # portable: a pattern
+    pat="$pat|\{[0-9]+\.\.[0-9]+\}"  # portable: a pattern
+    findings "$@"
+}
+
+# GNU-only (or Linux-only) tools and flags in shell scripts; each as macOS
+# has it said in the message of the check that found it.
+gnu_only() {
+    pat='sed[[:space:]]([^|;]*[[:space:]])?-i([[:space:]]|$)'  # portable: a pattern
+    pat="$pat|sed[[:space:]]+-r|sed[[:space:]].*\\\\[+?|]"  # portable: a pattern
+    pat="$pat|grep[[:space:]]+-[a-zA-Z]*P|grep[[:space:]][^|;]*\\\\[+?|]"  # portable: a pattern
+    pat="$pat|date[[:space:]]+(-d|--)|date[[:space:]].*%N"  # portable: a pattern
+    pat="$pat|readlink[[:space:]]+-[a-z]*f|(^|[^A-Za-z_])realpath[[:space:]]"  # portable: a pattern
+    pat="$pat|stat[[:space:]]+(-c|-f|--)|find[[:space:]].*-printf|xargs[[:space:]]+(-[a-z]*r|--)"  # portable: a pattern
+    pat="$pat|head[[:space:]]+-n[[:space:]]*-[0-9]|sort[[:space:]]+-[a-zA-Z]*[Vh]|base64[[:space:]]+(-d|-w|--)"  # portable: a pattern
+    pat="$pat|(^|[^A-Za-z_./-])(timeout|taskset|nproc|setsid|flock|lscpu|numactl|md5sum|sha[0-9]+sum)([[:space:]]|\)|;|\||$)"  # portable: a pattern
+    pat="$pat|/proc/"  # portable: a pattern
+    pat="$pat|mktemp([[:space:]]+-[a-z]+)*[[:space:]]*(\)|\$|;|&|\|)"  # portable: a pattern
+    pat="$pat|\"\\\$\(wc[[:space:]][^)]*\)\"[[:space:]]*!?=[[:space:]]"  # portable: a pattern
+    pat="$pat|(gensub|strftime|systime|asorti?|PROCINFO|IGNORECASE|FPAT|BEGINFILE)[[:space:]]*\("  # portable: a pattern
+    pat="$pat|(^|[;&|[:space:]])(ls|cp|mv|rm|ln|mkdir|touch|date|stat|sort|head|tail|wc|cut|tr|grep|sed|find|xargs|du|tar|chmod|chown|readlink|mktemp)[[:space:]][^|;]*[[:space:]]--[a-z]"  # portable: a pattern
+    findings "$@"
+}
+
+# Makefile features newer than GNU make 3.81 (what each needs is in the
+# message).  Recipe lines (a tab first) are shell; only $(file), $(guile),
+# $(let) and $(intcmp) are looked for there too.
+make_features() {
+    for f in "$@"; do
+        grep -n -v '^	' "$f" | grep -v -E '^[0-9]+:[[:space:]]*#' | grep -E \
+            -e '^[0-9]+:[^=#]*[^:=!?+[:space:]]?[[:space:]]*!=' \
+            -e ':::?=' \
+            -e '^[0-9]+:[[:space:]]*(undefine|load|-load)[[:space:]]' \
+            -e '\.(ONESHELL|RECIPEPREFIX|SHELLFLAGS|EXTRA_PREREQS|NOTINTERMEDIATE|WAIT|SHELLSTATUS)\b' \
+            -e '(^|[[:space:]:;])private[[:space:]]+[A-Za-z_]' \
+            -e '&:' \
+            -e '^[0-9]+:[[:space:]]*define[[:space:]]+[^[:space:]]+[[:space:]]*(:?:?=|\+=|\?=|!=)' \
+            -e 'output-sync|MAKEFLAGS.*[[:space:]]-O' | sed "s|^|$f:|"  # portable: a pattern
+        grep -n -E '\$[({](file|guile|let|intcmp)[[:space:]]' "$f" | sed "s|^|$f:|"  # portable: a pattern
+    done | grep .
+}
+
+# C: what Linux has and macOS lacks (or hides, or deprecates).
+c_linux_only() {
+    pat='#[[:space:]]*include[[:space:]]*<(linux/|sys/(prctl|sysinfo|epoll|inotify|signalfd|timerfd|eventfd|sendfile|vfs|personality|auxv)\.h|malloc\.h|endian\.h|byteswap\.h|features\.h|error\.h|argp\.h|obstack\.h)'  # portable: a pattern
+    pat="$pat|(^|[^A-Za-z0-9_])(pipe2|dup3|accept4|getrandom|prctl|memfd_create|sysinfo|get_nprocs|gettid|clock_nanosleep|timer_create|sem_init|sem_timedwait|pthread_barrier_[a-z]+|pthread_spin_[a-z]+|pthread_[sg]etaffinity_np|pthread_condattr_setclock|sched_[sg]etaffinity|posix_fallocate|fallocate|posix_fadvise|sync_file_range|strchrnul|mempcpy|memrchr|rawmemchr|canonicalize_file_name|reallocarray|qsort_r|strerror_r|v?asprintf|mallinfo|malloc_usable_size|usleep|getauxval)[[:space:]]*\("  # portable: a pattern
+    pat="$pat|\b(CPU_SET|CPU_ZERO|O_TMPFILE|O_PATH|O_DIRECT|O_NOATIME|MAP_POPULATE|MAP_HUGETLB|SOCK_CLOEXEC|SOCK_NONBLOCK|CLOCK_BOOTTIME|SIGPOLL|SIGPWR|SIGSTKFLT|program_invocation_name|_GNU_SOURCE)\b"  # portable: a pattern
+    pat="$pat|\"/proc/|(^|[^A-Za-z0-9_])(v?sprintf|tmpnam|tempnam|mktemp|vfork|gets|getwd|sbrk|brk)[[:space:]]*\("  # portable: a pattern
+    findings "$@"
+    # MAP_ANONYMOUS needs MAP_ANON beside it; __float128 its guard.
+    for f in $(grep -l 'MAP_ANONYMOUS' "$@" /dev/null); do
+        grep -q 'MAP_ANON\b' "$f" || echo "$f: MAP_ANONYMOUS without the MAP_ANON fallback"
+    done
+    for f in $(grep -l '__float128' "$@" /dev/null); do
+        grep -q '__SIZEOF_FLOAT128__' "$f" || echo "$f: __float128 not behind __SIZEOF_FLOAT128__"
+    done
+}
+
+# C: a file that asks for POSIX alone (_POSIX_C_SOURCE, _XOPEN_SOURCE) must
+# also define _DARWIN_C_SOURCE: macOS's headers otherwise hide mkdtemp,
+# mkstemp, O_NOFOLLOW, _SC_NPROCESSORS_ONLN, RLIMIT_NPROC and more.
+c_posix_alone() {
+    posix=$(grep -l -E '^#[[:space:]]*define[[:space:]]+_(POSIX_C|XOPEN)_SOURCE' "$@" /dev/null)
+    [ -n "$posix" ] || return 1
+    # shellcheck disable=SC2086
+    grep -L -E '^#[[:space:]]*define[[:space:]]+_DARWIN_C_SOURCE' $posix |
+        sed 's/$/: _POSIX_C_SOURCE or _XOPEN_SOURCE without _DARWIN_C_SOURCE/' | grep .
+}
+
+# Every check must find its planted violation.  (The plants are written
+# with '' inside their keywords so that this file does not hold them.)
+mkdir "$tmp/plant"
+plant() { printf "$2" >"$tmp/plant/$1"; }
+plant bash.sh '#!/bin/sh\nif [''[ -n "$x" ]]; then echo yes; fi\n'
+plant eqeq.sh '#!/bin/sh\nif [ "$a" =''= b ]; then :; fi\n'
+plant subst.sh '#!/bin/sh\necho "$''{x//a/b}"\n'
+plant setopt.sh '#!/bin/sh\nset -o pipe''fail\n'
+plant herestring.sh '#!/bin/sh\ncat <<''< "$x"\n'
+plant sedi.sh '#!/bin/sh\nse''d -i "s/a/b/" f\n'
+plant dated.sh '#!/bin/sh\nwhen=$(dat''e -d yesterday +%%s)\n'
+plant cpus.sh '#!/bin/sh\nn=$(npro''c)\n'
+plant mktemp.sh '#!/bin/sh\nd=$(mkte''mp -d)\n'
+plant printf.sh '#!/bin/sh\nfin''d . -printf "%%p"\n'
+plant grepP.sh '#!/bin/sh\ngre''p -qP "x+" f\n'
+plant Makefile.bang 'X != date\n'
+plant Makefile.undefine 'undefine X\n'
+plant Makefile.oneshell '.ONESHELL:\n'
+plant Makefile.grouped 'a b &: c\n\ttouch a b\n'
+plant Makefile.file 'X := $(file <list)\n'
+plant prctl.c '#include <sys/prctl.h>\n'
+plant sprintf.c 'int f(char *b) { return sprint''f(b, "%%d", 1); }\n'
+plant pipe2.c 'int f(int *p) { return pipe''2(p, 0); }\n'
+plant anon.c 'void *m(void) { return mmap(0, 1, 3, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0); }\n'
+plant proc.c 'const char *p = "/pro''c/self/status";\n'
+plant posix.c '#define _POSIX_C_SOURCE 200809L\n#include <unistd.h>\n'
+for p in bash eqeq subst setopt herestring; do
+    bashisms "$tmp/plant/$p.sh" >/dev/null
+    check "the bashism check finds the planted $p.sh" test $? -eq 0
+done
+for p in sedi dated cpus mktemp printf grepP; do
+    gnu_only "$tmp/plant/$p.sh" >/dev/null
+    check "the GNU-only check finds the planted $p.sh" test $? -eq 0
+done
+for p in bang undefine oneshell grouped file; do
+    make_features "$tmp/plant/Makefile.$p" >/dev/null
+    check "the make 3.81 check finds the planted Makefile.$p" test $? -eq 0
+done
+for p in prctl sprintf pipe2 anon proc; do
+    c_linux_only "$tmp/plant/$p.c" >/dev/null
+    check "the Linux-only C check finds the planted $p.c" test $? -eq 0
+done
+c_posix_alone "$tmp/plant/posix.c" >/dev/null
+check "the POSIX-alone check finds the planted posix.c" test $? -eq 0
+
+# ---- 2. shell scripts ------------------------------------------------------------
+scripts=$(cat "$tmp/scripts")
+if have dash; then
+    for s in $scripts; do
+        check "dash -n $s" dash -n "$s"
+    done
+else
+    echo "   skipped dash -n: dash is not installed (sh -n instead)"
+    for s in $scripts; do
+        check "sh -n $s" sh -n "$s"
+    done
+fi
+# shellcheck disable=SC2086
+bashisms $scripts >"$tmp/found"
+check "no bashisms in the kit's scripts (grep check): $(tr '\n' ' ' <"$tmp/found")" test ! -s "$tmp/found"
+# The linters again only when a script changed since they last passed.
+lint_stamp=out/port/scripts.linted
+mkdir -p out/port
+# shellcheck disable=SC2086
+if [ -z "${PORT_FULL:-}" ] && [ -f "$lint_stamp" ] && [ -z "$(find $scripts -newer "$lint_stamp")" ]; then
+    echo "   checkbashisms, shellcheck: no script changed since they last passed"
+else
+    lint_ok=1
+    if have checkbashisms; then
+        # shellcheck disable=SC2086
+        checkbashisms -f -p $scripts >"$tmp/cb" 2>&1
+        check "checkbashisms: $(tr '\n' ' ' <"$tmp/cb")" test ! -s "$tmp/cb" || lint_ok=0
+    else
+        echo "   skipped checkbashisms: not installed (Debian's devscripts has it)"
+    fi
+    if have shellcheck; then
+        # shellcheck disable=SC2086
+        shellcheck -s sh -f gcc $scripts 2>/dev/null | grep -E 'SC3[0-9]{3}' >"$tmp/sc"
+        check "shellcheck -s sh finds no non-POSIX feature: $(tr '\n' ' ' <"$tmp/sc")" test ! -s "$tmp/sc" || lint_ok=0
+    else
+        echo "   skipped shellcheck: not installed"
+    fi
+    [ "$lint_ok" -eq 1 ] && : >"$lint_stamp"
+fi
+# shellcheck disable=SC2086
+gnu_only $scripts >"$tmp/found"
+check "no GNU-only or Linux-only tool or flag in the kit's scripts: $(tr '\n' ' ' <"$tmp/found")" test ! -s "$tmp/found"
+
+# The scripts that need no build, under every POSIX shell here.  /bin/sh
+# runs all the others (tests/run.sh runs each suite with sh).
+sh_is=$(ls -l /bin/sh 2>/dev/null | sed 's/.*-> *//')
+echo "   /bin/sh is ${sh_is:-/bin/sh}"
+if [ -f tests/tools/cracks-mesh.sh ] && [ -f labs/scenes/cracks.obj ]; then
+    for shell in dash "bash --posix" ksh mksh posh yash "busybox sh"; do
+        set -- $shell
+        if have "$1"; then
+            $shell tests/tools/cracks-mesh.sh >"$tmp/cracks.obj" 2>"$tmp/cracks.err"
+            check "$shell tests/tools/cracks-mesh.sh writes labs/scenes/cracks.obj" \
+                cmp -s "$tmp/cracks.obj" labs/scenes/cracks.obj
+        fi
+    done
+fi
+
+# ---- 3. the Makefile ---------------------------------------------------------
+make_features Makefile >"$tmp/found"
+check "the Makefile needs nothing newer than GNU make 3.81: $(tr '\n' ' ' <"$tmp/found")" test ! -s "$tmp/found"
+
+# ---- 4. the C sources --------------------------------------------------------
+# Reading /proc is allowed where the code goes on without it: these lines
+# say so with a "portable:" comment (tests/bench, tests/grader/sandbox.c).
+# shellcheck disable=SC2046
+c_linux_only $(cat "$tmp/csrc") >"$tmp/found"
+check "no Linux-only (or deprecated on macOS) call, header or flag in C: $(tr '\n' ' ' <"$tmp/found")" \
+    test ! -s "$tmp/found"
+# shellcheck disable=SC2046
+c_posix_alone $(cat "$tmp/csrc") >"$tmp/found"
+check "every C file that asks for POSIX also defines _DARWIN_C_SOURCE: $(tr '\n' ' ' <"$tmp/found")" \
+    test ! -s "$tmp/found"
+
+# ---- 1. the compilers ----------------------------------------------------------
+cc=${CC:-cc}
+is_clang() { "$1" -dM -E - </dev/null 2>/dev/null | grep -q '__clang__'; }
+is_gcc() { "$1" -dM -E - </dev/null 2>/dev/null | grep -q '__GNUC__' && ! is_clang "$1"; }
+other=""
+if is_clang "$cc"; then
+    for c in gcc gcc-15 gcc-14 gcc-13 gcc-12 gcc-11; do
+        if have "$c" && is_gcc "$c"; then other=$c; break; fi
+    done
+else
+    for c in clang clang-20 clang-19 clang-18 clang-17 clang-16 clang-15 clang-14; do
+        if have "$c" && is_clang "$c"; then other=$c; break; fi
+    done
+fi
+cflags=$(printf 'print-cflags:\n\t@echo $(CFLAGS) $(THREADS)\n' | ${MAKE:-make} -s -f Makefile -f - print-cflags)
+
+# The default compiler, -Werror, every C file (the main build compiled them
+# without it); only those changed since the last clean pass, or all of them
+# when a header changed.
+mkdir -p out/port
+stamp=out/port/$(basename "$cc").werror-passed
+if [ -n "${PORT_FULL:-}" ] || [ ! -f "$stamp" ] || [ -n "$(find $(cat "$tmp/csrc") -name '*.h' -newer "$stamp")" ]; then
+    grep '\.c$' "$tmp/csrc" >"$tmp/werror.list"
+else
+    # shellcheck disable=SC2046
+    find $(grep '\.c$' "$tmp/csrc") -newer "$stamp" >"$tmp/werror.list"
+fi
+if [ ! -s "$tmp/werror.list" ]; then
+    echo "   $cc -Werror: no C file changed since the last clean pass"
+    pass
+else
+    # shellcheck disable=SC2046
+    set -- $(cat "$tmp/werror.list")
+    half=$(( ($# + 1) / 2 ))
+    first="" second="" k=0
+    for f in "$@"; do
+        k=$((k + 1))
+        if [ "$k" -le "$half" ]; then first="$first $f"; else second="$second $f"; fi
+    done
+    # shellcheck disable=SC2086
+    $cc $cflags -Werror -fsyntax-only -Ilabs -DHARNESS_PART=1 -DGRADER_ORACLE $first >"$tmp/werror1.log" 2>&1 &
+    # shellcheck disable=SC2086
+    [ -z "$second" ] || $cc $cflags -Werror -fsyntax-only -Ilabs -DHARNESS_PART=1 -DGRADER_ORACLE $second \
+        >"$tmp/werror2.log" 2>&1
+    status2=$?
+    wait $!
+    status1=$?
+    cat "$tmp/werror1.log" "$tmp/werror2.log" 2>/dev/null >"$tmp/werror.log"
+    check "$cc -std=c11 -pedantic -Werror compiles $# C files: $(grep -E 'error:|warning:' "$tmp/werror.log" | head -n 5 | tr '\n' ' ')" \
+        test "$status1" -eq 0 -a "$status2" -eq 0
+    [ "$status1" -eq 0 ] && [ "$status2" -eq 0 ] && : >"$stamp"
+fi
+echo "   $cc: $($cc --version 2>/dev/null | head -n 1)"
+
+if [ -z "$other" ]; then
+    echo "   skipped the second compiler: $(is_clang "$cc" && echo gcc || echo clang) is not installed"
+else
+    name=$(basename "$other")
+    root=out/port/$name
+    echo "   second compiler: $other ($($other --version 2>/dev/null | head -n 1)), building into $root"
+    mkdir -p "$root"
+    ${MAKE:-make} -j2 OUT_ROOT="$root" CC="$other" STD="-std=c11 -Werror" all >"$tmp/other.log" 2>&1
+    status=$?
+    check "make all with $other -std=c11 -pedantic -Werror (exit $status): $(grep -E 'error:|warning:' "$tmp/other.log" | head -n 5 | tr '\n' ' ')" \
+        test "$status" -eq 0
+    # Its unit tests, two at a time; one that passed before and was not
+    # rebuilt since is not run again.  Each runner writes "pass NAME",
+    # "kept NAME" or "fail NAME STATUS" lines.
+    units() {
+        for t in "$@"; do
+            stamp="$t.passed"
+            if [ -z "${PORT_FULL:-}" ] && [ -f "$stamp" ] && [ -z "$(find "$t" -newer "$stamp")" ]; then
+                echo "kept ${t##*/}"
+                continue
+            fi
+            rm -f "$stamp"
+            "$t" >"$tmp/unit-${t##*/}.out" 2>&1
+            status=$?
+            if [ "$status" -eq 0 ] && tail -n 1 "$tmp/unit-${t##*/}.out" | grep -q ' 0 failed'; then
+                : >"$stamp"
+                echo "pass ${t##*/}"
+            else
+                echo "fail ${t##*/} $status"
+            fi
+        done
+    }
+    first="" second="" k=0
+    for t in "$root"/build/tests/test_*; do
+        case $t in *.passed) continue ;; esac
+        [ -x "$t" ] || continue
+        k=$((k + 1))
+        if [ $((k % 2)) -eq 1 ]; then first="$first $t"; else second="$second $t"; fi
+    done
+    # shellcheck disable=SC2086
+    units $first >"$tmp/units1" &
+    # shellcheck disable=SC2086
+    units $second >"$tmp/units2"
+    wait $!
+    ran=0 kept=0
+    cat "$tmp/units1" "$tmp/units2" >"$tmp/units"
+    while read -r verdict unit status; do
+        case $verdict in
+        kept) kept=$((kept + 1)); pass ;;
+        pass) ran=$((ran + 1)); pass ;;
+        *)
+            ran=$((ran + 1))
+            fail "$unit built with $other (exit $status)"
+            grep -E 'FAIL|: ' "$tmp/unit-$unit.out" | head -n 10
+            ;;
+        esac
+    done <"$tmp/units"
+    echo "   ran $ran unit tests built with $name; $kept unchanged since they passed"
+    check "the unit tests were built with $other" test $((ran + kept)) -gt 0
+fi
+
+# Against Apple's headers, when a macOS SDK is at hand (syntax only).
+if [ -n "${MACOS_SDK:-}" ]; then
+    if [ -d "$MACOS_SDK/usr/include" ] && have clang; then
+        : >"$tmp/mac.log"
+        for target in arm64-apple-macos13 x86_64-apple-macos10.15; do
+            # shellcheck disable=SC2046,SC2086
+            clang --target=$target -isysroot "$MACOS_SDK" $cflags -Werror -fsyntax-only -Ilabs \
+                -DHARNESS_PART=1 -DGRADER_ORACLE $(grep '\.c$' "$tmp/csrc") >>"$tmp/mac.log" 2>&1
+            check "every C file against $MACOS_SDK for $target: $(grep -E 'error:|warning:' "$tmp/mac.log" | head -n 5 | tr '\n' ' ')" \
+                test $? -eq 0
+        done
+    else
+        fail "MACOS_SDK=$MACOS_SDK: no usr/include there, or no clang"
+    fi
+fi
+
+echo "   portability checks took $(( $(date +%s) - start )) s"
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,146 @@
+/*
+ * The grader's scan of the names a stage file gives the preprocessor
+ * (tests/grader/include_scan.c): every way of writing a directive that the
+ * compiler accepts is seen through, devices, pipes and system files are
+ * refused wherever a name leads, and ordinary files are let through,
+ * whatever their comments and strings say.
+ */
+#include "check.h"            /* first: it sets the POSIX feature level */
+#include <sys/stat.h>
+#include "../grader/include_scan.h"
+
+static char dir[64];          /* the compile directory: raytracer.h, a FIFO, links */
+
+/* 1 when the scan refuses text (compiled in dir), 0 when it passes. */
+static int scan(const char *text)
+{
+    char why[400] = "";
+    int r = include_scan(text, strlen(text), dir, why, sizeof why);
+    CHECK_MSG(r == 0 || why[0], "refused without a reason: %s", text);
+    return r;
+}
+
+#define REFUSED(text) CHECK_MSG(scan(text) == 1, "not refused: %s", text)
+#define PASSED(text) CHECK_MSG(scan(text) == 0, "refused: %s", text)
+
+static void setup(void)
+{
+    snprintf(dir, sizeof dir, "/tmp/rtscan.XXXXXX");
+    if (!mkdtemp(dir)) {
+        CHECK_MSG(0, "mkdtemp failed");
+        return;
+    }
+    char path[128];
+    snprintf(path, sizeof path, "%s/raytracer.h", dir);
+    FILE *f = fopen(path, "w");
+    if (f)
+        fclose(f);
+    snprintf(path, sizeof path, "%s/fifo", dir);
+    CHECK(mkfifo(path, 0600) == 0);
+    snprintf(path, sizeof path, "%s/zero", dir);
+    CHECK(symlink("/dev/zero", path) == 0);
+    snprintf(path, sizeof path, "%s/sub", dir);
+    CHECK(mkdir(path, 0700) == 0);
+}
+
+static void teardown(void)
+{
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    if (system(cmd) != 0)
+        printf("    (could not remove %s)\n", dir);
+}
+
+/* Devices and system files by name, however the name is spelt. */
+static void test_devices_by_name(void)
+{
+    setup();
+    REFUSED("#include \"/dev/zero\"\n");
+    REFUSED("#include </dev/random>\n");
+    REFUSED("#include \"/dev/stdin\"\n");
+    REFUSED("#include \"/dev/fd/0\"\n");
+    REFUSED("#include \"/proc/self/fd/0\"\n");     /* portable: only a name */
+    REFUSED("#include \"/sys/kernel/notes\"\n");
+    REFUSED("#include \"//dev//zero\"\n");
+    REFUSED("#include \"/dev/./zero\"\n");
+    REFUSED("#include </./dev/urandom>\n");
+    teardown();
+}
+
+/* What the name leads to: a symbolic link to a device, a pipe, a folder. */
+static void test_what_names_lead_to(void)
+{
+    setup();
+    char text[256];
+    snprintf(text, sizeof text, "#include \"%s/zero\"\n", dir);
+    REFUSED(text);
+    REFUSED("#include \"zero\"\n");                      /* relative: from the compile directory */
+    REFUSED("#include \"fifo\"\n");
+    REFUSED("#include <fifo>\n");
+    REFUSED("#include \"sub\"\n");
+    REFUSED("#include \"../../../../../../../../dev/zero\"\n");
+    REFUSED("#include \"sub/../raytracer.h\"\n");        /* any .. at all */
+    teardown();
+}
+
+/* Every way of writing the directive that gcc and clang accept. */
+static void test_directive_spellings(void)
+{
+    setup();
+    REFUSED("  #  include \"/dev/zero\"\n");
+    REFUSED("\t#include\t\"/dev/zero\"\n");
+    REFUSED("#include_next \"/dev/zero\"\n");
+    REFUSED("#import \"/dev/zero\"\n");
+    REFUSED("#embed \"/dev/zero\"\n");
+    REFUSED("%:include \"/dev/zero\"\n");                /* digraph */
+    REFUSED("?\?=include \"/dev/zero\"\n");               /* trigraph (-std=c11 has them) */
+    REFUSED("#inc\\\nlude \"/dev/zero\"\n");             /* line splices */
+    REFUSED("#include \"/dev/\\\nzero\"\n");
+    REFUSED("#include \"/dev/?\?/\nzero\"\n");            /* a trigraph splice */
+    REFUSED("#inc\\  \nlude \"/dev/zero\"\n");           /* blanks before the newline */
+    REFUSED("/* c */ # /* c */ include /* c */ \"/dev/zero\"\n");
+    REFUSED("/* a comment\n   over lines */ #include \"/dev/zero\"\n");
+    REFUSED("int x;\n#include \"/dev/zero\"\r\n");
+    REFUSED("#if __has_include(\"fifo\")\n#endif\n");
+    REFUSED("#if defined(X) || __has_include ( <fifo> )\n#endif\n");
+    REFUSED("#pragma GCC dependency \"fifo\"\n");
+    REFUSED("_Pragma(\"GCC dependency \\\"fifo\\\"\")\n");
+    REFUSED("__asm__(\".incbin \\\"/dev/zero\\\"\");\n");
+    teardown();
+}
+
+/* What only looks like a directive, and ordinary headers, pass. */
+static void test_passes(void)
+{
+    setup();
+    PASSED("#include \"raytracer.h\"\n#include <math.h>\n#include <stdio.h>\n");
+    PASSED("// #include \"/dev/zero\"\n");
+    PASSED("/* #include \"/dev/zero\" */\n");
+    PASSED("const char *s = \"#include \\\"/dev/zero\\\"\";\n");
+    PASSED("#define Z \"/dev/zero\"\n");                /* names only in #include are read */
+    PASSED("#error \"/dev/zero\"\n");
+    PASSED("#include \"no-such-header.h\"\n");          /* the compiler says it is missing */
+    PASSED("#include Z\n");                             /* a macro: left to the compiler's limits */
+    PASSED("char c = '\"'; /* \" */\n#include \"raytracer.h\"\n");
+    PASSED("");
+    teardown();
+}
+
+/* A line that is not a directive because something comes before the #. */
+static void test_not_at_line_start(void)
+{
+    setup();
+    PASSED("int a; # include \"/dev/zero\"\n");
+    PASSED("x /* c */ #include \"/dev/zero\"\n");
+    teardown();
+}
+
+static const CheckTest tests[] = {
+    CHECK_TEST(test_devices_by_name), CHECK_TEST(test_what_names_lead_to), CHECK_TEST(test_directive_spellings),
+    CHECK_TEST(test_passes),          CHECK_TEST(test_not_at_line_start),
+};
+
+int main(int argc, char **argv)
+{
+    return check_main(argc, argv, tests, CHECK_COUNT(tests));
+}

@@ -1,0 +1,189 @@
+/*
+ * The grader's sandbox (tests/grader/sandbox.c) on small shell programs:
+ * each limit stops what it is for, and says so.  The programs are /bin/sh
+ * builtins only, so they run the same on Linux and macOS; what only Linux
+ * has (/proc, oom_score_adj) is checked there and said to be skipped
+ * elsewhere.
+ */
+#include "check.h"            /* first: it sets the POSIX feature level */
+#include <stdbool.h>
+#include <sys/stat.h>
+#include "../grader/sandbox.h"
+
+/* Runs sh -c script in a fresh directory with spec's limits; 0 if it ran. */
+static int run_sh(const char *script, SandboxSpec spec, SandboxResult *res)
+{
+    char dir[] = "/tmp/rtsandbox.XXXXXX";
+    if (!mkdtemp(dir))
+        return -1;
+    chmod(dir, 0755);
+    sandbox_give(dir);
+    char *argv[] = { "/bin/sh", "-c", (char *)script, NULL };
+    spec.argv = argv;
+    spec.workdir = dir;
+    if (!spec.timeout)
+        spec.timeout = 10;
+    spec.answer_max = 4096;
+    spec.output_max = 4096;
+    char err[256];
+    int rc = sandbox_run(&spec, res, err, sizeof err);
+    CHECK_MSG(rc == 0, "sandbox_run: %s", err);
+    char cmd[64];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    if (system(cmd) != 0)
+        printf("    (could not remove %s)\n", dir);
+    return rc;
+}
+
+/* A shell that doubles a string up to 128 MiB (about three times that in
+ * use while it copies), then sleeps: a hog with a ceiling, so that a broken
+ * limit fails the test without taking the machine's memory. */
+static const char *const hog =
+    "x=0123456789abcdef; while [ ${#x} -lt 134217728 ]; do x=$x$x; done; sleep 10";
+
+/* Over memory_mb, the parent's watch stops it even with the address space
+ * left wide open (as macOS leaves it), within a second or two. */
+static void test_memory_watch(void)
+{
+    if (!sandbox_watches_memory()) {
+        printf("    skipped: this system does not let the grader see a child's memory\n");
+        return;
+    }
+    SandboxResult res;
+    SandboxSpec spec = { .memory_mb = 48, .address_mb = 2048, .max_procs = 0 };
+    if (run_sh(hog, spec, &res) != 0)
+        return;
+    CHECK_MSG(res.memory_exceeded, "not stopped for memory: exit %d, signal %d, timed out %d, %.2f s",
+              res.exit_code, res.signal, res.timed_out, res.seconds);
+    CHECK(!res.timed_out);
+    CHECK_MSG(res.seconds < 5, "stopped after %.2f s", res.seconds);
+    CHECK_EQ_INT(res.exit_code, -1);
+    sandbox_result_free(&res);
+}
+
+/* With the address space limited too, the hog is stopped one way or the
+ * other (its allocation fails, or the watch kills it), never left to run. */
+static void test_memory_stops_hog(void)
+{
+    SandboxResult res;
+    SandboxSpec spec = { .memory_mb = 48, .max_procs = 0 };
+    if (run_sh(hog, spec, &res) != 0)
+        return;
+    CHECK_MSG(!res.timed_out && (res.memory_exceeded || res.exit_code != 0),
+              "the hog was not stopped: exit %d, timed out %d", res.exit_code, res.timed_out);
+    CHECK_MSG(res.seconds < 5, "stopped after %.2f s", res.seconds);
+    sandbox_result_free(&res);
+}
+
+/* A program under its memory limit runs to the end and is not flagged. */
+static void test_small_program_runs(void)
+{
+    SandboxResult res;
+    SandboxSpec spec = { .memory_mb = 48, .max_procs = 0 };
+    if (run_sh("x=abc; echo \"$x$x\" >&3", spec, &res) != 0)
+        return;
+    CHECK_EQ_INT(res.exit_code, 0);
+    CHECK(!res.memory_exceeded);
+    CHECK_STR_CONTAINS(res.answer, "abcabc");
+    sandbox_result_free(&res);
+}
+
+/* On Linux the child asks the out-of-memory killer to take it first. */
+static void test_oom_score_adj(void)
+{
+    struct stat st;
+    if (stat("/proc/self/oom_score_adj", &st) != 0) {         /* portable: skipped */
+        printf("    skipped: no /proc/self/oom_score_adj on this system\n");
+        return;
+    }
+    SandboxResult res;
+    SandboxSpec spec = { .memory_mb = 48, .max_procs = 0 };
+    if (run_sh("read v </proc/self/oom_score_adj; echo \"adj $v\" >&3", spec, &res) != 0)
+        return;
+    CHECK_STR_CONTAINS(res.answer, "adj 1000");
+    sandbox_result_free(&res);
+}
+
+/* A child killed from outside (as by the out-of-memory killer) is reported
+ * as killed by its signal, not as a timeout or a memory overrun. */
+static void test_killed_reported(void)
+{
+    SandboxResult res;
+    SandboxSpec spec = { .memory_mb = 48, .max_procs = 0 };
+    if (run_sh("echo started >&3; kill -9 $$", spec, &res) != 0)
+        return;
+    CHECK_EQ_INT(res.signal, SIGKILL);
+    CHECK_EQ_INT(res.exit_code, -1);
+    CHECK(!res.timed_out);
+    CHECK(!res.memory_exceeded);
+    CHECK_STR_CONTAINS(res.answer, "started");
+    sandbox_result_free(&res);
+}
+
+/* cpu_seconds bounds CPU time apart from the wall clock. */
+static void test_cpu_limit(void)
+{
+    SandboxResult res;
+    SandboxSpec spec = { .memory_mb = 48, .max_procs = 0, .cpu_seconds = 1, .timeout = 20 };
+    if (run_sh("while :; do :; done", spec, &res) != 0)
+        return;
+    CHECK_MSG(res.signal == SIGXCPU || res.signal == SIGKILL, "signal %d, exit %d, %.2f s", res.signal,
+              res.exit_code, res.seconds);
+    CHECK(!res.timed_out);
+    CHECK_MSG(res.seconds < 10, "stopped after %.2f s", res.seconds);
+    sandbox_result_free(&res);
+}
+
+/* The wall clock stops a child that uses no CPU at all. */
+static void test_wall_clock(void)
+{
+    SandboxResult res;
+    SandboxSpec spec = { .memory_mb = 48, .max_procs = -1, .timeout = 0.5 };
+    if (run_sh("sleep 5", spec, &res) != 0)
+        return;
+    CHECK(res.timed_out);
+    CHECK_MSG(res.seconds < 2, "stopped after %.2f s", res.seconds);
+    sandbox_result_free(&res);
+}
+
+/* No file output: writing one is stopped by SIGXFSZ. */
+static void test_no_file_output(void)
+{
+    SandboxResult res;
+    SandboxSpec spec = { .memory_mb = 48, .max_procs = 0 };
+    if (run_sh("echo x >out.txt; echo after >&3", spec, &res) != 0)
+        return;
+    CHECK_MSG(res.signal == SIGXFSZ || res.exit_code != 0, "signal %d, exit %d", res.signal, res.exit_code);
+    sandbox_result_free(&res);
+}
+
+/* max_procs 0: the child itself runs (RLIMIT_NPROC is checked at fork, and
+ * on Linux at exec only after a setuid that found the user over it, which
+ * the limit, set after the setuid, cannot cause), but it cannot fork. */
+static void test_no_processes(void)
+{
+    SandboxResult res;
+    SandboxSpec spec = { .memory_mb = 48, .max_procs = 0 };
+    if (run_sh("echo ran >&3; /bin/echo forked >&3", spec, &res) != 0)
+        return;
+    CHECK_STR_CONTAINS(res.answer, "ran");
+    CHECK_MSG(!strstr(res.answer, "forked"), "the child could fork: %s", res.answer);
+    CHECK(res.exit_code != 0);                     /* the shell says it cannot fork */
+    sandbox_result_free(&res);
+    spec.max_procs = -1;                           /* the compiler's: it must fork */
+    if (run_sh("/bin/echo forked >&3", spec, &res) != 0)
+        return;
+    CHECK_STR_CONTAINS(res.answer, "forked");
+    sandbox_result_free(&res);
+}
+
+static const CheckTest tests[] = {
+    CHECK_TEST(test_memory_watch),     CHECK_TEST(test_memory_stops_hog), CHECK_TEST(test_small_program_runs),
+    CHECK_TEST(test_oom_score_adj),    CHECK_TEST(test_killed_reported),  CHECK_TEST(test_cpu_limit),
+    CHECK_TEST(test_wall_clock),       CHECK_TEST(test_no_file_output),   CHECK_TEST(test_no_processes),
+};
+
+int main(int argc, char **argv)
+{
+    return check_main(argc, argv, tests, CHECK_COUNT(tests));
+}
