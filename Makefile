@@ -35,7 +35,7 @@ HAVE_SOLUTIONS := $(wildcard solutions/part1_image_plane.c)
 # ---- the framework students use (labs/kit) ---------------------------------
 KIT_SRC    = labs/kit/image.c labs/kit/png.c labs/kit/zlib.c labs/kit/scene.c labs/kit/render.c \
              labs/kit/numtext.c labs/kit/savefile.c labs/kit/textfile.c labs/kit/obj.c \
-             labs/kit/closest.c
+             labs/kit/closest.c labs/kit/compare.c
 KIT_HDR    = $(wildcard labs/*.h labs/kit/*.h)
 KIT_OBJ    = $(KIT_SRC:labs/kit/%.c=$(BUILD)/kit/%.o)
 KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
