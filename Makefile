@@ -161,12 +161,15 @@ HAVE_ORACLE := $(wildcard tests/oracle/oracle.h)
 HAVE_HIDDEN := $(wildcard tests/hidden/hidden.c)
 GRADER_LIB_SRC = tests/grader/cases.c tests/grader/check.c tests/grader/sandbox.c \
                  tests/grader/build.c tests/grader/config.c tests/grader/grade.c \
-                 tests/grader/report_table.c tests/grader/report_json.c
+                 tests/grader/report_table.c tests/grader/report_json.c \
+                 tests/grader/report_render.c tests/grader/report_html.c tests/grader/markup.c \
+                 $(wildcard tests/grader/fig*.c)
 GRADER_HDR = $(wildcard tests/grader/*.h) $(KIT_HDR)
 GRADER_OBJ = $(GRADER_LIB_SRC:tests/grader/%.c=$(BUILD)/grader/%.o)
 HARNESS    = $(BUILD)/grader/harness_1.o $(BUILD)/grader/harness_2.o \
              $(BUILD)/grader/harness_3.o $(BUILD)/grader/harness_4.o \
-             $(BUILD)/grader/harness_5.o $(BUILD)/grader/harness_6.o
+             $(BUILD)/grader/harness_5.o $(BUILD)/grader/harness_6.o \
+             $(BUILD)/grader/harness_render.o
 GRADER_REF = $(if $(HAVE_SOLUTIONS),$(STAGES:%=$(BUILD)/grader/ref_%.o))
 GRADE_DEFS = $(if $(and $(HAVE_ORACLE),$(HAVE_HIDDEN)),-DGRADER_ORACLE)
 GRADE_EXTRA = $(if $(GRADE_DEFS),$(BUILD)/grader/hidden.o $(BUILD)/oracle/liboracle.a)
@@ -177,6 +180,10 @@ $(BUILD)/grader/%.o: tests/grader/%.c $(GRADER_HDR)
 $(BUILD)/grader/harness_%.o: tests/grader/harness.c $(KIT_HDR)
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -c $< -o $@
+# The report page's render program (build_render): harness_render.c draws a scene.
+$(BUILD)/grader/harness_render.o: tests/grader/harness_render.c $(KIT_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
 	cp $< $@
 $(BUILD)/grader/hidden.o: tests/hidden/hidden.c $(GRADER_HDR) $(wildcard tests/oracle/*.h)
@@ -203,11 +210,21 @@ $(BUILD)/bin/accuracy: $(BUILD)/oracle/accuracy_main.o $(BUILD)/oracle/liboracle
 
 grader: $(BUILD)/bin/grade $(HARNESS) $(GRADER_REF)
 
-grade: grader
-	@$(BUILD)/bin/grade --submission "$(SUBMISSION)" $(if $(PART),--part $(PART)) \
-	    $(if $(RESULTS),--results "$(RESULTS)")
+# The report page (out/report/index.html) shows the default scene drawn by
+# the submission beside the reference's picture: in the instructor's kit
+# rendered here with solutions/, in the student kit the stored
+# labs/reference/default.png (the grader takes the first that exists).
+REPORT_REF = $(if $(HAVE_SOLUTIONS),$(BUILD)/report/default.png)
+$(BUILD)/report/default.png: $(BUILD)/sub/solutions/render labs/scenes/default.scene
+	@mkdir -p $(@D)
+	$(BUILD)/sub/solutions/render labs/scenes/default.scene --quiet -o $@
+all: $(REPORT_REF)
 
-grade-all: grader
+grade: grader $(REPORT_REF)
+	@$(BUILD)/bin/grade --submission "$(SUBMISSION)" $(if $(PART),--part $(PART)) \
+	    $(if $(RESULTS),--results "$(RESULTS)") --report out/report
+
+grade-all: grader $(REPORT_REF)
 	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade-all SUBMISSIONS=dir [OUT=dir]"; exit 2; }
 	@$(BUILD)/bin/grade --all "$(SUBMISSIONS)" --out "$(if $(OUT),$(OUT),out/grades)"
 

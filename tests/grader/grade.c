@@ -200,6 +200,8 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
             }
             first = false;
         }
+        if (opt->keep_objects && b.ok)
+            build_keep_objects(&b, opt->keep_objects);
         build_remove(&b);
     }
     for (int k = 0; k < tests->n; k++) {
