@@ -7,9 +7,6 @@ static void stub(Markup *m, const char *what)
 }
 void fig_plane(Markup *m, const Test *t, const Case *c, const double *got) { (void)t; (void)c; (void)got; stub(m, "plane"); }
 void fig_pixel(Markup *m, const Test *t, const Case *c, const double *got) { (void)t; (void)c; (void)got; stub(m, "pixel"); }
-void fig_sphere(Markup *m, const Test *t, const Case *c, const double *got) { (void)t; (void)c; (void)got; stub(m, "sphere"); }
 void fig_camera(Markup *m, const Test *t, const Case *c, const double *got) { (void)t; (void)c; (void)got; stub(m, "camera"); }
-void fig_color(Markup *m, const Test *t, const Case *c, const double *got) { (void)t; (void)c; (void)got; stub(m, "color"); }
-void fig_image(Markup *m, const Test *t, const TestResult *r, int c) { (void)t; (void)r; (void)c; stub(m, "image"); }
 void fig_planehit(Markup *m, const Test *t, const Case *c, const double *got) { (void)t; (void)c; (void)got; stub(m, "planehit"); }
 void fig_triangle(Markup *m, const Test *t, const Case *c, const double *got) { (void)t; (void)c; (void)got; stub(m, "triangle"); }

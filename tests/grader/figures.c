@@ -76,13 +76,20 @@ void fig_segment(Markup *m, const FigView *v, double x1, double y1, double x2, d
 }
 
 void fig_circle(Markup *m, const FigView *v, double cx, double cy, double R, const char *fill,
-                const char *stroke, double width)
+                double opacity, const char *stroke, double width)
 {
     if (!(R > 0) || !isfinite(R))
         return;
     double pcx = fig_px(v, cx), pcy = fig_py(v, cy), pr = R * v->s;
+    char op[40] = "";
+    if (opacity < 1)
+        snprintf(op, sizeof op, " fill-opacity=\"%.2f\"", opacity);
     if (pr < 2e4 && fabs(pcx) < 2e4 && fabs(pcy) < 2e4) {
-        svg_circle(m, pcx, pcy, fmax(pr, 0.8), fill, stroke, width);
+        mk_printf(m, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"%s\"%s", pcx, pcy,
+                  fmax(pr, 0.8), fill, op);
+        if (strcmp(stroke, "none") != 0)
+            mk_printf(m, " stroke=\"%s\" stroke-width=\"%.2g\"", stroke, width);
+        mk_printf(m, "/>\n");
         return;
     }
     /* A huge circle: the arc near the window's centre V.  With d = c - V
@@ -94,7 +101,8 @@ void fig_circle(Markup *m, const FigView *v, double cx, double cy, double R, con
     double half = hypot(v->pw, v->ph) / 2 / v->s;         /* the window's half diagonal */
     if (!(dist > 0)) {
         if (strcmp(fill, "none") != 0)
-            svg_rect(m, v->px0, v->py0, v->pw, v->ph, fill, "none", 0);
+            mk_printf(m, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"%s\"%s/>\n",
+                      v->px0, v->py0, v->pw, v->ph, fill, op);
         return;
     }
     if (fabs(R - dist) > 2 * half && strcmp(fill, "none") == 0)
@@ -117,7 +125,7 @@ void fig_circle(Markup *m, const FigView *v, double cx, double cy, double R, con
         mk_printf(m, " L%.2f %.2f L%.2f %.2f Z", mk_clamp(px[N] - nx * deep), mk_clamp(py[N] + ny * deep),
                   mk_clamp(px[0] - nx * deep), mk_clamp(py[0] + ny * deep));
     }
-    mk_printf(m, "\" fill=\"%s\"", fill);
+    mk_printf(m, "\" fill=\"%s\"%s", fill, op);
     if (strcmp(stroke, "none") != 0)
         mk_printf(m, " stroke=\"%s\" stroke-width=\"%.2g\"", stroke, width);
     mk_printf(m, "/>\n");

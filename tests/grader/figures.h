@@ -52,9 +52,9 @@ void fig_segment(Markup *m, const FigView *v, double x1, double y1, double x2, d
                  const char *color, double width, const char *dash);
 /* A world circle, clipped to the window; a circle far larger than the
  * window is drawn as the arc that crosses it, computed near the window so
- * that its position stays exact to the pixel. */
+ * that its position stays exact to the pixel.  opacity is the fill's. */
 void fig_circle(Markup *m, const FigView *v, double cx, double cy, double R, const char *fill,
-                const char *stroke, double width);
+                double opacity, const char *stroke, double width);
 
 /* Opens the figure's <svg> of width x height pixels (scaled to the page's
  * width), with its title for screen readers; fig_end closes it. */
