@@ -100,10 +100,14 @@ static void draw_content(Markup *m, const FigView *v, const RayFig *f, double aw
     for (int k = 0; k < f->ncircles; k++) {
         const RayCircle *c = &f->circles[k];
         fig_circle(m, v, c->a, c->b, c->R, c->fill, 0.45, "#333333", k == f->target ? 1.6 : 1);
-        /* the centre, when the circle shows whole */
-        if (c->R * v->s > 6 && fig_inside(v, c->a, c->b)) {
+        /* the centre, and the label above the circle */
+        if (c->R * v->s > 6 && fig_inside(v, c->a, c->b))
             svg_circle(m, fig_px(v, c->a), fig_py(v, c->b), 2, "#333333", "none", 0);
-            if (c->label[0])
+        if (c->label[0] && c->R * v->s > 3 && c->R * v->s < 400) {
+            double lx = fig_px(v, c->a), ly = fig_py(v, c->b) - c->R * v->s - 5;
+            if (lx > v->px0 + 8 && lx < v->px0 + v->pw - 8 && ly > v->py0 + 12)
+                svg_text(m, lx, ly, "middle", 12, COL_TEXT, true, "%s", c->label);
+            else if (fig_inside(v, c->a, c->b))
                 svg_text(m, fig_px(v, c->a) + 5, fig_py(v, c->b) - 4, "start", 12, COL_TEXT, true,
                          "%s", c->label);
         }

@@ -5,8 +5,5 @@ static void stub(Markup *m, const char *what)
     svg_text(m, 20, 40, "start", 14, COL_TEXT, false, "%s: figure to come", what);
     fig_end(m);
 }
-void fig_plane(Markup *m, const Test *t, const Case *c, const double *got) { (void)t; (void)c; (void)got; stub(m, "plane"); }
-void fig_pixel(Markup *m, const Test *t, const Case *c, const double *got) { (void)t; (void)c; (void)got; stub(m, "pixel"); }
-void fig_camera(Markup *m, const Test *t, const Case *c, const double *got) { (void)t; (void)c; (void)got; stub(m, "camera"); }
-void fig_planehit(Markup *m, const Test *t, const Case *c, const double *got) { (void)t; (void)c; (void)got; stub(m, "planehit"); }
 void fig_triangle(Markup *m, const Test *t, const Case *c, const double *got) { (void)t; (void)c; (void)got; stub(m, "triangle"); }
+void fig_planehit(Markup *m, const Test *t, const Case *c, const double *got) { (void)t; (void)c; (void)got; stub(m, "planehit"); }

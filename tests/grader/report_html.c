@@ -58,6 +58,7 @@ static const char *const style =
     "margin-left:.4em;color:#444;font-weight:normal}\n"
     ".failword{color:#b42318}\n"
     "table.spheres{border-collapse:collapse;font-size:.9em;margin:.5em 0}\n"
+    "table.spheres caption{text-align:left;font-weight:bold;padding:.2em 0}\n"
     "table.spheres td,table.spheres th{border:1px solid #ddd;padding:.15em .5em;text-align:left}\n"
     ".swatch{display:inline-block;width:1.1em;height:1.1em;border:1px solid #888;"
     "vertical-align:middle;margin-right:.3em}\n"
