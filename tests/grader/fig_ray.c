@@ -140,7 +140,8 @@ static void draw_content(Markup *m, const FigView *v, const RayFig *f, double aw
     }
     /* t along the ray */
     if (main && f->rlen > 0 && right > 0) {
-        double a0 = fmax(0, left), step = fig_step((right - a0) / f->rlen, (int)fmax(2, v->pw / 115));
+        double a0 = fmax(0, left);
+        double step = fig_step((right - a0) / f->rlen, (int)fmax(1, (right - a0) * v->s / 115));
         char buf[40];
         for (double t = ceil(a0 / f->rlen / step) * step; t * f->rlen <= right; t += step) {
             if (t == 0 || !(step > 0))
@@ -214,6 +215,10 @@ void ray_figure(Markup *m, const RayFig *f)
     }
     if (f->has_line)
         box_add(&bx, fa, fb);
+    /* keep some of the ray ahead of e in view, and a little room above
+     * and below the axis */
+    if (bx.x1 < 0.25 * (bx.x1 - bx.x0))
+        box_add(&bx, 0.25 * (bx.x1 - bx.x0), 0);
     /* keep a little room above and below the axis */
     double span = fmax(bx.x1 - bx.x0, bx.y1 - bx.y0);
     box_add(&bx, bx.x0, -0.06 * span);

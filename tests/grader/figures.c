@@ -75,6 +75,57 @@ void fig_segment(Markup *m, const FigView *v, double x1, double y1, double x2, d
              width, dash);
 }
 
+/* Sutherland-Hodgman: keeps the part of the polygon (x, y)[n] on the side
+ * of the line where sign * (coord[axis] - edge) >= 0; returns its size. */
+static int clip_side(const double *x, const double *y, int n, int axis, double edge, double sign,
+                     double *ox, double *oy)
+{
+    int m = 0;
+    for (int k = 0; k < n; k++) {
+        int l = (k + 1) % n;
+        double ck = sign * ((axis ? y[k] : x[k]) - edge), cl = sign * ((axis ? y[l] : x[l]) - edge);
+        if (ck >= 0) {
+            ox[m] = x[k], oy[m] = y[k], m++;
+        }
+        if ((ck >= 0) != (cl >= 0)) {
+            double f = ck / (ck - cl);
+            ox[m] = x[k] + f * (x[l] - x[k]), oy[m] = y[k] + f * (y[l] - y[k]), m++;
+        }
+    }
+    return m;
+}
+
+void fig_polygon(Markup *m, const FigView *v, const double *wx, const double *wy, int n,
+                 const char *fill, double opacity, const char *stroke, double width)
+{
+    enum { MAXV = 40 };
+    double x[MAXV], y[MAXV], tx[MAXV], ty[MAXV];
+    if (n < 2 || n > 8)
+        return;
+    for (int k = 0; k < n; k++) {
+        x[k] = v->px0 + v->pw / 2 + (wx[k] - v->cx) * v->s;
+        y[k] = v->py0 + v->ph / 2 - (wy[k] - v->cy) * v->s;
+        if (!isfinite(x[k]) || !isfinite(y[k]))
+            return;
+    }
+    double lo[2] = { v->px0 - 6, v->py0 - 6 }, hi[2] = { v->px0 + v->pw + 6, v->py0 + v->ph + 6 };
+    for (int axis = 0; axis < 2 && n > 0; axis++) {
+        n = clip_side(x, y, n, axis, lo[axis], 1, tx, ty);
+        n = clip_side(tx, ty, n, axis, hi[axis], -1, x, y);
+    }
+    if (n < 2)
+        return;
+    mk_printf(m, "<path d=\"");
+    for (int k = 0; k < n; k++)
+        mk_printf(m, "%s%.2f %.2f", k ? " L" : "M", x[k], y[k]);
+    mk_printf(m, " Z\" fill=\"%s\"", fill);
+    if (opacity < 1)
+        mk_printf(m, " fill-opacity=\"%.2f\"", opacity);
+    if (strcmp(stroke, "none") != 0)
+        mk_printf(m, " stroke=\"%s\" stroke-width=\"%.2g\" stroke-linejoin=\"round\"", stroke, width);
+    mk_printf(m, "/>\n");
+}
+
 void fig_circle(Markup *m, const FigView *v, double cx, double cy, double R, const char *fill,
                 double opacity, const char *stroke, double width)
 {

@@ -56,6 +56,12 @@ void fig_segment(Markup *m, const FigView *v, double x1, double y1, double x2, d
 void fig_circle(Markup *m, const FigView *v, double cx, double cy, double R, const char *fill,
                 double opacity, const char *stroke, double width);
 
+/* A world polygon of n <= 8 vertices, clipped to the window in double
+ * (so that a far vertex of a window zoomed in a million times still puts
+ * its edges where they belong). */
+void fig_polygon(Markup *m, const FigView *v, const double *wx, const double *wy, int n,
+                 const char *fill, double opacity, const char *stroke, double width);
+
 /* Opens the figure's <svg> of width x height pixels (scaled to the page's
  * width), with its title for screen readers; fig_end closes it. */
 void fig_begin(Markup *m, double width, double height, const char *title);
