@@ -138,7 +138,7 @@ $(ASAN)/oracle/liboracle.a: $(ORACLE_SRC:tests/oracle/%.c=$(ASAN)/oracle/%.o)
 	rm -f $@ && ar rcs $@ $^
 
 # ---- instructor tools: archives (zip, tar.gz) and JSON (tests/tools) -------
-TOOLS_SRC  = $(filter-out tests/tools/pack_main.c,$(wildcard tests/tools/*.c))
+TOOLS_SRC  = $(filter-out %_main.c,$(wildcard tests/tools/*.c))
 TOOLS_OBJ  = $(TOOLS_SRC:tests/tools/%.c=$(BUILD)/tools/%.o)
 $(BUILD)/tools/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) $(KIT_HDR)
 	@mkdir -p $(@D)
@@ -153,6 +153,11 @@ $(ASAN)/tools/libtools.a: $(TOOLS_SRC:tests/tools/%.c=$(ASAN)/tools/%.o)
 $(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+# The report page's checker (tests/suites/report.sh).
+$(BUILD)/bin/htmlcheck: $(BUILD)/tools/htmlcheck_main.o
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+all: $(BUILD)/bin/htmlcheck
 
 # ---- the autograder (tests/grader) ------------------------------------------
 # In the instructor's kit the grader also draws the hidden tests with the

@@ -90,10 +90,13 @@ static void scores(Markup *m, const Grade *g, const GradeConfig *cfg)
         int failed, total;
         count_tests(g, p, &failed, &total);
         bool full = g->core[p] >= g->core_max[p] && g->hard[p] >= g->hard_max[p];
-        mk_printf(m, "<tr><td><a href=\"#part-%s\">", part_label(p));
+        /* a part with failures links to them */
+        mk_printf(m, "<tr><td>");
+        if (failed)
+            mk_printf(m, "<a href=\"#part-%s\">", part_label(p));
         mk_text(m, part_title(p));
-        mk_printf(m, "</a></td><td class=\"num\">%g / %g</td><td class=\"num\">", g->core[p],
-                  g->core_max[p]);
+        mk_printf(m, "%s</td><td class=\"num\">%g / %g</td><td class=\"num\">", failed ? "</a>" : "",
+                  g->core[p], g->core_max[p]);
         if (g->hard_max[p] > 0)
             mk_printf(m, "%g / %g", g->hard[p], g->hard_max[p]);
         mk_printf(m, "</td><td class=\"num\">%d of %d</td><td class=\"%s\">%s</td></tr>\n", failed,
