@@ -270,7 +270,7 @@ student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 # The handouts' figures, drawn by the kit from the reference and from faulty
 # variants (handouts/figures/make-figures.sh); commit the PNGs it writes.
 # The student kit has no solutions/: its figures come ready-made.
-handouts: $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render $(BUILD)/bin/compare)
+handouts: $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render $(BUILD)/bin/compare grader)
 ifneq ($(HAVE_SOLUTIONS),)
 	MAKE="$(MAKE)" sh handouts/figures/make-figures.sh
 else
