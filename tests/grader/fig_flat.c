@@ -227,8 +227,10 @@ void fig_triangle(Markup *m, const Test *t, const Case *c, const double *got)
     }
     /* the main window: every vertex and the ray's point */
     double x0 = 0, x1 = 0, y0 = 0, y1 = 0, near = INFINITY;
+    bool vertex = false;
     for (int k = 0; k < nf; k++)
         for (int v = 0; v < 3; v++) {
+            vertex = vertex || (fl[k].x[v] == 0 && fl[k].y[v] == 0);
             x0 = fmin(x0, fl[k].x[v]), x1 = fmax(x1, fl[k].x[v]);
             y0 = fmin(y0, fl[k].y[v]), y1 = fmax(y1, fl[k].y[v]);
             near = fmin(near, seg_dist(fl[k].x[v], fl[k].y[v], fl[k].x[(v + 1) % 3], fl[k].y[(v + 1) % 3]));
@@ -237,7 +239,7 @@ void fig_triangle(Markup *m, const Test *t, const Case *c, const double *got)
     svg_text(m, 10, 19, "start", 14, COL_TEXT, true, "%s seen along the ray: the ray is the point %s",
              mesh ? "The mesh" : "The triangle", "in the middle of the cross");
     FigView w[2];
-    fig_fit(&w[0], x0, y0, x1, y1, 0.08, 10, 30, 740, 240);
+    fig_fit(&w[0], x0, y0, x1, y1, 0.12, 10, 30, 740, 240);
     int nwin = 1;
     if (near * w[0].s < 6) {
         /* the ray passes close to an edge: look closer */
@@ -247,7 +249,7 @@ void fig_triangle(Markup *m, const Test *t, const Case *c, const double *got)
         if (z.s > 4 * w[0].s) {
             w[1] = z;
             nwin = 2;
-            fig_fit(&w[0], x0, y0, x1, y1, 0.08, 10, 30, 480, 240);
+            fig_fit(&w[0], x0, y0, x1, y1, 0.12, 10, 30, 480, 240);
         }
     }
     for (int k = 0; k < nwin; k++) {
@@ -266,10 +268,13 @@ void fig_triangle(Markup *m, const Test *t, const Case *c, const double *got)
         svg_rect(m, v->px0, v->py0, v->pw, v->ph, "none", k ? "#7a4fbf" : "#bbbbbb", k ? 1.4 : 1);
         if (k == 1) {
             svg_text(m, v->px0 + 6, v->py0 + 16, "start", 12, "#7a4fbf", true, "zoomed in %s times on the ray",
-                     fig_num(b1, sizeof b1, v->s / w[0].s, 2));
-            svg_text(m, v->px0 + 6, v->py0 + v->ph - 8, "start", 11, COL_NOTE, false,
-                     near > 0 ? "nearest edge: %s away" : "%s", near > 0 ? fig_num(b2, sizeof b2, near, 2)
-                                                                     : "the ray passes through an edge");
+                     fig_times(b1, sizeof b1, v->s / w[0].s));
+            if (near > 0)
+                svg_text(m, v->px0 + 6, v->py0 + v->ph - 8, "start", 11, COL_NOTE, false,
+                         "the nearest edge is %s away", fig_num(b2, sizeof b2, near, 2));
+            else
+                svg_text(m, v->px0 + 6, v->py0 + v->ph - 8, "start", 11, COL_NOTE, false,
+                         "the ray passes exactly through %s", vertex ? "a vertex" : "an edge");
         }
     }
     if (nwin == 2) {

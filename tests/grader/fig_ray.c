@@ -347,7 +347,7 @@ void ray_figure(Markup *m, const RayFig *f)
         }
         if (k > 0) {
             svg_text(m, v->px0 + 6, v->py0 + 16, "start", 12, "#7a4fbf", true, "zoomed in %s times:",
-                     fig_num(buf, sizeof buf, v->s / main.s, 2));
+                     fig_times(buf, sizeof buf, v->s / main.s));
             svg_text(m, v->px0 + 6, v->py0 + 30, "start", 12, "#7a4fbf", true, "%s", why[k]);
             char note[120];
             snprintf(note, sizeof note, "this window is %s wide", fig_num(buf2, sizeof buf2, v->pw / v->s, 2));

@@ -232,6 +232,15 @@ const char *fig_num(char *buf, size_t len, double x, int digits)
     return buf;
 }
 
+const char *fig_times(char *buf, size_t len, double x)
+{
+    if (x < 1e5)
+        snprintf(buf, len, "%.0f", x < 100 ? x : x < 1000 ? 10 * round(x / 10) : 100 * round(x / 100));
+    else
+        snprintf(buf, len, "%.1e", x);
+    return buf;
+}
+
 double fig_step(double span, int n)
 {
     if (!(span > 0) || !isfinite(span))

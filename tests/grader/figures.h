@@ -75,6 +75,8 @@ void fig_window_end(Markup *m);
 const char *fig_hex(char *buf, const double *rgb);
 /* A short decimal form of x: %.*g with the digits given, "NaN", "inf". */
 const char *fig_num(char *buf, size_t len, double x, int digits);
+/* A magnification for people: "230", "4500", "3.8e+12". */
+const char *fig_times(char *buf, size_t len, double x);
 /* A "nice" step (1, 2 or 5 times a power of ten) near span / n. */
 double fig_step(double span, int n);
 

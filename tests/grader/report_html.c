@@ -49,6 +49,7 @@ static const char *const style =
     ".renders figure{margin:0;flex:1 1 300px;max-width:380px}\n"
     ".renders img{width:100%;height:auto;border:1px solid #bbb;image-rendering:pixelated}\n"
     ".nopic{border:1px dashed #b42318;background:#fff6f5;padding:.8em;font-size:.92em}\n"
+    ".nopic pre{border:none;background:none;padding:0;margin:0}\n"
     "figcaption{font-size:.9em;color:#444;margin-top:.3em}\n"
     "article.test{border:1px solid #ddd;border-radius:6px;padding:.8em 1em;margin:1em 0;"
     "break-inside:avoid;page-break-inside:avoid}\n"
@@ -255,9 +256,11 @@ static void failing_test(Markup *m, const Test *t, const TestResult *r, int inde
         mk_printf(m, "</figcaption>\n");
     } else {
         mk_printf(m, "<div class=\"nopic\">No picture: %s</div>\n",
-                  !r->ran ? "this test did not run, so there is no answer to draw (see below)."
-                          : "every answer was right, but the program did not finish normally "
-                            "(see below).");
+                  !show_output ? "your file did not build, so this test could not run (what the "
+                                 "compiler said is above)."
+                  : !r->ran ? "this test did not run, so there is no answer to draw (see below)."
+                            : "every answer was right, but the program did not finish normally "
+                              "(see below).");
     }
     mk_printf(m, "</figure>\n");
     if (show_output && r->output && *r->output) {

@@ -86,8 +86,8 @@ static int render_submission(const ReportRenderOptions *o, const Scene *scene, R
                  "picture within %g s (the limit of one test), so there is no picture of it.",
                  scene->nx, scene->ny, o->timeout);
     } else if (res.signal) {
-        snprintf(rr->sub_note, sizeof rr->sub_note, "Your code crashed (signal %d) while drawing "
-                 "the picture, so there is none.", res.signal);
+        snprintf(rr->sub_note, sizeof rr->sub_note, "Your code crashed (signal %d: %s) while "
+                 "drawing the picture, so there is none.", res.signal, strsignal(res.signal));
     } else if (res.exit_code != 0 || res.answer_len != want) {
         snprintf(rr->sub_note, sizeof rr->sub_note, "Your code stopped (exit status %d) before "
                  "the picture was drawn, so there is none.", res.exit_code);

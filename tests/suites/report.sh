@@ -99,6 +99,22 @@ for name in $core $flat; do
 done
 mkdir "$tmp/subs/reference"
 cp solutions/part*.c "$tmp/subs/reference/"
+# A Part 1 that prints markup, an ampersand and bytes that are not UTF-8:
+# the page shows what it printed as text, and stays valid.
+core="$core markup-printer"
+mkdir "$tmp/subs/markup-printer"
+cp solutions/part*.c "$tmp/subs/markup-printer/"
+cat >"$tmp/subs/markup-printer/part1_image_plane.c" <<'EOF2'
+#include <stdio.h>
+#include "raytracer.h"
+
+void image_plane_size(double fov_degrees, double aspect, double d, double *w, double *h)
+{
+    printf("<script>alert(1)</script> <b id=\"scores\"> & &amp \xff\xfe \x01 ]]> <!--\n");
+    *h = 2 * d * tan(fov_degrees * M_PI / 360);
+    *w = aspect * *h + 1;
+}
+EOF2
 chmod -R a+rX "$tmp/subs" "$tmp/subs45"
 # The faulty part alone (its expect file names it; textbook's is 3a), two
 # at a time; Parts 4 and 5 through grade --all, which writes OUT/<name>.html.
@@ -107,6 +123,7 @@ mkdir "$tmp/grades"
 running=0
 for name in $core reference; do
     p=$(sed -n 's/^part //p; s/^hard lost //p' "tests/selftest/$name/expect" 2>/dev/null | head -n 1)
+    [ "$name" = markup-printer ] && p=1
     $grade --submission "$tmp/subs/$name" --part "${p:-1}" --results "$tmp/grades/$name.json" \
         --report-file "$tmp/grades/$name.html" --quiet >"$tmp/grades/$name.out" 2>&1 &
     running=$((running + 1))
@@ -147,6 +164,10 @@ for name in $subs reference; do
     check "$name: the results file does not mention the page" sh -c "! grep -q 'html' '$json'"
 done
 page=$tmp/grades
+check "a submission that prints markup: the page shows it as text" \
+    grep -q '&lt;script&gt;alert(1)&lt;/script&gt;' "$page/markup-printer.html"
+check "a submission that prints bytes that are not UTF-8: they become U+FFFD" \
+    grep -q "$(printf '\357\277\275\357\277\275')" "$page/markup-printer.html"
 check "the reference's page: nothing failed" grep -q 'Nothing: every test passed' "$page/reference.html"
 check "the reference's page: its picture is exactly the reference's" \
     grep -q 'exactly the reference' "$page/reference.html"
