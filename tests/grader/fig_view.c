@@ -62,9 +62,12 @@ void fig_plane(Markup *m, const Test *t, const Case *c, const double *got)
         svg_text(m, fmin(px + 10, 440), fmin(fig_py(&v, -hg / 2) - 2, 274), "start", 12, COL_GOT, true,
                  "your h");
     if (hmax * v.s < 4)
-        svg_text(m, 18, 270, "start", 11, COL_NOTE, false, "the plane is too small to see at this scale");
+        svg_text(m, 16, 46, "start", 11, COL_NOTE, false, "the plane is too small to see at this scale");
     else if (d * v.s < 4)
-        svg_text(m, 18, 270, "start", 11, COL_NOTE, false, "d is too small to see beside h at this scale");
+        svg_text(m, 16, 46, "start", 11, COL_NOTE, false, "d is too small to see beside h at this scale");
+    if (gh && hg != hw && fabs(hg - hw) * v.s < 2)
+        svg_text(m, 16, 60, "start", 11, COL_NOTE, false, "the two h differ by %s of h: drawn side by "
+                 "side to show both", fig_num(b1, sizeof b1, fabs(hg - hw) / hw, 2));
 
     /* face on: the expected and the returned rectangle, centred */
     double big = fmax(fmax(ww, hw), fmax(gw && wg <= 50 * ww ? wg : 0, gh && hg <= 50 * hw ? hg : 0));
@@ -73,17 +76,22 @@ void fig_plane(Markup *m, const Test *t, const Case *c, const double *got)
     fig_window(m, &f, "#fbfbfb");
     fig_segment(m, &f, -big, 0, big, 0, COL_GRID, 1, NULL);
     fig_segment(m, &f, 0, -big, 0, big, COL_GRID, 1, NULL);
-    svg_rect(m, fig_px(&f, -ww / 2), fig_py(&f, hw / 2), ww * f.s, hw * f.s, "#dbe6f6", COL_WANT, 3);
+    /* a side too short to see is drawn 2 pixels long */
+    svg_rect(m, fig_px(&f, 0) - fmax(ww * f.s, 2) / 2, fig_py(&f, 0) - fmax(hw * f.s, 2) / 2,
+             fmax(ww * f.s, 2), fmax(hw * f.s, 2), "#dbe6f6", COL_WANT, 3);
     if (ww * f.s > 30 && hw * f.s > 30) {
         svg_text(m, fig_px(&f, 0), fig_py(&f, -hw / 2) - 6, "middle", 12, COL_WANT, true, "w");
         svg_text(m, fig_px(&f, ww / 2) - 8, fig_py(&f, 0) + 4, "end", 12, COL_WANT, true, "h");
     }
     if (gw && gh)
-        svg_rect(m, fig_px(&f, -wg / 2), fig_py(&f, hg / 2), wg * f.s, hg * f.s, "none", COL_GOT, 2.5);
+        svg_rect(m, fig_px(&f, 0) - fmax(wg * f.s, 2) / 2, fig_py(&f, 0) - fmax(hg * f.s, 2) / 2,
+                 fmax(wg * f.s, 2), fmax(hg * f.s, 2), "none", COL_GOT, 2.5);
     fig_window_end(m);
     svg_rect(m, f.px0, f.py0, f.pw, f.ph, "none", "#bbbbbb", 1);
     svg_text(m, 476, 276, "start", 11, COL_NOTE, false, "aspect = nx / ny = %s: w = aspect x h",
              fig_num(b1, sizeof b1, aspect, 6));
+    if (hw * f.s < 2 || ww * f.s < 2)
+        svg_text(m, 476, 46, "start", 11, COL_NOTE, false, "too thin to see: drawn as a line");
 
     char wt[120], gt[160];
     snprintf(wt, sizeof wt, "expected: w = %s, h = %s", fig_num(b1, sizeof b1, ww, 8), fig_num(b2, sizeof b2, hw, 8));
@@ -147,13 +155,16 @@ void fig_pixel(Markup *m, const Test *t, const Case *c, const double *got)
     double vy0 = v.cy - v.ph / 2 / v.s, vy1 = v.cy + v.ph / 2 / v.s;
     int ia = (int)fmax(0, floor((vx0 + w / 2) / pw)), ib = (int)fmin(nx, ceil((vx1 + w / 2) / pw));
     int ja = (int)fmax(0, floor((h / 2 - vy1) / ph)), jb = (int)fmin(ny, ceil((h / 2 - vy0) / ph));
-    int every = 1;
-    while ((ib - ia) / every > 48 || (jb - ja) / every > 48)
+    /* every line, or every 2nd, 4th ... where they would crowd (each way on its own) */
+    int every = 1, every_j = 1;
+    while ((ib - ia) / every > 48)
         every *= 2;
+    while ((jb - ja) / every_j > 48)
+        every_j *= 2;
     for (int k = ia - ia % every; k <= ib; k += every)
         fig_segment(m, &v, -w / 2 + k * pw, fmax(-h / 2, vy0), -w / 2 + k * pw, fmin(h / 2, vy1),
                     k == 0 || k == nx ? "#555555" : COL_GRID, k == 0 || k == nx ? 2 : 1, NULL);
-    for (int k = ja - ja % every; k <= jb; k += every)
+    for (int k = ja - ja % every_j; k <= jb; k += every_j)
         fig_segment(m, &v, fmax(-w / 2, vx0), h / 2 - k * ph, fmin(w / 2, vx1), h / 2 - k * ph,
                     k == 0 || k == ny ? "#555555" : COL_GRID, k == 0 || k == ny ? 2 : 1, NULL);
     /* the plane's axes (x = 0, y = 0) */
@@ -176,9 +187,9 @@ void fig_pixel(Markup *m, const Test *t, const Case *c, const double *got)
             if (px > v.px0 + 10 && px < v.px0 + v.pw - 10 && pw * every * v.s > 24)
                 svg_text(m, px, 44, "middle", 11, k == i ? COL_TEXT : COL_NOTE, k == i, "i=%d", k);
         }
-    for (int k = ja; k < jb; k += every) {
+    for (int k = ja; k < jb; k += every_j) {
         double py = fig_py(&v, h / 2 - (k + 0.5) * ph);
-        if (py > v.py0 + 20 && py < v.py0 + v.ph - 6 && ph * every * v.s > 16)
+        if (py > v.py0 + 20 && py < v.py0 + v.ph - 6 && ph * every_j * v.s > 16)
             svg_text(m, v.px0 + 4, py + 4, "start", 11, k == j ? COL_TEXT : COL_NOTE, k == j, "j=%d", k);
     }
     double dx = (Xg - Xw), dy = (Yg - Yw);
@@ -195,9 +206,13 @@ void fig_pixel(Markup *m, const Test *t, const Case *c, const double *got)
             svg_text(m, 12, 298, "start", 12, COL_TEXT, false, "your x and y are right");
         else
             svg_text(m, 12, 298, "start", 12, COL_TEXT, false, "your point is %s the expected centre%s",
-                     how, far ? " (far off the figure)" : hypot(dx, dy) * fmin(pw, ph) * v.s < 3
+                     how, far ? " (far off the figure)" : hypot(dx * pw, dy * ph) * v.s < 3
                      ? " (too close to draw apart)" : "");
     }
+    if (pw > 4 * ph || ph > 4 * pw)
+        svg_text(m, v.px0 + v.pw - 6, v.py0 + v.ph - 6, "end", 11, COL_NOTE, false,
+                 "drawn to scale: these pixels are %s times %s than %s", fig_times(b1, sizeof b1,
+                 pw > ph ? pw / ph : ph / pw), pw > ph ? "wider" : "taller", pw > ph ? "tall" : "wide");
     if (got && got[2] != c->want[2])
         svg_text(m, 12, 316, "start", 12, COL_GOT, true, "z: expected -d = %s, yours %s",
                  fig_num(b1, sizeof b1, -d, 8), fig_num(b2, sizeof b2, got[2], 8));
