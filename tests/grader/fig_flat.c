@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The dot product a . b. */
 static double dot3(const double *a, const double *b)
 {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -67,6 +68,7 @@ static void plain_figure(Markup *m, const char *title, const char *line1, const 
     fig_end(m);
 }
 
+/* Whether any of v[0 .. n-1] is NaN. */
 static bool any_nan(const double *v, int n)
 {
     for (int k = 0; k < n; k++)
@@ -177,6 +179,8 @@ static double seg_dist(double x0, double y0, double x1, double y1)
     return hypot(x0 + s * dx, y0 + s * dy);
 }
 
+/* Draws the projected triangles in v: those the ray goes through in yellow,
+ * the others grey; a single triangle's vertices named a, b, c. */
 static void draw_flats(Markup *m, const FigView *v, const Flat *fl, int nf, bool labels)
 {
     static const char *const names[3] = { "a", "b", "c" };

@@ -67,6 +67,7 @@ typedef struct {
     bool any;
 } Box;
 
+/* Grows bx to hold (x, y); a point not finite is left out. */
 static void box_add(Box *bx, double x, double y)
 {
     if (!isfinite(x) || !isfinite(y))
@@ -92,6 +93,8 @@ static void line_foot(const RayFig *f, double *fa, double *fb)
 
 /* ---- drawing ------------------------------------------------------------------ */
 
+/* Draws what the window v shows: the circles or the line, the ray (marked
+ * in t in the main window), e, and the hits that fall inside it. */
 static void draw_content(Markup *m, const FigView *v, const RayFig *f, double aw, double ag,
                          bool want_in, bool got_in, bool main)
 {

@@ -61,6 +61,8 @@ typedef struct {
     double t_near, t_far;      /* where the line meets it   */
 } SphereHit;
 
+/* qsort order: spheres the line meets first, by the t the ray sees them
+ * at (behind the ray last), then those it misses, by index. */
 static int by_t(const void *pa, const void *pb)
 {
     const SphereHit *a = pa, *b = pb;
@@ -107,12 +109,14 @@ static int colour_owner(const Test *t, const double *rgb)
     return -2;
 }
 
+/* A small square of the colour rgb. */
 static void swatch(Markup *m, const double *rgb)
 {
     char hex[8];
     mk_printf(m, "<span class=\"swatch\" style=\"background:%s\"></span>", fig_hex(hex, rgb));
 }
 
+/* A colour with its swatch, its numbers and whose colour it is. */
 static void owner_words(Markup *m, const Test *t, const double *rgb)
 {
     int k = colour_owner(t, rgb);

@@ -34,6 +34,8 @@ void mk_raw(Markup *m, const char *s, size_t n)
         m->failed = true;
 }
 
+/* mk_printf with a va_list: short texts through a buffer on the stack,
+ * long ones through malloc (failure sets m->failed). */
 static void mk_vprintf(Markup *m, const char *fmt, va_list ap)
 {
     char small[512];

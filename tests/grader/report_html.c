@@ -81,6 +81,7 @@ static void count_tests(const Grade *g, int part, int *failed, int *total)
         }
 }
 
+/* The table of each part's points, the total, and each part's diagnosis. */
 static void scores(Markup *m, const Grade *g, const GradeConfig *cfg)
 {
     mk_printf(m, "<table class=\"scores\">\n<tr><th>part</th><th>points</th><th>hard cases%s</th>"
@@ -117,6 +118,7 @@ static void scores(Markup *m, const Grade *g, const GradeConfig *cfg)
     }
 }
 
+/* What the figures' colours and windows mean. */
 static void legend(Markup *m)
 {
     mk_printf(m, "<div class=\"legend\">\n<span><svg width=\"16\" height=\"16\" "
@@ -148,6 +150,8 @@ static void heat_scale(Markup *m)
     image_free(&bar);
 }
 
+/* One picture as a PNG data: URI, with its caption (a picture that cannot
+ * be encoded becomes an empty data: URI). */
 static void picture(Markup *m, const Image *img, const char *alt, const char *caption)
 {
     mk_printf(m, "<figure><img src=\"");
@@ -160,6 +164,7 @@ static void picture(Markup *m, const Image *img, const char *alt, const char *ca
     mk_printf(m, "</figcaption></figure>\n");
 }
 
+/* In place of a picture: why there is none. */
 static void no_picture(Markup *m, const char *caption, const char *why)
 {
     mk_printf(m, "<figure><div class=\"nopic\"><pre>");
@@ -169,6 +174,7 @@ static void no_picture(Markup *m, const char *caption, const char *why)
     mk_printf(m, "</figcaption></figure>\n");
 }
 
+/* The scene drawn by the submission, by the reference, and their heat map. */
 static void renders(Markup *m, const ReportRenders *rr)
 {
     mk_printf(m, "<h2 id=\"render\">The %s scene: your picture and the reference's</h2>\n", rr->scene);
@@ -226,6 +232,8 @@ static int figure_case_index(const Test *t, const TestResult *r, const double **
     return -1;
 }
 
+/* One failing test: its name, exactly one figure (a drawing of its first
+ * wrong case, or a box saying why there is none), and its text. */
 static void failing_test(Markup *m, const Test *t, const TestResult *r, int index, bool show_output)
 {
     mk_printf(m, "<article class=\"test\" id=\"test-%d\">\n<h4><span class=\"failword\">FAIL</span> ",
@@ -271,6 +279,9 @@ static void failing_test(Markup *m, const Test *t, const TestResult *r, int inde
     mk_printf(m, "</article>\n");
 }
 
+/* Every failing test, part by part, core tests before hard ones (as the
+ * terminal lists them); a part that did not build shows the compiler's
+ * messages once. */
 static void failures(Markup *m, const Grade *g)
 {
     int nfailed = 0;
@@ -313,6 +324,7 @@ static void failures(Markup *m, const Grade *g)
     }
 }
 
+/* The tests that passed, folded away (a <details> element, no script). */
 static void passed(Markup *m, const Grade *g)
 {
     int n = 0;

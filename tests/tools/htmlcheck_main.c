@@ -50,6 +50,7 @@ static int line_of(size_t at)
     return line;
 }
 
+/* Reports a problem at text[at] (the first 50 are printed), and counts it. */
 static void problem(size_t at, const char *what, const char *detail)
 {
     if (problems < 50)
@@ -69,6 +70,7 @@ static const char *find_ci(const char *hay, const char *needle)
     return NULL;
 }
 
+/* Whether HTML's element name has no end tag. */
 static bool is_void(const char *name)
 {
     static const char *const v[] = { "area", "base", "br", "col", "embed", "hr", "img", "input",
@@ -117,6 +119,8 @@ static char *frags[MAX_IDS];
 static size_t frag_at[MAX_IDS];
 static int nfrags;
 
+/* Checks the address v of a src or href attribute: a data: URI that
+ * decodes, a #fragment (checked at the end), or a file beside the page. */
 static void check_address(const char *attr, const char *v, size_t at)
 {
     if (strncasecmp(v, "data:", 5) == 0) {
@@ -162,7 +166,7 @@ static void check_address(const char *attr, const char *v, size_t at)
         problem(at, "a file the page refers to is missing", v);
 }
 
-/* Decodes the character references of an attribute value in place. */
+/* Checks that every & in text[from .. to-1] starts a character reference. */
 static void check_text_refs(size_t from, size_t to)
 {
     for (size_t k = from; k < to; k++) {
@@ -188,6 +192,7 @@ static void check_text_refs(size_t from, size_t to)
     }
 }
 
+/* Checks the page named; the exit status says whether it passed. */
 int main(int argc, char **argv)
 {
     if (argc != 2) {
