@@ -378,7 +378,7 @@ void ray_figure(Markup *m, const RayFig *f)
     if (f->want_text)
         snprintf(wt, sizeof wt, "%s", f->want_text);
     else if (f->want_hit)
-        snprintf(wt, sizeof wt, "expected: a hit at t = %s", fig_num(buf, sizeof buf, f->want_t, 10));
+        snprintf(wt, sizeof wt, "expected: a hit at t = %s", fig_num(buf, sizeof buf, f->want_t, digits > 10 ? digits : 10));
     else
         snprintf(wt, sizeof wt, "expected: a miss");
     if (f->got_text)
@@ -386,7 +386,7 @@ void ray_figure(Markup *m, const RayFig *f)
     else if (!f->got_known)
         snprintf(gt, sizeof gt, "your code: no answer");
     else if (f->got_hit)
-        snprintf(gt, sizeof gt, "your code: a hit at t = %s", fig_num(buf, sizeof buf, f->got_t, 10));
+        snprintf(gt, sizeof gt, "your code: a hit at t = %s", fig_num(buf, sizeof buf, f->got_t, digits > 10 ? digits : 10));
     else
         snprintf(gt, sizeof gt, "your code: a miss");
     fig_legend(m, 12, TOP + WH + 22, wt, gt);
