@@ -40,7 +40,7 @@ HAVE_SOLUTIONS := $(wildcard solutions/part1_image_plane.c)
 # ---- the framework students use (labs/kit) ---------------------------------
 KIT_SRC    = labs/kit/image.c labs/kit/png.c labs/kit/zlib.c labs/kit/scene.c labs/kit/render.c \
              labs/kit/numtext.c labs/kit/savefile.c labs/kit/textfile.c labs/kit/obj.c \
-             labs/kit/closest.c
+             labs/kit/closest.c labs/kit/compare.c
 KIT_HDR    = $(wildcard labs/*.h labs/kit/*.h)
 KIT_OBJ    = $(KIT_SRC:labs/kit/%.c=$(BUILD)/kit/%.o)
 KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
@@ -144,7 +144,7 @@ $(ASAN)/oracle/liboracle.a: $(ORACLE_SRC:tests/oracle/%.c=$(ASAN)/oracle/%.o)
 	rm -f $@ && ar rcs $@ $^
 
 # ---- instructor tools: archives (zip, tar.gz) and JSON (tests/tools) -------
-TOOLS_SRC  = $(filter-out tests/tools/pack_main.c,$(wildcard tests/tools/*.c))
+TOOLS_SRC  = $(filter-out %_main.c,$(wildcard tests/tools/*.c))
 TOOLS_OBJ  = $(TOOLS_SRC:tests/tools/%.c=$(BUILD)/tools/%.o)
 $(BUILD)/tools/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) $(KIT_HDR)
 	@mkdir -p $(@D)
@@ -159,6 +159,11 @@ $(ASAN)/tools/libtools.a: $(TOOLS_SRC:tests/tools/%.c=$(ASAN)/tools/%.o)
 $(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+# The report page's checker (tests/suites/report.sh).
+$(BUILD)/bin/htmlcheck: $(BUILD)/tools/htmlcheck_main.o
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+all: $(BUILD)/bin/htmlcheck
 
 # ---- the autograder (tests/grader) ------------------------------------------
 # In the instructor's kit the grader also draws the hidden tests with the
@@ -168,13 +173,16 @@ HAVE_HIDDEN := $(wildcard tests/hidden/hidden.c)
 GRADER_LIB_SRC = tests/grader/cases.c tests/grader/check.c tests/grader/sandbox.c \
                  tests/grader/build.c tests/grader/include_scan.c tests/grader/config.c tests/grader/grade.c \
                  tests/grader/report_table.c tests/grader/report_json.c tests/grader/includes.c \
-                 tests/grader/diagnose.c
+                 tests/grader/diagnose.c \
+                 tests/grader/report_render.c tests/grader/report_html.c tests/grader/markup.c \
+                 $(wildcard tests/grader/fig*.c)
 GRADER_LIB_SRC += tests/grader/report_classroom.c tests/grader/report_prairielearn.c
 GRADER_HDR = $(wildcard tests/grader/*.h) $(KIT_HDR)
 GRADER_OBJ = $(GRADER_LIB_SRC:tests/grader/%.c=$(BUILD)/grader/%.o)
 HARNESS    = $(BUILD)/grader/harness_1.o $(BUILD)/grader/harness_2.o \
              $(BUILD)/grader/harness_3.o $(BUILD)/grader/harness_4.o \
-             $(BUILD)/grader/harness_5.o $(BUILD)/grader/harness_6.o
+             $(BUILD)/grader/harness_5.o $(BUILD)/grader/harness_6.o \
+             $(BUILD)/grader/harness_render.o
 GRADER_REF = $(if $(HAVE_SOLUTIONS),$(STAGES:%=$(BUILD)/grader/ref_%.o))
 GRADE_DEFS = $(if $(and $(HAVE_ORACLE),$(HAVE_HIDDEN)),-DGRADER_ORACLE)
 GRADE_EXTRA = $(if $(GRADE_DEFS),$(BUILD)/grader/hidden.o $(BUILD)/oracle/liboracle.a)
@@ -185,6 +193,10 @@ $(BUILD)/grader/%.o: tests/grader/%.c $(GRADER_HDR)
 $(BUILD)/grader/harness_%.o: tests/grader/harness.c $(KIT_HDR)
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -c $< -o $@
+# The report page's render program (build_render): harness_render.c draws a scene.
+$(BUILD)/grader/harness_render.o: tests/grader/harness_render.c $(KIT_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
 	cp $< $@
 $(BUILD)/grader/hidden.o: tests/hidden/hidden.c $(GRADER_HDR) $(wildcard tests/oracle/*.h)
@@ -211,12 +223,21 @@ $(BUILD)/bin/accuracy: $(BUILD)/oracle/accuracy_main.o $(BUILD)/oracle/liboracle
 
 grader: $(BUILD)/bin/grade $(HARNESS) $(GRADER_REF)
 
-grade: grader
+# The report page (out/report/index.html) shows the default scene drawn by
+# the submission beside the reference's picture: in the instructor's kit
+# rendered here with solutions/, in the student kit the stored
+# labs/reference/default.png (the grader takes the first that exists).
+REPORT_REF = $(if $(HAVE_SOLUTIONS),$(BUILD)/report/default.png)
+$(BUILD)/report/default.png: $(BUILD)/sub/solutions/render labs/scenes/default.scene
+	@mkdir -p $(@D)
+	$(BUILD)/sub/solutions/render labs/scenes/default.scene --quiet -o $@
+all: $(REPORT_REF)
+grade: grader $(REPORT_REF)
 	@$(BUILD)/bin/grade --submission "$(SUBMISSION)" $(if $(PART),--part $(PART)) \
 	    $(if $(RESULTS),--results "$(RESULTS)") $(if $(FORMAT),--format "$(FORMAT)") \
-	    $(if $(CLASSROOM),--classroom "$(CLASSROOM)")
+	    $(if $(CLASSROOM),--classroom "$(CLASSROOM)") --report out/report
 
-grade-all: grader
+grade-all: grader $(REPORT_REF)
 	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade-all SUBMISSIONS=dir [OUT=dir]"; exit 2; }
 	@$(BUILD)/bin/grade --all "$(SUBMISSIONS)" --out "$(if $(OUT),$(OUT),out/grades)"
 
@@ -265,7 +286,7 @@ student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 # The handouts' figures, drawn by the kit from the reference and from faulty
 # variants (handouts/figures/make-figures.sh); commit the PNGs it writes.
 # The student kit has no solutions/: its figures come ready-made.
-handouts: $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render $(BUILD)/bin/compare)
+handouts: $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render $(BUILD)/bin/compare grader)
 ifneq ($(HAVE_SOLUTIONS),)
 	MAKE="$(MAKE)" sh handouts/figures/make-figures.sh
 else

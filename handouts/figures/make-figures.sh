@@ -15,10 +15,13 @@
 #                        lecture's textbook quadratic (tests/selftest/textbook),
 #                        in double and, made from it here, in float; and
 #                        cracks.scene with Moller-Trumbore's triangle test.
+#   report-*.svg         a figure of the report page `make grade` writes
+#                        (out/report/index.html): the first failing test of
+#                        one faulty stage file, drawn by the grader.
 # Sizes are kept small so that each PNG stays a few kilobytes.  The output
 # depends only on the sources: rerunning changes no byte of an unchanged
-# figure.  Needs solutions/, out/build/sub/solutions/render and
-# out/build/bin/compare (`make handouts` builds both).
+# figure.  Needs solutions/, out/build/sub/solutions/render,
+# out/build/bin/compare and out/build/bin/grade (`make handouts` builds them).
 set -eu
 
 MAKE=${MAKE:-make}
@@ -116,3 +119,40 @@ side_by_side hard-far-textbook-float far 256x256
 # Moller-Trumbore in double (tests/selftest/moller-trumbore), the skeleton's
 # formula: rays slip through between triangles that share an edge.
 mistake hard-cracks-moller-trumbore moller-trumbore cracks 320x240
+
+# ---- the report page: one figure per part ----------------------------------
+# `make grade` writes out/report/index.html with a drawing of every failing
+# test's first wrong case.  Each handout shows one: the grader grades a
+# submission with one faulty stage file (the part alone) and writes its
+# page; the first figure (the page's first <svg class="fig"> element, whole,
+# with the windows nested in it) is cut out as report-NAME.svg.
+grade=out/build/bin/grade
+report() {     # report NAME CASE PART: figure report-NAME.svg
+    assemble "$1" "$2"
+    status=0
+    "$grade" --submission "$work/$1" --part "$3" --report-file "$work/$1.html" --quiet \
+        >/dev/null 2>&1 || status=$?
+    if [ "$status" -ne 1 ]; then    # 1: points lost, as the mistake should
+        echo "make-figures.sh: grading $2 (Part $3) exited $status, expected 1" >&2
+        exit 1
+    fi
+    awk '!on && /^<svg xmlns=.* class="fig"/ { on = 1 }
+         on { print; depth += gsub(/<svg[ >]/, "&") - gsub(/<\/svg>/, "&"); if (depth == 0) exit }' \
+        "$work/$1.html" >"$work/$1.svg"
+    if ! grep -q '</svg>' "$work/$1.svg"; then
+        echo "make-figures.sh: no figure in the page of $2" >&2
+        exit 1
+    fi
+    mv "$work/$1.svg" "$figs/report-$1.svg"
+    echo "wrote $figs/report-$1.svg"
+}
+if [ ! -x "$grade" ]; then
+    echo "make-figures.sh: needs $grade (run make)" >&2
+    exit 2
+fi
+report p1-w-h-swapped   p1-w-h-swapped   1
+report p2-y-not-flipped p2-y-not-flipped 2
+report p3a-far-root     p3a-far-root     3a
+report p3b-first-hit    p3b-first-hit    3b
+report p4-hits-behind   p4-hits-behind   4
+report p5-strict-edges  p5-strict-edges  5

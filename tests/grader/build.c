@@ -260,8 +260,27 @@ static int check_dependencies(const BuildConfig *cfg, Build *b, const char *depf
     return status;
 }
 
-int build_part(const BuildConfig *cfg, int part, const char *submission, Build *b,
-               char *err, size_t errlen)
+/* Appends a line to b->messages (for the student); never fails. */
+static void build_say(Build *b, const char *what, const char *name)
+{
+    size_t old = b->messages ? strlen(b->messages) : 0;
+    char *m = realloc(b->messages, old + strlen(what) + strlen(name) + 4);
+    if (m) {
+        sprintf(m + old, "%s%s\n", what, name);
+        b->messages = m;
+    }
+}
+
+/* Builds b->dir/src/runner from the prebuilt harness object harness (a file
+ * name in cfg->objdir), the submission's stage files of the nparts parts
+ * listed (each compiled here, or copied from the directory kept when it
+ * holds that stage's object from an earlier build of the same files), and,
+ * when skip >= 0 and cfg has them, the reference objects of every part but
+ * skip.  Returns 0 when the grader could do its job (b->ok says whether the
+ * student's code built), -1 when it could not (err says why). */
+static int build_program(const BuildConfig *cfg, const char *harness, const int *parts, int nparts,
+                         int skip, const char *kept, const char *submission, Build *b,
+                         char *err, size_t errlen)
 {
     memset(b, 0, sizeof *b);
     b->messages = calloc(1, 1);
@@ -287,39 +306,45 @@ int build_part(const BuildConfig *cfg, int part, const char *submission, Build *
             return -1;
     }
     char to[PATH_MAX + 700];
-    snprintf(path, sizeof path, "%s/harness_%d.o", cfg->objdir, part + 1);
+    snprintf(path, sizeof path, "%s/%s", cfg->objdir, harness);
     snprintf(to, sizeof to, "%s/harness.o", src);
     if (copy_file(path, to, 16 << 20, err, errlen))
         return -1;
 
-    /* The student's files: this part's, and in the student kit Part 3a for 3b. */
-    int parts[2] = { part, -1 };
-    if (part == PART3B && !cfg->reference)
-        parts[1] = PART3A;
     char *link[16];
     int nlink = 0;
     static char names[16][96];
     link[nlink++] = (char *)cfg->cc;
     link[nlink++] = "harness.o";
-    for (int k = 0; k < 2 && parts[k] >= 0; k++) {
+    for (int k = 0; k < nparts; k++) {
         const char *stage = stage_names[parts[k]];
-        snprintf(path, sizeof path, "%s/%s.c", submission, stage);
-        snprintf(to, sizeof to, "%s/%s.c", src, stage);
-        if (access(path, F_OK) != 0) {
-            note(b, "missing: the submission has no %s.c\n", stage);
-            return 0;
-        }
-        char cerr[512];
-        if (copy_file(path, to, SOURCE_MAX, cerr, sizeof cerr)) {
-            note(b, "%s\n", cerr);
-            return 0;
-        }
-        if (check_includes(cfg, b, to) || scan_includes(b, to, src))
-            return 0;
         char cfile[80], ofile[80], dfile[80];
         snprintf(cfile, sizeof cfile, "%s.c", stage);
         snprintf(ofile, sizeof ofile, "%s.o", stage);
         snprintf(dfile, sizeof dfile, "%s.d", stage);
+        char cerr[512];
+        if (kept) {
+            snprintf(path, sizeof path, "%s/%s", kept, ofile);
+            snprintf(to, sizeof to, "%s/%s", src, ofile);
+            if (access(path, R_OK) == 0 && copy_file(path, to, 64 << 20, cerr, sizeof cerr) == 0) {
+                snprintf(names[nlink], sizeof names[nlink], "%s", ofile);
+                link[nlink] = names[nlink];
+                nlink++;
+                continue;
+            }
+        }
+        snprintf(path, sizeof path, "%s/%s.c", submission, stage);
+        snprintf(to, sizeof to, "%s/%s.c", src, stage);
+        if (access(path, F_OK) != 0) {
+            build_say(b, "missing: the submission has no ", cfile);
+            return 0;
+        }
+        if (copy_file(path, to, SOURCE_MAX, cerr, sizeof cerr)) {
+            build_say(b, cerr, "");
+            return 0;
+        }
+        if (check_includes(cfg, b, to) || scan_includes(b, to, src))
+            return 0;
         char *argv[] = { (char *)cfg->cc, "-std=c11", "-O1", "-ffp-contract=off", "-Wall", "-Wextra",
                          "-I.", "-MD", "-MF", dfile, "-c", cfile, "-o", ofile, NULL };
         int rc = run_cc(cfg, b, argv, err, errlen);
@@ -336,9 +361,9 @@ int build_part(const BuildConfig *cfg, int part, const char *submission, Build *
         nlink++;
     }
     /* In the instructor's kit: the reference for every other part. */
-    if (cfg->reference) {
+    if (skip >= 0 && cfg->reference) {
         for (int p = 0; p < NPARTS; p++) {
-            if (p == part)
+            if (p == skip)
                 continue;
             snprintf(path, sizeof path, "%s/ref_%s.o", cfg->objdir, stage_names[p]);
             snprintf(names[nlink], sizeof names[nlink], "ref_%d.o", p);
@@ -358,6 +383,36 @@ int build_part(const BuildConfig *cfg, int part, const char *submission, Build *
         return -1;
     b->ok = rc == 0;
     return 0;
+}
+
+int build_part(const BuildConfig *cfg, int part, const char *submission, Build *b,
+               char *err, size_t errlen)
+{
+    /* The student's files: this part's, and in the student kit Part 3a for 3b. */
+    int parts[2] = { part, PART3A };
+    int nparts = part == PART3B && !cfg->reference ? 2 : 1;
+    char harness[32];
+    snprintf(harness, sizeof harness, "harness_%d.o", part + 1);
+    return build_program(cfg, harness, parts, nparts, part, NULL, submission, b, err, errlen);
+}
+
+int build_render(const BuildConfig *cfg, const char *submission, const char *kept, Build *b,
+                 char *err, size_t errlen)
+{
+    static const int core[NCORE_PARTS] = { PART1, PART2, PART3A, PART3B };
+    return build_program(cfg, "harness_render.o", core, NCORE_PARTS, -1, kept, submission, b,
+                         err, errlen);
+}
+
+void build_keep_objects(const Build *b, const char *dir)
+{
+    for (int p = 0; p < NPARTS; p++) {
+        char from[PATH_MAX], to[PATH_MAX], why[256];
+        snprintf(from, sizeof from, "%s/src/%s.o", b->dir, stage_names[p]);
+        snprintf(to, sizeof to, "%s/%s.o", dir, stage_names[p]);
+        if (access(from, R_OK) == 0 && access(to, F_OK) != 0)
+            copy_file(from, to, 64 << 20, why, sizeof why);
+    }
 }
 
 void build_remove(Build *b)

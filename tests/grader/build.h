@@ -41,6 +41,18 @@ int build_part(const BuildConfig *cfg, int part, const char *submission, Build *
                char *err, size_t errlen);
 void build_remove(Build *b);
 
+/* Builds the report page's render program: harness_render.o (which draws a
+ * scene with Parts 1-3b) and the submission's four core stage files, those
+ * whose objects the directory kept holds (build_keep_objects; kept may be
+ * NULL) taken from there, the others compiled.  Returns as build_part. */
+int build_render(const BuildConfig *cfg, const char *submission, const char *kept, Build *b,
+                 char *err, size_t errlen);
+
+/* Copies the student's stage objects of a build that succeeded into dir
+ * (as <stage>.o, unless dir already has one), so that build_render need
+ * not compile them again.  Failures only leave an object out. */
+void build_keep_objects(const Build *b, const char *dir);
+
 /* Makes a private temporary directory; 0 on success. */
 int build_tempdir(char *dir, size_t len, char *err, size_t errlen);
 /* rm -rf path (no symlinks followed). */

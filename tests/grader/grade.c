@@ -245,6 +245,8 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
                      !g->results[k].passed);
             diagnose_part(p, tests, g->results, &probes, &g->diagnosis[p], &g->causes[p]);
         }
+        if (opt->keep_objects && b.ok)
+            build_keep_objects(&b, opt->keep_objects);
         build_remove(&b);
     }
     for (int k = 0; k < tests->n; k++) {

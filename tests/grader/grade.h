@@ -14,6 +14,9 @@ typedef struct {
     const GradeConfig *cfg;
     const BuildConfig *build;
     bool verbose;              /* progress on stderr                          */
+    const char *keep_objects;  /* a directory that receives the student's
+                                  compiled stage objects (build_keep_objects),
+                                  for the report's render; NULL: none        */
 } GradeOptions;
 
 typedef struct {

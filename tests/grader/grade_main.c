@@ -2,12 +2,15 @@
  * grade - the autograder's command line.
  *
  *   grade [--submission DIR] [--part 1|2|3a|3b|4|5] [--results FILE] [--quiet]
+ *         [--report DIR | --report-file FILE]
  *       grades one submission: the parts of tests/weights.conf's "parts"
  *       line, or the one part named; exit 0 for full marks, 1 when points
- *       are lost, 2 when the grader itself could not run.
+ *       are lost, 2 when the grader itself could not run.  --report also
+ *       writes the page with pictures, DIR/index.html (--report-file: FILE);
+ *       a page that cannot be written is reported and changes nothing else.
  *   grade --all DIR [--out DIR] [--jobs N]
  *       grades every subdirectory of DIR, in parallel; writes
- *       OUT/gradebook.csv and OUT/<submission>.json.
+ *       OUT/gradebook.csv, OUT/<submission>.json and OUT/<submission>.html.
  *   --weights FILE reads the points and parts from FILE instead of
  *       tests/weights.conf (either form).
  *   --format gradescope|prairielearn: the form of the --results file
@@ -47,6 +50,7 @@ static void usage(void)
     fprintf(stderr,
             "usage: grade [--submission DIR] [--part 1|2|3a|3b|4|5] [--results FILE] [--quiet]\n"
             "             [--format gradescope|prairielearn] [--classroom FILE]\n"
+            "             [--report DIR | --report-file FILE]\n"
             "       grade --all DIR [--out DIR] [--jobs N]\n"
             "       either with --weights FILE (default tests/weights.conf)\n"
             "exit status: 0 full marks, 1 points lost, 2 the grader could not run\n");
@@ -116,8 +120,37 @@ static int load_tests(TestList *list, const GradeConfig *cfg, const char *submis
     return 0;
 }
 
+/* The scene the page shows, and the reference's picture of it: rendered
+ * by make with solutions/ in the instructor's kit, stored in the student
+ * kit. */
+#define REPORT_SCENE "labs/scenes/default.scene"
+static const char *const report_reference[2] = { "out/build/report/default.png",
+                                                 "labs/reference/default.png" };
+
+/* Writes the report page to page; says on stderr (and, unless quiet, on
+ * stdout) what happened.  The grade and the results file never depend on it. */
+static void write_page(const char *page, const Grade *g, const GradeConfig *cfg,
+                       const BuildConfig *bc, const char *submission, const char *kept, bool quiet)
+{
+    char err[1024];
+    ReportRenderOptions ro = {
+        .build = bc, .submission = submission, .kept_objects = kept, .scene = REPORT_SCENE,
+        .reference = { report_reference[0], report_reference[1] }, .timeout = cfg->timeout,
+    };
+    ReportRenders rr;
+    bool have = report_render(&ro, &rr, err, sizeof err) == 0;
+    if (!have)
+        fprintf(stderr, "grade: the report page has no pictures of the scene: %s\n", err);
+    if (report_html(page, g, cfg, submission, have ? &rr : NULL, err, sizeof err) != 0)
+        fprintf(stderr, "grade: the report page was not written: %s\n", err);
+    else if (!quiet)
+        printf("\nThe report with pictures of every failure: %s\n", page);
+    if (have)
+        report_renders_free(&rr);
+}
+
 static int grade_one(const char *submission, const char *part, const char *results,
-                     const char *weights, bool quiet, bool summary)
+                     const char *weights, const char *page, bool quiet, bool summary)
 {
     char err[1024];
     GradeConfig cfg;
@@ -161,6 +194,10 @@ static int grade_one(const char *submission, const char *part, const char *resul
     BuildConfig bc = { .root = root, .cc = cc, .objdir = objdir, .reference = access(ref, R_OK) == 0 };
 
     GradeOptions opt = { .submission = submission, .cfg = &cfg, .build = &bc };
+    /* The page's render reuses the objects the graded builds compiled. */
+    char kept[PATH_MAX] = "";
+    if (page && build_tempdir(kept, sizeof kept, err, sizeof err) == 0)
+        opt.keep_objects = kept;
     for (int p = 0; p < NPARTS; p++)
         opt.parts[p] = part && *part ? part_from_label(part) == p : cfg.parts[p];
     TestList tests = { 0 };
@@ -170,6 +207,8 @@ static int grade_one(const char *submission, const char *part, const char *resul
     Grade g;
     if (grade_submission(&opt, &tests, &g, err, sizeof err) != 0) {
         testlist_free(&tests);
+        if (kept[0])
+            build_rmtree(kept);
         return fail(results, "%s", err);
     }
     if (!quiet)
@@ -184,6 +223,10 @@ static int grade_one(const char *submission, const char *part, const char *resul
         fprintf(stderr, "grade: %s\n", err);
         status = 2;
     }
+    if (page)
+        write_page(page, &g, &cfg, &bc, submission, kept[0] ? kept : NULL, quiet);
+    if (kept[0])
+        build_rmtree(kept);
     if (summary) {                  /* every part's core points, for grade --all */
         printf("summary");
         for (int p = 0; p < NPARTS; p++)
@@ -265,9 +308,10 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
         while (running < jobs && next < n) {
             Job *j = &all[next];
             snprintf(j->name, sizeof j->name, "%s", names[next]);
-            char sub[PATH_MAX], res[PATH_MAX];
+            char sub[PATH_MAX], res[PATH_MAX], page[PATH_MAX];
             snprintf(sub, sizeof sub, "%s/%s", dir, names[next]);
             snprintf(res, sizeof res, "%s/%s.json", out, names[next]);
+            snprintf(page, sizeof page, "%s/%s.html", out, names[next]);
             int p[2];
             if (pipe(p) != 0)
                 return fail(NULL, "pipe: %s", strerror(errno));
@@ -277,7 +321,7 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
                 close(p[0]);
                 close(p[1]);
                 execl(self, self, "--submission", sub, "--results", res, "--weights", weights,
-                      "--quiet", "--summary", (char *)NULL);
+                      "--report-file", page, "--quiet", "--summary", (char *)NULL);
                 _exit(2);
             }
             close(p[1]);
@@ -359,14 +403,16 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     free(all);
     if (fclose(f) != 0 || rename(tmp, csv) != 0)
         return fail(NULL, "%s: cannot write", csv);
-    printf("graded %d submissions: wrote %s and one .json each\n", n, csv);
+    printf("graded %d submissions: wrote %s, and one .json and one .html (the report page) each\n",
+           n, csv);
     return worst;
 }
 
 int main(int argc, char **argv)
 {
     const char *submission = "labs", *part = NULL, *results = NULL, *all = NULL, *out = "out/grades";
-    const char *weights = "tests/weights.conf", *format = NULL;
+    const char *weights = "tests/weights.conf", *format = NULL, *page = NULL;
+    char page_buf[PATH_MAX];
     bool quiet = false, summary = false;
     long jobs = sysconf(_SC_NPROCESSORS_ONLN);
     for (int k = 1; k < argc; k++) {
@@ -382,6 +428,11 @@ int main(int argc, char **argv)
             all = v, k++;
         else if (!strcmp(a, "--out") && v)
             out = *v ? v : out, k++;
+        else if (!strcmp(a, "--report") && v) {
+            snprintf(page_buf, sizeof page_buf, "%s/index.html", v);
+            page = page_buf, k++;
+        } else if (!strcmp(a, "--report-file") && v)
+            page = *v ? v : NULL, k++;
         else if (!strcmp(a, "--weights") && v)
             weights = v, k++;
         else if (!strcmp(a, "--jobs") && v)
@@ -415,5 +466,5 @@ int main(int argc, char **argv)
             return fail(NULL, "%s: cannot find the weights file", weights);
         return grade_all(self, all, out, wpath, jobs > 0 ? (int)jobs : 1);
     }
-    return grade_one(submission, part, results, weights, quiet, summary);
+    return grade_one(submission, part, results, weights, page, quiet, summary);
 }

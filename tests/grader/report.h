@@ -1,13 +1,17 @@
 /*
- * report.h - what the grader tells people: a table on stdout for humans and
- * the Gradescope results.json.
+ * report.h - what the grader tells people: a table on stdout for humans,
+ * the Gradescope results.json, and a page with pictures (HTML) for the
+ * student to look at.
  */
 #ifndef REPORT_H
 #define REPORT_H
 
+#include <stdbool.h>
 #include <stdio.h>
+#include "build.h"
 #include "config.h"
 #include "grade.h"
+#include "kit/image.h"
 
 /* The table: per part score / max, each test PASS or FAIL, and for each
  * failure what went wrong (input, expected, got, tolerance, hint). */
@@ -19,5 +23,41 @@ int report_json(const char *path, const Grade *g, const GradeConfig *cfg,
 
 /* A results.json for a submission the grader could not grade at all. */
 int report_json_error(const char *path, const char *message, char *err, size_t errlen);
+
+/* ---- the page (report_render.c, report_html.c) -------------------------- */
+
+/* What the page's renders are made from. */
+typedef struct {
+    const BuildConfig *build;
+    const char *submission;
+    const char *kept_objects;  /* objects kept by grading (GradeOptions), or NULL */
+    const char *scene;         /* the scene file, e.g. labs/scenes/default.scene  */
+    const char *reference[2];  /* the reference render's PNG: the first of these
+                                  that exists (NULL entries are skipped)        */
+    double timeout;            /* seconds the submission's render may take      */
+} ReportRenderOptions;
+
+/* The scene drawn by the submission and by the reference. */
+typedef struct {
+    char scene[64];            /* the scene's name, e.g. "default"               */
+    bool have_sub, have_ref;
+    Image sub, ref;            /* each valid when its have_ flag is set         */
+    char sub_note[2048];       /* when !have_sub: why (for the student)         */
+    char ref_note[512];        /* when !have_ref: why                           */
+    double seconds;            /* building and drawing them took                */
+} ReportRenders;
+
+/* Draws the scene with the submission's code (built and run in the
+ * sandbox, with the limits of a test) and reads the reference's picture.
+ * Returns 0 (each picture there or its note saying why not), or -1 when the
+ * grader itself failed (err says why). */
+int report_render(const ReportRenderOptions *o, ReportRenders *rr, char *err, size_t errlen);
+void report_renders_free(ReportRenders *rr);
+
+/* Writes the page (one self-contained HTML file: the pictures are inline
+ * SVG and data: URIs) to path, through a temporary file and rename.
+ * rr may be NULL (no renders).  Returns 0, or -1 with a reason in err. */
+int report_html(const char *path, const Grade *g, const GradeConfig *cfg, const char *submission,
+                const ReportRenders *rr, char *err, size_t errlen);
 
 #endif

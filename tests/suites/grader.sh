@@ -181,8 +181,9 @@ done
 check "forged results: the grader's own score stands" \
     grep -q '"score": *[0-9.]*,' "$tmp/grades-subs/hostile-forge-results.json"
 check "forged results: no score of 1000 anywhere" sh -c "! grep -rq '\"score\": 1000' '$tmp/grades-subs'"
+# grade --all writes gradebook.csv and, per submission, NAME.json and NAME.html (the report page).
 check "forged results: nothing written beside the submissions" \
-    sh -c "[ \$(ls '$tmp/grades-subs' | wc -l) -eq \$(( \$(ls '$tmp/subs' | wc -l) + 1 )) ]"
+    sh -c "[ \$(ls '$tmp/grades-subs' | wc -l) -eq \$(( 2 * \$(ls '$tmp/subs' | wc -l) + 1 )) ]"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -7,12 +7,15 @@
 #   - the handouts, their figures and a reference render of every scene;
 #   - `make` builds without a warning;
 #   - `make grade` on the untouched skeleton: 0 points on every part,
-#     status 1, no crash;
+#     status 1, no crash; it writes the report page out/report/index.html
+#     (valid, self-contained, with the stored reference render), and the
+#     results file names no page;
 #   - every `make ...` command of the handouts' ```sh blocks (and the
 #     README's) runs as written: status 0 or 1, never 2 or a crash;
 #   - with the reference stage files copied into its labs/: `make grade`
-#     gives full marks (status 0), and `make compare SUBMISSION=labs`
-#     reports `identical` for every scene.
+#     gives full marks (status 0), its page's render is exactly the stored
+#     reference, and `make compare SUBMISSION=labs` reports `identical`
+#     for every scene.
 #
 # `make` turns a recipe's failure into its own exit status 2, so the status
 # of the program it ran (the grader's 1 for "points lost", compare's 1 for
@@ -240,6 +243,19 @@ for p in 1 2 3a 3b; do
 done
 check "make grade on the skeleton: Score: 0 / 100" grep -q '^Score: 0 / 100' "$tmp/out"
 
+# ---- the report page: out/report/index.html, with the stored reference ----
+page=$kit/out/report/index.html
+check "make grade in the kit ends with the report page's path" \
+    sh -c "grep -v '^make' '$tmp/out' | tail -n 1 | grep -q 'out/report/index.html'"
+check "make grade in the kit writes out/report/index.html" test -s "$page"
+check "the kit's report page is valid HTML, self-contained (htmlcheck)" \
+    sh -c "'$kit/out/build/bin/htmlcheck' '$page' >/dev/null 2>&1"
+check "the kit's report page shows the stored reference render" \
+    grep -q 'alt="the scene drawn by the reference solution"' "$page"
+mk "$kit" grade PART=1 RESULTS=out/results.json
+check "the results file names no report page (Gradescope has none)" \
+    sh -c "[ -s '$kit/out/results.json' ] && ! grep -q -e 'html' -e 'out/report' '$kit/out/results.json'"
+
 # ---- every make command of the handouts runs as written --------------------
 # Lines of ```sh blocks that start with "make ", each run once in the kit
 # (on the skeleton): `make grade` and `make compare` may end with status 1
@@ -294,6 +310,10 @@ for p in 1 2 3a 3b; do
         pass
     fi
 done
+# The render in the sandbox at the scene's own size matches the stored
+# reference render exactly.
+check "the report page with the reference: its picture is exactly the stored reference's" \
+    grep -q 'Your picture is exactly the reference' "$kit/out/report/index.html"
 for s in "$kit"/labs/scenes/*.scene; do
     name=$(basename "$s")
     mk "$kit" compare SUBMISSION=labs SCENE="labs/scenes/$name"

@@ -1,0 +1,113 @@
+/*
+ * compare.c - see compare.h.
+ */
+#include "compare.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The largest of the three channel differences of pixel k of a and b. */
+static int compare_pixel_error(const Image *a, const Image *b, size_t k)
+{
+    int worst = 0;
+    for (int c = 0; c < 3; c++) {
+        int diff = abs(a->rgb[3 * k + c] - b->rgb[3 * k + c]);
+        if (diff > worst)
+            worst = diff;
+    }
+    return worst;
+}
+
+CompareStats compare_measure(const Image *a, const Image *b)
+{
+    CompareStats st = { 0, 0, 0, 0, INFINITY };
+    size_t n = (size_t)a->width * (size_t)a->height;
+    uint64_t sum = 0, sum_sq = 0;
+    st.pixels = (long long)n;
+    for (size_t k = 0; k < n; k++) {
+        int differs = 0;
+        for (int c = 0; c < 3; c++) {
+            int diff = abs(a->rgb[3 * k + c] - b->rgb[3 * k + c]);
+            sum += (uint64_t)diff;
+            sum_sq += (uint64_t)(diff * diff);
+            if (diff > st.max_error)
+                st.max_error = diff;
+            differs |= diff;
+        }
+        st.differing += differs != 0;
+    }
+    double channels = 3.0 * (double)n;
+    st.mean_error = n ? (double)sum / channels : 0;
+    if (sum_sq > 0)
+        st.psnr = 10 * log10(255.0 * 255.0 / ((double)sum_sq / channels));
+    return st;
+}
+
+/* The square root spreads out the small differences (1 or 2, the usual
+ * rounding) so that they still show. */
+void compare_heat(int m, unsigned char *rgb)
+{
+    static const double stops[4][3] = {
+        { 0, 0, 110 },            /* the smallest difference: dark blue */
+        { 210, 0, 0 },            /* red    */
+        { 255, 220, 0 },          /* yellow */
+        { 255, 255, 255 },        /* the largest: white */
+    };
+    if (m <= 0) {
+        rgb[0] = rgb[1] = rgb[2] = 0;
+        return;
+    }
+    if (m > 255)
+        m = 255;
+    double t = 3 * sqrt((m - 1) / 254.0);     /* 0 .. 3 along the stops */
+    int k = t >= 3 ? 2 : (int)t;
+    double f = t - k;
+    for (int c = 0; c < 3; c++)
+        rgb[c] = (unsigned char)lround(stops[k][c] + f * (stops[k + 1][c] - stops[k][c]));
+}
+
+int compare_heat_map(const Image *a, const Image *b, Image *heat, char *err, size_t errlen)
+{
+    if (image_alloc(heat, a->width, a->height, err, errlen) < 0)
+        return -1;
+    size_t n = (size_t)a->width * (size_t)a->height;
+    for (size_t k = 0; k < n; k++)
+        compare_heat(compare_pixel_error(a, b, k), heat->rgb + 3 * k);
+    return 0;
+}
+
+/* Copies src into dst with its top-left corner at column x0.
+ * dst is at least as tall as src and wide enough.  Never fails. */
+static void compare_paste(Image *dst, const Image *src, int x0)
+{
+    size_t row = (size_t)3 * (size_t)src->width;
+    for (int j = 0; j < src->height; j++)
+        memcpy(dst->rgb + 3 * ((size_t)j * (size_t)dst->width + (size_t)x0),
+               src->rgb + row * (size_t)j, row);
+}
+
+int compare_side_by_side(const Image *a, const Image *b, Image *out, char *err, size_t errlen)
+{
+    int width = a->width, height = a->height;
+    if (width > (IMAGE_MAX_SIDE - 2 * COMPARE_GAP) / 3) {
+        snprintf(err, errlen, "the images are too wide to put side by side (at most %d pixels)",
+                 (IMAGE_MAX_SIDE - 2 * COMPARE_GAP) / 3);
+        return -1;
+    }
+    Image heat;
+    if (compare_heat_map(a, b, &heat, err, errlen) < 0)
+        return -1;
+    if (image_alloc(out, 3 * width + 2 * COMPARE_GAP, height, err, errlen) < 0) {
+        image_free(&heat);
+        return -1;
+    }
+    memset(out->rgb, COMPARE_GREY, (size_t)3 * (size_t)out->width * (size_t)height);
+    compare_paste(out, a, 0);
+    compare_paste(out, b, width + COMPARE_GAP);
+    compare_paste(out, &heat, 2 * (width + COMPARE_GAP));
+    image_free(&heat);
+    return 0;
+}

@@ -1,0 +1,330 @@
+/*
+ * fig_flat.c - the figures of flat things: Part 4 (a plane, seen edge on in
+ * the plane of the ray and the plane's normal) and Part 5 (a triangle, or a
+ * closed mesh, seen along the ray: the vertices projected on the plane
+ * square to the ray, where the ray is a point, so that a ray through an
+ * edge shows as a point on that edge).
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "figures.h"
+#include "fig_ray.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The dot product a . b. */
+static double dot3(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* u = v / |v|; false when v is zero or not finite. */
+static bool unit3(const double *v, double *u)
+{
+    double n = ray_norm(v);
+    if (!(n > 0) || !isfinite(n))
+        return false;
+    for (int k = 0; k < 3; k++)
+        u[k] = v[k] / n;
+    return true;
+}
+
+/* Two unit vectors p, q square to the unit vector u and to each other. */
+static void square_to(const double *u, double *p, double *q)
+{
+    int axis = fabs(u[0]) <= fabs(u[1]) && fabs(u[0]) <= fabs(u[2]) ? 0 : fabs(u[1]) <= fabs(u[2]) ? 1 : 2;
+    double a[3] = { 0, 0, 0 }, c[3];
+    a[axis] = 1;
+    c[0] = u[1] * a[2] - u[2] * a[1];
+    c[1] = u[2] * a[0] - u[0] * a[2];
+    c[2] = u[0] * a[1] - u[1] * a[0];
+    unit3(c, p);
+    q[0] = u[1] * p[2] - u[2] * p[1];
+    q[1] = u[2] * p[0] - u[0] * p[2];
+    q[2] = u[0] * p[1] - u[1] * p[0];
+}
+
+/* A figure with no drawing: the input itself makes the answer a miss. */
+static void plain_figure(Markup *m, const char *title, const char *line1, const char *line2,
+                         const Case *c, const double *got)
+{
+    char b[40], wt[80], gt[80];
+    fig_begin(m, 760, 100, title);
+    svg_text(m, 12, 28, "start", 14, COL_TEXT, true, "%s", line1);
+    svg_text(m, 12, 50, "start", 13, COL_TEXT, false, "%s", line2);
+    if (c->want[0] != 0)
+        snprintf(wt, sizeof wt, "expected: a hit at t = %s", fig_num(b, sizeof b, c->want[1], 10));
+    else
+        snprintf(wt, sizeof wt, "expected: a miss");
+    if (!got)
+        snprintf(gt, sizeof gt, "your code: no answer");
+    else if (got[0] == 1)
+        snprintf(gt, sizeof gt, "your code: a hit at t = %s", fig_num(b, sizeof b, got[1], 10));
+    else
+        snprintf(gt, sizeof gt, "your code: %s", got[0] == 0 ? "a miss" : "neither true nor false");
+    fig_legend(m, 12, 84, wt, gt);
+    fig_end(m);
+}
+
+/* Whether any of v[0 .. n-1] is NaN. */
+static bool any_nan(const double *v, int n)
+{
+    for (int k = 0; k < n; k++)
+        if (isnan(v[k]))
+            return true;
+    return false;
+}
+
+/* ---- Part 4 ----------------------------------------------------------------------- */
+
+void fig_planehit(Markup *m, const Test *t, const Case *c, const double *got)
+{
+    (void)t;
+    const double *p = c->in, *n = c->in + 3, *e = c->in + 6, *r = c->in + 9;
+    double u[3], nh[3];
+    if (any_nan(c->in, 12)) {
+        plain_figure(m, "NaN input", "A number of the input is NaN (not a number).",
+                     "No point can be computed from it: the answer must be a miss.", c, got);
+        return;
+    }
+    if (!unit3(r, u)) {
+        plain_figure(m, "no direction", "The ray has no direction: r = (0, 0, 0).",
+                     "A ray that goes nowhere meets no plane: the answer must be a miss.", c, got);
+        return;
+    }
+    if (!unit3(n, nh)) {
+        plain_figure(m, "no normal", "The plane's normal is zero: there is no plane.",
+                     "The answer must be a miss.", c, got);
+        return;
+    }
+    /* the drawing's plane: u, and the part of the normal square to u */
+    double along = dot3(nh, u), v[3], q[3];
+    for (int k = 0; k < 3; k++)
+        v[k] = nh[k] - along * u[k];
+    if (!unit3(v, v)) {
+        square_to(u, v, q);                     /* the normal is along the ray */
+    }
+    double pe[3] = { p[0] - e[0], p[1] - e[1], p[2] - e[2] };
+    RayFig f;
+    memset(&f, 0, sizeof f);
+    f.title = "The plane seen edge on (the thick line), in the plane of the ray and the plane's normal";
+    f.rlen = ray_norm(r);
+    f.target = -1;
+    f.has_line = true;
+    f.line_A = along;
+    f.line_B = dot3(nh, v);
+    f.line_C = dot3(pe, nh);
+    f.want_hit = c->want[0] != 0;
+    f.want_t = c->want[1];
+    f.got_known = got != NULL;
+    f.got_hit = got && got[0] == 1;
+    f.got_t = got ? got[1] : 0;
+    char wt[140];
+    if (c->flags & CASE_EITHER_HIT) {
+        snprintf(wt, sizeof wt, "expected: %s (within rounding: a miss is right too)",
+                 f.want_hit ? "a hit" : "a miss");
+        f.want_text = wt;
+    }
+    if (got && got[0] != 0 && got[0] != 1)
+        f.got_text = "your code: neither true nor false";
+    ray_figure(m, &f);
+}
+
+/* ---- Part 5 ----------------------------------------------------------------------- */
+
+typedef struct {
+    double x[3], y[3];          /* the vertices, projected (the ray at 0, 0) */
+    double t;                   /* where the ray's line meets its plane      */
+    bool crossed;               /* the ray's point is inside or on it        */
+    int index;
+} Flat;
+
+/* Projects the triangle v (a, b, c) seen along the ray. */
+static void project(const double *v, const double *e, const double *r, const double *p,
+                    const double *q, Flat *out)
+{
+    for (int k = 0; k < 3; k++) {
+        double d[3] = { v[3 * k] - e[0], v[3 * k + 1] - e[1], v[3 * k + 2] - e[2] };
+        out->x[k] = dot3(d, p);
+        out->y[k] = dot3(d, q);
+    }
+    /* the signs of the ray's point against the three edges */
+    double s[3];
+    for (int k = 0; k < 3; k++) {
+        int l = (k + 1) % 3;
+        s[k] = out->x[k] * out->y[l] - out->y[k] * out->x[l];
+    }
+    out->crossed = (s[0] >= 0 && s[1] >= 0 && s[2] >= 0) || (s[0] <= 0 && s[1] <= 0 && s[2] <= 0);
+    /* t of the plane: (a - e) . N / (r . N) */
+    double ab[3], ac[3], N[3], ae[3];
+    for (int k = 0; k < 3; k++) {
+        ab[k] = v[3 + k] - v[k];
+        ac[k] = v[6 + k] - v[k];
+        ae[k] = v[k] - e[k];
+    }
+    N[0] = ab[1] * ac[2] - ab[2] * ac[1];
+    N[1] = ab[2] * ac[0] - ab[0] * ac[2];
+    N[2] = ab[0] * ac[1] - ab[1] * ac[0];
+    out->t = dot3(ae, N) / dot3(r, N);
+}
+
+/* The distance from the origin to the segment (x0, y0) - (x1, y1). */
+static double seg_dist(double x0, double y0, double x1, double y1)
+{
+    double dx = x1 - x0, dy = y1 - y0, l2 = dx * dx + dy * dy;
+    double s = l2 > 0 ? -(x0 * dx + y0 * dy) / l2 : 0;
+    s = s < 0 ? 0 : s > 1 ? 1 : s;
+    return hypot(x0 + s * dx, y0 + s * dy);
+}
+
+/* Draws the projected triangles in v: those the ray goes through in yellow,
+ * the others grey; a single triangle's vertices named a, b, c. */
+static void draw_flats(Markup *m, const FigView *v, const Flat *fl, int nf, bool labels)
+{
+    static const char *const names[3] = { "a", "b", "c" };
+    for (int k = 0; k < nf; k++) {
+        const Flat *f = &fl[k];
+        /* the fill clipped, then each edge on its own (a clipped outline
+         * would draw the window's edge too) */
+        fig_polygon(m, v, f->x, f->y, 3, f->crossed ? "#f2c14e" : "#c9c9c9", nf > 1 ? 0.35 : 0.6, "none", 0);
+        for (int q = 0; q < 3; q++)
+            fig_segment(m, v, f->x[q], f->y[q], f->x[(q + 1) % 3], f->y[(q + 1) % 3], "#333333",
+                        f->crossed ? 1.6 : 1, NULL);
+        if (labels && nf == 1)
+            for (int q = 0; q < 3; q++)
+                if (fig_inside(v, f->x[q], f->y[q])) {
+                    double cx = (f->x[0] + f->x[1] + f->x[2]) / 3, cy = (f->y[0] + f->y[1] + f->y[2]) / 3;
+                    double dx = fig_px(v, f->x[q]) - fig_px(v, cx), dy = fig_py(v, f->y[q]) - fig_py(v, cy);
+                    double l = hypot(dx, dy) > 0 ? hypot(dx, dy) : 1;
+                    svg_text(m, fig_px(v, f->x[q]) + 12 * dx / l, fig_py(v, f->y[q]) + 12 * dy / l + 4,
+                             "middle", 13, COL_TEXT, true, "%s", names[q]);
+                }
+    }
+}
+
+void fig_triangle(Markup *m, const Test *t, const Case *c, const double *got)
+{
+    bool mesh = t->kind == KIND_MESH;
+    const double *e = mesh ? c->in : c->in + 9, *r = mesh ? c->in + 3 : c->in + 12;
+    char b1[40], b2[40];
+    double u[3], p[3], q[3];
+    if (any_nan(c->in, kind_nin(t->kind))) {
+        plain_figure(m, "NaN input", "A number of the input is NaN (not a number).",
+                     "No point can be computed from it: the answer must be a miss.", c, got);
+        return;
+    }
+    if (!unit3(r, u)) {
+        plain_figure(m, "no direction", "The ray has no direction: r = (0, 0, 0).",
+                     "A ray that goes nowhere meets no triangle: the answer must be a miss.", c, got);
+        return;
+    }
+    square_to(u, p, q);
+    int nf = mesh ? t->ntriangles : 1;
+    Flat *fl = calloc((size_t)nf + 1, sizeof *fl);
+    if (!fl)
+        return;
+    for (int k = 0; k < nf; k++) {
+        project(mesh ? t->triangles[k].v : c->in, e, r, p, q, &fl[k]);
+        fl[k].index = k;
+    }
+    /* the main window: every vertex and the ray's point */
+    double x0 = 0, x1 = 0, y0 = 0, y1 = 0, near = INFINITY;
+    bool vertex = false;
+    for (int k = 0; k < nf; k++)
+        for (int v = 0; v < 3; v++) {
+            vertex = vertex || (fl[k].x[v] == 0 && fl[k].y[v] == 0);
+            x0 = fmin(x0, fl[k].x[v]), x1 = fmax(x1, fl[k].x[v]);
+            y0 = fmin(y0, fl[k].y[v]), y1 = fmax(y1, fl[k].y[v]);
+            near = fmin(near, seg_dist(fl[k].x[v], fl[k].y[v], fl[k].x[(v + 1) % 3], fl[k].y[(v + 1) % 3]));
+        }
+    fig_begin(m, 760, 356, mesh ? "the mesh seen along the ray" : "the triangle seen along the ray");
+    svg_text(m, 10, 19, "start", 14, COL_TEXT, true, "%s seen along the ray: the ray is the point %s",
+             mesh ? "The mesh" : "The triangle", "in the middle of the cross");
+    FigView w[2];
+    fig_fit(&w[0], x0, y0, x1, y1, 0.12, 10, 30, 740, 240);
+    int nwin = 1;
+    if (near * w[0].s < 6) {
+        /* the ray passes close to an edge: look closer */
+        double h = near > 0 ? 8 * near : 0.02 * fmax(x1 - x0, y1 - y0);
+        FigView z;
+        fig_fit(&z, -h, -h, h, h, 0, 500, 30, 250, 240);
+        if (z.s > 4 * w[0].s) {
+            w[1] = z;
+            nwin = 2;
+            fig_fit(&w[0], x0, y0, x1, y1, 0.12, 10, 30, 480, 240);
+        }
+    }
+    for (int k = 0; k < nwin; k++) {
+        const FigView *v = &w[k];
+        fig_window(m, v, k ? "#f8f5fd" : "#fbfbfb");
+        draw_flats(m, v, fl, nf, k == 0);
+        double ox = fig_px(v, 0), oy = fig_py(v, 0);
+        svg_line(m, ox - 9, oy, ox + 9, oy, "#222222", 1.2, NULL);
+        svg_line(m, ox, oy - 9, ox, oy + 9, "#222222", 1.2, NULL);
+        bool want_hit = c->want[0] != 0, got_hit = got && got[0] == 1;
+        if (want_hit)
+            svg_mark_want(m, ox - (got_hit ? 7 : 0), oy);
+        if (got_hit)
+            svg_mark_got(m, ox + (want_hit ? 7 : 0), oy);
+        fig_window_end(m);
+        svg_rect(m, v->px0, v->py0, v->pw, v->ph, "none", k ? "#7a4fbf" : "#bbbbbb", k ? 1.4 : 1);
+        if (k == 1) {
+            svg_text(m, v->px0 + 6, v->py0 + 16, "start", 12, "#7a4fbf", true, "zoomed in %s times on the ray",
+                     fig_times(b1, sizeof b1, v->s / w[0].s));
+            if (near > 0)
+                svg_text(m, v->px0 + 6, v->py0 + v->ph - 8, "start", 11, COL_NOTE, false,
+                         "the nearest edge is %s away", fig_num(b2, sizeof b2, near, 2));
+            else
+                svg_text(m, v->px0 + 6, v->py0 + v->ph - 8, "start", 11, COL_NOTE, false,
+                         "the ray passes exactly through %s", vertex ? "a vertex" : "an edge");
+        }
+    }
+    if (nwin == 2) {
+        double s = w[1].pw / w[1].s / 2;
+        svg_rect(m, fig_px(&w[0], -s) - 4, fig_py(&w[0], s) - 4, fmax(2 * s * w[0].s, 0) + 8,
+                 fmax(2 * s * w[0].s, 0) + 8, "none", "#7a4fbf", 1.4);
+    }
+
+    /* what the ray meets, by t */
+    double y = 290;
+    int ncross = 0;
+    for (int k = 0; k < nf; k++)
+        ncross += fl[k].crossed;
+    if (mesh) {
+        char list[300] = "";
+        for (int k = 0, shown = 0; k < nf && shown < 6; k++)
+            if (fl[k].crossed) {
+                size_t len = strlen(list);
+                snprintf(list + len, sizeof list - len, "%s%d (t = %s)", shown ? ", " : "", k + 1,
+                         fig_num(b1, sizeof b1, fl[k].t, 8));
+                shown++;
+            }
+        svg_text(m, 12, y, "start", 12, COL_TEXT, false, "%d triangles; the ray's line crosses %s%s",
+                 nf, ncross ? "triangles " : "none of them", list);
+    } else {
+        double tp = fl[0].t;
+        svg_text(m, 12, y, "start", 12, COL_TEXT, false, "The ray's line meets the triangle's plane at "
+                 "t = %s%s; the point is %s the triangle (yellow: the ray goes through it).",
+                 fig_num(b1, sizeof b1, tp, 10), tp < 0 ? " (behind e: t < 0)" : "",
+                 fl[0].crossed ? "inside or on the edge of" : "outside");
+    }
+    svg_text(m, 12, y + 18, "start", 11, COL_NOTE, false, "Seen along the ray, every triangle the ray "
+             "goes through covers the cross; a ray through a shared edge lies on that edge.");
+    char wt[120], gt[120];
+    if (c->want[0] != 0)
+        snprintf(wt, sizeof wt, "expected: a hit at t = %s%s", fig_num(b1, sizeof b1, c->want[1], 10),
+                 c->flags & CASE_EITHER_HIT ? " (or a miss)" : "");
+    else
+        snprintf(wt, sizeof wt, "expected: a miss");
+    if (!got)
+        snprintf(gt, sizeof gt, "your code: no answer");
+    else if (got[0] == 1)
+        snprintf(gt, sizeof gt, "your code: a hit at t = %s", fig_num(b2, sizeof b2, got[1], 10));
+    else
+        snprintf(gt, sizeof gt, "your code: %s", got[0] == 0 ? "a miss" : "neither true nor false");
+    fig_legend(m, 12, 340, wt, gt);
+    fig_end(m);
+    free(fl);
+}

@@ -1,0 +1,397 @@
+/*
+ * fig_ray.c - see fig_ray.h: the side view of a ray, with circles (the
+ * spheres' great circles) or a line (a plane edge on), the expected and the
+ * returned hit, and, where the scale demands it, a zoomed-in window.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "fig_ray.h"
+#include "figures.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define FW    760.0           /* the figure's width                    */
+#define TOP   30.0            /* the windows' top                      */
+#define WH    250.0           /* the windows' height                   */
+#define FH    (TOP + WH + 56) /* the figure's height                   */
+
+double ray_norm(const double v[3])
+{
+    double big = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+    if (!(big > 0) || isinf(big))
+        return big;
+    double x = v[0] / big, y = v[1] / big, z = v[2] / big;
+    return big * sqrt(x * x + y * y + z * z);
+}
+
+double ray_frame_sphere(const double e[3], const double r[3], const double c[3], double *a,
+                        double *b, double *dist)
+{
+    double rl = ray_norm(r), m[3], u[3], p[3];
+    *a = *b = *dist = 0;
+    if (!(rl > 0) || !isfinite(rl))
+        return 0;
+    for (int k = 0; k < 3; k++) {
+        u[k] = r[k] / rl;
+        m[k] = c[k] - e[k];
+    }
+    double along = m[0] * u[0] + m[1] * u[1] + m[2] * u[2];
+    for (int k = 0; k < 3; k++)
+        p[k] = m[k] - along * u[k];
+    *a = along;
+    *b = ray_norm(p);
+    *dist = ray_norm(m);
+    return rl;
+}
+
+bool ray_sphere_t(const double e[3], const double r[3], const double c[3], double R, double *t)
+{
+    double a, b, dist;
+    double rl = ray_frame_sphere(e, r, c, &a, &b, &dist);
+    if (!(rl > 0) || !(b <= R))
+        return false;
+    double half = sqrt((R - b) * (R + b));    /* half the chord the ray cuts */
+    double near = a - half, far = a + half;
+    double pick = near > 0 ? near : far;
+    if (!(pick > 0))
+        return false;
+    *t = pick / rl;
+    return isfinite(*t);
+}
+
+/* ---- framing ------------------------------------------------------------------ */
+
+typedef struct {
+    double x0, y0, x1, y1;
+    bool any;
+} Box;
+
+/* Grows bx to hold (x, y); a point not finite is left out. */
+static void box_add(Box *bx, double x, double y)
+{
+    if (!isfinite(x) || !isfinite(y))
+        return;
+    if (!bx->any) {
+        bx->x0 = bx->x1 = x;
+        bx->y0 = bx->y1 = y;
+        bx->any = true;
+        return;
+    }
+    bx->x0 = fmin(bx->x0, x), bx->x1 = fmax(bx->x1, x);
+    bx->y0 = fmin(bx->y0, y), bx->y1 = fmax(bx->y1, y);
+}
+
+/* Where the plane's line comes nearest e: (A, B) C / (A^2 + B^2). */
+static void line_foot(const RayFig *f, double *fa, double *fb)
+{
+    double n = hypot(f->line_A, f->line_B);
+    double A = f->line_A / n, B = f->line_B / n, C = f->line_C / n;
+    *fa = A * C;
+    *fb = B * C;
+}
+
+/* ---- drawing ------------------------------------------------------------------ */
+
+/* Draws what the window v shows: the circles or the line, the ray (marked
+ * in t in the main window), e, and the hits that fall inside it. */
+static void draw_content(Markup *m, const FigView *v, const RayFig *f, double aw, double ag,
+                         bool want_in, bool got_in, bool main)
+{
+    double left = v->cx - v->pw / 2 / v->s, right = v->cx + v->pw / 2 / v->s;
+    /* the objects first, the ray and the marks over them */
+    for (int k = 0; k < f->ncircles; k++) {
+        const RayCircle *c = &f->circles[k];
+        fig_circle(m, v, c->a, c->b, c->R, c->fill, 0.45, "#333333", k == f->target ? 1.6 : 1);
+        /* the centre, and the label above the circle */
+        if (c->R * v->s > 6 && fig_inside(v, c->a, c->b))
+            svg_circle(m, fig_px(v, c->a), fig_py(v, c->b), 2, "#333333", "none", 0);
+        if (c->label[0] && c->R * v->s > 3 && c->R * v->s < 400) {
+            double lx = fig_px(v, c->a), ly = fig_py(v, c->b) - c->R * v->s - 5;
+            if (lx > v->px0 + 8 && lx < v->px0 + v->pw - 8 && ly > v->py0 + 12)
+                svg_text(m, lx, ly, "middle", 12, COL_TEXT, true, "%s", c->label);
+            else if (fig_inside(v, c->a, c->b))
+                svg_text(m, fig_px(v, c->a) + 5, fig_py(v, c->b) - 4, "start", 12, COL_TEXT, true,
+                         "%s", c->label);
+        }
+    }
+    if (f->has_line) {
+        double fa, fb, n = hypot(f->line_A, f->line_B);
+        line_foot(f, &fa, &fb);
+        double da = f->line_B / n, db = -f->line_A / n, far = 4 * (right - left) + fabs(fa - v->cx)
+                                                              + fabs(fb - v->cy);
+        fig_segment(m, v, fa - far * da, fb - far * db, fa + far * da, fb + far * db, "#333333", 3, NULL);
+        if (main && fig_inside(v, fa, fb)) {
+            double px = fig_px(v, fa), py = fig_py(v, fb);
+            svg_arrow(m, px, py, px + 38 * f->line_A / n, py - 38 * f->line_B / n, "#333333", 1.4, NULL);
+            svg_text(m, px + 44 * f->line_A / n + 4, py - 44 * f->line_B / n + 4, "start", 12,
+                     COL_TEXT, false, "normal n");
+        }
+    }
+    /* the ray: behind e dashed, ahead solid, an arrowhead at the edge */
+    double y0 = fig_py(v, 0);
+    if (left < 0)
+        fig_segment(m, v, left - 1 / v->s, 0, fmin(0, right), 0, "#999999", 1.2, "5 4");
+    if (right > 0) {
+        double x0 = fig_px(v, fmax(0, left - 1 / v->s)), x1 = v->px0 + v->pw - 2;
+        svg_arrow(m, x0, y0, x1, y0, "#222222", 1.6, NULL);
+    }
+    if (fig_inside(v, 0, 0)) {
+        svg_circle(m, fig_px(v, 0), y0, 3.5, "#222222", "none", 0);
+        if (main)
+            svg_text(m, fig_px(v, 0) - 6, y0 - 8, "end", 13, COL_TEXT, true, "e");
+    }
+    /* t along the ray */
+    if (main && f->rlen > 0 && right > 0) {
+        double a0 = fmax(0, left);
+        double step = fig_step((right - a0) / f->rlen, (int)fmax(1, (right - a0) * v->s / 115));
+        char buf[40];
+        for (double t = ceil(a0 / f->rlen / step) * step; t * f->rlen <= right; t += step) {
+            if (t == 0 || !(step > 0))
+                continue;
+            double px = fig_px(v, t * f->rlen);
+            svg_line(m, px, y0 - 4, px, y0 + 4, "#222222", 1, NULL);
+            bool crowded = (want_in && fabs(px - fig_px(v, aw)) < 30) || (got_in && fabs(px - fig_px(v, ag)) < 30);
+            if (!crowded)
+                svg_text(m, px, y0 + 16, "middle", 11, COL_NOTE, false, "t = %s",
+                         fig_num(buf, sizeof buf, t, 4));
+            if (t / step > 40)
+                break;
+        }
+    }
+    if (want_in)
+        svg_mark_want(m, fig_px(v, aw), y0);
+    if (got_in)
+        svg_mark_got(m, fig_px(v, ag), y0);
+}
+
+void ray_figure(Markup *m, const RayFig *f)
+{
+    char buf[64], buf2[64];
+    double aw = f->want_hit ? f->want_t * f->rlen : NAN;
+    double ag = f->got_known && f->got_hit ? f->got_t * f->rlen : NAN;
+    const RayCircle *tc = f->target >= 0 && f->target < f->ncircles ? &f->circles[f->target] : NULL;
+
+    /* How far the interesting things are from e. */
+    double L = isfinite(aw) ? fabs(aw) : 0;
+    for (int k = 0; k < f->ncircles; k++) {
+        const RayCircle *c = &f->circles[k];
+        double d = hypot(c->a, c->b);
+        L = fmax(L, d > c->R ? d - c->R : 0);
+    }
+    double fa = 0, fb = 0;
+    if (f->has_line) {
+        line_foot(f, &fa, &fb);
+        L = fmax(L, hypot(fa, fb));
+    }
+    if (!(L > 0))
+        for (int k = 0; k < f->ncircles; k++)
+            L = fmax(L, f->circles[k].R);
+    if (!(L > 0))
+        L = 1;
+    bool got_drawable = isfinite(ag) && fabs(ag) <= 50 * L;
+    if (got_drawable)
+        L = fmax(L, fabs(ag));
+
+    Box bx = { 0, 0, 0, 0, false };
+    box_add(&bx, 0, 0);
+    if (isfinite(aw))
+        box_add(&bx, aw, 0);
+    if (got_drawable)
+        box_add(&bx, ag, 0);
+    for (int k = 0; k < f->ncircles; k++) {
+        const RayCircle *c = &f->circles[k];
+        double d = hypot(c->a, c->b);
+        if (c->R <= 3 * L) {
+            box_add(&bx, c->a - c->R, c->b - c->R);
+            box_add(&bx, c->a + c->R, c->b + c->R);
+        } else if (d > 0) {
+            box_add(&bx, c->a * (1 - c->R / d), c->b * (1 - c->R / d));
+            if (c->b <= c->R) {
+                double half = sqrt((c->R - c->b) * (c->R + c->b));
+                if (fabs(c->a - half) <= 3 * L)
+                    box_add(&bx, c->a - half, 0);
+                if (fabs(c->a + half) <= 3 * L)
+                    box_add(&bx, c->a + half, 0);
+            }
+        }
+    }
+    if (f->has_line)
+        box_add(&bx, fa, fb);
+    /* keep some of the ray ahead of e in view, and a little room above
+     * and below the axis */
+    if (bx.x1 < 0.25 * (bx.x1 - bx.x0))
+        box_add(&bx, 0.25 * (bx.x1 - bx.x0), 0);
+    /* keep a little room above and below the axis */
+    double span = fmax(bx.x1 - bx.x0, bx.y1 - bx.y0);
+    box_add(&bx, bx.x0, -0.06 * span);
+    box_add(&bx, bx.x0, 0.06 * span);
+
+    FigView main;
+    fig_fit(&main, bx.x0, bx.y0, bx.x1, bx.y1, 0.06, 10, TOP, 740, WH);
+
+    /* Zoomed-in windows (at most two, each closer than the last), while
+     * what matters is too small at the scale so far. */
+    FigView win[3];
+    const char *why[3] = { NULL, NULL, NULL };
+    int nwin = 1;
+    win[0] = main;
+    bool both = isfinite(aw) && got_drawable && aw != ag;
+    bool used_small = false, used_close = false, used_graze = false, used_line = false;
+    while (nwin < 3) {
+        double s = win[nwin - 1].s;
+        Box zb = { 0, 0, 0, 0, false };
+        const char *what = NULL;
+        if (tc && !used_small && tc->R * s < 6) {
+            what = "the sphere";
+            used_small = true;
+            box_add(&zb, tc->a - tc->R, tc->b - tc->R);
+            box_add(&zb, tc->a + tc->R, tc->b + tc->R);
+            box_add(&zb, tc->a, 0);
+            if (isfinite(aw) && fabs(aw - tc->a) < 6 * tc->R)
+                box_add(&zb, aw, 0);
+            if (got_drawable && fabs(ag - tc->a) < 6 * tc->R)
+                box_add(&zb, ag, 0);
+        } else if (tc && !used_graze && fabs(tc->b - tc->R) < 0.05 * tc->R
+                   && fabs(tc->b - tc->R) * s < 4) {
+            what = "where the ray grazes the sphere";
+            used_graze = true;
+            double g = fmax(fabs(tc->b - tc->R), 1e-300 * tc->R);
+            box_add(&zb, tc->a - 8 * g, -5 * g);
+            box_add(&zb, tc->a + 8 * g, 5 * g);
+        } else if (both && !used_close && fabs(aw - ag) * s < 10) {
+            what = "the two hits";
+            used_close = true;
+            double d = fabs(aw - ag), mid = aw / 2 + ag / 2;
+            box_add(&zb, mid - 2.5 * d, -1.2 * d);
+            box_add(&zb, mid + 2.5 * d, 1.2 * d);
+        } else if (f->has_line && !used_line && isfinite(aw) && hypot(fa, fb) * s < 6
+                   && hypot(fa, fb) > 0) {
+            what = "e and the plane";
+            used_line = true;
+            double g = hypot(fa, fb);
+            box_add(&zb, -2 * g, -2 * g);
+            box_add(&zb, fmax(2 * g, 1.2 * aw), 2 * g);
+        }
+        if (!what || !zb.any)
+            break;
+        FigView z;
+        fig_fit(&z, zb.x0, zb.y0, zb.x1, zb.y1, 0.12, 0, TOP, 220, WH);
+        if (!(z.s > 4 * s))
+            continue;               /* no closer than now: try the next reason */
+        why[nwin] = what;
+        win[nwin++] = z;
+    }
+    /* Lay the windows out side by side: the main one keeps its left edge. */
+    static const double widths[3][3] = { { 740, 0, 0 }, { 470, 260, 0 }, { 300, 210, 210 } };
+    double x = 10;
+    for (int k = 0; k < nwin; k++) {
+        double w = widths[nwin - 1][k];
+        if (k == 0) {
+            double left = main.cx - main.pw / 2 / main.s;
+            win[0].pw = w;
+            win[0].s = fmin(main.s, w / fmax((bx.x1 - bx.x0) * 1.12, 1e-300));
+            win[0].cx = left + w / 2 / win[0].s;
+        } else {
+            FigView z = win[k];
+            double cx = z.cx, cy = z.cy, sw = z.pw / z.s, sh = z.ph / z.s;
+            fig_fit(&win[k], cx - sw / 2, cy - sh / 2, cx + sw / 2, cy + sh / 2, 0, x, TOP, w, WH);
+        }
+        win[k].px0 = x;
+        x += w + 10;
+    }
+    main = win[0];
+
+    fig_begin(m, FW, FH, f->title ? f->title : "the ray");
+    svg_text(m, 10, 19, "start", 14, COL_TEXT, true, "%s", f->title ? f->title : "");
+    /* enough digits that the expected and the returned t read apart */
+    int digits = 6;
+    while (digits < 17 && f->want_hit && f->got_known && f->got_hit && f->want_t != f->got_t
+           && strcmp(fig_num(buf, sizeof buf, f->want_t, digits), fig_num(buf2, sizeof buf2, f->got_t, digits)) == 0)
+        digits++;
+    bool got_shown = false;
+    for (int k = 0; k < nwin; k++) {
+        const FigView *v = &win[k];
+        bool want_in = isfinite(aw) && fig_inside(v, aw, 0);
+        bool got_in = got_drawable && fig_inside(v, ag, 0);
+        got_shown = got_shown || got_in;
+        const char *frame_col = k ? "#7a4fbf" : "#bbbbbb";
+        fig_window(m, v, k ? "#f8f5fd" : "#fbfbfb");
+        draw_content(m, v, f, aw, ag, want_in, got_in, k == 0);
+        if (k + 1 < nwin) {
+            /* where the next window is, in this one */
+            const FigView *z = &win[k + 1];
+            double x0 = fig_px(v, z->cx - z->pw / 2 / z->s), x1 = fig_px(v, z->cx + z->pw / 2 / z->s);
+            double ya = fig_py(v, z->cy + z->ph / 2 / z->s), yb = fig_py(v, z->cy - z->ph / 2 / z->s);
+            double cxp = (x0 + x1) / 2, cyp = (ya + yb) / 2, rw = fmax(x1 - x0, 10), rh = fmax(yb - ya, 10);
+            svg_rect(m, cxp - rw / 2, cyp - rh / 2, rw, rh, "none", "#7a4fbf", 1.4);
+        }
+        fig_window_end(m);
+        svg_rect(m, v->px0, v->py0, v->pw, v->ph, "none", frame_col, k ? 1.4 : 1);
+        /* labels of the hits, outside the clipping so that none is cut:
+         * expected above the axis, returned below */
+        double y0 = fig_py(v, 0), lo = v->px0 + 4, hi = v->px0 + v->pw - 4;
+        bool apart = !(want_in && got_in) || fabs(fig_px(v, aw) - fig_px(v, ag)) > 4;
+        if (want_in) {
+            if (k == 0)
+                snprintf(buf2, sizeof buf2, "expected t = %s", fig_num(buf, sizeof buf, f->want_t, digits));
+            else
+                snprintf(buf2, sizeof buf2, "expected");
+            double w = 6.6 * (double)strlen(buf2), px = fmin(fmax(fig_px(v, aw), lo + w / 2), hi - w / 2);
+            svg_text(m, px, y0 - 14, "middle", 12, COL_WANT, true, "%s", buf2);
+        }
+        if (got_in && (apart || k == 0)) {
+            if (k == 0)
+                snprintf(buf2, sizeof buf2, "your t = %s", fig_num(buf, sizeof buf, f->got_t, digits));
+            else
+                snprintf(buf2, sizeof buf2, "yours");
+            double w = 6.6 * (double)strlen(buf2), px = fmin(fmax(fig_px(v, ag), lo + w / 2), hi - w / 2);
+            svg_text(m, px, y0 + 34, "middle", 12, COL_GOT, true, "%s", buf2);
+        }
+        if (k > 0) {
+            svg_text(m, v->px0 + 6, v->py0 + 16, "start", 12, "#7a4fbf", true, "zoomed in %s times:",
+                     fig_times(buf, sizeof buf, v->s / main.s));
+            svg_text(m, v->px0 + 6, v->py0 + 30, "start", 12, "#7a4fbf", true, "%s", why[k]);
+            char note[120];
+            snprintf(note, sizeof note, "this window is %s wide", fig_num(buf2, sizeof buf2, v->pw / v->s, 2));
+            if (both && fabs(aw - ag) * v->s < 3 && k == nwin - 1)
+                snprintf(note, sizeof note, "the two hits are %s apart", fig_num(buf, sizeof buf, fabs(aw - ag), 2));
+            if (strcmp(why[k], "where the ray grazes the sphere") == 0 && tc)
+                snprintf(note, sizeof note, "the ray passes %s %s the edge",
+                         fig_num(buf, sizeof buf, fabs(tc->b - tc->R), 2),
+                         tc->b < tc->R ? "inside" : tc->b > tc->R ? "outside" : "exactly on");
+            svg_text(m, v->px0 + 6, v->py0 + v->ph - 8, "start", 11, COL_NOTE, false, "%s", note);
+        }
+    }
+    /* a returned hit off the figure */
+    if (f->got_known && f->got_hit && !got_shown) {
+        bool ahead = !(ag < 0) && !(f->got_t < 0);
+        double y0 = fig_py(&main, 0);
+        double xe = ahead ? main.px0 + main.pw - 6 : main.px0 + 6;
+        svg_text(m, xe, y0 + 34, ahead ? "end" : "start", 12, COL_GOT, true, "%syour t = %s: off "
+                 "the figure%s", ahead ? "" : "\xE2\x86\x90 ", fig_num(buf, sizeof buf, f->got_t, 6),
+                 ahead ? " \xE2\x86\x92" : "");
+    }
+
+    /* the legend */
+    char wt[120], gt[120];
+    if (f->want_text)
+        snprintf(wt, sizeof wt, "%s", f->want_text);
+    else if (f->want_hit)
+        snprintf(wt, sizeof wt, "expected: a hit at t = %s", fig_num(buf, sizeof buf, f->want_t, digits > 10 ? digits : 10));
+    else
+        snprintf(wt, sizeof wt, "expected: a miss");
+    if (f->got_text)
+        snprintf(gt, sizeof gt, "%s", f->got_text);
+    else if (!f->got_known)
+        snprintf(gt, sizeof gt, "your code: no answer");
+    else if (f->got_hit)
+        snprintf(gt, sizeof gt, "your code: a hit at t = %s", fig_num(buf, sizeof buf, f->got_t, digits > 10 ? digits : 10));
+    else
+        snprintf(gt, sizeof gt, "your code: a miss");
+    fig_legend(m, 12, TOP + WH + 22, wt, gt);
+    svg_text(m, 12, TOP + WH + 44, "start", 11, COL_NOTE, false,
+             "e: where the ray starts (t = 0); the arrow: the ray e + t r, marked in t; "
+             "dashed: t < 0, behind e");
+    fig_end(m);
+}

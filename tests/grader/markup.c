@@ -1,0 +1,262 @@
+/*
+ * markup.c - see markup.h.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include "markup.h"
+#include "kit/png.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+void mk_init(Markup *m)
+{
+    kit_buf_init(&m->b);
+    m->failed = false;
+}
+
+void mk_free(Markup *m)
+{
+    kit_buf_free(&m->b);
+    m->failed = false;
+}
+
+bool mk_ok(const Markup *m)
+{
+    return !m->failed;
+}
+
+void mk_raw(Markup *m, const char *s, size_t n)
+{
+    if (kit_buf_append(&m->b, s, n) != 0)
+        m->failed = true;
+}
+
+/* mk_printf with a va_list: short texts through a buffer on the stack,
+ * long ones through malloc (failure sets m->failed). */
+static void mk_vprintf(Markup *m, const char *fmt, va_list ap)
+{
+    char small[512];
+    va_list again;
+    va_copy(again, ap);
+    int n = vsnprintf(small, sizeof small, fmt, ap);
+    if (n < 0) {
+        va_end(again);
+        return;
+    }
+    if ((size_t)n < sizeof small) {
+        mk_raw(m, small, (size_t)n);
+    } else {
+        char *big = malloc((size_t)n + 1);
+        if (!big) {
+            m->failed = true;
+        } else {
+            vsnprintf(big, (size_t)n + 1, fmt, again);
+            mk_raw(m, big, (size_t)n);
+            free(big);
+        }
+    }
+    va_end(again);
+}
+
+void mk_printf(Markup *m, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    mk_vprintf(m, fmt, ap);
+    va_end(ap);
+}
+
+/* The length (2 to 4) of the valid UTF-8 sequence at s[0 .. n-1], whose
+ * first byte is 0x80 or more, or 0 when it is not valid. */
+static int utf8_length(const unsigned char *s, size_t n)
+{
+    unsigned char c = s[0], lo = 0x80, hi = 0xBF;
+    int need;
+    if (c >= 0xC2 && c <= 0xDF) {
+        need = 2;
+    } else if (c >= 0xE0 && c <= 0xEF) {
+        need = 3;
+        lo = c == 0xE0 ? 0xA0 : 0x80;      /* no overlong forms */
+        hi = c == 0xED ? 0x9F : 0xBF;      /* no surrogates     */
+    } else if (c >= 0xF0 && c <= 0xF4) {
+        need = 4;
+        lo = c == 0xF0 ? 0x90 : 0x80;
+        hi = c == 0xF4 ? 0x8F : 0xBF;      /* up to U+10FFFF    */
+    } else {
+        return 0;
+    }
+    for (int k = 1; k < need; k++) {
+        if ((size_t)k >= n || s[k] < lo || s[k] > hi)
+            return 0;
+        lo = 0x80;
+        hi = 0xBF;
+    }
+    return need;
+}
+
+void mk_text(Markup *m, const char *text)
+{
+    if (!text)
+        return;
+    const unsigned char *s = (const unsigned char *)text;
+    size_t n = strlen(text), k = 0;
+    while (k < n) {
+        size_t run = k;
+        while (run < n && s[run] < 0x80 && (s[run] >= 0x20 || s[run] == '\n' || s[run] == '\t')
+               && s[run] != 0x7F && !strchr("&<>\"'", s[run]))
+            run++;
+        mk_raw(m, text + k, run - k);
+        k = run;
+        if (k == n)
+            break;
+        unsigned char c = s[k];
+        int len = c >= 0x80 ? utf8_length(s + k, n - k) : 0;
+        if (c == '&')
+            mk_raw(m, "&amp;", 5);
+        else if (c == '<')
+            mk_raw(m, "&lt;", 4);
+        else if (c == '>')
+            mk_raw(m, "&gt;", 4);
+        else if (c == '"')
+            mk_raw(m, "&quot;", 6);
+        else if (c == '\'')
+            mk_raw(m, "&#39;", 5);
+        else if (len > 0)
+            mk_raw(m, text + k, (size_t)len);
+        else
+            mk_raw(m, "\xEF\xBF\xBD", 3);              /* U+FFFD */
+        k += len > 0 ? (size_t)len : 1;
+    }
+}
+
+void mk_textf(Markup *m, const char *fmt, ...)
+{
+    char buf[2048];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(buf, sizeof buf, fmt, ap);
+    va_end(ap);
+    mk_text(m, buf);
+}
+
+int mk_png_uri(Markup *m, const Image *img)
+{
+    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    KitBuf png;
+    char err[256];
+    kit_buf_init(&png);
+    if (png_encode(img, &png, err, sizeof err) != 0) {
+        kit_buf_free(&png);
+        return -1;
+    }
+    mk_raw(m, "data:image/png;base64,", 22);
+    if (kit_buf_reserve(&m->b, (png.len + 2) / 3 * 4) != 0)
+        m->failed = true;
+    for (size_t k = 0; k < png.len && !m->failed; k += 3) {
+        unsigned v = (unsigned)png.data[k] << 16;
+        size_t left = png.len - k;
+        if (left > 1)
+            v |= (unsigned)png.data[k + 1] << 8;
+        if (left > 2)
+            v |= png.data[k + 2];
+        char q[4] = { digits[v >> 18], digits[(v >> 12) & 63],
+                      left > 1 ? digits[(v >> 6) & 63] : '=', left > 2 ? digits[v & 63] : '=' };
+        mk_raw(m, q, 4);
+    }
+    kit_buf_free(&png);
+    return 0;
+}
+
+double mk_clamp(double v)
+{
+    if (!(v == v))
+        return 0;
+    return v > 1e6 ? 1e6 : v < -1e6 ? -1e6 : v;
+}
+
+/* ---- SVG --------------------------------------------------------------------- */
+
+void svg_line(Markup *m, double x1, double y1, double x2, double y2, const char *color,
+              double width, const char *dash)
+{
+    mk_printf(m, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" stroke=\"%s\" "
+                 "stroke-width=\"%.2g\"", mk_clamp(x1), mk_clamp(y1), mk_clamp(x2), mk_clamp(y2),
+              color, width);
+    if (dash)
+        mk_printf(m, " stroke-dasharray=\"%s\"", dash);
+    mk_printf(m, "/>\n");
+}
+
+void svg_arrow(Markup *m, double x1, double y1, double x2, double y2, const char *color,
+               double width, const char *dash)
+{
+    x1 = mk_clamp(x1), y1 = mk_clamp(y1), x2 = mk_clamp(x2), y2 = mk_clamp(y2);
+    double dx = x2 - x1, dy = y2 - y1, len = hypot(dx, dy);
+    if (!(len > 0.5)) {
+        svg_circle(m, x2, y2, 2, color, "none", 0);
+        return;
+    }
+    double ux = dx / len, uy = dy / len, head = fmin(9 + 2 * width, 0.6 * len + 3);
+    /* the shaft stops where the head begins, so a thick line keeps a sharp point */
+    svg_line(m, x1, y1, x2 - ux * head * 0.7, y2 - uy * head * 0.7, color, width, dash);
+    mk_printf(m, "<path d=\"M%.2f %.2f L%.2f %.2f L%.2f %.2f Z\" fill=\"%s\"/>\n", x2, y2,
+              x2 - ux * head - uy * head * 0.4, y2 - uy * head + ux * head * 0.4,
+              x2 - ux * head + uy * head * 0.4, y2 - uy * head - ux * head * 0.4, color);
+}
+
+void svg_circle(Markup *m, double cx, double cy, double r, const char *fill, const char *stroke,
+                double width)
+{
+    mk_printf(m, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"%s\"", mk_clamp(cx),
+              mk_clamp(cy), mk_clamp(r), fill);
+    if (strcmp(stroke, "none") != 0)
+        mk_printf(m, " stroke=\"%s\" stroke-width=\"%.2g\"", stroke, width);
+    mk_printf(m, "/>\n");
+}
+
+void svg_rect(Markup *m, double x, double y, double w, double h, const char *fill,
+              const char *stroke, double width)
+{
+    mk_printf(m, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"%s\"",
+              mk_clamp(x), mk_clamp(y), mk_clamp(fmax(w, 0)), mk_clamp(fmax(h, 0)), fill);
+    if (strcmp(stroke, "none") != 0)
+        mk_printf(m, " stroke=\"%s\" stroke-width=\"%.2g\"", stroke, width);
+    mk_printf(m, "/>\n");
+}
+
+void svg_cross(Markup *m, double cx, double cy, double r, const char *color, double width)
+{
+    svg_line(m, cx - r, cy - r, cx + r, cy + r, color, width, NULL);
+    svg_line(m, cx - r, cy + r, cx + r, cy - r, color, width, NULL);
+}
+
+void svg_text(Markup *m, double x, double y, const char *anchor, double size, const char *color,
+              bool bold, const char *fmt, ...)
+{
+    char buf[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(buf, sizeof buf, fmt, ap);
+    va_end(ap);
+    char attr[48] = "";
+    if (strcmp(anchor, "start") != 0)
+        snprintf(attr, sizeof attr, " text-anchor=\"%.12s\"", anchor);
+    mk_printf(m, "<text x=\"%.2f\" y=\"%.2f\" font-size=\"%.3g\" fill=\"%s\"%s%s>",
+              mk_clamp(x), mk_clamp(y), size, color, bold ? " font-weight=\"bold\"" : "", attr);
+    mk_text(m, buf);
+    mk_printf(m, "</text>\n");
+}
+
+void svg_mark_want(Markup *m, double x, double y)
+{
+    svg_circle(m, x, y, 5.5, COL_WANT, "white", 1.5);
+}
+
+void svg_mark_got(Markup *m, double x, double y)
+{
+    svg_circle(m, x, y, 7.5, "none", COL_GOT, 2.2);
+    svg_cross(m, x, y, 4.2, COL_GOT, 2);
+}

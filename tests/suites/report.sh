@@ -1,0 +1,243 @@
+#!/bin/sh
+# The report page (out/report/index.html, OUT/<name>.html): faulty
+# submissions from tests/selftest, one per part at least, among them a
+# hard-case failure, a part that does not build and a missing file, graded
+# with `grade --all` (every part turned on); each page must be
+#   - valid HTML (tests/tools/htmlcheck_main.c: every tag closed, ids
+#     unique, attributes quoted, no <script>, every image present or a valid
+#     data: URI, no address on the network);
+#   - one figure per failing test, exactly;
+#   - clear about a part that did not build or a render that failed.
+# Then: `make grade` writes out/report/index.html and ends with its path; a
+# page that cannot be written changes neither the exit status nor the
+# results file; and, when a headless browser (chromium) is installed, the
+# page renders: its screenshot differs from a blank page's.  Without a
+# browser that check says it skipped and counts as passed.
+set -u
+unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
+grade=out/build/bin/grade
+check_html=out/build/bin/htmlcheck
+compare=out/build/bin/compare
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtreport.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+chmod 755 "$tmp"
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); }
+fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
+check() { what=$1; shift; if "$@"; then pass; else fail "$what"; fi; }
+
+for f in "$grade" "$check_html" "$compare"; do
+    if [ ! -x "$f" ]; then
+        echo "FAIL: $f is missing: run make first"
+        echo "0 passed, 1 failed"
+        exit 1
+    fi
+done
+if [ ! -d solutions ]; then
+    echo "FAIL: no solutions/ here: run this from the instructor's kit"
+    echo "0 passed, 1 failed"
+    exit 1
+fi
+
+# ---- the checker itself: it must be able to fail ---------------------------
+# One page that passes, then pages with one fault each, which must not.
+good='<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>t</title><style>p{color:red}</style></head>
+<body><p id="a">x &amp; y <a href="#a">here</a></p><img src="data:image/png;base64,iVBORw0KGgo=" alt="">
+<figure class="case"><svg width="4" height="4"><circle r="1"/></svg></figure></body></html>'
+printf '%s\n' "$good" >"$tmp/good.html"
+check "htmlcheck passes a good page" sh -c "'$check_html' '$tmp/good.html' >/dev/null 2>&1"
+check "htmlcheck counts its figure" sh -c "'$check_html' '$tmp/good.html' 2>/dev/null | grep -qx 'figures 1'"
+n=0
+while IFS='|' read -r what from to; do
+    n=$((n + 1))
+    printf '%s\n' "$good" | sed "s@${from}@${to}@" >"$tmp/bad$n.html"
+    if cmp -s "$tmp/good.html" "$tmp/bad$n.html"; then
+        fail "htmlcheck's bad page '$what' is no different from the good one"
+    elif "$check_html" "$tmp/bad$n.html" >/dev/null 2>&1; then
+        fail "htmlcheck passes a page with $what"
+    else
+        pass
+    fi
+done <<'EOF2'
+an element never closed|</p>|
+an end tag out of order|</a></p>|</p></a>
+an id used twice|<img |<img id="a" 
+an attribute not quoted|charset="utf-8"|charset=utf-8
+a script|<body>|<body><script>1</script>
+an event attribute|<p id|<p onclick="go()" id
+an image on the network|src="data:[^"]*"|src="https://example.com/a.png"
+an image addressed with //|src="data:[^"]*"|src="//example.com/a.png"
+an image that is missing|src="data:[^"]*"|src="missing.png"
+a data URI that is not base64|iVBORw0KGgo=|not base64!
+a PNG data URI that is not a PNG|iVBORw0KGgo=|AAAAAAAAAAA=
+a bare ampersand|x &amp; y|x \& y
+a link to a missing id|href="#a"|href="#nowhere"
+a style sheet that loads a file|p{color:red}|p{background:url(a.png)}
+no doctype|<!DOCTYPE html>|
+a div closed with />|<figure class|<div/><figure class
+EOF2
+
+# ---- faulty submissions ------------------------------------------------------
+# Those of Parts 1-3b graded as by default, those of Parts 4 and 5 with
+# those parts alone (every part is graded on its own: the others could only
+# show the reference's full marks).
+only45=$tmp/parts45.conf
+sed 's/^parts .*/parts 4 5/' tests/weights.conf >"$only45"
+mkdir "$tmp/subs" "$tmp/subs45"
+core="p1-w-h-swapped p2-y-not-flipped p3a-far-root p3b-first-hit textbook hostile-compile-error
+      hostile-missing-file hostile-segfault"
+flat="p4-hits-behind p5-strict-edges"
+for name in $core $flat; do
+    dir=tests/selftest/$name
+    case " $flat " in *" $name "*) to=$tmp/subs45/$name ;; *) to=$tmp/subs/$name ;; esac
+    mkdir "$to"
+    cp solutions/part*.c "$to/"
+    for f in "$dir"/part*.c; do [ -f "$f" ] && cp "$f" "$to/"; done
+    [ -f "$dir/MISSING" ] && rm -f "$to/$(cat "$dir/MISSING")"
+done
+mkdir "$tmp/subs/reference"
+cp solutions/part*.c "$tmp/subs/reference/"
+# A Part 1 that prints markup, an ampersand and bytes that are not UTF-8:
+# the page shows what it printed as text, and stays valid.
+core="$core markup-printer"
+mkdir "$tmp/subs/markup-printer"
+cp solutions/part*.c "$tmp/subs/markup-printer/"
+cat >"$tmp/subs/markup-printer/part1_image_plane.c" <<'EOF2'
+#include <stdio.h>
+#include "raytracer.h"
+
+void image_plane_size(double fov_degrees, double aspect, double d, double *w, double *h)
+{
+    printf("<script>alert(1)</script> <b id=\"scores\"> & &amp \xff\xfe \x01 ]]> <!--\n");
+    *h = 2 * d * tan(fov_degrees * M_PI / 360);
+    *w = aspect * *h + 1;
+}
+EOF2
+chmod -R a+rX "$tmp/subs" "$tmp/subs45"
+# The faulty part alone (its expect file names it; textbook's is 3a), two
+# at a time; Parts 4 and 5 through grade --all, which writes OUT/<name>.html.
+start=$(date +%s)
+mkdir "$tmp/grades"
+running=0
+for name in $core reference; do
+    p=$(sed -n 's/^part //p; s/^hard lost //p' "tests/selftest/$name/expect" 2>/dev/null | head -n 1)
+    [ "$name" = markup-printer ] && p=1
+    $grade --submission "$tmp/subs/$name" --part "${p:-1}" --results "$tmp/grades/$name.json" \
+        --report-file "$tmp/grades/$name.html" --quiet >"$tmp/grades/$name.out" 2>&1 &
+    running=$((running + 1))
+    if [ "$running" -ge 2 ]; then wait; running=0; fi
+done
+wait
+$grade --all "$tmp/subs45" --out "$tmp/grades" --weights "$only45" >"$tmp/all45.out" 2>&1
+status=$?
+check "grade --all ran on Parts 4 and 5 (exit $status)" [ "$status" -le 1 ]
+check "grade --all wrote a page per submission" \
+    sh -c "[ -s '$tmp/grades/p4-hits-behind.html' ] && [ -s '$tmp/grades/p5-strict-edges.html' ]"
+elapsed=$(( $(date +%s) - start ))
+echo "   graded $(( $(ls "$tmp/subs" | wc -l) + $(ls "$tmp/subs45" | wc -l) )) submissions with their pages in ${elapsed} s"
+subs="$core $flat"
+
+for name in $subs reference; do
+    page=$tmp/grades/$name.html
+    json=$tmp/grades/$name.json
+    if [ ! -s "$page" ]; then
+        fail "$name: no page $page"
+        continue
+    fi
+    pass
+    if "$check_html" "$page" >"$tmp/check.out" 2>&1; then
+        pass
+    else
+        fail "$name: the page is not valid:"
+        sed -n '1,8s/^/    | /p' "$tmp/check.out"
+    fi
+    figures=$(sed -n 's/^figures //p' "$tmp/check.out")
+    failing=$(grep -c '"status": "failed"' "$json")
+    check "$name: one figure per failing test ($figures figures, $failing failing tests)" \
+        [ "${figures:-x}" = "$failing" ]
+    # belt and braces: no script and no network address, whatever the checker says
+    check "$name: no <script>" sh -c "! grep -qi '<script' '$page'"
+    check "$name: no address on the network in src or href" \
+        sh -c "! grep -Eio '(src|href)=\"(https?:|//)[^\"]*\"' '$page' | grep -q ."
+    check "$name: the results file does not mention the page" sh -c "! grep -q 'html' '$json'"
+done
+page=$tmp/grades
+check "a submission that prints markup: the page shows it as text" \
+    grep -q '&lt;script&gt;alert(1)&lt;/script&gt;' "$page/markup-printer.html"
+check "a submission that prints bytes that are not UTF-8: they become U+FFFD" \
+    grep -q "$(printf '\357\277\275\357\277\275')" "$page/markup-printer.html"
+check "the reference's page: nothing failed" grep -q 'Nothing: every test passed' "$page/reference.html"
+check "the reference's page: its picture is exactly the reference's" \
+    grep -q 'exactly the reference' "$page/reference.html"
+check "a page per submission: the renders are there (3 images and the heat scale)" \
+    sh -c "'$check_html' '$page/p1-w-h-swapped.html' | grep -qx 'images 4'"
+check "a part that does not build: the page shows what the compiler said" \
+    grep -q 'Your file did not build' "$page/hostile-compile-error.html"
+check "a part that does not build: no render, and the page says why" \
+    grep -q 'could not be built into the renderer' "$page/hostile-compile-error.html"
+check "a missing file: the page says the file is missing" \
+    grep -q 'missing: the submission has no part3a_sphere_intersect.c' "$page/hostile-missing-file.html"
+check "a render that crashes: the page says so" grep -q 'crashed (signal' "$page/hostile-segfault.html"
+check "a hard-case failure: a zoomed-in window where the scale demands it" \
+    grep -q 'zoomed in' "$page/textbook.html"
+check "Part 3b's image tests: the two renders with the pixel marked" \
+    grep -q 'Your picture and the reference' "$page/p3b-first-hit.html"
+check "Part 5's mesh tests: the mesh seen along the ray" grep -q 'The mesh seen along the ray' \
+    "$page/p5-strict-edges.html"
+check "Part 1's figure: the frustum from the side" grep -q 'From the side' "$page/p1-w-h-swapped.html"
+check "Part 2's figure: the pixel grid" grep -q "pixels around pixel" "$page/p2-y-not-flipped.html"
+check "Part 4's figure: the plane edge on" grep -q 'plane seen edge on' "$page/p4-hits-behind.html"
+check "the scores are at the top" sh -c "grep -n 'id=\"scores\"' '$page/p3a-far-root.html' | \
+    awk -F: '{ exit !(\$1 < 80) }'"
+
+# ---- make grade: out/report/index.html, its path at the end ----------------
+make -s --no-print-directory grade SUBMISSION="$tmp/subs/p2-y-not-flipped" PART=2 >"$tmp/make.out" 2>&1
+check "make grade writes out/report/index.html" test -s out/report/index.html
+check "make grade's output ends with the page's path" \
+    sh -c "grep -v '^make' '$tmp/make.out' | tail -n 1 | grep -q 'out/report/index.html'"
+check "make grade's page is valid" sh -c "'$check_html' out/report/index.html >/dev/null 2>&1"
+
+# ---- a page that cannot be written changes nothing else ---------------------
+: >"$tmp/not-a-directory"
+$grade --submission "$tmp/subs/p1-w-h-swapped" --part 1 --results "$tmp/plain.json" >"$tmp/plain.out" 2>&1
+s1=$?
+$grade --submission "$tmp/subs/p1-w-h-swapped" --part 1 --results "$tmp/paged.json" \
+    --report-file "$tmp/not-a-directory/index.html" >"$tmp/paged.out" 2>"$tmp/paged.err"
+s2=$?
+check "an unwritable page: the same exit status ($s1, $s2)" [ "$s1" = "$s2" ]
+check "an unwritable page: it says so" grep -q 'report page was not written' "$tmp/paged.err"
+check "an unwritable page: the same results file" sh -c "[ \"\$(grep -v execution_time '$tmp/plain.json')\" = \"\$(grep -v execution_time '$tmp/paged.json')\" ]"
+
+# ---- the page renders in a browser, when one is installed --------------------
+browser=
+for b in chromium chromium-browser google-chrome; do
+    if command -v "$b" >/dev/null 2>&1; then browser=$b; break; fi
+done
+if [ -z "$browser" ]; then
+    echo "   skipped: no headless browser (chromium) installed, so the page was not rendered"
+    pass
+else
+    shot() {    # shot URL PNG: a screenshot with a fresh profile
+        profile=$(mktemp -d "$tmp/profile.XXXXXX")
+        timeout 120 "$browser" --headless --no-sandbox --disable-gpu --no-first-run \
+            --disable-background-networking --disable-component-update --disable-sync \
+            --user-data-dir="$profile" --hide-scrollbars --window-size=1280,1600 \
+            --screenshot="$2" "$1" >/dev/null 2>&1
+    }
+    printf '<!DOCTYPE html>\n<html><head><title>blank</title></head><body></body></html>\n' >"$tmp/blank.html"
+    shot "file://$tmp/blank.html" "$tmp/blank.png"
+    shot "file://$page/p3a-far-root.html" "$tmp/page.png"
+    if [ ! -s "$tmp/blank.png" ] || [ ! -s "$tmp/page.png" ]; then
+        fail "$browser made no screenshot"
+    else
+        differ=$("$compare" "$tmp/page.png" "$tmp/blank.png" 2>&1 |
+            sed -n 's/^ *pixels that differ: *\([0-9.]*\)%.*/\1/p')
+        check "the page renders in $browser: ${differ:-?}% of its screenshot differs from a blank page's" \
+            awk -v d="${differ:-0}" 'BEGIN { exit !(d >= 10) }'
+    fi
+fi
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

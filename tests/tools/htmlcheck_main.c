@@ -1,0 +1,441 @@
+/*
+ * htmlcheck - checks that an HTML page is well formed and self-contained,
+ * for the tests of the grader's report page (tests/suites/report.sh).
+ *
+ *     htmlcheck PAGE.html
+ *
+ * Checks, and says where each failure is (file:line: what):
+ *   - the page starts with <!DOCTYPE html>;
+ *   - every element is closed, in order (the void elements of HTML --
+ *     img, meta, br ... -- need no end tag; inside <svg> an element may
+ *     close itself with "/>", outside it only a void element may);
+ *   - every attribute value is quoted, no attribute appears twice in a tag,
+ *     every id is unique;
+ *   - "&" in text starts a character reference, "<" starts a tag;
+ *   - no <script>, no on... event attribute, no javascript: address;
+ *   - every src and href is a data: URI (base64 that decodes; a PNG one
+ *     must start with the PNG signature), a #fragment naming an id of the
+ *     page, or a relative path to a file that exists beside the page --
+ *     never an address on the network (a scheme such as http: or https:,
+ *     or one starting with //); the style sheet loads nothing (no url(),
+ *     no @import).
+ * Prints "figures N" (the <figure> elements of class "case"), "images N"
+ * and "elements N", then "ok" or the number of problems.  Exit status: 0
+ * when the page passes, 1 when it does not, 2 on bad usage.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <ctype.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <unistd.h>
+
+#define MAX_DEPTH 256
+#define MAX_IDS   20000
+
+static const char *path;
+static const char *text;
+static size_t len;
+static int problems;
+static char dir[4096];
+
+/* The line of text[at]. */
+static int line_of(size_t at)
+{
+    int line = 1;
+    for (size_t k = 0; k < at && k < len; k++)
+        line += text[k] == '\n';
+    return line;
+}
+
+/* Reports a problem at text[at] (the first 50 are printed), and counts it. */
+static void problem(size_t at, const char *what, const char *detail)
+{
+    if (problems < 50)
+        fprintf(stderr, "%s:%d: %s%s%s\n", path, line_of(at), what, detail ? ": " : "",
+                detail ? detail : "");
+    problems++;
+}
+
+/* The first place of needle in hay, ignoring case (strcasestr is not
+ * POSIX); NULL when there is none. */
+static const char *find_ci(const char *hay, const char *needle)
+{
+    size_t n = strlen(needle);
+    for (; *hay; hay++)
+        if (strncasecmp(hay, needle, n) == 0)
+            return hay;
+    return NULL;
+}
+
+/* Whether HTML's element name has no end tag. */
+static bool is_void(const char *name)
+{
+    static const char *const v[] = { "area", "base", "br", "col", "embed", "hr", "img", "input",
+                                     "link", "meta", "source", "track", "wbr", NULL };
+    for (int k = 0; v[k]; k++)
+        if (strcmp(name, v[k]) == 0)
+            return true;
+    return false;
+}
+
+/* Whether s[0 .. n-1] is base64 (with = padding at the end only). */
+static bool base64_ok(const char *s, size_t n, unsigned char *first, size_t nfirst)
+{
+    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    if (n == 0 || n % 4 != 0)
+        return false;
+    size_t out = 0;
+    unsigned acc = 0;
+    int bits = 0;
+    for (size_t k = 0; k < n; k++) {
+        const char *d = strchr(digits, s[k]);
+        if (s[k] == '=') {
+            if (k < n - 2 || (k == n - 2 && s[n - 1] != '='))
+                return false;
+            continue;
+        }
+        if (!d || !s[k])
+            return false;
+        acc = (acc << 6) | (unsigned)(d - digits);
+        bits += 6;
+        if (bits >= 8) {
+            bits -= 8;
+            if (out < nfirst)
+                first[out] = (unsigned char)(acc >> bits);
+            out++;
+        }
+    }
+    return true;
+}
+
+static char *ids[MAX_IDS];
+static size_t id_at[MAX_IDS];
+static int nids;
+/* Fragment links, checked once every id is known. */
+static char *frags[MAX_IDS];
+static size_t frag_at[MAX_IDS];
+static int nfrags;
+
+/* Checks the address v of a src or href attribute: a data: URI that
+ * decodes, a #fragment (checked at the end), or a file beside the page. */
+static void check_address(const char *attr, const char *v, size_t at)
+{
+    if (strncasecmp(v, "data:", 5) == 0) {
+        const char *comma = strchr(v, ',');
+        if (!comma) {
+            problem(at, "a data: URI without a comma", attr);
+            return;
+        }
+        size_t meta = (size_t)(comma - v);
+        bool b64 = meta >= 7 && strncmp(comma - 7, ";base64", 7) == 0;
+        unsigned char head[8] = { 0 };
+        if (b64 && !base64_ok(comma + 1, strlen(comma + 1), head, sizeof head))
+            problem(at, "a data: URI whose base64 is not valid", attr);
+        else if (b64 && strncmp(v, "data:image/png", 14) == 0
+                 && memcmp(head, "\x89PNG\r\n\x1a\n", 8) != 0)
+            problem(at, "a data: URI that says PNG but is not one", attr);
+        return;
+    }
+    if (v[0] == '#') {
+        if (nfrags < MAX_IDS) {
+            frags[nfrags] = strdup(v + 1);
+            frag_at[nfrags++] = at;
+        }
+        return;
+    }
+    if (strncmp(v, "//", 2) == 0) {
+        problem(at, "an address on the network", v);
+        return;
+    }
+    for (const char *p = v; *p && *p != '/' && *p != '?' && *p != '#'; p++)
+        if (*p == ':') {
+            problem(at, "an address with a scheme (only data: and relative paths are allowed)", v);
+            return;
+        }
+    if (!*v) {
+        problem(at, "an empty address", attr);
+        return;
+    }
+    char file[8192];
+    size_t n = strcspn(v, "?#");
+    snprintf(file, sizeof file, "%s/%.*s", dir, (int)n, v);
+    if (access(file, R_OK) != 0)
+        problem(at, "a file the page refers to is missing", v);
+}
+
+/* Checks that every & in text[from .. to-1] starts a character reference. */
+static void check_text_refs(size_t from, size_t to)
+{
+    for (size_t k = from; k < to; k++) {
+        if (text[k] != '&')
+            continue;
+        size_t j = k + 1;
+        if (j < to && text[j] == '#') {
+            j++;
+            bool hex = j < to && (text[j] == 'x' || text[j] == 'X');
+            j += hex;
+            size_t d = j;
+            while (j < to && (hex ? isxdigit((unsigned char)text[j]) : isdigit((unsigned char)text[j])))
+                j++;
+            if (j == d || j >= to || text[j] != ';')
+                problem(k, "a & that does not start a character reference", NULL);
+        } else {
+            size_t d = j;
+            while (j < to && isalnum((unsigned char)text[j]))
+                j++;
+            if (j == d || j >= to || text[j] != ';')
+                problem(k, "a & that does not start a character reference (write &amp;)", NULL);
+        }
+    }
+}
+
+/* Checks the page named; the exit status says whether it passed. */
+int main(int argc, char **argv)
+{
+    if (argc != 2) {
+        fprintf(stderr, "usage: htmlcheck PAGE.html\n");
+        return 2;
+    }
+    path = argv[1];
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        fprintf(stderr, "htmlcheck: cannot open %s\n", path);
+        return 1;
+    }
+    size_t cap = 1 << 20;
+    char *buf = malloc(cap + 1);
+    size_t n;
+    len = 0;
+    while (buf && (n = fread(buf + len, 1, cap - len, f)) > 0) {
+        len += n;
+        if (len == cap) {
+            char *nb = realloc(buf, 2 * cap + 1);
+            if (!nb) {
+                free(buf);
+                buf = NULL;
+                break;
+            }
+            buf = nb;
+            cap *= 2;
+        }
+    }
+    fclose(f);
+    if (!buf) {
+        fprintf(stderr, "htmlcheck: out of memory\n");
+        return 1;
+    }
+    buf[len] = '\0';
+    text = buf;
+    snprintf(dir, sizeof dir, "%s", path);
+    char *slash = strrchr(dir, '/');
+    if (slash)
+        *slash = '\0';
+    else
+        snprintf(dir, sizeof dir, ".");
+
+    if (strncasecmp(text, "<!DOCTYPE html>", 15) != 0)
+        problem(0, "the page does not start with <!DOCTYPE html>", NULL);
+    char stack[MAX_DEPTH][32];
+    size_t stack_at[MAX_DEPTH];
+    int depth = 0, svg_depth = 0, figures = 0, images = 0, elements = 0;
+    size_t k = strncasecmp(text, "<!DOCTYPE html>", 15) == 0 ? 15 : 0, text_from = k;
+    while (k < len) {
+        if (text[k] != '<') {
+            k++;
+            continue;
+        }
+        check_text_refs(text_from, k);
+        size_t at = k;
+        if (strncmp(text + k, "<!--", 4) == 0) {
+            const char *end = strstr(text + k + 4, "-->");
+            if (!end) {
+                problem(at, "a comment that never ends", NULL);
+                break;
+            }
+            k = (size_t)(end - text) + 3;
+            text_from = k;
+            continue;
+        }
+        bool closing = text[k + 1] == '/';
+        size_t p = k + 1 + closing;
+        char name[32];
+        size_t nl = 0;
+        while (p < len && (isalnum((unsigned char)text[p]) || text[p] == '-' || text[p] == ':') && nl < 31)
+            name[nl++] = (char)tolower((unsigned char)text[p++]);
+        name[nl] = '\0';
+        if (nl == 0) {
+            problem(at, "a < that does not start a tag (write &lt;)", NULL);
+            k++;
+            continue;
+        }
+        /* the attributes */
+        char attrs[64][40];
+        int nattr = 0;
+        bool self_close = false, is_case = false, broken = false;
+        while (p < len) {
+            while (p < len && isspace((unsigned char)text[p]))
+                p++;
+            if (text[p] == '>') {
+                p++;
+                break;
+            }
+            if (text[p] == '/' && text[p + 1] == '>') {
+                self_close = true;
+                p += 2;
+                break;
+            }
+            char an[40];
+            size_t al = 0;
+            while (p < len && !isspace((unsigned char)text[p]) && text[p] != '=' && text[p] != '>'
+                   && text[p] != '/' && al < 39)
+                an[al++] = (char)tolower((unsigned char)text[p++]);
+            an[al] = '\0';
+            if (al == 0) {
+                problem(p, "a broken tag", name);
+                broken = true;
+                break;
+            }
+            for (int q = 0; q < nattr; q++)
+                if (strcmp(attrs[q], an) == 0)
+                    problem(p, "an attribute given twice", an);
+            if (nattr < 64)
+                strcpy(attrs[nattr++], an);
+            if (text[p] != '=') {
+                problem(p, "an attribute without a quoted value", an);
+                continue;
+            }
+            p++;
+            char quote = text[p];
+            if (quote != '"' && quote != '\'') {
+                problem(p, "an attribute value that is not quoted", an);
+                while (p < len && !isspace((unsigned char)text[p]) && text[p] != '>')
+                    p++;
+                continue;
+            }
+            const char *end = memchr(text + p + 1, quote, len - p - 1);
+            if (!end) {
+                problem(p, "an attribute value that never ends", an);
+                broken = true;
+                break;
+            }
+            size_t vfrom = p + 1, vto = (size_t)(end - text);
+            check_text_refs(vfrom, vto);
+            char *v = strndup(text + vfrom, vto - vfrom);
+            if (closing)
+                problem(at, "an end tag with attributes", name);
+            if (strncmp(an, "on", 2) == 0)
+                problem(at, "an event attribute (JavaScript)", an);
+            if (find_ci(v, "javascript:"))
+                problem(at, "a javascript: address", an);
+            if (strcmp(an, "id") == 0) {
+                for (int q = 0; q < nids; q++)
+                    if (strcmp(ids[q], v) == 0) {
+                        char msg[200];
+                        snprintf(msg, sizeof msg, "%.60s (first at line %d)", v, line_of(id_at[q]));
+                        problem(at, "an id used twice", msg);
+                    }
+                if (nids < MAX_IDS) {
+                    ids[nids] = strdup(v);
+                    id_at[nids++] = at;
+                }
+            }
+            if (strcmp(an, "src") == 0 || strcmp(an, "href") == 0 || strcmp(an, "xlink:href") == 0) {
+                check_address(an, v, at);
+                if (strcmp(name, "img") == 0 || strcmp(name, "image") == 0)
+                    images++;
+            }
+            if (strcmp(an, "class") == 0 && strcmp(name, "figure") == 0) {
+                /* the words of the class */
+                for (char *w = strtok(v, " \t\n"); w; w = strtok(NULL, " \t\n"))
+                    is_case = is_case || strcmp(w, "case") == 0;
+            }
+            free(v);
+            p = vto + 1;
+        }
+        if (broken)
+            break;
+        k = p;
+        text_from = k;
+        if (strcmp(name, "script") == 0)
+            problem(at, "a <script> (the page must need no JavaScript)", NULL);
+        if (closing) {
+            if (depth == 0 || strcmp(stack[depth - 1], name) != 0) {
+                char msg[120];
+                snprintf(msg, sizeof msg, "</%s> where %s%s%s is open", name, depth ? "<" : "nothing",
+                         depth ? stack[depth - 1] : "", depth ? ">" : "");
+                problem(at, "an end tag out of order", msg);
+                /* recover: pop to the matching element if there is one */
+                for (int q = depth - 1; q >= 0; q--)
+                    if (strcmp(stack[q], name) == 0) {
+                        depth = q;
+                        break;
+                    }
+            } else {
+                depth--;
+            }
+            if (strcmp(name, "svg") == 0 && svg_depth > 0)
+                svg_depth--;
+            continue;
+        }
+        elements++;
+        figures += strcmp(name, "figure") == 0 && is_case;
+        if (self_close) {
+            if (!svg_depth && !is_void(name))
+                problem(at, "a non-void element closed with />, which HTML ignores", name);
+            continue;
+        }
+        if (!svg_depth && is_void(name))
+            continue;
+        if (strcmp(name, "svg") == 0)
+            svg_depth++;
+        /* raw text: everything up to the end tag */
+        if (strcmp(name, "style") == 0 || strcmp(name, "script") == 0 || strcmp(name, "textarea") == 0
+            || (strcmp(name, "title") == 0 && !svg_depth)) {
+            char endtag[40];
+            snprintf(endtag, sizeof endtag, "</%s>", name);
+            const char *end = find_ci(text + k, endtag);
+            if (!end) {
+                problem(at, "an element that never ends", name);
+                break;
+            }
+            if (strcmp(name, "style") == 0) {
+                char *css = strndup(text + k, (size_t)(end - text) - k);
+                if (find_ci(css, "url(") || find_ci(css, "@import") || strstr(css, "//"))
+                    problem(at, "the style sheet loads something (url(), @import or //)", NULL);
+                free(css);
+            }
+            k = (size_t)(end - text) + strlen(endtag);
+            text_from = k;
+            continue;
+        }
+        if (depth == MAX_DEPTH) {
+            problem(at, "elements nested too deep", name);
+            break;
+        }
+        snprintf(stack[depth], sizeof stack[depth], "%s", name);
+        stack_at[depth++] = at;
+    }
+    check_text_refs(text_from, len);
+    for (int q = depth - 1; q >= 0; q--)
+        problem(stack_at[q], "an element that is never closed", stack[q]);
+    for (int q = 0; q < nfrags; q++) {
+        bool found = false;
+        for (int r = 0; r < nids && !found; r++)
+            found = strcmp(ids[r], frags[q]) == 0;
+        if (!found)
+            problem(frag_at[q], "a link to an id the page does not have", frags[q]);
+        free(frags[q]);
+    }
+    for (int q = 0; q < nids; q++)
+        free(ids[q]);
+    printf("figures %d\nimages %d\nelements %d\n", figures, images, elements);
+    if (problems)
+        printf("%d problem%s\n", problems, problems == 1 ? "" : "s");
+    else
+        printf("ok\n");
+    free(buf);
+    return problems ? 1 : 0;
+}
