@@ -43,6 +43,7 @@
  * tests) is an error here: exit status 2.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "../tools/base64.h"
 #include "../tools/json_read.h"
 #include "../../labs/kit/numtext.h"

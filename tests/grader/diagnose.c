@@ -4,6 +4,7 @@
  * the probes' answers.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "diagnose.h"
 #include "../../labs/raytracer.h"
 

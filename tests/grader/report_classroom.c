@@ -5,6 +5,7 @@
  * kit's core score.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "report_classroom.h"
 #include "../tools/base64.h"
 #include "../tools/json.h"

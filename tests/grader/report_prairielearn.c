@@ -3,6 +3,7 @@
  * report_prairielearn.h for the fields and the choice of "gradable".
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "report_prairielearn.h"
 #include "../tools/json.h"
 

@@ -28,6 +28,7 @@
  * whole timeout of 1 to 600 seconds; prints "image I entrypoint E timeout T".
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "../tools/json_read.h"
 #include "../../labs/kit/numtext.h"
 

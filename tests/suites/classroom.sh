@@ -60,7 +60,7 @@ for (const line of fs.readFileSync(envFile, "utf-8").split("\n")) {
   const at = line.indexOf("=");
   if (at > 0) env[line.slice(0, at)] = line.slice(at + 1);
 }
-let shown = 0, shownMax = 0, counted = 0, countedMax = 0;
+let shown = 0, shownMax = 0, counted = 0, countedMax = 0;  // portable: JavaScript
 for (const id of runnersInput.split(",")) {
   const r = JSON.parse(Buffer.from(env[id.trim().toUpperCase() + "_RESULTS"], "base64").toString("utf-8"));
   const max = r.max_score || 0;
@@ -116,7 +116,7 @@ totals() {
     check "$label: the runner 'hard' is there and worth 0 ($hard)" [ "$hard" = "0 0 0" ]
     if [ -n "$have_node" ]; then
         if node "$tmp/totals.js" "$runners" "$envfile" >"$tmp/node.out" 2>"$tmp/node.err"; then
-            grep '_\(total\|max\) ' "$tmp/totals.out" >"$tmp/c.out"
+            grep -E '_(total|max) ' "$tmp/totals.out" >"$tmp/c.out"
             check "$label: JavaScript's totals are the C checker's" cmp -s "$tmp/c.out" "$tmp/node.out"
             cmp -s "$tmp/c.out" "$tmp/node.out" || diff "$tmp/c.out" "$tmp/node.out" | sed 's/^/    | /'
         else
@@ -225,7 +225,7 @@ check "student kit, reference: full marks" grep -q '^Score: 100 / 100' "$tmp/stu
 grade_kit student-partial "$tmp/partial"
 totals "student kit, partial" "$tmp/student-partial.kit" "$runners" "$tmp/student-partial.env" fail
 check "student kit, partial: partial credit" \
-    sh -c "grep '^Score: ' '$tmp/student-partial.kit' | grep -qv '^Score: \(0\|100\) '"
+    sh -c "grep '^Score: ' '$tmp/student-partial.kit' | grep -Eqv '^Score: (0|100) '"
 grade_kit student-zero "$kit/labs"
 totals "student kit, skeleton" "$tmp/student-zero.kit" "$runners" "$tmp/student-zero.env" fail
 check "student kit, skeleton: 0 points" grep -q '^Score: 0 / 100' "$tmp/student-zero.kit"

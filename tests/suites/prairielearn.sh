@@ -46,7 +46,7 @@ check "make prairielearn writes $q" [ -f "$q/info.json" ]
 [ -f "$q/info.json" ] || { cat "$tmp/make.log"; finish; }
 "$checker" --info "$q/info.json" >"$tmp/info.out" 2>&1
 check "info.json: external grading with the C image ($(cat "$tmp/info.out"))" [ $? -eq 0 ]
-entry=$(sed -n 's/^image .* entrypoint \/grade\/\([^ ]*\) timeout .*/\1/p' "$tmp/info.out")
+entry=$(sed -n 's/^image .* entrypoint \/grade\/\([^ ]*\) timeout .*/\1/p' "$tmp/info.out")  # portable: text
 check "the entrypoint /grade/$entry is in the question folder" [ -f "$q/$entry" ]
 parts=$(awk '$1 == "parts" { for (k = 2; k <= NF; k++) print $k }' tests/weights.conf)
 want=""

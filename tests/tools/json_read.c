@@ -2,6 +2,7 @@
  * json_read.c - the JSON reader.  See json_read.h.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "json_read.h"
 
 #include <stdint.h>

@@ -47,7 +47,7 @@ static void test_every_spelling(void)
         "#inc\\\nlude \"/k/r\\\nef.c\"\n",                 /* backslash-newline splices */
         "#inc\\\r\nlude \"/k/ref.c\"\r\n",                  /* the same with CR LF */
         "%:include \"/k/ref.c\"\n",                          /* the digraph for # */
-        "?" "?=include \"/k/ref.c\"\n",                    /* the trigraph for # */
+        "\?\?=include \"/k/ref.c\"\n",                     /* the trigraph for # */
         "int a; /* a comment\n spanning lines */ \n#include \"/k/ref.c\"\n",
     };
     for (int k = 0; k < (int)(sizeof spellings / sizeof *spellings); k++) {
@@ -66,7 +66,7 @@ static void test_not_includes(void)
         "const char *s = \"#include \\\"/k/ref.c\\\"\";\n",
         "int include = 1; x = y # include;\n",
         "#define F \"/k/ref.c\"\n#include F\n",          /* a macro: seen after compiling */
-        "#includes \"/k/ref.c\"\n" "#include \"/k/ref.c\n",
+        "#includes \"/k/ref.c\"\n#include \"/k/ref.c\n",
     };
     for (int k = 0; k < (int)(sizeof others / sizeof *others); k++) {
         Found f = scan(others[k]);
