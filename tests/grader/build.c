@@ -264,9 +264,10 @@ static int check_dependencies(const BuildConfig *cfg, Build *b, const char *depf
 static void build_say(Build *b, const char *what, const char *name)
 {
     size_t old = b->messages ? strlen(b->messages) : 0;
-    char *m = realloc(b->messages, old + strlen(what) + strlen(name) + 4);
+    size_t room = strlen(what) + strlen(name) + 4;
+    char *m = realloc(b->messages, old + room);
     if (m) {
-        sprintf(m + old, "%s%s\n", what, name);
+        snprintf(m + old, room, "%s%s\n", what, name);
         b->messages = m;
     }
 }

@@ -4,6 +4,7 @@
  * returned hit, and, where the scale demands it, a zoomed-in window.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "fig_ray.h"
 #include "figures.h"
 

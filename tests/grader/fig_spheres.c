@@ -4,6 +4,7 @@
  * of the spheres a ray meets, by t.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "figures.h"
 #include "fig_ray.h"
 

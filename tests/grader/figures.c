@@ -3,6 +3,7 @@
  * (windows, clipped lines and circles, numbers, the legend).
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "figures.h"
 
 #include <math.h>

@@ -14,6 +14,7 @@
  * the renderer does, and checks that the count is right.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "raytracer.h"
 
 #include <stdio.h>

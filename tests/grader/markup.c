@@ -2,6 +2,7 @@
  * markup.c - see markup.h.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "markup.h"
 #include "kit/png.h"
 

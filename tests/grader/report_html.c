@@ -15,6 +15,7 @@
  * renamed into place (kit_save_file).
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "report.h"
 #include "figures.h"
 #include "markup.h"

@@ -5,6 +5,7 @@
  * read from a PNG file (see report.h).
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "report.h"
 #include "build.h"
 #include "sandbox.h"

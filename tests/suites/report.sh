@@ -219,10 +219,13 @@ if [ -z "$browser" ]; then
     echo "   skipped: no headless browser (chromium) installed, so the page was not rendered"
     pass
 else
+    limited() {     # limited COMMAND...: at most 120 s where timeout(1) exists
+        if command -v timeout >/dev/null 2>&1; then timeout 120 "$@"; else "$@"; fi  # portable: guarded
+    }
     shot() {    # shot URL PNG: a screenshot with a fresh profile
         profile=$(mktemp -d "$tmp/profile.XXXXXX")
-        timeout 120 "$browser" --headless --no-sandbox --disable-gpu --no-first-run \
-            --disable-background-networking --disable-component-update --disable-sync \
+        quiet="--disable-background-networking --disable-component-update --disable-sync"  # portable: chromium's flags
+        limited "$browser" --headless --no-sandbox --disable-gpu --no-first-run $quiet \
             --user-data-dir="$profile" --hide-scrollbars --window-size=1280,1600 \
             --screenshot="$2" "$1" >/dev/null 2>&1
     }

@@ -24,6 +24,7 @@
  * when the page passes, 1 when it does not, 2 on bad usage.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include <ctype.h>
 #include <stdbool.h>
 #include <stdio.h>
