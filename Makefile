@@ -172,7 +172,7 @@ HAVE_ORACLE := $(wildcard tests/oracle/oracle.h)
 HAVE_HIDDEN := $(wildcard tests/hidden/hidden.c)
 GRADER_LIB_SRC = tests/grader/cases.c tests/grader/check.c tests/grader/sandbox.c \
                  tests/grader/build.c tests/grader/include_scan.c tests/grader/config.c tests/grader/grade.c \
-                 tests/grader/report_table.c tests/grader/report_json.c tests/grader/includes.c \
+                 tests/grader/report_table.c tests/grader/report_json.c \
                  tests/grader/diagnose.c \
                  tests/grader/report_render.c tests/grader/report_html.c tests/grader/markup.c \
                  $(wildcard tests/grader/fig*.c)

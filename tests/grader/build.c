@@ -5,7 +5,6 @@
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "build.h"
 #include "grader.h"
-#include "includes.h"
 #include "include_scan.h"
 #include "sandbox.h"
 
@@ -120,6 +119,14 @@ static void say(Build *b, const char *text)
     }
 }
 
+/* Appends the line "what name" to b->messages. */
+static void build_say(Build *b, const char *what, const char *name)
+{
+    say(b, what);
+    say(b, name);
+    say(b, "\n");
+}
+
 /* Runs the compiler in the sandbox in b->dir/src; 0 if it succeeded, 1 if
  * not (its messages, and why it was stopped, in b->messages), -1 when the
  * sandbox itself failed. */
@@ -156,18 +163,6 @@ static int run_cc(const BuildConfig *cfg, Build *b, char **argv, char *err, size
     return ok ? 0 : 1;
 }
 
-/* Appends a line to b->messages. */
-static void note(Build *b, const char *fmt, const char *what)
-{
-    size_t old = b->messages ? strlen(b->messages) : 0;
-    size_t add = strlen(fmt) + strlen(what) + 1;
-    char *m = realloc(b->messages, old + add);
-    if (m) {
-        snprintf(m + old, add, fmt, what);
-        b->messages = m;
-    }
-}
-
 /* Is name, as the compiler would find it from the build's src directory,
  * a file of the kit (the reference, the hidden tests)?  The grader's own
  * realpath, not the compiler's reading, decides: the compiler may run as a
@@ -186,43 +181,21 @@ static bool inside_kit(const BuildConfig *cfg, const Build *b, const char *name)
            (real[rootlen] == '/' || real[rootlen] == '\0');
 }
 
-#define REFUSED "refused: the file includes %s, which is part of the grader\n"
-
 typedef struct {
     const BuildConfig *cfg;
-    Build *b;
-    int refused;
-} Scan;
+    const Build *b;
+} KitJudge;
 
-static int refuse_kit_include(const char *name, bool angled, void *ctx)
+static const char *judge_kit_file(const char *name, void *ctx)
 {
-    Scan *s = ctx;
-    (void)angled;
-    if (inside_kit(s->cfg, s->b, name)) {
-        note(s->b, REFUSED, name);
-        s->refused++;
-    }
-    return 0;
+    const KitJudge *k = ctx;
+    return inside_kit(k->cfg, k->b, name) ? "which is part of the grader" : NULL;
 }
 
-/* Before compiling: the literal #include lines of the copied file.
- * Returns 0, or 1 with a message when one names a file of the kit. */
-static int check_includes(const BuildConfig *cfg, Build *b, const char *file)
-{
-    FILE *f = fopen(file, "rb");
-    if (!f)
-        return 0;
-    static char text[SOURCE_MAX + 1];
-    size_t n = fread(text, 1, SOURCE_MAX, f);
-    fclose(f);
-    Scan s = { cfg, b, 0 };
-    includes_scan(text, n, refuse_kit_include, &s);
-    return s.refused > 0;
-}
-
-/* Refuses a stage file (copied to path) that names a device, a pipe or a
- * system file to the preprocessor (include_scan.h); 1 with a message, or 0. */
-static int scan_includes(Build *b, const char *path, const char *dir)
+/* Before compiling: refuses a stage file (copied to path) that names to
+ * the preprocessor a file of the kit, a device, a pipe or a system file
+ * (include_scan.h); 1 with a message, or 0. */
+static int scan_includes(const BuildConfig *cfg, Build *b, const char *path, const char *dir)
 {
     FILE *f = fopen(path, "rb");
     char *text = malloc(SOURCE_MAX + 1);
@@ -230,7 +203,8 @@ static int scan_includes(Build *b, const char *path, const char *dir)
     if (f)
         fclose(f);
     char why[400], line[460];
-    int refused = text ? include_scan(text, n, dir, why, sizeof why) : 0;
+    KitJudge kit = { cfg, b };
+    int refused = text ? include_scan_judged(text, n, dir, judge_kit_file, &kit, why, sizeof why) : 0;
     free(text);
     if (refused) {
         snprintf(line, sizeof line, "refused: %s\n", why);
@@ -252,24 +226,12 @@ static int check_dependencies(const BuildConfig *cfg, Build *b, const char *depf
         if (strchr(word, ':') || strcmp(word, "\\") == 0)
             continue;
         if (inside_kit(cfg, b, word)) {
-            note(b, REFUSED, word);
+            build_say(b, "refused: the file includes a file of the grader: ", word);
             status = 1;
         }
     }
     fclose(f);
     return status;
-}
-
-/* Appends a line to b->messages (for the student); never fails. */
-static void build_say(Build *b, const char *what, const char *name)
-{
-    size_t old = b->messages ? strlen(b->messages) : 0;
-    size_t room = strlen(what) + strlen(name) + 4;
-    char *m = realloc(b->messages, old + room);
-    if (m) {
-        snprintf(m + old, room, "%s%s\n", what, name);
-        b->messages = m;
-    }
 }
 
 /* Builds b->dir/src/runner from the prebuilt harness object harness (a file
@@ -344,7 +306,7 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
             build_say(b, cerr, "");
             return 0;
         }
-        if (check_includes(cfg, b, to) || scan_includes(b, to, src))
+        if (scan_includes(cfg, b, to, src))
             return 0;
         char *argv[] = { (char *)cfg->cc, "-std=c11", "-O1", "-ffp-contract=off", "-Wall", "-Wextra",
                          "-I.", "-MD", "-MF", dfile, "-c", cfile, "-o", ofile, NULL };

@@ -19,6 +19,8 @@ typedef struct {
     char *why;
     size_t whylen;
     int refused;
+    IncludeJudge judge;        /* one more judgement of each name, or NULL */
+    void *ctx;
 } Scan;
 
 /* True for /dev, /proc, /sys and anything under them. */
@@ -85,7 +87,8 @@ static int check_name(Scan *sc, const char *name, size_t n)
         return refuse(sc, name, n, S_ISFIFO(st.st_mode) ? "which is a pipe, not a header"
                                    : S_ISDIR(st.st_mode) ? "which is a folder, not a header"
                                                          : "which is a device, not a header");
-    return 0;
+    const char *reason = sc->judge ? sc->judge(raw, sc->ctx) : NULL;
+    return reason ? refuse(sc, name, n, reason) : 0;
 }
 
 /* Skips blanks and comments, not newlines. */
@@ -203,7 +206,7 @@ static void destringize_pragma(Scan *sc)
             k++;
         text[m++] = sc->s[k];
     }
-    Scan inner = { text, m, 0, sc->dir, sc->why, sc->whylen, sc->refused };
+    Scan inner = { text, m, 0, sc->dir, sc->why, sc->whylen, sc->refused, sc->judge, sc->ctx };
     pragma(&inner);
     sc->refused = inner.refused;
     free(text);
@@ -257,13 +260,19 @@ static char *phases_1_2(const char *text, size_t len, size_t *n)
 
 int include_scan(const char *text, size_t len, const char *dir, char *why, size_t whylen)
 {
+    return include_scan_judged(text, len, dir, NULL, NULL, why, whylen);
+}
+
+int include_scan_judged(const char *text, size_t len, const char *dir, IncludeJudge judge, void *ctx,
+                        char *why, size_t whylen)
+{
     size_t n = 0;
     char *s = phases_1_2(text, len, &n);
     if (!s) {
         snprintf(why, whylen, "the grader ran out of memory reading the file");
         return 1;
     }
-    Scan sc = { s, n, 0, dir, why, whylen, 0 };
+    Scan sc = { s, n, 0, dir, why, whylen, 0, judge, ctx };
     bool line_start = true;
     while (sc.i < sc.n && !sc.refused) {
         char c = s[sc.i];

@@ -27,4 +27,11 @@
  * .incbin anywhere in the code. */
 int include_scan(const char *text, size_t len, const char *dir, char *why, size_t whylen);
 
+/* The same, with one more judgement of each name: judge(name, ctx) returns
+ * NULL to accept it, or the reason to refuse it ("which is part of the
+ * grader"), said the same way. */
+typedef const char *(*IncludeJudge)(const char *name, void *ctx);
+int include_scan_judged(const char *text, size_t len, const char *dir, IncludeJudge judge, void *ctx,
+                        char *why, size_t whylen);
+
 #endif

@@ -135,7 +135,52 @@ static void test_not_at_line_start(void)
     teardown();
 }
 
+/* The judge (the grader's: a file of the kit) sees each name however the
+ * directive is spelt, and nothing the compiler would not follow. */
+static const char *refuse_ref(const char *name, void *ctx)
+{
+    (*(int *)ctx)++;
+    return strcmp(name, "/k/ref.c") == 0 ? "which is part of the grader" : NULL;
+}
+
+static int judged(const char *text, int *seen)
+{
+    char why[400] = "";
+    *seen = 0;
+    return include_scan_judged(text, strlen(text), "/nonexistent", refuse_ref, seen, why, sizeof why);
+}
+
+static void test_judge_every_spelling(void)
+{
+    static const char *const spellings[] = {
+        "  #  include   \"/k/ref.c\"\n",
+        "#/* a comment */include /* another */ \"/k/ref.c\"\n",
+        "#inc\\\nlude \"/k/r\\\nef.c\"\n",
+        "#inc\\\r\nlude \"/k/ref.c\"\r\n",
+        "%:include \"/k/ref.c\"\n",
+        "\?\?=include \"/k/ref.c\"\n",
+        "int a; /* a comment\n spanning lines */ \n#include </k/ref.c>\n",
+    };
+    for (int k = 0; k < (int)(sizeof spellings / sizeof *spellings); k++) {
+        int seen;
+        CHECK_MSG(judged(spellings[k], &seen) == 1, "spelling %d not refused", k);
+    }
+    static const char *const others[] = {
+        "// #include \"/k/ref.c\"\n",
+        "/* #include \"/k/ref.c\" */\n",
+        "const char *s = \"#include \\\"/k/ref.c\\\"\";\n",
+        "// a comment \\\n#include \"/k/ref.c\"\n",
+        "#include \"other.h\"\n",
+    };
+    for (int k = 0; k < (int)(sizeof others / sizeof *others); k++) {
+        int seen;
+        CHECK_MSG(judged(others[k], &seen) == 0, "case %d refused", k);
+        CHECK_MSG(seen == (k == 4), "case %d: the judge saw %d names", k, seen);
+    }
+}
+
 static const CheckTest tests[] = {
+    CHECK_TEST(test_judge_every_spelling),
     CHECK_TEST(test_devices_by_name), CHECK_TEST(test_what_names_lead_to), CHECK_TEST(test_directive_spellings),
     CHECK_TEST(test_passes),          CHECK_TEST(test_not_at_line_start),
 };
