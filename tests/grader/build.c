@@ -130,7 +130,7 @@ static void build_say(Build *b, const char *what, const char *name)
 /* Runs the compiler in the sandbox in b->dir/src; 0 if it succeeded, 1 if
  * not (its messages, and why it was stopped, in b->messages), -1 when the
  * sandbox itself failed. */
-static int run_cc(const BuildConfig *cfg, Build *b, char **argv, char *err, size_t errlen)
+static int run_cc(const BuildConfig *cfg, Build *b, char **argv, double *cpu, char *err, size_t errlen)
 {
     char src[600];
     snprintf(src, sizeof src, "%s/src", b->dir);
@@ -143,6 +143,7 @@ static int run_cc(const BuildConfig *cfg, Build *b, char **argv, char *err, size
     (void)cfg;
     if (sandbox_run(&spec, &res, err, errlen) != 0)
         return -1;
+    *cpu += res.cpu_seconds;
     say(b, res.output);
     char why[200] = "";
     if (res.timed_out)
@@ -310,7 +311,7 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
             return 0;
         char *argv[] = { (char *)cfg->cc, "-std=c11", "-O1", "-ffp-contract=off", "-Wall", "-Wextra",
                          "-I.", "-MD", "-MF", dfile, "-c", cfile, "-o", ofile, NULL };
-        int rc = run_cc(cfg, b, argv, err, errlen);
+        int rc = run_cc(cfg, b, argv, &b->cpu_compile, err, errlen);
         if (rc < 0)
             return -1;
         if (rc > 0)
@@ -341,7 +342,7 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
     link[nlink++] = "-o";
     link[nlink++] = "runner";
     link[nlink] = NULL;
-    int rc = run_cc(cfg, b, link, err, errlen);
+    int rc = run_cc(cfg, b, link, &b->cpu_link, err, errlen);
     if (rc < 0)
         return -1;
     b->ok = rc == 0;

@@ -28,6 +28,8 @@ typedef struct {
     char rundir[600];          /* the empty working directory for its runs      */
     bool ok;
     char *messages;            /* the compiler's output (malloc'd, may be "")   */
+    double cpu_compile;        /* CPU seconds of the compiler's runs, compiling */
+    double cpu_link;           /* and linking                                   */
 } Build;
 
 #include "grader.h"

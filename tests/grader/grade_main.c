@@ -50,7 +50,7 @@ static void usage(void)
     fprintf(stderr,
             "usage: grade [--submission DIR] [--part 1|2|3a|3b|4|5] [--results FILE] [--quiet]\n"
             "             [--format gradescope|prairielearn] [--classroom FILE]\n"
-            "             [--report DIR | --report-file FILE]\n"
+            "             [--report DIR | --report-file FILE] [--cost]\n"
             "       grade --all DIR [--out DIR] [--jobs N]\n"
             "       either with --weights FILE (default tests/weights.conf)\n"
             "exit status: 0 full marks, 1 points lost, 2 the grader could not run\n");
@@ -60,6 +60,7 @@ static void usage(void)
 /* The --format of the results file, and the --classroom file (or NULL). */
 static bool results_prairielearn;
 static const char *classroom_path;
+static bool show_cost;             /* --cost: where grading's CPU time went */
 
 static int fail(const char *results, const char *fmt, const char *what)
 {
@@ -213,6 +214,15 @@ static int grade_one(const char *submission, const char *part, const char *resul
     }
     if (!quiet)
         report_table(stdout, &g, &cfg, submission);
+    if (show_cost) {
+        /* The whole process: the grader's own CPU (reading the tests
+         * included) and every child it waited for. */
+        double self = sandbox_cpu(true), total = self + sandbox_cpu(false);
+        printf("cost (CPU seconds): compiling %.3f, linking %.3f, tests %.3f, probes %.3f, "
+               "the grader %.3f; total %.3f = %.2f x compiling\n", g.cpu_compile, g.cpu_link,
+               g.cpu_tests, g.cpu_probes, self, total,
+               g.cpu_compile > 0 ? total / g.cpu_compile : 0);
+    }
     int status = g.total < g.total_max || g.bonus < g.bonus_max ? 1 : 0;
     if (results && (results_prairielearn ? report_prairielearn(results, &g, err, sizeof err)
                                          : report_json(results, &g, &cfg, submission, err, sizeof err)) != 0) {
@@ -441,6 +451,8 @@ int main(int argc, char **argv)
             quiet = true;
         else if (!strcmp(a, "--summary"))
             summary = true;
+        else if (!strcmp(a, "--cost"))
+            show_cost = true;
         else if (!strcmp(a, "--format") && v)
             format = v, k++;
         else if (!strcmp(a, "--classroom") && v)

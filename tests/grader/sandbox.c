@@ -35,6 +35,15 @@ double sandbox_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+double sandbox_cpu(bool self)
+{
+    struct rusage ru;
+    if (getrusage(self ? RUSAGE_SELF : RUSAGE_CHILDREN, &ru) != 0)
+        return 0;
+    return (double)ru.ru_utime.tv_sec + 1e-6 * (double)ru.ru_utime.tv_usec +
+           (double)ru.ru_stime.tv_sec + 1e-6 * (double)ru.ru_stime.tv_usec;
+}
+
 bool sandbox_drops_privileges(void)
 {
     return geteuid() == 0;
@@ -237,7 +246,7 @@ int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t e
     if (pipe(out_p) != 0)
         goto fail_pipe2;
 
-    double start = sandbox_now();
+    double start = sandbox_now(), cpu_start = sandbox_cpu(false);
     pid_t pid = fork();
     if (pid < 0) {
         snprintf(err, errlen, "fork: %s", strerror(errno));
@@ -342,6 +351,7 @@ int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t e
         close(out_fd);
 
     res->seconds = sandbox_now() - start;
+    res->cpu_seconds = sandbox_cpu(false) - cpu_start;
     bool killed = res->timed_out || res->memory_exceeded;
     res->exit_code = WIFEXITED(status) && !killed ? WEXITSTATUS(status) : -1;
     res->signal = WIFSIGNALED(status) && !killed ? WTERMSIG(status) : 0;

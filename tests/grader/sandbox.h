@@ -55,6 +55,8 @@ typedef struct {
     int exit_code;             /* the exit status, or -1 when killed          */
     int signal;                /* the signal that ended it, or 0             */
     double seconds;
+    double cpu_seconds;        /* user and system CPU of the child and of the
+                                  processes it waited for (the compiler's)   */
 } SandboxResult;
 
 /* Runs spec's program.  Returns 0 when it ran (whatever it did), or -1 when
@@ -73,5 +75,8 @@ int sandbox_give(const char *path);
 
 /* Seconds on a monotonic clock. */
 double sandbox_now(void);
+/* CPU seconds (user and system) used so far by this process (self) or by
+ * the children it has waited for (!self). */
+double sandbox_cpu(bool self);
 
 #endif
