@@ -1,32 +1,95 @@
 #!/bin/sh
 # Runs every suite of the kit's own tests and adds up their counts.
 # Each suite prints "N passed, N failed" as its last line; so does this,
-# with the failing checks' names just above it, so that a failure in a long
-# log is found at once.
+# with the failing checks' names and then how long it took just above it,
+# so that a failure in a long log is found at once.
+#
+# The suites run at the same time, in lanes: a lane runs its suites one
+# after the other, and the lanes run side by side.  Suites that build the
+# same thing share a lane (student_kit.sh and classroom.sh both make the
+# student kit), and so do the unit tests.  Each suite's output is kept
+# apart and shown whole, in a fixed order, once all have finished.
 # Usage: sh tests/run.sh            (after make; `make test` does both)
+#        sh tests/run.sh SUITE...    only these (names as shown, e.g. grader.sh)
 set -u
-passed=0
-failed=0
+dir=out/tests/run
 log=out/tests/log
 failures=out/tests/failures
 mkdir -p out/tests
+rm -rf "$dir"
+mkdir -p "$dir"
 : >"$log"
 : >"$failures"
+start=$(date +%s)
 
-suite() {   # suite NAME COMMAND...: run, show its output, add its counts
-    name=$1
-    shift
-    printf '== %s\n' "$name"
-    "$@" >out/tests/suite.out 2>&1
-    status=$?
-    cat out/tests/suite.out
-    cat out/tests/suite.out >>"$log"
-    grep '^FAIL' out/tests/suite.out | sed "s|^|   $name: |" >>"$failures"
-    counts=$(tail -n 1 out/tests/suite.out | sed -n 's/^\(.*[^0-9]\)\{0,1\}\([0-9][0-9]*\) passed, \([0-9][0-9]*\) failed.*$/\2 \3/p')
+# The items, in the order they are shown: "name|command".
+items=$dir/items
+: >"$items"
+for t in out/build/tests/test_*; do
+    [ -x "$t" ] && printf 'unit: %s|%s\n' "${t##*/}" "$t" >>"$items"
+done
+for t in out/asan/tests/test_*; do
+    [ -x "$t" ] && printf 'unit, sanitizers: %s|%s\n' "${t##*/}" "$t" >>"$items"
+done
+for s in tests/suites/*.sh; do
+    [ -f "$s" ] && printf '%s|sh %s\n' "${s##*/}" "$s" >>"$items"
+done
+if [ $# -gt 0 ]; then
+    for want in "$@"; do
+        grep "^$want|" "$items"
+    done >"$items.only"
+    mv "$items.only" "$items"
+fi
+
+# lane_of NAME: the lane a suite runs in.
+lane_of() {
+    case $1 in
+    unit*) echo unit ;;
+    student_kit.sh | classroom.sh) echo kit ;;
+    *) echo "$1" ;;
+    esac
+}
+
+# run_item N NAME COMMAND: runs one, keeping its output, status and seconds.
+run_item() {
+    t0=$(date +%s)
+    sh -c "$3" >"$dir/$1.out" 2>&1
+    echo $? >"$dir/$1.status"
+    echo $(($(date +%s) - t0)) >"$dir/$1.seconds"
+}
+
+# Number the items, group them by lane, start each lane in the background.
+n=0
+while IFS='|' read -r name cmd; do
+    n=$((n + 1))
+    printf '%s|%s|%s\n' "$n" "$name" "$cmd" >>"$dir/lane.$(lane_of "$name" | tr -c 'a-zA-Z0-9_.\n' _)"
+done <"$items"
+for lane in "$dir"/lane.*; do
+    [ -f "$lane" ] || continue
+    (
+        while IFS='|' read -r k name cmd; do
+            run_item "$k" "$name" "$cmd"
+        done <"$lane"
+    ) &
+done
+wait
+
+passed=0
+failed=0
+k=0
+while IFS='|' read -r name cmd; do
+    k=$((k + 1))
+    out=$dir/$k.out
+    status=$(cat "$dir/$k.status" 2>/dev/null || echo 127)
+    printf '== %s (%s s)\n' "$name" "$(cat "$dir/$k.seconds" 2>/dev/null || echo '?')"
+    cat "$out"
+    cat "$out" >>"$log"
+    grep '^FAIL' "$out" | sed "s|^|   $name: |" >>"$failures"
+    counts=$(tail -n 1 "$out" | sed -n 's/^\(.*[^0-9]\)\{0,1\}\([0-9][0-9]*\) passed, \([0-9][0-9]*\) failed.*$/\2 \3/p')
     if [ -z "$counts" ]; then
         echo "   $name printed no count (exit $status): counted as 1 failed" | tee -a "$failures"
         failed=$((failed + 1))
-        return
+        continue
     fi
     set -- $counts
     passed=$((passed + $1))
@@ -35,22 +98,14 @@ suite() {   # suite NAME COMMAND...: run, show its output, add its counts
         echo "   $name exited $status with no failure counted: counted as 1 failed" | tee -a "$failures"
         failed=$((failed + 1))
     fi
-}
-
-for t in out/build/tests/test_*; do
-    [ -x "$t" ] && suite "unit: ${t##*/}" "$t"
-done
-for t in out/asan/tests/test_*; do
-    [ -x "$t" ] && suite "unit, sanitizers: ${t##*/}" "$t"
-done
-for s in tests/suites/*.sh; do
-    [ -f "$s" ] && suite "${s##*/}" sh "$s"
-done
+done <"$items"
 
 if [ -s "$failures" ]; then
     echo
     echo "Failed:"
     cat "$failures"
 fi
+lanes=$(ls "$dir" | grep -c '^lane\.')
+echo "took $(($(date +%s) - start)) s ($k suites in $lanes lanes side by side)"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -215,6 +215,11 @@ static void run_batch(const GradeOptions *opt, const Build *b, const TestList *t
         return;
     if (res.exit_code != 0 || res.signal || res.timed_out || res.memory_exceeded ||
         res.answer_truncated) {
+        if (opt->verbose)
+            fprintf(stderr, "  Part %s: the %d tests together: %s; each runs alone\n", part_label(part),
+                    ntests, res.timed_out ? "out of time" : res.memory_exceeded ? "out of memory"
+                    : res.signal ? "it crashed" : res.answer_truncated ? "too much output"
+                    : "it exited early");
         sandbox_result_free(&res);
         return;
     }
@@ -245,10 +250,13 @@ static void run_batch(const GradeOptions *opt, const Build *b, const TestList *t
         p = q;
     }
     if (got != ntests || p != end) {
+        if (opt->verbose)
+            fprintf(stderr, "  Part %s: the %d tests together: answers malformed; each runs alone\n",
+                    part_label(part), ntests);
         sandbox_result_free(&res);
         return;
     }
-    int j = 0;
+    int j = 0, passed = 0;
     for (int k = 0; k < tests->n; k++) {
         const Test *t = &tests->tests[k];
         if (t->part != part)
@@ -270,7 +278,11 @@ static void run_batch(const GradeOptions *opt, const Build *b, const TestList *t
         r->seconds = res.seconds / ntests;
         r->output = xasprintf("%s", "");
         done[k] = true;
+        passed++;
     }
+    if (opt->verbose)
+        fprintf(stderr, "  Part %s: the %d tests together: %d passed; %d run alone\n", part_label(part),
+                ntests, passed, ntests - passed);
     sandbox_result_free(&res);
 }
 

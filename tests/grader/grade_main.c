@@ -50,7 +50,7 @@ static void usage(void)
     fprintf(stderr,
             "usage: grade [--submission DIR] [--part 1|2|3a|3b|4|5] [--results FILE] [--quiet]\n"
             "             [--format gradescope|prairielearn] [--classroom FILE]\n"
-            "             [--report DIR | --report-file FILE] [--cost]\n"
+            "             [--report DIR | --report-file FILE] [--cost] [--verbose]\n"
             "       grade --all DIR [--out DIR] [--jobs N]\n"
             "       either with --weights FILE (default tests/weights.conf)\n"
             "exit status: 0 full marks, 1 points lost, 2 the grader could not run\n");
@@ -61,6 +61,7 @@ static void usage(void)
 static bool results_prairielearn;
 static const char *classroom_path;
 static bool show_cost;             /* --cost: where grading's CPU time went */
+static bool verbose;               /* --verbose: progress on stderr           */
 
 static int fail(const char *results, const char *fmt, const char *what)
 {
@@ -194,7 +195,7 @@ static int grade_one(const char *submission, const char *part, const char *resul
     snprintf(ref, sizeof ref, "%s/ref_part1_image_plane.o", objdir);
     BuildConfig bc = { .root = root, .cc = cc, .objdir = objdir, .reference = access(ref, R_OK) == 0 };
 
-    GradeOptions opt = { .submission = submission, .cfg = &cfg, .build = &bc };
+    GradeOptions opt = { .submission = submission, .cfg = &cfg, .build = &bc, .verbose = verbose };
     /* The page's render reuses the objects the graded builds compiled. */
     char kept[PATH_MAX] = "";
     if (page && build_tempdir(kept, sizeof kept, err, sizeof err) == 0)
@@ -453,6 +454,8 @@ int main(int argc, char **argv)
             summary = true;
         else if (!strcmp(a, "--cost"))
             show_cost = true;
+        else if (!strcmp(a, "--verbose"))
+            verbose = true;
         else if (!strcmp(a, "--format") && v)
             format = v, k++;
         else if (!strcmp(a, "--classroom") && v)

@@ -178,6 +178,15 @@ for sub in "$tmp/subs"/*/ "$tmp/subs45"/*/; do
             grep -q "FAIL  Part $hardpart: .*\[hard\]" "$tmp/$sname.table"
     fi
 done
+# Code that works for a test's calls but not for a whole part's in one process:
+# the tests run together fail, and each runs alone (grade --verbose says so).
+for sname in hostile-crash-across-tests hostile-state-across-tests; do
+    $grade --submission "$tmp/subs/$sname" --part 1 --verbose --quiet >"$tmp/$sname.verbose" 2>&1
+    check "$sname: the tests run together fail, and run alone" \
+        grep -q "^  Part 1: the [0-9]* tests together: .*run.* alone" "$tmp/$sname.verbose"
+    check "$sname: not every test passed together" \
+        sh -c "! grep -q 'together: [0-9]* passed; 0 run alone' '$tmp/$sname.verbose'"
+done
 check "forged results: the grader's own score stands" \
     grep -q '"score": *[0-9.]*,' "$tmp/grades-subs/hostile-forge-results.json"
 check "forged results: no score of 1000 anywhere" sh -c "! grep -rq '\"score\": 1000' '$tmp/grades-subs'"
