@@ -61,6 +61,11 @@ bool isect_reference_f(const Spheref *sphere, const Rayf *ray, float *t);
 /* The same transliteration compiled as double: the benchmark checks that it
  * agrees with the linked sphere_intersect (which it times as "reference"). */
 bool isect_reference_d(const Sphere *sphere, const Ray *ray, double *t);
+/* Which of the reference's tests decides a pair (methods.c): its miss test
+ * sums |f x r|^2 a term at a time and stops after one, two or three terms;
+ * the rest go on to the roots, or to the careful branch. */
+enum { REF_STAGE_NX, REF_STAGE_NXY, REF_STAGE_NN, REF_STAGE_ROOTS, REF_STAGE_CAREFUL, REF_STAGES };
+int reference_stage(const Sphere *sphere, const Ray *ray);
 
 /* ---- fastpath.c: the specialised fast path ------------------------------ */
 /* Rays start at the eye (the origin of the sphere coordinates given to
@@ -99,6 +104,12 @@ void fast_closest_f(const FastScene *fs, const float *dx, const float *dy, const
 void fast_closest_m(const FastScene *fs, const float *fdx, const float *fdy, const float *fdz,
                     const double *dx, const double *dy, const double *dz,
                     int count, int *idx, double *t);
+
+/* For the report: of count rays' (packet, sphere) pairs, how many the
+ * double path solves (the filter let some ray through, or the eye is
+ * inside the sphere). */
+void fast_count_solves(const FastScene *fs, const double *dx, const double *dy, const double *dz,
+                       int count, long *pairs, long *solved);
 
 /* ---- workload.c: rays -------------------------------------------------- */
 /* A set of rays in every layout a method may want. */
@@ -333,6 +344,12 @@ typedef struct {
     ErrorStats all[BENCH_MAX_METHODS];   /* the families pooled */
     /* reference / textbook, double, the ordinary scene */
     double ratio_of_medians, ratio_paired, ratio_q1, ratio_q3;
+    /* the reference's miss test on the throughput workload: pairs decided at
+     * each stage (reference_stage), and exits that sphere_intersect
+     * contradicts (must be 0) */
+    long ref_stage[REF_STAGES], ref_stage_pairs, ref_stage_wrong;
+    /* the fast path's (packet, sphere) pairs on that workload, and those solved */
+    long fast_pairs, fast_solved;
     /* ns per call on pairs of the ordinary scene that miss and that hit */
     double miss_ns[BENCH_MAX_METHODS], hit_ns[BENCH_MAX_METHODS];
     double hit_share;                    /* share of the scene's tests that hit */

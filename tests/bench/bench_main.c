@@ -200,6 +200,19 @@ static int stage_throughput(const Options *o, BenchResults *br, char *err, size_
     br->tp_rays = rs.n;
     br->tp_spheres = scene.nspheres;
     br->rounds = o->rounds;
+    /* Where the reference's miss test stops on this workload, checked
+     * against the reference itself; and how much of it the fast path
+     * solves. */
+    for (int i = 0; i < rs.n; i++)
+        for (int k = 0; k < scene.nspheres; k++) {
+            int stage = reference_stage(&scene.spheres[k], &rs.rays[i]);
+            double t = 0;
+            br->ref_stage[stage]++;
+            br->ref_stage_pairs++;
+            if (stage <= REF_STAGE_NN && sphere_intersect(&scene.spheres[k], &rs.rays[i], &t))
+                br->ref_stage_wrong++;
+        }
+    fast_count_solves(&fs, rs.dx, rs.dy, rs.dz, rs.n, &br->fast_pairs, &br->fast_solved);
 
     int nm = bench_nmethods, R = o->rounds;
     double *secs = malloc((size_t)(R * nm) * sizeof *secs);

@@ -141,25 +141,34 @@ bool NAME(isect_rtg)(const SPHERE *sphere, const RAY *ray, REAL *t)
  * benchmark checks, so this copy cannot silently go stale); the float
  * version is the benchmark's "reference, float".  SAFE_LO and SAFE_HI are
  * the reference's 2^-900 and 2^900: where A R^2 and |f x r|^2 are formed
- * without overflow or underflow (2^-100 and 2^100 in float). */
+ * without overflow or underflow (2^-100 and 2^100 in float).  The miss
+ * test adds the terms of |f x r|^2 one at a time and stops at the first
+ * partial sum above T (see the reference). */
 bool NAME(isect_reference)(const SPHERE *sphere, const RAY *ray, REAL *t)
 {
     VEC r = ray->direction;
     VEC f = NAME(sub)(ray->origin, sphere->center);
     REAL R2 = sphere->radius * sphere->radius;
     REAL A = NAME(dot)(r, r);
+    REAL AR2 = A * R2;
     VEC n = { f.y * r.z - f.z * r.y, f.z * r.x - f.x * r.z, f.x * r.y - f.y * r.x };
-    REAL AR2 = A * R2, nn = NAME(dot)(n, n);
-    if (nn - AR2 > TINY)
+    REAL T = AR2 + 2 * TINY;
+    REAL nn = n.x * n.x;
+    if (nn > T)
+        return false;
+    nn += n.y * n.y;
+    if (nn > T)
+        return false;
+    nn += n.z * n.z;
+    if (nn > T)
         return false;
 
     REAL sq;
     if (AR2 > SAFE_LO && AR2 < SAFE_HI) {
-        REAL disc = AR2 - nn;
-        if (!(disc >= 0))
-            return false;
-        sq = SQRT(disc);
+        sq = SQRT(AR2 - nn);
     } else {
+        if (nn - AR2 > TINY)
+            return false;
         if (!(A > 0))
             return false;
         REAL b = NAME(dot)(f, r) / A;
@@ -175,7 +184,7 @@ bool NAME(isect_reference)(const SPHERE *sphere, const RAY *ray, REAL *t)
     REAL root = C / q;
     if (!(root > 0))
         root = q / A;
-    if (!(root > 0 && root < (REAL)INFINITY))
+    if (!(root > 0) || root >= (REAL)INFINITY)
         return false;
     *t = root;
     return true;
