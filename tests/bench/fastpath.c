@@ -179,16 +179,6 @@ void fast_closest_f(const FastScene *fs, const float *dx, const float *dy, const
     closest_f(fs, dx, dy, dz, count, idx, t);
 }
 
-/* b = c.r in double for the rays of a packet (the mixed path's float
- * filter gives only float ones). */
-static void dots_d(const FastScene *fs, int k, const double *rx, const double *ry,
-                   const double *rz, double *restrict bk)
-{
-    double cx = fs->cx[k], cy = fs->cy[k], cz = fs->cz[k];
-    for (int i = 0; i < FAST_PACKET; i++)
-        bk[i] = cx * rx[i] + cy * ry[i] + cz * rz[i];
-}
-
 /* Mixed: the float filter decides which packets to solve (its threshold
  * lets through every ray the double filter would), then the double solve
  * decides ray by ray exactly as the double path does: the answers are the
@@ -201,19 +191,17 @@ void fast_closest_m(const FastScene *fs, const float *fdx, const float *fdy, con
         int np = count - p0 < FAST_PACKET ? count - p0 : FAST_PACKET;
         const float *frx, *fry, *frz;
         const double *rx, *ry, *rz;
-        float fpad[3][FAST_PACKET], fb[FAST_PACKET];
-        double pad[3][FAST_PACKET], tbest[FAST_PACKET], kbest[FAST_PACKET], b[FAST_PACKET];
+        float fpad[3][FAST_PACKET];
+        double pad[3][FAST_PACKET], tbest[FAST_PACKET];
+        uint64_t kbest[FAST_PACKET];
         packet_rays_f(fdx, fdy, fdz, p0, np, fpad, &frx, &fry, &frz);
         packet_rays_d(dx, dy, dz, p0, np, pad, &rx, &ry, &rz);
         packet_start_d(tbest, kbest);
         for (int k = 0; k < fs->n; k++) {
-            if (!(fs->c[k] > 0)) {
+            if (!(fs->c[k] > 0))
                 solve_rays_d(fs, k, rx, ry, rz, np, tbest, kbest);
-            } else if (filter_f(fs->fcx[k], fs->fcy[k], fs->fcz[k], fs->fbthr[k], frx, fry, frz,
-                                fb)) {
-                dots_d(fs, k, rx, ry, rz, b);
-                solve_outside_d(fs, k, rx, ry, rz, b, tbest, kbest);
-            }
+            else if (filter_f(fs->fcx[k], fs->fcy[k], fs->fcz[k], fs->fbthr[k], frx, fry, frz))
+                solve_outside_d(fs, k, rx, ry, rz, tbest, kbest);
         }
         packet_finish_d(tbest, kbest, np, idx + p0, t + p0);
     }
@@ -226,12 +214,11 @@ void fast_count_solves(const FastScene *fs, const double *dx, const double *dy, 
     for (int p0 = 0; p0 < count; p0 += FAST_PACKET) {
         int np = count - p0 < FAST_PACKET ? count - p0 : FAST_PACKET;
         const double *rx, *ry, *rz;
-        double pad[3][FAST_PACKET], b[FAST_PACKET];
+        double pad[3][FAST_PACKET];
         packet_rays_d(dx, dy, dz, p0, np, pad, &rx, &ry, &rz);
         for (int k = 0; k < fs->n; k++) {
             (*pairs)++;
-            if (!(fs->c[k] > 0) ||
-                filter_d(fs->cx[k], fs->cy[k], fs->cz[k], fs->bthr[k], rx, ry, rz, b))
+            if (!(fs->c[k] > 0) || filter_d(fs->cx[k], fs->cy[k], fs->cz[k], fs->bthr[k], rx, ry, rz))
                 (*solved)++;
         }
     }

@@ -56,32 +56,20 @@ static void NAME(packet_rays)(const REAL *dx, const REAL *dy, const REAL *dz, in
 }
 
 /* The nearest hit so far: tbest (BIG: none yet) and kbest, its sphere. */
-static void NAME(packet_start)(REAL *tbest, REAL *kbest)
+static void NAME(packet_start)(REAL *tbest, UINT *kbest)
 {
     for (int i = 0; i < FAST_PACKET; i++) {
         tbest[i] = BIG;
-        kbest[i] = -1;
+        kbest[i] = ~(UINT)0;
     }
 }
 
-static void NAME(packet_finish)(const REAL *tbest, const REAL *kbest, int np, int *idx, double *t)
+static void NAME(packet_finish)(const REAL *tbest, const UINT *kbest, int np, int *idx, double *t)
 {
-    REAL tf[FAST_PACKET];
-    for (int i = 0; i < FAST_PACKET; i++) {
-        UINT hit = NAME(sign_bit)(kbest[i]) - 1;          /* kbest >= 0: all ones */
-        tf[i] = NAME(from_bits)((NAME(to_bits)(tbest[i]) & hit) |
-                                (NAME(to_bits)((REAL)INFINITY) & ~hit));
-    }
-    if (np == FAST_PACKET) {
-        for (int i = 0; i < FAST_PACKET; i++) {
-            idx[i] = (int)kbest[i];
-            t[i] = tf[i];
-        }
-        return;
-    }
     for (int i = 0; i < np; i++) {
-        idx[i] = (int)kbest[i];
-        t[i] = tf[i];
+        bool hit = kbest[i] != ~(UINT)0;
+        idx[i] = hit ? (int)kbest[i] : -1;
+        t[i] = hit ? (double)tbest[i] : INFINITY;
     }
 }
 
@@ -92,12 +80,11 @@ static void NAME(packet_finish)(const REAL *tbest, const REAL *kbest, int np, in
  * rounded difference has the sign of the exact one); and-ing them, the sign
  * survives only if every ray misses. */
 static bool NAME(filter)(REAL cx, REAL cy, REAL cz, REAL bthr,
-                         const REAL *rx, const REAL *ry, const REAL *rz, REAL *restrict bk)
+                         const REAL *rx, const REAL *ry, const REAL *rz)
 {
     UINT all_miss = ~(UINT)0;
     for (int i = 0; i < FAST_PACKET; i++) {
         REAL b = cx * rx[i] + cy * ry[i] + cz * rz[i];
-        bk[i] = b;
         all_miss &= NAME(to_bits)(b - bthr);
     }
     return !(all_miss >> SIGN_SHIFT);
@@ -105,7 +92,7 @@ static bool NAME(filter)(REAL cx, REAL cy, REAL cz, REAL bthr,
 
 /* The same for two spheres at once: each ray is loaded once for both. */
 static unsigned NAME(filter2)(const FastScene *fs, int k, const REAL *rx, const REAL *ry,
-                              const REAL *rz, REAL *restrict ba, REAL *restrict bb)
+                              const REAL *rz)
 {
     REAL ax = fs->FIELD(cx)[k], ay = fs->FIELD(cy)[k], az = fs->FIELD(cz)[k];
     REAL bx = fs->FIELD(cx)[k + 1], by = fs->FIELD(cy)[k + 1], bz = fs->FIELD(cz)[k + 1];
@@ -113,11 +100,8 @@ static unsigned NAME(filter2)(const FastScene *fs, int k, const REAL *rx, const 
     UINT miss_a = ~(UINT)0, miss_b = ~(UINT)0;
     for (int i = 0; i < FAST_PACKET; i++) {
         REAL x = rx[i], y = ry[i], z = rz[i];
-        REAL b1 = ax * x + ay * y + az * z, b2 = bx * x + by * y + bz * z;
-        ba[i] = b1;
-        bb[i] = b2;
-        miss_a &= NAME(to_bits)(b1 - athr);
-        miss_b &= NAME(to_bits)(b2 - bthr);
+        miss_a &= NAME(to_bits)(ax * x + ay * y + az * z - athr);
+        miss_b &= NAME(to_bits)(bx * x + by * y + bz * z - bthr);
     }
     return (unsigned)(!(miss_a >> SIGN_SHIFT)) | (unsigned)(!(miss_b >> SIGN_SHIFT)) << 1;
 }
@@ -134,23 +118,29 @@ static unsigned NAME(filter2)(const FastScene *fs, int k, const REAL *rx, const 
  * of the sqrt and division latency.  "Beats" is C < tbest q, so the
  * comparison does not wait for the division. */
 static void NAME(solve_outside)(const FastScene *fs, int k, const REAL *rx, const REAL *ry,
-                                const REAL *rz, const REAL *bk, REAL *restrict tbest,
-                                REAL *restrict kbest)
+                                const REAL *rz, REAL *restrict tbest, UINT *restrict kbest)
 {
     REAL cx = fs->FIELD(cx)[k], cy = fs->FIELD(cy)[k], cz = fs->FIELD(cz)[k];
     REAL r2 = fs->FIELD(r2)[k], C = fs->FIELD(c)[k], bthr = fs->FIELD(bthr)[k];
-    UINT kk = NAME(to_bits)((REAL)k);
+    UINT kk = (UINT)k;
+    REAL b[FAST_PACKET], disc[FAST_PACKET], q[FAST_PACKET];
     for (int i = 0; i < FAST_PACKET; i++) {
-        REAL x = rx[i], y = ry[i], z = rz[i], b = bk[i];
-        REAL lx = cx - b * x, ly = cy - b * y, lz = cz - b * z;
-        REAL disc = r2 - (lx * lx + ly * ly + lz * lz);
-        REAL q = b + SQRT(disc);
-        q = q > 0 ? q : 0;                         /* NaN too goes to 0 */
-        q = b >= bthr ? q : 0;
-        REAL t = C / q, tb = tbest[i];             /* t in (0, +inf]     */
-        UINT better = (UINT)0 - NAME(sign_bit)(t - tb);
+        REAL x = rx[i], y = ry[i], z = rz[i];
+        REAL bi = cx * x + cy * y + cz * z;
+        REAL lx = cx - bi * x, ly = cy - bi * y, lz = cz - bi * z;
+        b[i] = bi;
+        disc[i] = r2 - (lx * lx + ly * ly + lz * lz);
+    }
+    for (int i = 0; i < FAST_PACKET; i++) {
+        REAL qi = b[i] + SQRT(disc[i]);
+        q[i] = qi > 0 ? qi : 0;                    /* NaN too goes to 0 */
+    }
+    for (int i = 0; i < FAST_PACKET; i++) {
+        REAL tb = tbest[i], t = C / q[i];          /* t in (0, +inf]     */
+        UINT passes = NAME(sign_bit)(b[i] - bthr) - 1;        /* all ones or 0 */
+        UINT better = ((UINT)0 - NAME(sign_bit)(C - tb * q[i])) & passes;
         tbest[i] = NAME(from_bits)((NAME(to_bits)(t) & better) | (NAME(to_bits)(tb) & ~better));
-        kbest[i] = NAME(from_bits)((kk & better) | (NAME(to_bits)(kbest[i]) & ~better));
+        kbest[i] = (kk & better) | (kbest[i] & ~better);
     }
 }
 
@@ -158,7 +148,7 @@ static void NAME(solve_outside)(const FastScene *fs, int k, const REAL *rx, cons
  * inside of (or on), which every ray meets.  The roots of t^2 - 2 b t + C = 0
  * without cancellation: q = b + sign(b) s, roots q and C / q. */
 static void NAME(solve_rays)(const FastScene *fs, int k, const REAL *rx, const REAL *ry,
-                             const REAL *rz, int n, REAL *tbest, REAL *kbest)
+                             const REAL *rz, int n, REAL *tbest, UINT *kbest)
 {
     REAL cx = fs->FIELD(cx)[k], cy = fs->FIELD(cy)[k], cz = fs->FIELD(cz)[k];
     REAL r2 = fs->FIELD(r2)[k], C = fs->FIELD(c)[k];
@@ -177,7 +167,7 @@ static void NAME(solve_rays)(const FastScene *fs, int k, const REAL *rx, const R
         REAL root = tnear > 0 ? tnear : tfar;
         if (root > 0 && root < tbest[i]) {
             tbest[i] = root;
-            kbest[i] = (REAL)k;
+            kbest[i] = (UINT)k;
         }
     }
 }
@@ -190,23 +180,23 @@ static void NAME(closest)(const FastScene *fs, const REAL *dx, const REAL *dy, c
     for (int p0 = 0; p0 < count; p0 += FAST_PACKET) {
         int np = count - p0 < FAST_PACKET ? count - p0 : FAST_PACKET;
         const REAL *rx, *ry, *rz;
-        REAL pad[3][FAST_PACKET], tbest[FAST_PACKET], kbest[FAST_PACKET];
-        REAL ba[FAST_PACKET], bb[FAST_PACKET];
+        REAL pad[3][FAST_PACKET], tbest[FAST_PACKET];
+        UINT kbest[FAST_PACKET];
         NAME(packet_rays)(dx, dy, dz, p0, np, pad, &rx, &ry, &rz);
         NAME(packet_start)(tbest, kbest);
         for (int k = 0; k < fs->n; k++) {
             if (!(fs->FIELD(c)[k] > 0)) {
                 NAME(solve_rays)(fs, k, rx, ry, rz, np, tbest, kbest);
             } else if (k + 1 < fs->n && fs->FIELD(c)[k + 1] > 0) {
-                unsigned pass = NAME(filter2)(fs, k, rx, ry, rz, ba, bb);
+                unsigned pass = NAME(filter2)(fs, k, rx, ry, rz);
                 if (pass & 1u)
-                    NAME(solve_outside)(fs, k, rx, ry, rz, ba, tbest, kbest);
+                    NAME(solve_outside)(fs, k, rx, ry, rz, tbest, kbest);
                 if (pass & 2u)
-                    NAME(solve_outside)(fs, k + 1, rx, ry, rz, bb, tbest, kbest);
+                    NAME(solve_outside)(fs, k + 1, rx, ry, rz, tbest, kbest);
                 k++;
             } else if (NAME(filter)(fs->FIELD(cx)[k], fs->FIELD(cy)[k], fs->FIELD(cz)[k],
-                                    fs->FIELD(bthr)[k], rx, ry, rz, ba)) {
-                NAME(solve_outside)(fs, k, rx, ry, rz, ba, tbest, kbest);
+                                    fs->FIELD(bthr)[k], rx, ry, rz)) {
+                NAME(solve_outside)(fs, k, rx, ry, rz, tbest, kbest);
             }
         }
         NAME(packet_finish)(tbest, kbest, np, idx + p0, t + p0);
