@@ -286,19 +286,25 @@ static void run_batch(const GradeOptions *opt, const Build *b, const TestList *t
     sandbox_result_free(&res);
 }
 
-/* The diagnosis's probes run as tests do, each in its own child. */
+/* The diagnosis's probes run as tests do, each in its own child.  Once a
+ * probe runs out of time or memory the rest are not run, nor any after two
+ * of the part's tests ran out of time (the diagnosis then confirms nothing
+ * they would have shown): code that loops or hogs memory would make each
+ * of them wait out the whole limit. */
 typedef struct {
     const GradeOptions *opt;
     const Build *b;
+    bool stopped;
 } ProbeContext;
 
 static int run_probe(void *ctx, const Test *t, Answers *a)
 {
-    const ProbeContext *pc = ctx;
+    ProbeContext *pc = ctx;
     SandboxResult res;
     char err[256], *verdict = NULL;
-    if (run_child(pc->opt, pc->b, t, &res, err, sizeof err) != 0)
+    if (pc->stopped || run_child(pc->opt, pc->b, t, &res, err, sizeof err) != 0)
         return -1;
+    pc->stopped = res.timed_out || res.memory_exceeded;
     check_answers(t, res.answer, res.answer_len, &verdict, a);
     free(verdict);
     sandbox_result_free(&res);
@@ -378,7 +384,8 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         g->cpu_tests += sandbox_cpu(false) - children;
         children = sandbox_cpu(false);
         if (b.ok) {
-            ProbeContext pc = { opt, &b };
+            /* After two tests out of time, a probe would be the third. */
+            ProbeContext pc = { opt, &b, timeouts >= 2 };
             Probes probes = { run_probe, &pc, p == PART3B && !opt->build->reference, false };
             for (int k = 0; k < tests->n; k++)
                 probes.part3a_failed = probes.part3a_failed ||

@@ -129,6 +129,18 @@ causes_of() {   # causes_of JSON PART: the keys of the part's diagnosis in extra
     tr -d '\n' <"$1" | sed -n 's/.*"causes": *{\([^}]*\)}.*/\1/p' | tr ',' '\n' |
         sed -n "s/^ *\"$2\": *\"\\([^\"]*\\)\".*/\\1/p"
 }
+hard_failed() {   # hard_failed JSON PART: a test of the part tagged hard has failed
+    awk -v p="\"Part $2: " '/"name": /   { name = $0; failed = 0 }
+        /"status": "failed"/          { failed = 1 }
+        /^ *"hard"$/ && failed && index(name, p) { found = 1 }
+        END { exit !found }' "$1"
+}
+# It can fail: the reference fails no hard case.
+if hard_failed "$tmp/ref.json" 3a || hard_failed "$tmp/ref.json" 1; then
+    fail "the reference's results show a failed hard case"
+else
+    pass
+fi
 for sub in "$tmp/subs"/*/ "$tmp/subs45"/*/; do
     sname=$(basename "$sub")
     class=$(basename "$(dirname "$sub")")
@@ -173,9 +185,7 @@ for sub in "$tmp/subs"/*/ "$tmp/subs45"/*/; do
     done
     hardpart=$(sed -n 's/^hard lost //p' "$expect")
     if [ -n "$hardpart" ]; then
-        $grade --submission "$sub" --part "$hardpart" >"$tmp/$sname.table" 2>&1
-        check "$sname: some Part $hardpart hard cases fail" \
-            grep -q "FAIL  Part $hardpart: .*\[hard\]" "$tmp/$sname.table"
+        check "$sname: some Part $hardpart hard cases fail" hard_failed "$json" "$hardpart"
     fi
 done
 # Code that works for a test's calls but not for a whole part's in one process:
@@ -187,6 +197,9 @@ for sname in hostile-crash-across-tests hostile-state-across-tests; do
     check "$sname: not every test passed together" \
         sh -c "! grep -q 'together: [0-9]* passed; 0 run alone' '$tmp/$sname.verbose'"
 done
+# The table marks the hard cases too (one submission is enough to see it).
+$grade --submission "$tmp/subs/rw-rtiow-camera" --part 1 >"$tmp/rw-rtiow-camera.table" 2>&1
+check "the table marks a failed hard case [hard]" grep -q "FAIL  Part 1: .*\[hard\]" "$tmp/rw-rtiow-camera.table"
 check "forged results: the grader's own score stands" \
     grep -q '"score": *[0-9.]*,' "$tmp/grades-subs/hostile-forge-results.json"
 check "forged results: no score of 1000 anywhere" sh -c "! grep -rq '\"score\": 1000' '$tmp/grades-subs'"
