@@ -55,6 +55,9 @@ typedef struct {
     double tol[CASE_MAX_OUT];      /* accepted |got - want| per output           */
     double alt[CASE_MAX_OUT];      /* KIND_COLOR/IMAGE: another acceptable colour
                                       when the flag CASE_EITHER_HIT is set;
+                                      KIND_SPHERE with that flag: a hit at t in
+                                      [alt[0], alt[1]] is right too (none when
+                                      alt[0] >= alt[1]);
                                       Parts 4 and 5: alt[1] is the smallest t
                                       accepted for a ray parallel within rounding */
     unsigned flags;

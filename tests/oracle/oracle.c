@@ -363,6 +363,66 @@ bool oracle_sphere_accepts(const Sphere *sphere, const Ray *ray, bool hit, doubl
     return S.silhouette && S.t_closest > 0 && near_root(&S, S.t_closest, t);
 }
 
+bool oracle_sphere_other_hits(const Sphere *sphere, const Ray *ray, const OracleHit *hit,
+                              double tol, double *near_tol, double *lo, double *hi)
+{
+    SphereSolution S;
+    solve_sphere(sphere, ray, &S);
+    *near_tol = tol;
+    *lo = INFINITY;
+    *hi = -INFINITY;
+    if (!S.ambiguous || S.nr == 0 || S.overflow || !isfinite(hit->t))
+        return false;
+    double clo[4], chi[4];
+    int n = 0;
+    double cand[4];
+    if (S.real_roots)
+        for (int k = 0; k < 2; k++)
+            if (S.root[k] >= 0)
+                cand[n++] = S.root[k];
+    if (S.surface)
+        cand[n++] = 0;
+    if (S.silhouette && S.t_closest > 0)
+        cand[n++] = S.t_closest;
+    for (int k = 0; k < n; k++) {
+        double ct = sphere_tolerance(&S, cand[k]);
+        clo[k] = cand[k] - ct;
+        chi[k] = cand[k] + ct;
+    }
+    /* Grow hit->t's window by every window that reaches it, until none
+     * does; what is left apart, the nearest first, gives [lo, hi]. */
+    double wlo = hit->t - tol, whi = hit->t + tol;
+    bool used[4] = { false };
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (int k = 0; k < n; k++)
+            if (!used[k] && clo[k] <= whi && chi[k] >= wlo) {
+                wlo = fmin(wlo, clo[k]);
+                whi = fmax(whi, chi[k]);
+                used[k] = grew = true;
+            }
+    }
+    *near_tol = fmax(hit->t - wlo, whi - hit->t);
+    int best = -1;
+    for (int k = 0; k < n; k++)
+        if (!used[k] && (best < 0 || fabs(cand[k] - hit->t) < fabs(cand[best] - hit->t)))
+            best = k;
+    if (best < 0)
+        return false;
+    *lo = clo[best];
+    *hi = chi[best];
+    for (bool grew = true; grew;) {       /* and the windows that reach that one */
+        grew = false;
+        for (int k = 0; k < n; k++)
+            if (!used[k] && clo[k] <= *hi && chi[k] >= *lo) {
+                *lo = fmin(*lo, clo[k]);
+                *hi = fmax(*hi, chi[k]);
+                used[k] = grew = true;
+            }
+    }
+    return true;
+}
+
 /* ---- Part 3b ------------------------------------------------------------- */
 
 Vec3 oracle_unit(Vec3 v)

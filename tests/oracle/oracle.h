@@ -89,6 +89,15 @@ OracleHit oracle_sphere(const Sphere *sphere, const Ray *ray);
  * hit is oracle_sphere(sphere, ray).  INFINITY when hit->t is not finite. */
 double oracle_sphere_t_tolerance(const Sphere *sphere, const Ray *ray, const OracleHit *hit);
 
+/* The hits oracle_sphere_accepts takes for an ambiguous case, as the
+ * grader can judge them: *near_tol (>= tol) covers every accepted t whose
+ * window reaches that of hit->t (within tol), and [*lo, *hi] is the next
+ * window apart from it -- from an origin within rounding of the surface,
+ * the root on the far side, or, from just inside, t near 0.  Returns false
+ * (*lo > *hi) when there is none. */
+bool oracle_sphere_other_hits(const Sphere *sphere, const Ray *ray, const OracleHit *hit,
+                              double tol, double *near_tol, double *lo, double *hi);
+
 /* Whether an answer (hit, t) to sphere_intersect(sphere, ray, &t) is
  * correct: the grader's whole rule for Part 3a in one place.
  *   - A hit's t must be finite and > 0.

@@ -91,6 +91,16 @@ void tg_sphere(Test *t, const double c3[3], double R, const double e[3], const d
     if (o.hit) {
         double tol = oracle_sphere_t_tolerance(&s, &ray, &o);
         c->tol[1] = t->hard ? tol : fmax(tol, CORE_REL * o.t);
+        /* In doubt, every hit the oracle accepts: those near o.t widen the
+         * tolerance, another apart (the far root from an origin on the
+         * surface) goes to alt as an interval. */
+        double near_tol, lo, hi;
+        if (o.ambiguous && oracle_sphere_other_hits(&s, &ray, &o, c->tol[1], &near_tol, &lo, &hi)) {
+            c->alt[0] = lo;
+            c->alt[1] = hi;
+        }
+        if (o.ambiguous)
+            c->tol[1] = fmax(c->tol[1], near_tol);
     }
 
 }

@@ -46,6 +46,17 @@ for p in 4 5; do
         sh -c "[ $status -eq 0 ] && grep -q '^Part $p: .* 20 / 20' '$tmp/ref-$p.out'"
 done
 
+# The reference keeps every hard case of Part 3a whatever the hidden cases'
+# seed.  Seeds 30 and 31 draw an origin within rounding of the surface whose
+# far root the reference gives and the oracle accepts: the grader once
+# refused it.
+for seed in 1 2 3 4 5 30 31; do
+    sed "s/^seed .*/seed $seed/" tests/weights.conf >"$tmp/seed.conf"
+    $grade --submission solutions --weights "$tmp/seed.conf" --part 3a --summary --quiet >"$tmp/seed.out" 2>&1
+    check "the reference keeps full hard marks in Part 3a with seed $seed" \
+        grep -q "^summary 0 0 $max3a 0 0 0 5 " "$tmp/seed.out"
+done
+
 $grade --submission labs --weights "$all" --summary >"$tmp/labs.out" 2>&1
 status=$?
 check "the skeleton loses points (exit $status, want 1)" [ "$status" -eq 1 ]
