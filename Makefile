@@ -199,6 +199,29 @@ $(BUILD)/grader/harness_render.o: tests/grader/harness_render.c $(KIT_HDR)
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
 	cp $< $@
+# On Linux each part's program is also prebuilt as a runner (harness_load.c):
+# the grader then builds a student's file as a shared object, which costs a
+# fraction of linking a whole program, and the runner loads it (build.c).
+# runner_K holds the harness for Part K (HARNESS_PART's numbering) and, in
+# the instructor's kit, the reference for every other part.
+LOAD_RUNNERS := $(if $(filter Linux,$(shell uname -s)),1)
+RUNNERS    = $(if $(LOAD_RUNNERS),$(foreach k,1 2 3 4 5 6,$(BUILD)/grader/runner_$(k)))
+RUNNER_DEFS = $(if $(HAVE_SOLUTIONS),-DHARNESS_REFS)
+$(BUILD)/grader/harness_load_%.o: tests/grader/harness.c tests/grader/harness_load.h $(KIT_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -DHARNESS_LOAD $(RUNNER_DEFS) -c $< -o $@
+$(BUILD)/grader/harness_load.o: tests/grader/harness_load.c tests/grader/harness_load.h $(KIT_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+# (runner_3, Part 3a's, leaves out Part 3b's reference too: it calls
+# sphere_intersect, which only the student's object defines.)
+runner_refs = $(if $(HAVE_SOLUTIONS),$(filter-out $(BUILD)/grader/ref_$(word $(1),$(STAGES)).o \
+              $(if $(filter 3,$(1)),$(BUILD)/grader/ref_part3b_ray_color.o),$(GRADER_REF)))
+define RUNNER_RULE
+$(BUILD)/grader/runner_$(1): $(BUILD)/grader/harness_load_$(1).o $(BUILD)/grader/harness_load.o $(call runner_refs,$(1))
+	$$(CC) $$(CFLAGS) -rdynamic $$^ -o $$@ $$(LDLIBS) -ldl
+endef
+$(foreach k,1 2 3 4 5 6,$(eval $(call RUNNER_RULE,$(k))))
 $(BUILD)/grader/hidden.o: tests/hidden/hidden.c $(GRADER_HDR) $(wildcard tests/oracle/*.h)
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
@@ -208,7 +231,7 @@ $(BUILD)/grader/grade_main.o: tests/grader/grade_main.c $(GRADER_HDR) $(wildcard
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(GRADE_DEFS) -DGRADER_BUILD='"$(BUILD)"' -Ilabs -c $< -o $@
 $(BUILD)/bin/grade: $(BUILD)/grader/grade_main.o $(GRADE_EXTRA) $(BUILD)/grader/libgrader.a \
-                    $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $(HARNESS) $(GRADER_REF)
+                    $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $(HARNESS) $(GRADER_REF) $(RUNNERS)
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/gentests: $(BUILD)/oracle/gentests_main.o $(BUILD)/oracle/liboracle.a \
@@ -221,7 +244,7 @@ $(BUILD)/bin/accuracy: $(BUILD)/oracle/accuracy_main.o $(BUILD)/oracle/liboracle
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 
-grader: $(BUILD)/bin/grade $(HARNESS) $(GRADER_REF)
+grader: $(BUILD)/bin/grade $(HARNESS) $(GRADER_REF) $(RUNNERS)
 
 # The report page (out/report/index.html) shows the default scene drawn by
 # the submission beside the reference's picture: in the instructor's kit

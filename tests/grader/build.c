@@ -26,6 +26,8 @@
  * (49 MiB of address space), clang 0.5 s and 98 MiB (228 MiB of address
  * space); linking the test program less.  Objects are a few KiB. */
 #define CC_SECONDS   20             /* wall clock: a pipe can only be timed out */
+#define LOAD_SECONDS 5              /* runner --check: loading the object      */
+#define LOAD_MEMORY_MB 256          /* as a test's                              */
 #define CC_CPU       10             /* CPU seconds of each of its processes */
 #define CC_MEMORY_MB 512            /* address space of each process (resident
                                        memory of the group on macOS) */
@@ -242,10 +244,54 @@ static int check_dependencies(const BuildConfig *cfg, Build *b, const char *depf
  * when skip >= 0 and cfg has them, the reference objects of every part but
  * skip.  Returns 0 when the grader could do its job (b->ok says whether the
  * student's code built), -1 when it could not (err says why). */
+/* The shared-object way (cfg->load): links the student's object alone
+ * into b->dir/src/student.so, copies the prebuilt runner for the part, and
+ * has it load the object once (runner --check) to see what the linker of a
+ * whole program would: a symbol defined nowhere, main or another part's
+ * function defined again.  Returns as build_program. */
+static int load_program(const BuildConfig *cfg, Build *b, int part, const char *ofile,
+                        char *err, size_t errlen)
+{
+    char *so_argv[] = { (char *)cfg->cc, "-shared", "-nostdlib", "-Wl,-Bsymbolic", (char *)ofile,
+                        "-lgcc", "-o", "student.so", NULL };
+    int rc = run_cc(cfg, b, so_argv, &b->cpu_link, err, errlen);
+    if (rc != 0)
+        return rc < 0 ? -1 : 0;
+    char from[PATH_MAX];
+    snprintf(from, sizeof from, "%s/runner_%d", cfg->objdir, part + 1);
+    if (copy_file(from, b->runner, 16 << 20, err, errlen) || chmod(b->runner, 0755))
+        return -1;
+    snprintf(b->object, sizeof b->object, "%s/src/student.so", b->dir);
+    char *check_argv[] = { b->runner, "--check", b->object, NULL };
+    SandboxSpec spec = {
+        .argv = check_argv, .workdir = b->rundir, .timeout = LOAD_SECONDS, .answer_max = 1024,
+        .output_max = 4096, .memory_mb = LOAD_MEMORY_MB, .max_procs = 0, .max_file_mb = 0,
+    };
+    SandboxResult res;
+    if (sandbox_run(&spec, &res, err, errlen) != 0)
+        return -1;
+    b->cpu_link += res.cpu_seconds;
+    /* Only the runner's own verdict counts: code run as the object loads
+     * (a constructor) may exit or crash first, and then the tests show it. */
+    if (strncmp(res.answer, "link-error ", 11) == 0 && res.exit_code == 4) {
+        char *nl = strchr(res.answer, '\n');
+        if (nl)
+            *nl = '\0';
+        build_say(b, "the linker: ", res.answer + 11);
+        sandbox_result_free(&res);
+        return 0;
+    }
+    sandbox_result_free(&res);
+    b->ok = true;
+    return 0;
+}
+
 static int build_program(const BuildConfig *cfg, const char *harness, const int *parts, int nparts,
                          int skip, const char *kept, const char *submission, Build *b,
                          char *err, size_t errlen)
 {
+    /* One student file of a part's program, on Linux: a shared object. */
+    bool load = cfg->load && skip >= 0 && nparts == 1;
     memset(b, 0, sizeof *b);
     b->messages = calloc(1, 1);
     if (build_tempdir(b->dir, sizeof b->dir, err, errlen))
@@ -310,7 +356,8 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
         if (scan_includes(cfg, b, to, src))
             return 0;
         char *argv[] = { (char *)cfg->cc, "-std=c11", "-O1", "-ffp-contract=off", "-Wall", "-Wextra",
-                         "-I.", "-MD", "-MF", dfile, "-c", cfile, "-o", ofile, NULL };
+                         "-I.", "-MD", "-MF", dfile, "-c", cfile, "-o", ofile,
+                         load ? "-fPIC" : NULL, NULL };
         int rc = run_cc(cfg, b, argv, &b->cpu_compile, err, errlen);
         if (rc < 0)
             return -1;
@@ -324,6 +371,8 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
         link[nlink] = names[nlink];
         nlink++;
     }
+    if (load)
+        return load_program(cfg, b, skip, names[nlink - 1], err, errlen);
     /* In the instructor's kit: the reference for every other part. */
     if (skip >= 0 && cfg->reference) {
         for (int p = 0; p < NPARTS; p++) {

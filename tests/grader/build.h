@@ -20,11 +20,15 @@ typedef struct {
     const char *objdir;        /* prebuilt harness_<k>.o and, if any,
                                   the reference objects ref_<stage>.o          */
     bool reference;            /* reference objects exist for the other parts  */
+    bool load;                 /* objdir has the prebuilt runners runner_<k>
+                                  (Linux): a part with one student file is
+                                  built as a shared object they load       */
 } BuildConfig;
 
 typedef struct {
     char dir[512];             /* the temporary directory                       */
     char runner[600];          /* the program, when ok                          */
+    char object[600];          /* "" or the shared object it loads (its argument) */
     char rundir[600];          /* the empty working directory for its runs      */
     bool ok;
     char *messages;            /* the compiler's output (malloc'd, may be "")   */

@@ -100,7 +100,7 @@ static int run_child(const GradeOptions *opt, const Build *b, const Test *t, San
         snprintf(err, errlen, "out of memory");
         return -1;
     }
-    char *argv[] = { (char *)b->runner, NULL };
+    char *argv[] = { (char *)b->runner, b->object[0] ? (char *)b->object : NULL, NULL };
     SandboxSpec spec = {
         .argv = argv, .workdir = b->rundir, .input = input, .input_len = len,
         .timeout = opt->cfg->timeout, .answer_max = 512 + (size_t)t->ncases * 160,
@@ -201,7 +201,7 @@ static void run_batch(const GradeOptions *opt, const Build *b, const TestList *t
         free(input);
         return;
     }
-    char *argv[] = { (char *)b->runner, NULL };
+    char *argv[] = { (char *)b->runner, b->object[0] ? (char *)b->object : NULL, NULL };
     SandboxSpec spec = {
         .argv = argv, .workdir = b->rundir, .input = input, .input_len = len,
         .timeout = opt->cfg->timeout, .answer_max = answer_max, .output_max = 4096,

@@ -193,7 +193,13 @@ static int grade_one(const char *submission, const char *part, const char *resul
     else
         snprintf(objdir, sizeof objdir, "%s/%s/grader", root, GRADER_BUILD);
     snprintf(ref, sizeof ref, "%s/ref_part1_image_plane.o", objdir);
-    BuildConfig bc = { .root = root, .cc = cc, .objdir = objdir, .reference = access(ref, R_OK) == 0 };
+    /* The prebuilt runners (Linux), unless GRADE_NO_LOAD is set (the kit's
+     * own tests grade both ways and compare). */
+    char runner[PATH_MAX + 64];
+    snprintf(runner, sizeof runner, "%s/runner_1", objdir);
+    const char *no_load = getenv("GRADE_NO_LOAD");
+    BuildConfig bc = { .root = root, .cc = cc, .objdir = objdir, .reference = access(ref, R_OK) == 0,
+                       .load = access(runner, X_OK) == 0 && !(no_load && *no_load) };
 
     GradeOptions opt = { .submission = submission, .cfg = &cfg, .build = &bc, .verbose = verbose };
     /* The page's render reuses the objects the graded builds compiled. */

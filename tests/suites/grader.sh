@@ -199,6 +199,26 @@ for sub in "$tmp/subs"/*/ "$tmp/subs45"/*/; do
         check "$sname: some Part $hardpart hard cases fail" hard_failed "$json" "$hardpart"
     fi
 done
+# On Linux a part with one student file is built as a shared object that a
+# prebuilt runner loads; GRADE_NO_LOAD=1 links the whole program as
+# elsewhere.  Both ways must give the same grades, link errors included.
+if [ -x out/build/grader/runner_1 ]; then
+    mkdir "$tmp/parity"
+    for sname in link-defines-main link-defines-other-part link-undefined link-libm \
+                 hostile-constructor hostile-segfault hostile-exit p2-no-half p3b-reversed rw-rtiow-v1; do
+        cp -R "$tmp/subs/$sname" "$tmp/parity/"
+    done
+    chmod -R a+rX "$tmp/parity"
+    GRADE_NO_LOAD=1 $grade --all "$tmp/parity" --out "$tmp/grades-parity" >"$tmp/parity.out" 2>&1
+    for sname in $(ls "$tmp/parity"); do
+        check "$sname: the same grades linked whole as loaded" \
+            [ "$(grep "^$sname," "$tmp/grades-parity/gradebook.csv")" = \
+              "$(grep "^$sname," "$tmp/grades-subs/gradebook.csv")" ]
+    done
+else
+    echo "   no prebuilt runners (not Linux): every part's program is linked whole; parity not checked"
+fi
+
 # Code that works for a test's calls but not for a whole part's in one process:
 # the tests run together fail, and each runs alone (grade --verbose says so).
 for sname in hostile-crash-across-tests hostile-state-across-tests; do
