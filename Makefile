@@ -46,7 +46,7 @@ KIT_OBJ    = $(KIT_SRC:labs/kit/%.c=$(BUILD)/kit/%.o)
 KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
 
 .PHONY: all help render compare grade grade-all gradescope student-kit bench \
-        handouts test unit-tests clean grader public-tests
+        handouts test test-build unit-tests clean grader public-tests
 .DELETE_ON_ERROR:
 .SECONDARY:                             # keep the objects a chain of rules makes (the renderer's lto/)
 .SECONDEXPANSION:
@@ -376,7 +376,9 @@ $(ASAN)/bin/render-solutions: $(ASAN)/kit/render_main.o $(REF_ASAN) $(ASAN)/kit/
 	@mkdir -p $(@D)
 	$(CC) $(SANFLAGS) $(THREADS) $^ -o $@ $(LDLIBS)
 
-test: all $(UNIT_ASAN) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)
+# What the tests need built (`make -j2 test-build` builds it on two cores).
+test-build: all $(UNIT_ASAN) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)
+test: test-build
 	@sh tests/run.sh
 
 clean:

@@ -2,6 +2,7 @@
  * harness_load.c - see harness_load.h.  POSIX dlopen and dlsym.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (built only on Linux today) */
 #include "harness_load.h"
 
 #include <dlfcn.h>
