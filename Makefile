@@ -27,6 +27,7 @@ RESULTS    ?=
 FORMAT     ?=
 CLASSROOM  ?=
 SUBMISSIONS ?=
+JOBS       ?=
 
 # Where the builds go: OUT_ROOT=dir builds into dir/build and dir/asan (the
 # portability suite builds with a second compiler beside the first).
@@ -59,7 +60,7 @@ help:
 	@echo "make compare [SUBMISSION=dir] [SCENE=file]"
 	@echo "make grade   [SUBMISSION=dir] [PART=1|2|3a|3b|4|5] [RESULTS=file]"
 	@echo "             [FORMAT=gradescope|prairielearn] [CLASSROOM=file]"
-	@echo "make grade-all SUBMISSIONS=dir [OUT=dir]"
+	@echo "make grade-all SUBMISSIONS=dir [OUT=dir] [JOBS=n]"
 	@echo "make gradescope | prairielearn | student-kit | bench | handouts | test | clean"
 
 $(BUILD)/kit/%.o: labs/kit/%.c $(KIT_HDR)
@@ -262,7 +263,7 @@ grade: grader $(REPORT_REF)
 
 grade-all: grader $(REPORT_REF)
 	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade-all SUBMISSIONS=dir [OUT=dir]"; exit 2; }
-	@$(BUILD)/bin/grade --all "$(SUBMISSIONS)" --out "$(if $(OUT),$(OUT),out/grades)"
+	@$(BUILD)/bin/grade --all "$(SUBMISSIONS)" --out "$(if $(OUT),$(OUT),out/grades)" $(if $(JOBS),--jobs $(JOBS))
 
 # The public tests' expected values, from the oracle (commit the result).
 public-tests: $(BUILD)/bin/gentests

@@ -432,6 +432,7 @@ int main(int argc, char **argv)
     char page_buf[PATH_MAX];
     bool quiet = false, summary = false;
     long jobs = sysconf(_SC_NPROCESSORS_ONLN);
+    bool jobs_given = false;
     for (int k = 1; k < argc; k++) {
         const char *a = argv[k];
         const char *v = k + 1 < argc ? argv[k + 1] : NULL;
@@ -453,7 +454,7 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--weights") && v)
             weights = v, k++;
         else if (!strcmp(a, "--jobs") && v)
-            jobs = atol(v), k++;
+            jobs = atol(v), jobs_given = true, k++;
         else if (!strcmp(a, "--quiet"))
             quiet = true;
         else if (!strcmp(a, "--summary"))
@@ -485,6 +486,14 @@ int main(int argc, char **argv)
         char wpath[PATH_MAX];
         if (!realpath(weights, wpath))      /* the children run from the same root */
             return fail(NULL, "%s: cannot find the weights file", weights);
+        /* As root every submission's code runs as the same unprivileged
+         * user, so two graded at once could signal each other's tests. */
+        if (!jobs_given && jobs > 1 && sandbox_drops_privileges()) {
+            fprintf(stderr, "grade: one submission at a time: as root, every submission's code runs as "
+                            "the same unprivileged user and could stop another's tests (--jobs N, "
+                            "make grade-all JOBS=N, grades N at once)\n");
+            jobs = 1;
+        }
         return grade_all(self, all, out, wpath, jobs > 0 ? (int)jobs : 1);
     }
     return grade_one(submission, part, results, weights, page, quiet, summary);
