@@ -44,7 +44,12 @@ static void say_dlerror(char *why, size_t whylen)
     if (!e)
         e = "the object could not be loaded";
     const char *colon = strstr(e, ".so: ");
-    snprintf(why, whylen, "%s", colon ? colon + 5 : e);
+    const char *text = colon ? colon + 5 : e;
+    /* In the words of the linker students run themselves. */
+    if (strncmp(text, "undefined symbol: ", 18) == 0)
+        snprintf(why, whylen, "undefined reference to `%s' (no file of the program defines it)", text + 18);
+    else
+        snprintf(why, whylen, "%s", text);
 }
 
 int harness_load(int part, bool refs, const char *path, char *why, size_t whylen)
