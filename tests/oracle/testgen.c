@@ -94,13 +94,12 @@ void tg_sphere(Test *t, const double c3[3], double R, const double e[3], const d
         /* In doubt, every hit the oracle accepts: those near o.t widen the
          * tolerance, another apart (the far root from an origin on the
          * surface) goes to alt as an interval. */
-        double near_tol, lo, hi;
+        double near_tol = c->tol[1], lo, hi;
         if (o.ambiguous && oracle_sphere_other_hits(&s, &ray, &o, c->tol[1], &near_tol, &lo, &hi)) {
             c->alt[0] = lo;
             c->alt[1] = hi;
         }
-        if (o.ambiguous)
-            c->tol[1] = fmax(c->tol[1], near_tol);
+        c->tol[1] = fmax(c->tol[1], near_tol);
     }
 
 }
