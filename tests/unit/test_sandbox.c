@@ -7,6 +7,7 @@
  */
 #include "check.h"            /* first: it sets the POSIX feature level */
 #include <stdbool.h>
+#include <fcntl.h>
 #include <sys/stat.h>
 #include "../grader/sandbox.h"
 
@@ -177,10 +178,39 @@ static void test_no_processes(void)
     sandbox_result_free(&res);
 }
 
+/* The child gets stdin, stdout and stderr and the answers on fd 3, and
+ * none of the grader's other descriptors; the grader's own stay open. */
+static void test_descriptors_closed(void)
+{
+    int keep[3] = { -1, -1, -1 }, want[3] = { 5, 7, 9 };
+    for (int k = 0; k < 3; k++) {
+        int fd = open("/dev/null", O_RDONLY);
+        CHECK(fd >= 0);
+        if (fd < 0)
+            return;
+        keep[k] = dup2(fd, want[k]);
+        close(fd);
+        CHECK(keep[k] == want[k]);
+    }
+    SandboxResult res;
+    SandboxSpec spec = { .memory_mb = 48, .max_procs = -1 };
+    if (run_sh("for n in 4 5 6 7 8 9; do (: <&$n) 2>/dev/null && echo \"open $n\" >&3; done; "
+               "echo checked >&3", spec, &res) == 0) {
+        CHECK_STR_CONTAINS(res.answer, "checked");
+        CHECK_MSG(!strstr(res.answer, "open"), "the child kept descriptors: %s", res.answer);
+        sandbox_result_free(&res);
+    }
+    for (int k = 0; k < 3; k++) {
+        CHECK_MSG(fcntl(want[k], F_GETFD) != -1, "the grader's fd %d was closed", want[k]);
+        close(want[k]);
+    }
+}
+
 static const CheckTest tests[] = {
     CHECK_TEST(test_memory_watch),     CHECK_TEST(test_memory_stops_hog), CHECK_TEST(test_small_program_runs),
     CHECK_TEST(test_oom_score_adj),    CHECK_TEST(test_killed_reported),  CHECK_TEST(test_cpu_limit),
     CHECK_TEST(test_wall_clock),       CHECK_TEST(test_no_file_output),   CHECK_TEST(test_no_processes),
+    CHECK_TEST(test_descriptors_closed),
 };
 
 int main(int argc, char **argv)
