@@ -27,7 +27,7 @@
  * space); linking the test program less.  Objects are a few KiB. */
 #define CC_SECONDS   20             /* wall clock: a pipe can only be timed out */
 #define LOAD_SECONDS 5              /* runner --check: loading the object      */
-#define LOAD_MEMORY_MB 256          /* as a test's                              */
+#define LOAD_MEMORY_MB 64           /* as a test's                              */
 #define CC_CPU       10             /* CPU seconds of each of its processes */
 #define CC_MEMORY_MB 512            /* address space of each process (resident
                                        memory of the group on macOS) */

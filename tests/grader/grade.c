@@ -17,7 +17,7 @@
 #include <string.h>
 
 #define OUTPUT_SHOWN 1500     /* bytes of the student's own printing shown */
-#define TEST_MEMORY_MB 256    /* a test program needs 13 to 16 MiB of address space */
+#define TEST_MEMORY_MB 64     /* a test program needs 3 to 4 MiB of address space */
 #define MAX_BATCH 4096        /* tests of one part run together, at most     */
 
 static const char *kind_word[NKINDS] = { "plane", "pixel", "sphere", "camera", "color", "image",
