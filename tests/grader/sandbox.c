@@ -1,12 +1,12 @@
 /*
- * sandbox.c - see sandbox.h.  POSIX: setpgid, setrlimit, poll; vfork
- * (Linux, macOS and the BSDs keep it); and what each system offers to see a
+ * sandbox.c - see sandbox.h.  POSIX: fork, setpgid, setrlimit, poll; vfork
+ * on Linux (macOS deprecates it); and what each system offers to see a
  * process's memory (/proc on Linux, libproc on macOS).
  *
- * vfork, not fork: the grader holds tens of megabytes of tests and figures,
- * and a fork copies its page tables and then makes every page the grader
- * writes fault once (copy on write).  A part's tests, run one by one, cost a
- * third less CPU in all this way.  The child borrows the parent's memory
+ * On Linux vfork, not fork: the grader holds tens of megabytes of tests
+ * and figures, and a fork copies its page tables and then makes every page
+ * the grader writes fault once (copy on write).  Grading a submission whose
+ * failing tests each run alone costs a third less CPU this way.  The child borrows the parent's memory
  * until it runs the program, so everything it needs is prepared before
  * (ChildPlan) and the child itself only calls the system.
  */
@@ -206,7 +206,7 @@ static void plan_child(ChildPlan *cp, const SandboxSpec *spec, int in_r, int ans
     }
 }
 
-/* In the child, after vfork: never returns. */
+/* In the child, after vfork (Linux) or fork: never returns. */
 static void child(const ChildPlan *cp)
 {
     const SandboxSpec *spec = cp->spec;
@@ -292,7 +292,11 @@ int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t e
     static ChildPlan plan;
     plan_child(&plan, spec, in_p[0], ans_p[1], out_p[1]);
     double start = sandbox_now(), cpu_start = sandbox_cpu(false);
-    pid_t pid = vfork();
+#if defined(__linux__)
+    pid_t pid = vfork();        /* portable: __linux__ (macOS deprecates vfork: fork there) */
+#else
+    pid_t pid = fork();
+#endif
     if (pid < 0) {
         snprintf(err, errlen, "fork: %s", strerror(errno));
         close(out_p[0]);
