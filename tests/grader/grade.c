@@ -18,6 +18,8 @@
 
 #define OUTPUT_SHOWN 1500     /* bytes of the student's own printing shown */
 #define TEST_MEMORY_MB 64     /* a test program needs 3 to 4 MiB of address space */
+#define TEST_OUTPUT_KIB 4096  /* what a test may print: a line of debugging
+                                 output per call is a few hundred KiB at most */
 #define MAX_BATCH 4096        /* tests of one part run together, at most     */
 
 static const char *kind_word[NKINDS] = { "plane", "pixel", "sphere", "camera", "color", "image",
@@ -104,7 +106,8 @@ static int run_child(const GradeOptions *opt, const Build *b, const Test *t, San
     SandboxSpec spec = {
         .argv = argv, .workdir = b->rundir, .input = input, .input_len = len,
         .timeout = opt->cfg->timeout, .answer_max = 512 + (size_t)t->ncases * 160,
-        .output_max = 64 * 1024, .memory_mb = TEST_MEMORY_MB, .max_procs = 0, .max_file_mb = 0,
+        .output_max = 64 * 1024, .output_stop = (size_t)TEST_OUTPUT_KIB << 10,
+        .memory_mb = TEST_MEMORY_MB, .max_procs = 0, .max_file_mb = 0,
     };
     int status = sandbox_run(&spec, res, err, errlen);
     free(input);
@@ -131,6 +134,9 @@ static void run_test(const GradeOptions *opt, const Build *b, const Test *t, Tes
         snprintf(whybuf, sizeof whybuf, "  it did not finish within %g s: an endless loop?\n", opt->cfg->timeout);
     } else if (res.memory_exceeded) {
         snprintf(whybuf, sizeof whybuf, "  it used more than %d MiB of memory, and was stopped\n", TEST_MEMORY_MB);
+    } else if (res.output_exceeded) {
+        snprintf(whybuf, sizeof whybuf, "  it printed more than %d KiB, and was stopped: print less "
+                 "(or nothing) from this function\n", TEST_OUTPUT_KIB);
     } else if (res.signal) {
         snprintf(whybuf, sizeof whybuf, "  it crashed: signal %d%s\n", res.signal, signal_story(res.signal));
     } else if (res.exit_code != 0) {
@@ -138,7 +144,7 @@ static void run_test(const GradeOptions *opt, const Build *b, const Test *t, Tes
                  "(does your code call exit?)\n", res.exit_code);
     }
     why = whybuf;
-    ok = ok && res.exit_code == 0 && !res.timed_out && !res.memory_exceeded;
+    ok = ok && res.exit_code == 0 && !res.timed_out && !res.memory_exceeded && !res.output_exceeded;
     r->passed = ok;
     r->score = ok ? r->max_score : 0;
 
@@ -205,6 +211,7 @@ static void run_batch(const GradeOptions *opt, const Build *b, const TestList *t
     SandboxSpec spec = {
         .argv = argv, .workdir = b->rundir, .input = input, .input_len = len,
         .timeout = opt->cfg->timeout, .answer_max = answer_max, .output_max = 4096,
+        .output_stop = (size_t)ntests * ((size_t)TEST_OUTPUT_KIB << 10),
         .memory_mb = TEST_MEMORY_MB, .max_procs = 0, .max_file_mb = 0,
     };
     SandboxResult res;
@@ -214,10 +221,11 @@ static void run_batch(const GradeOptions *opt, const Build *b, const TestList *t
     if (status != 0)
         return;
     if (res.exit_code != 0 || res.signal || res.timed_out || res.memory_exceeded ||
-        res.answer_truncated) {
+        res.output_exceeded || res.answer_truncated) {
         if (opt->verbose)
             fprintf(stderr, "  Part %s: the %d tests together: %s; each runs alone\n", part_label(part),
                     ntests, res.timed_out ? "out of time" : res.memory_exceeded ? "out of memory"
+                    : res.output_exceeded ? "it printed too much"
                     : res.signal ? "it crashed" : res.answer_truncated ? "too much output"
                     : "it exited early");
         sandbox_result_free(&res);
@@ -304,7 +312,7 @@ static int run_probe(void *ctx, const Test *t, Answers *a)
     char err[256], *verdict = NULL;
     if (pc->stopped || run_child(pc->opt, pc->b, t, &res, err, sizeof err) != 0)
         return -1;
-    pc->stopped = res.timed_out || res.memory_exceeded;
+    pc->stopped = res.timed_out || res.memory_exceeded || res.output_exceeded;
     check_answers(t, res.answer, res.answer_len, &verdict, a);
     free(verdict);
     sandbox_result_free(&res);

@@ -245,9 +245,11 @@ static void child(const ChildPlan *cp)
     _exit(127);
 }
 
-/* Appends what fd has to (buf, len), keeping at most max bytes; returns 0 at
- * end of file, 1 if it read or would block, -1 on error. */
-static int pump(int fd, char **buf, size_t *len, size_t *cap, size_t max, bool *truncated)
+/* Appends what fd has to (buf, len), keeping at most max bytes and adding
+ * to *total all it read; returns 0 at end of file, 1 if it read or would
+ * block, -1 on error. */
+static int pump(int fd, char **buf, size_t *len, size_t *cap, size_t max, bool *truncated,
+                size_t *total)
 {
     char chunk[65536];
     ssize_t n = read(fd, chunk, sizeof chunk);
@@ -255,6 +257,7 @@ static int pump(int fd, char **buf, size_t *len, size_t *cap, size_t max, bool *
         return 0;
     if (n < 0)
         return errno == EAGAIN || errno == EINTR ? 1 : -1;
+    *total += (size_t)n;
     size_t keep = (size_t)n;
     if (*len + keep > max) {
         keep = max > *len ? max - *len : 0;
@@ -313,7 +316,7 @@ int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t e
     fcntl(ans_p[0], F_SETFL, O_NONBLOCK);
     fcntl(out_p[0], F_SETFL, O_NONBLOCK);
 
-    size_t in_off = 0, ans_cap = 0, out_cap = 0;
+    size_t in_off = 0, ans_cap = 0, out_cap = 0, ans_total = 0, out_total = 0;
     int in_fd = spec->input_len ? in_p[1] : -1, ans_fd = ans_p[0], out_fd = out_p[0];
     if (in_fd < 0)
         close(in_p[1]);
@@ -342,18 +345,21 @@ int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t e
             }
         }
         if (ans_fd >= 0 && pump(ans_fd, &res->answer, &res->answer_len, &ans_cap,
-                                spec->answer_max, &res->answer_truncated) <= 0) {
+                                spec->answer_max, &res->answer_truncated, &ans_total) <= 0) {
             close(ans_fd);
             ans_fd = -1;
         }
         if (out_fd >= 0 && pump(out_fd, &res->output, &res->output_len, &out_cap,
-                                spec->output_max, &res->output_truncated) <= 0) {
+                                spec->output_max, &res->output_truncated, &out_total) <= 0) {
             close(out_fd);
             out_fd = -1;
         }
-        /* Exited, out of time, or over its memory? */
+        /* Exited, out of time, over its output or its memory? */
         if (waitpid(pid, &status, WNOHANG) == pid) {
             reaped = true;
+            exited = true;
+        } else if (spec->output_stop && out_total > spec->output_stop) {
+            res->output_exceeded = true;
             exited = true;
         } else if (sandbox_now() > deadline) {
             res->timed_out = true;
@@ -377,12 +383,12 @@ int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t e
     }
     for (int round = 0; round < 64 && (ans_fd >= 0 || out_fd >= 0); round++) {
         if (ans_fd >= 0 && pump(ans_fd, &res->answer, &res->answer_len, &ans_cap,
-                                spec->answer_max, &res->answer_truncated) <= 0) {
+                                spec->answer_max, &res->answer_truncated, &ans_total) <= 0) {
             close(ans_fd);
             ans_fd = -1;
         }
         if (out_fd >= 0 && pump(out_fd, &res->output, &res->output_len, &out_cap,
-                                spec->output_max, &res->output_truncated) <= 0) {
+                                spec->output_max, &res->output_truncated, &out_total) <= 0) {
             close(out_fd);
             out_fd = -1;
         }
@@ -401,7 +407,7 @@ int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t e
 
     res->seconds = sandbox_now() - start;
     res->cpu_seconds = sandbox_cpu(false) - cpu_start;
-    bool killed = res->timed_out || res->memory_exceeded;
+    bool killed = res->timed_out || res->memory_exceeded || res->output_exceeded;
     res->exit_code = WIFEXITED(status) && !killed ? WEXITSTATUS(status) : -1;
     res->signal = WIFSIGNALED(status) && !killed ? WTERMSIG(status) : 0;
     if (!res->answer && !(res->answer = calloc(1, 1)))

@@ -4,9 +4,10 @@
  * The child gets its own process group, an empty working directory, a small
  * environment, no file descriptors but stdin, stdout/stderr (one pipe) and
  * the answer pipe on fd 3, and resource limits: CPU time, memory, no new
- * processes, no file output.  When the grader runs as root the child runs
- * as the unprivileged user "nobody".  The parent enforces the wall-clock
- * limit by killing the whole process group -- nothing the child does (alarm,
+ * processes, no file output, and, if asked, how much it may print.  When
+ * the grader runs as root the child runs as the unprivileged user "nobody".
+ * The parent enforces the wall-clock and output limits by killing the whole
+ * process group -- nothing the child does (alarm,
  * signals, exit, fork, closing descriptors) can stall it or forge a result.
  *
  * Memory: the kernel enforces memory_mb as each process's address space
@@ -31,6 +32,9 @@ typedef struct {
     double timeout;            /* wall-clock seconds before the group is killed */
     size_t answer_max;         /* bytes kept from fd 3 (the rest is dropped)  */
     size_t output_max;         /* bytes kept from stdout and stderr           */
+    size_t output_stop;        /* bytes of stdout and stderr after which the
+                                  group is stopped; 0: never (what is over
+                                  output_max is read and dropped)            */
     long memory_mb;            /* memory limit (see above); 0 = none          */
     long address_mb;           /* RLIMIT_AS when not memory_mb (0: memory_mb,
                                   -1: none); the tests of the sandbox set it
@@ -52,6 +56,8 @@ typedef struct {
     bool timed_out;
     bool memory_exceeded;      /* killed by the parent for using more than
                                   memory_mb                                   */
+    bool output_exceeded;      /* killed by the parent for printing more than
+                                  output_stop bytes                           */
     int exit_code;             /* the exit status, or -1 when killed          */
     int signal;                /* the signal that ended it, or 0             */
     double seconds;

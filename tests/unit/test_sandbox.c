@@ -206,11 +206,43 @@ static void test_descriptors_closed(void)
     }
 }
 
+/* output_stop: a child that prints without end is stopped once the parent
+ * has read that much, long before its time is up, and says so; output_max
+ * of it is kept.  Without output_stop the same child runs out of time. */
+static void test_output_stop(void)
+{
+    SandboxResult res;
+    SandboxSpec spec = { .memory_mb = 48, .max_procs = 0, .output_stop = 256 << 10, .timeout = 5 };
+    if (run_sh("while :; do echo spam spam spam spam spam spam spam; done", spec, &res) != 0)
+        return;
+    CHECK(res.output_exceeded);
+    CHECK(!res.timed_out);
+    CHECK_MSG(res.seconds < 2, "stopped after %.2f s", res.seconds);
+    CHECK_EQ_INT(res.exit_code, -1);
+    CHECK(res.output_truncated);
+    CHECK_STR_CONTAINS(res.output, "spam");
+    sandbox_result_free(&res);
+    spec.output_stop = 0;
+    spec.timeout = 0.5;
+    if (run_sh("while :; do echo spam spam spam spam spam spam spam; done", spec, &res) != 0)
+        return;
+    CHECK(!res.output_exceeded);
+    CHECK(res.timed_out);
+    sandbox_result_free(&res);
+    spec.output_stop = 256 << 10;                  /* a little output is fine */
+    if (run_sh("echo hello; echo done >&3", spec, &res) != 0)
+        return;
+    CHECK(!res.output_exceeded);
+    CHECK_EQ_INT(res.exit_code, 0);
+    CHECK_STR_CONTAINS(res.answer, "done");
+    sandbox_result_free(&res);
+}
+
 static const CheckTest tests[] = {
     CHECK_TEST(test_memory_watch),     CHECK_TEST(test_memory_stops_hog), CHECK_TEST(test_small_program_runs),
     CHECK_TEST(test_oom_score_adj),    CHECK_TEST(test_killed_reported),  CHECK_TEST(test_cpu_limit),
     CHECK_TEST(test_wall_clock),       CHECK_TEST(test_no_file_output),   CHECK_TEST(test_no_processes),
-    CHECK_TEST(test_descriptors_closed),
+    CHECK_TEST(test_descriptors_closed), CHECK_TEST(test_output_stop),
 };
 
 int main(int argc, char **argv)
