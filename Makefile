@@ -172,7 +172,7 @@ all: $(BUILD)/bin/htmlcheck
 HAVE_ORACLE := $(wildcard tests/oracle/oracle.h)
 HAVE_HIDDEN := $(wildcard tests/hidden/hidden.c)
 GRADER_LIB_SRC = tests/grader/cases.c tests/grader/check.c tests/grader/sandbox.c \
-                 tests/grader/build.c tests/grader/include_scan.c tests/grader/config.c tests/grader/grade.c \
+                 tests/grader/build.c tests/grader/memo.c tests/grader/include_scan.c tests/grader/config.c tests/grader/grade.c \
                  tests/grader/report_table.c tests/grader/report_json.c \
                  tests/grader/diagnose.c \
                  tests/grader/report_render.c tests/grader/report_html.c tests/grader/markup.c \
@@ -340,8 +340,8 @@ $(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN)
 	@mkdir -p $(@D)
 	$(CC) $(SANFLAGS) $(THREADS) -Ilabs $< $(REF_ASAN) $(UNIT_LIBS_ASAN) -o $@ $(LDLIBS)
 
-# The unit tests of the grader's sandbox and include scan link the part alone.
-GRADER_UNITS = sandbox include_scan
+# The unit tests of the grader's sandbox, include scan and memo link the part alone.
+GRADER_UNITS = sandbox include_scan memo
 $(GRADER_UNITS:%=$(BUILD)/tests/test_%): $(BUILD)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
                                          tests/grader/%.c tests/grader/%.h
 	@mkdir -p $(@D)

@@ -23,6 +23,8 @@ typedef struct {
     bool load;                 /* objdir has the prebuilt runners runner_<k>
                                   (Linux): a part with one student file is
                                   built as a shared object they load       */
+    const char *memo;          /* NULL, or where grade --all keeps what each
+                                  distinct stage file built into (memo.h)   */
 } BuildConfig;
 
 typedef struct {

@@ -130,6 +130,13 @@ for class in subs subs45; do
     check "gradebook.csv written" [ -f "$tmp/grades-$class/gradebook.csv" ]
     check "the gradebook has a column per graded part ($header)" \
         grep -q "^$header\$" "$tmp/grades-$class/gradebook.csv"
+    # As root each distinct stage file is compiled once per run (memo.h):
+    # here the reference's files are the same in every submission.
+    if [ "$(id -u)" = 0 ]; then
+        check "as root, grade --all compiles identical files once ($(grep '^compiled ' "$tmp/all.out"))" \
+            awk '/^compiled [0-9]+ distinct stage files once each, for [0-9]+ files in all$/ {
+                     if ($2 > 0 && $2 < $9) ok = 1 } END { exit !ok }' "$tmp/all.out"
+    fi
     echo "   graded $(ls "$tmp/$class" | wc -l | tr -d ' ') submissions in ${elapsed} s ($conf)"
 done
 
@@ -250,6 +257,8 @@ done <"$tmp/points"
 # On Linux a part with one student file is built as a shared object that a
 # prebuilt runner loads; GRADE_NO_LOAD=1 links the whole program as
 # elsewhere.  Both ways must give the same grades, link errors included.
+# GRADE_NO_MEMO=1 too: as root the classes above reused identical files'
+# objects, and compiling every file must not change a grade either.
 if [ -x out/build/grader/runner_1 ]; then
     mkdir "$tmp/parity"
     for sname in link-defines-main link-defines-other-part link-undefined link-libm \
@@ -257,7 +266,7 @@ if [ -x out/build/grader/runner_1 ]; then
         cp -R "$tmp/subs/$sname" "$tmp/parity/"
     done
     chmod -R a+rX "$tmp/parity"
-    GRADE_NO_LOAD=1 $grade --all "$tmp/parity" --out "$tmp/grades-parity" --jobs 2 >"$tmp/parity.out" 2>&1
+    GRADE_NO_LOAD=1 GRADE_NO_MEMO=1 $grade --all "$tmp/parity" --out "$tmp/grades-parity" --jobs 2 >"$tmp/parity.out" 2>&1
     for sname in $(ls "$tmp/parity"); do
         check "$sname: the same grades linked whole as loaded" \
             [ "$(grep "^$sname," "$tmp/grades-parity/gradebook.csv")" = \
