@@ -5,7 +5,8 @@
 # so that a failure in a long log is found at once.
 #
 # The suites run at the same time, in lanes: a lane runs its suites one
-# after the other, and the lanes run side by side.  Suites that build the
+# after the other, and the lanes run side by side; a suite that could
+# disturb the others runs alone once they have finished.  Suites that build the
 # same thing share a lane (student_kit.sh and classroom.sh both make the
 # student kit), and so do the unit tests.  Each suite's output is kept
 # apart and shown whole, in a fixed order, once all have finished.
@@ -41,11 +42,14 @@ if [ $# -gt 0 ]; then
     mv "$items.only" "$items"
 fi
 
-# lane_of NAME: the lane a suite runs in.
+# lane_of NAME: the lane a suite runs in; "alone" for the suites that run
+# after all the lanes, by themselves (signals.sh runs code that signals
+# every process of the tests' unprivileged user, other suites' included).
 lane_of() {
     case $1 in
     unit*) echo unit ;;
     student_kit.sh | classroom.sh) echo kit ;;
+    signals.sh) echo alone ;;
     *) echo "$1" ;;
     esac
 }
@@ -66,6 +70,7 @@ while IFS='|' read -r name cmd; do
 done <"$items"
 for lane in "$dir"/lane.*; do
     [ -f "$lane" ] || continue
+    [ "$lane" = "$dir/lane.alone" ] && continue
     (
         while IFS='|' read -r k name cmd; do
             run_item "$k" "$name" "$cmd"
@@ -73,6 +78,11 @@ for lane in "$dir"/lane.*; do
     ) &
 done
 wait
+if [ -f "$dir/lane.alone" ]; then
+    while IFS='|' read -r k name cmd; do
+        run_item "$k" "$name" "$cmd"
+    done <"$dir/lane.alone"
+fi
 
 passed=0
 failed=0
@@ -105,7 +115,9 @@ if [ -s "$failures" ]; then
     echo "Failed:"
     cat "$failures"
 fi
-lanes=$(ls "$dir" | grep -c '^lane\.')
-echo "took $(($(date +%s) - start)) s ($k suites in $lanes lanes side by side)"
+lanes=$(ls "$dir" | grep '^lane\.' | grep -c -v '^lane\.alone$')
+alone=0
+[ -f "$dir/lane.alone" ] && alone=$(wc -l <"$dir/lane.alone" | tr -d ' ')
+echo "took $(($(date +%s) - start)) s ($k suites: in $lanes lanes side by side, then $alone alone)"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -276,42 +276,6 @@ else
     echo "   no prebuilt runners (not Linux): every part's program is linked whole; parity not checked"
 fi
 
-# As root, grade --all grades one submission at a time unless told otherwise:
-# every submission's code runs as the same unprivileged user, and code that
-# signals every process it may (kill(-1, SIGKILL)) would stop a classmate's
-# tests.  Graded beside the reference, that code must cost the reference
-# nothing.  (Not as another user: there it would stop this suite too.)
-if [ "$(id -u)" = 0 ]; then
-    mkdir -p "$tmp/killers/a-reference" "$tmp/killers/b-kill-all"
-    cp solutions/part*.c "$tmp/killers/a-reference/"
-    cp solutions/part*.c "$tmp/killers/b-kill-all/"
-    cat >"$tmp/killers/b-kill-all/part1_image_plane.c" <<'EOF'
-#define _POSIX_C_SOURCE 200809L
-#include "raytracer.h"
-#include <signal.h>
-#include <time.h>
-
-void image_plane_size(double fov_degrees, double aspect, double d, double *w, double *h)
-{
-    (void)fov_degrees, (void)aspect, (void)d;
-    *w = *h = 0;
-    for (;;) {                         /* every process of this user, until stopped */
-        kill(-1, SIGKILL);
-        nanosleep(&(struct timespec){ 0, 1000000 }, NULL);
-    }
-}
-EOF
-    chmod -R a+rX "$tmp/killers"
-    $grade --all "$tmp/killers" --out "$tmp/grades-killers" >"$tmp/killers.out" 2>&1
-    check "as root, grade --all says it grades one submission at a time" \
-        grep -q "one submission at a time" "$tmp/killers.out"
-    check "code that signals every process costs the submission beside it nothing" \
-        grep -q "^a-reference,20,20,30,30," "$tmp/grades-killers/gradebook.csv"
-    check "and loses its own Part 1" grep -q "^b-kill-all,0," "$tmp/grades-killers/gradebook.csv"
-else
-    echo "   not root: the children run as this user; the check of signalling code was skipped"
-fi
-
 # Code that works for a test's calls but not for a whole part's in one process:
 # the tests run together fail, and each runs alone (grade --verbose says so).
 for sname in hostile-crash-across-tests hostile-state-across-tests; do
