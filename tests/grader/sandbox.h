@@ -66,7 +66,8 @@ typedef struct {
 } SandboxResult;
 
 /* Runs spec's program.  Returns 0 when it ran (whatever it did), or -1 when
- * the sandbox itself failed, with a reason in err. */
+ * the sandbox itself failed, with a reason in err.  One call at a time per
+ * process: the child's plan is prepared in static storage (sandbox.c). */
 int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t errlen);
 void sandbox_result_free(SandboxResult *res);
 
