@@ -91,6 +91,22 @@ static const char *signal_story(int sig)
     }
 }
 
+/* The limits of a child that runs ntests tests of the part's program (b)
+ * on input: one test's time and memory, ntests tests' output, no file, no
+ * process.  argv (3 slots) is filled with the program and its object. */
+static SandboxSpec test_spec(const GradeOptions *opt, const Build *b, char **argv, const char *input,
+                             size_t len, int ntests)
+{
+    argv[0] = (char *)b->runner;
+    argv[1] = b->object[0] ? (char *)b->object : NULL;
+    argv[2] = NULL;
+    return (SandboxSpec){
+        .argv = argv, .workdir = b->rundir, .input = input, .input_len = len,
+        .timeout = opt->cfg->timeout, .output_stop = (size_t)ntests * ((size_t)TEST_OUTPUT_KIB << 10),
+        .memory_mb = TEST_MEMORY_MB, .max_procs = 0, .max_file_mb = 0,
+    };
+}
+
 /* Runs test t in a fresh sandboxed child of the part's program; 0 when
  * it ran (res then holds what it did), -1 with a reason in err. */
 static int run_child(const GradeOptions *opt, const Build *b, const Test *t, SandboxResult *res,
@@ -102,13 +118,10 @@ static int run_child(const GradeOptions *opt, const Build *b, const Test *t, San
         snprintf(err, errlen, "out of memory");
         return -1;
     }
-    char *argv[] = { (char *)b->runner, b->object[0] ? (char *)b->object : NULL, NULL };
-    SandboxSpec spec = {
-        .argv = argv, .workdir = b->rundir, .input = input, .input_len = len,
-        .timeout = opt->cfg->timeout, .answer_max = 512 + (size_t)t->ncases * 160,
-        .output_max = 64 * 1024, .output_stop = (size_t)TEST_OUTPUT_KIB << 10,
-        .memory_mb = TEST_MEMORY_MB, .max_procs = 0, .max_file_mb = 0,
-    };
+    char *argv[3];
+    SandboxSpec spec = test_spec(opt, b, argv, input, len, 1);
+    spec.answer_max = 512 + (size_t)t->ncases * 160;
+    spec.output_max = 64 * 1024;
     int status = sandbox_run(&spec, res, err, errlen);
     free(input);
     return status;
@@ -207,13 +220,10 @@ static void run_batch(const GradeOptions *opt, const Build *b, const TestList *t
         free(input);
         return;
     }
-    char *argv[] = { (char *)b->runner, b->object[0] ? (char *)b->object : NULL, NULL };
-    SandboxSpec spec = {
-        .argv = argv, .workdir = b->rundir, .input = input, .input_len = len,
-        .timeout = opt->cfg->timeout, .answer_max = answer_max, .output_max = 4096,
-        .output_stop = (size_t)ntests * ((size_t)TEST_OUTPUT_KIB << 10),
-        .memory_mb = TEST_MEMORY_MB, .max_procs = 0, .max_file_mb = 0,
-    };
+    char *argv[3];
+    SandboxSpec spec = test_spec(opt, b, argv, input, len, ntests);
+    spec.answer_max = answer_max;
+    spec.output_max = 4096;
     SandboxResult res;
     char err[256];
     int status = sandbox_run(&spec, &res, err, sizeof err);
@@ -329,7 +339,7 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         snprintf(err, errlen, "out of memory");
         return -1;
     }
-    double start = sandbox_now(), self_start = sandbox_cpu(true);
+    double start = sandbox_now();
     const GradeConfig *cfg = opt->cfg;
 
     /* Points: each group's points shared by its tests' weights. */
@@ -431,7 +441,6 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         }
     }
     g->seconds = sandbox_now() - start;
-    g->cpu_grader = sandbox_cpu(true) - self_start;
     return 0;
 }
 

@@ -34,12 +34,12 @@ typedef struct {
     double total, total_max;   /* core, plus hard when it is not a bonus      */
     double bonus, bonus_max;   /* hard points when they are a bonus           */
     double seconds;
-    /* Where the CPU time went (user and system seconds): compiling the
-     * stage files, linking the parts' programs, running the tests (in one
-     * child per part, then one per test that one did not pass), running the
-     * diagnosis's probes, and the grader's own work (judging, diagnosing,
-     * starting children). */
-    double cpu_compile, cpu_link, cpu_tests, cpu_probes, cpu_grader;
+    /* Where the children's CPU time went (user and system seconds):
+     * compiling the stage files, linking the parts' programs, running the
+     * tests (in one child per part, then one per test that one did not
+     * pass) and the diagnosis's probes.  grade --cost adds the grader's own
+     * (the whole process's, reading the tests included). */
+    double cpu_compile, cpu_link, cpu_tests, cpu_probes;
 } Grade;
 
 /* Grades; 0 on success, -1 when the grader itself could not run. */

@@ -6,9 +6,10 @@
  * On Linux vfork, not fork: the grader holds tens of megabytes of tests
  * and figures, and a fork copies its page tables and then makes every page
  * the grader writes fault once (copy on write).  Grading a submission whose
- * failing tests each run alone costs a third less CPU this way.  The child borrows the parent's memory
- * until it runs the program, so everything it needs is prepared before
- * (ChildPlan) and the child itself only calls the system.
+ * failing tests each run alone costs a third less CPU this way.  The child
+ * borrows the parent's memory until it runs the program, so everything it
+ * needs is prepared before (ChildPlan) and the child itself only calls the
+ * system.
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DEFAULT_SOURCE         /* setgroups, on glibc */

@@ -7,8 +7,8 @@
  * processes, no file output, and, if asked, how much it may print.  When
  * the grader runs as root the child runs as the unprivileged user "nobody".
  * The parent enforces the wall-clock and output limits by killing the whole
- * process group -- nothing the child does (alarm,
- * signals, exit, fork, closing descriptors) can stall it or forge a result.
+ * process group -- nothing the child does (alarm, signals, exit, fork,
+ * closing descriptors) can stall it or forge a result.
  *
  * Memory: the kernel enforces memory_mb as each process's address space
  * (RLIMIT_AS) on Linux.  macOS refuses so small an address space (every
