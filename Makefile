@@ -343,13 +343,13 @@ $(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN)
 # The unit tests of the grader's sandbox, include scan and memo link the part alone.
 GRADER_UNITS = sandbox include_scan memo
 $(GRADER_UNITS:%=$(BUILD)/tests/test_%): $(BUILD)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
-                                         tests/grader/%.c tests/grader/%.h
+                                         tests/grader/%.c tests/grader/%.h $(BUILD)/kit/libkit.a
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) $< tests/grader/$*.c -o $@ $(LDLIBS)
+	$(CC) $(CFLAGS) -Ilabs $< tests/grader/$*.c $(BUILD)/kit/libkit.a -o $@ $(LDLIBS)
 $(GRADER_UNITS:%=$(ASAN)/tests/test_%): $(ASAN)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
-                                        tests/grader/%.c tests/grader/%.h
+                                        tests/grader/%.c tests/grader/%.h $(ASAN)/kit/libkit.a
 	@mkdir -p $(@D)
-	$(CC) $(SANFLAGS) $< tests/grader/$*.c -o $@ $(LDLIBS)
+	$(CC) $(SANFLAGS) -Ilabs $< tests/grader/$*.c $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
 
 # ---- bench: speed against accuracy (tests/bench) ----------------------------
 # `make bench` writes out/bench/: results.csv, report.md, plot.svg and more

@@ -7,6 +7,7 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too */
 #include "memo.h"
+#include "kit/savefile.h"
 
 #include <errno.h>
 #include <stdint.h>
@@ -14,7 +15,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #define MEMO_SOURCE_MAX (1 << 20)   /* as a stage file may be (build.c)       */
 #define MEMO_FILE_MAX (64 << 20)    /* an object or a shared object           */
@@ -26,35 +26,31 @@ static char *slurp(const char *path, size_t max, size_t *len)
     FILE *f = fopen(path, "rb");
     if (!f)
         return NULL;
-    char *buf = malloc(max + 1);
-    size_t n = buf ? fread(buf, 1, max + 1, f) : 0;
-    bool bad = !buf || ferror(f) || n > max;
-    fclose(f);
-    if (bad) {
-        free(buf);
-        return NULL;
+    struct stat st;
+    char *buf = NULL;
+    size_t n = 0;
+    if (fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode) && (size_t)st.st_size <= max &&
+        (buf = malloc((size_t)st.st_size + 1)) != NULL) {
+        n = fread(buf, 1, (size_t)st.st_size, f);
+        if (n != (size_t)st.st_size || ferror(f) || getc(f) != EOF) {
+            free(buf);                  /* changed while read */
+            buf = NULL;
+        }
     }
+    fclose(f);
+    if (!buf)
+        return NULL;
     buf[n] = '\0';
     *len = n;
     return buf;
 }
 
-/* Writes len bytes to name in dir through a temporary name; 0 on success. */
+/* Writes len bytes as name in dir, all or nothing (kit_save_file). */
 static int put(const char *dir, const char *name, const char *bytes, size_t len)
 {
-    char path[1200], tmp[1220];
+    char path[1200], err[64];
     snprintf(path, sizeof path, "%s/%s", dir, name);
-    snprintf(tmp, sizeof tmp, "%s.%ld.tmp", path, (long)getpid());
-    FILE *f = fopen(tmp, "wb");
-    if (!f)
-        return -1;
-    bool ok = fwrite(bytes, 1, len, f) == len;
-    ok = fclose(f) == 0 && ok;
-    if (!ok || rename(tmp, path) != 0) {
-        unlink(tmp);
-        return -1;
-    }
-    return 0;
+    return kit_save_file(path, bytes, len, err, sizeof err);
 }
 
 bool memo_find(const char *memo, const char *stage, const char *kind, const char *src, MemoEntry *e)
