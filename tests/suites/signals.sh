@@ -34,10 +34,17 @@ void image_plane_size(double fov_degrees, double aspect, double d, double *w, do
 {
     (void)fov_degrees, (void)aspect, (void)d;
     *w = *h = 0;
-    for (;;) {                         /* every process of this user, until stopped */
+    /* Every process of this user, every millisecond for 20 ms, on the
+     * first call in each process: a classmate's tests running meanwhile
+     * would die.  Then wrong answers, rather than looping until the time
+     * limit, which would cost this suite (it runs alone) seconds for each
+     * of the part's tests. */
+    static int calls;
+    for (int k = 0; k < 20 && calls == 0; k++) {
         kill(-1, SIGKILL);
         nanosleep(&(struct timespec){ 0, 1000000 }, NULL);
     }
+    calls++;
 }
 EOF
     chmod -R a+rX "$tmp/killers"
