@@ -362,7 +362,7 @@ $(BUILD)/bench/%.o: tests/bench/%.c $(wildcard tests/bench/*.h) $(wildcard tests
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 # The fast path's sqrt is vectorised only if it need not set errno (no result changes).
-$(BUILD)/bench/fastpath.o: CFLAGS += -fno-math-errno
+$(BUILD)/bench/fastpath.o $(BUILD)/bench/measure.o: CFLAGS += -fno-math-errno
 $(BUILD)/bin/bench: $(BENCH_OBJ) $(STAGES:%=$(BUILD)/sub/solutions/%.o) \
                     $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a
 	@mkdir -p $(@D)

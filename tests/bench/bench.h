@@ -256,6 +256,9 @@ typedef struct {
     double add_per_cycle;      /* independent vector adds per cycle         */
     double mix_per_cycle;      /* the two interleaved                       */
     double mul_pipes, add_pipes, mix_pipes;   /* the same, rounded          */
+    double sqrt_per_cycle;     /* square roots per cycle, per lane (as the
+                                  fast path's solve is compiled)            */
+    double div_per_cycle;      /* divisions per cycle, per lane (likewise)  */
     double cycles_per_vector;  /* for one vector of tests                   */
     int lanes_d, lanes_f;      /* vector lanes the portable build uses      */
     int ops_mul, ops_add;      /* per test, the minimum for the lab scene   */

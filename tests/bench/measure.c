@@ -144,6 +144,47 @@ static double ops_per_cycle(int kind, long n, double mhz)
     return 12.0 * (double)n / (dt * mhz * 1e6);
 }
 
+/* What a hit costs on top: sqrt and division, per number (lane).  Each of
+ * 24 numbers is its own chain, x = sqrt(x) or x = x / 1, written as the fast
+ * path's solve writes them (a loop over an array), so that the compiler
+ * makes of them what it makes of the solve: vectors of two doubles with the
+ * flags the bench builds both with (-fno-math-errno, as fastpath.o).  The
+ * store and reload between rounds (MEMORY_BARRIER) add latency, not
+ * throughput: 24 chains are more than enough to hide it. */
+#if defined(__GNUC__) || defined(__clang__)
+#define MEMORY_BARRIER() __asm__ volatile("" ::: "memory")
+#else
+#define MEMORY_BARRIER() ((void)0)
+#endif
+
+static double lanes_per_cycle(int kind, long n, double mhz)
+{
+    double a[24];
+    for (int k = 0; k < 24; k++)
+        a[k] = 2 + k;
+    double m = opaque_one;
+    double t0 = now_seconds();
+    if (kind == 0) {
+        for (long i = 0; i < n; i++) {
+            for (int k = 0; k < 24; k++)
+                a[k] = sqrt(a[k]);
+            MEMORY_BARRIER();
+        }
+    } else {
+        for (long i = 0; i < n; i++) {
+            for (int k = 0; k < 24; k++)
+                a[k] = a[k] / m;
+            MEMORY_BARRIER();
+        }
+    }
+    double dt = now_seconds() - t0;
+    double sum = 0;
+    for (int k = 0; k < 24; k++)
+        sum += a[k];
+    bench_sink += sum;
+    return 24.0 * (double)n / (dt * mhz * 1e6);
+}
+
 /* The least work a test needs in the lab's scenes: with the eye at the
  * origin, b = c.r (3 multiplies, 2 adds) and its comparison with a threshold
  * known per sphere (b >= sqrt(C) from outside: 1 compare).  A hit also needs
@@ -154,7 +195,7 @@ void measure_ceiling(Ceiling *c, bool quick, double mhz_during)
 {
     enum { REPS = 9 };
     long n = quick ? 5000000L : 40000000L, nf = n / 8;
-    double mhz[REPS], mul[REPS], add[REPS], mix[REPS];
+    double mhz[REPS], mul[REPS], add[REPS], mix[REPS], sq[REPS], dv[REPS];
     int reps = quick ? 3 : REPS;
     /* Each repetition measures the clock and then the rates in cycles of
      * that clock; the medians shrug off the repetitions another process
@@ -164,6 +205,8 @@ void measure_ceiling(Ceiling *c, bool quick, double mhz_during)
         mul[r] = ops_per_cycle(0, nf, mhz[r]);
         add[r] = ops_per_cycle(1, nf, mhz[r]);
         mix[r] = ops_per_cycle(2, nf, mhz[r]);
+        sq[r] = lanes_per_cycle(0, nf / 8, mhz[r]);
+        dv[r] = lanes_per_cycle(1, nf / 8, mhz[r]);
     }
     c->mhz_cpuinfo = cpuinfo_mhz();
     c->mhz_measured = mhz_during > 0 ? mhz_during : median(mhz, reps);
@@ -171,6 +214,8 @@ void measure_ceiling(Ceiling *c, bool quick, double mhz_during)
     c->mul_per_cycle = median(mul, reps);
     c->add_per_cycle = median(add, reps);
     c->mix_per_cycle = median(mix, reps);
+    c->sqrt_per_cycle = median(sq, reps);
+    c->div_per_cycle = median(dv, reps);
     /* Pipes come in whole numbers: use the nearest (at least 1). */
     double pm = floor(c->mul_per_cycle + 0.5), pa = floor(c->add_per_cycle + 0.5),
            px = floor(c->mix_per_cycle + 0.5);

@@ -459,6 +459,32 @@ static void md_findings(FILE *f, const BenchResults *br)
             label(best), P(share(br, best)));
 }
 
+/* Where the double fast path's cycles go, per (packet, sphere) pair: the
+ * filter at the ceiling's rate, the solves' sqrt and division at their
+ * measured rates, and what is left.  The sqrt and division run on their own
+ * unit, which can work while the multiplies and adds go on: the parts are
+ * sizes, not a sum that must add up. */
+static void md_fast_budget(FILE *f, const BenchResults *br, int fd)
+{
+    const Ceiling *c = &br->ceiling;
+    if (!(br->mtests[fd] > 0) || !(c->sqrt_per_cycle > 0) || !(c->div_per_cycle > 0) ||
+        br->fast_pairs <= 0)
+        return;
+    double solved = (double)br->fast_solved / (double)br->fast_pairs;
+    double pair = FAST_PACKET * c->mhz / br->mtests[fd];
+    double filter = FAST_PACKET * c->cycles_per_vector / c->lanes_d;
+    double ray_solve = 1 / c->sqrt_per_cycle + 1 / c->div_per_cycle;
+    double solve = solved * FAST_PACKET * ray_solve;
+    fprintf(f, "- **Where its time goes**, in cycles per (packet, sphere) pair: %.1f in all. "
+               "The filter at the ceiling's rate needs %.1f; the solves' square roots and "
+               "divisions %.1f more on their own unit (%s of the pairs, %d rays each, %.1f "
+               "cycles a ray at the %.2f sqrts and %.2f divisions per cycle measured, per "
+               "number), which may overlap the multiplies and adds; the rest is the solves' "
+               "other arithmetic, loading rays, forming masks, the loops and calls.\n",
+            pair, filter, solve, P(solved), FAST_PACKET, ray_solve, c->sqrt_per_cycle,
+            c->div_per_cycle);
+}
+
 static void md_ceiling(FILE *f, const BenchResults *br)
 {
     const Ceiling *c = &br->ceiling;
@@ -488,6 +514,10 @@ static void md_ceiling(FILE *f, const BenchResults *br)
                "in double, %.0f in float**.\n",
             c->ops_mul, c->mul_pipes, c->ops_add, c->add_pipes, c->ops_mul + c->ops_add,
             c->mix_pipes, c->cycles_per_vector, c->ceiling_d, c->ceiling_f);
+    fprintf(f, "- **Sqrt and division**, which only hits need: %.2f square roots and %.2f "
+               "divisions per cycle (24 independent chains each, per number, compiled as the "
+               "fast path's solve is).\n",
+            c->sqrt_per_cycle, c->div_per_cycle);
     fprintf(f, "- Not counted: loading the rays, the loop, the hits' sqrt and division. With "
                "-march=native (AVX-512 here) the vectors, and so the ceiling, would be four "
                "times wider; the kit does not use it, to stay portable.\n");
@@ -551,6 +581,7 @@ static int write_md(const BenchResults *br, const char *dir, char *err, size_t e
             100 * SHARE_TARGET, share(br, fd) >= SHARE_TARGET ? "met" : "not met",
             P(br->fast_pairs > 0 ? (double)br->fast_solved / (double)br->fast_pairs : 0),
             FAST_PACKET);
+    md_fast_budget(f, br, fd);
     struct { int fast, base; } pairs[] = { { fd, tb }, { fm, tb }, { ff, tf } };
     for (int k = 0; k < 3; k++) {
         int p = pairs[k].fast, q = pairs[k].base;
