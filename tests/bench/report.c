@@ -477,7 +477,7 @@ static void md_fast_budget(FILE *f, const BenchResults *br, int fd)
     double solve = solved * FAST_PACKET * ray_solve;
     fprintf(f, "- **Where its time goes**, in cycles per (packet, sphere) pair: %.1f in all. "
                "The filter at the ceiling's rate needs %.1f; the solves' square roots and "
-               "divisions %.1f more on their own unit (%s of the pairs, %d rays each, %.1f "
+               "divisions take %.1f of their own unit (%s of the pairs, %d rays each, %.1f "
                "cycles a ray at the %.2f sqrts and %.2f divisions per cycle measured, per "
                "number), which may overlap the multiplies and adds; the rest is the solves' "
                "other arithmetic, loading rays, forming masks, the loops and calls.\n",
