@@ -238,13 +238,6 @@ static int check_dependencies(const BuildConfig *cfg, Build *b, const char *depf
     return status;
 }
 
-/* Builds b->dir/src/runner from the prebuilt harness object harness (a file
- * name in cfg->objdir), the submission's stage files of the nparts parts
- * listed (each compiled here, or copied from the directory kept when it
- * holds that stage's object from an earlier build of the same files), and,
- * when skip >= 0 and cfg has them, the reference objects of every part but
- * skip.  Returns 0 when the grader could do its job (b->ok says whether the
- * student's code built), -1 when it could not (err says why). */
 /* The shared-object way (cfg->load): links the student's object alone
  * into b->dir/src/student.so, copies the prebuilt runner for the part, and
  * has it load the object once (runner --check) to see what the linker of a
@@ -295,6 +288,17 @@ static int load_program(const BuildConfig *cfg, Build *b, int part, const char *
     return 0;
 }
 
+/* Builds b->dir/src/runner from the prebuilt harness object harness (a file
+ * name in cfg->objdir), the submission's stage files of the nparts parts
+ * listed (each compiled here, or copied from the directory kept when it
+ * holds that stage's object from an earlier build of the same files), and,
+ * when skip >= 0 and cfg has them, the reference objects of every part but
+ * skip; with cfg->load and one stage file of one part, that file as a
+ * shared object and the part's prebuilt runner instead (load_program).
+ * Each stage file's object comes from cfg->memo when the same bytes built
+ * before in this grade --all run.  Returns 0 when the grader could do its
+ * job (b->ok says whether the student's code built), -1 when it could not
+ * (err says why). */
 static int build_program(const BuildConfig *cfg, const char *harness, const int *parts, int nparts,
                          int skip, const char *kept, const char *submission, Build *b,
                          char *err, size_t errlen)
