@@ -165,6 +165,12 @@ $(BUILD)/bin/htmlcheck: $(BUILD)/tools/htmlcheck_main.o
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 all: $(BUILD)/bin/htmlcheck
+# The kit's own tests compile each distinct file once (tests/tools/ccmemo_main.c):
+# built as "cc", beside a marker that tells it its own directory on PATH.
+$(BUILD)/ccmemo/cc: $(BUILD)/tools/ccmemo_main.o
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $^ -o $@
+	: >$(@D)/ccmemo.marker
 
 # ---- the autograder (tests/grader) ------------------------------------------
 # In the instructor's kit the grader also draws the hidden tests with the
@@ -378,7 +384,7 @@ $(ASAN)/bin/render-solutions: $(ASAN)/kit/render_main.o $(REF_ASAN) $(ASAN)/kit/
 	$(CC) $(SANFLAGS) $(THREADS) $^ -o $@ $(LDLIBS)
 
 # What the tests need built (`make -j2 test-build` builds it on two cores).
-test-build: all $(UNIT_ASAN) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)
+test-build: all $(BUILD)/ccmemo/cc $(UNIT_ASAN) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)
 test: test-build
 	@sh tests/run.sh
 

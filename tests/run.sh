@@ -23,6 +23,16 @@ mkdir -p "$dir"
 : >"$failures"
 start=$(date +%s)
 
+# Builds in the suites compile each distinct file once (tests/tools/ccmemo_main.c):
+# four suites build a packaged kit from the same sources.  NO_CC_MEMO=1: not.
+memo=$PWD/out/tests/cc-memo
+rm -rf "$memo"
+if [ -x out/build/ccmemo/cc ] && [ -z "${NO_CC_MEMO:-}" ] && mkdir -p "$memo"; then
+    PATH=$PWD/out/build/ccmemo:$PATH
+    CC_MEMO=$memo
+    export PATH CC_MEMO
+fi
+
 # The items, in the order they are shown: "name|command".
 items=$dir/items
 : >"$items"
@@ -118,6 +128,9 @@ fi
 lanes=$(ls "$dir" | grep '^lane\.' | grep -c -v '^lane\.alone$')
 alone=0
 [ -f "$dir/lane.alone" ] && alone=$(wc -l <"$dir/lane.alone" | tr -d ' ')
+if [ -f "$memo/log" ]; then
+    echo "compiles in the suites: $(grep -c '^compiled ' "$memo/log") compiled, $(grep -c '^used ' "$memo/log") served from the memo"
+fi
 echo "took $(($(date +%s) - start)) s ($k suites: in $lanes lanes side by side, then $alone alone)"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

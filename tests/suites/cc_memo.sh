@@ -1,0 +1,70 @@
+#!/bin/sh
+# The compile memo the suites build with (tests/tools/ccmemo_main.c):
+# - a second compile of the same file is served from the memo, and gives
+#   the object a direct compile gives, byte for byte, with its warnings;
+# - a change to a header the file includes, or to the flags, compiles again;
+# - a compile that fails is not kept, and says why as the compiler does;
+# - links and compiles without CC_MEMO (the grader's sandbox passes only
+#   PATH) run the compiler itself.
+set -u
+passed=0
+failed=0
+check() { name=$1; shift; if "$@"; then passed=$((passed + 1)); else echo "FAIL: $name"; failed=$((failed + 1)); fi; }
+if [ ! -x out/build/ccmemo/cc ]; then
+    echo "FAIL: out/build/ccmemo/cc is not built (make test-build)"
+    echo "0 passed, 1 failed"
+    exit 1
+fi
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtccmemo.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+memo_cc=$PWD/out/build/ccmemo/cc
+real_cc=$(PATH=$(echo "$PATH" | sed "s|$PWD/out/build/ccmemo:||g") command -v cc)
+mkdir "$tmp/memo" "$tmp/src"
+cat >"$tmp/src/shape.h" <<'EOF'
+#define SCALE 2.0
+EOF
+cat >"$tmp/src/area.c" <<'EOF'
+#include "shape.h"
+double area(double r) { int unused; return SCALE * 3.14159 * r * r; }
+EOF
+count() { c=$(grep -c "^$1 " "$tmp/memo/log" 2>/dev/null); echo "${c:-0}"; }
+memo() { (cd "$tmp/src" && PATH=${memo_cc%/cc}:$PATH CC_MEMO=$tmp/memo cc "$@"); }
+flags="-std=c11 -O2 -Wall -c area.c"
+
+memo $flags -o a1.o 2>"$tmp/err1"
+check "a first compile through the memo compiles (log: $(count compiled) compiled)" [ "$(count compiled)" -eq 1 ]
+memo $flags -o a2.o 2>"$tmp/err2"
+check "the same compile again is served from the memo (log: $(count used) used)" [ "$(count used)" -eq 1 ]
+(cd "$tmp/src" && "$real_cc" $flags -o direct.o 2>"$tmp/err-direct")
+check "the served object is the direct compile's, byte for byte" cmp -s "$tmp/src/a2.o" "$tmp/src/direct.o"
+check "the served compile repeats the compiler's warning" grep -q "unused" "$tmp/err2"
+check "the warnings are the direct compile's" cmp -s "$tmp/err2" "$tmp/err-direct"
+
+echo '#define SCALE 3.0' >"$tmp/src/shape.h"
+memo $flags -o a3.o 2>/dev/null
+check "a changed header compiles again" [ "$(count compiled)" -eq 2 ]
+(cd "$tmp/src" && "$real_cc" $flags -o direct3.o 2>/dev/null)
+check "... to the changed header's object" cmp -s "$tmp/src/a3.o" "$tmp/src/direct3.o"
+memo -std=c11 -O1 -Wall -c area.c -o a4.o 2>/dev/null
+check "other flags compile again" [ "$(count compiled)" -eq 3 ]
+
+echo 'int broken(void) { return }' >"$tmp/src/bad.c"
+memo -std=c11 -c bad.c -o bad.o 2>"$tmp/err-bad"
+status=$?
+check "a failing compile fails (exit $status)" [ "$status" -ne 0 ]
+check "... saying why, as the compiler does" grep -q "error" "$tmp/err-bad"
+memo -std=c11 -c bad.c -o bad.o 2>/dev/null
+check "... and is not kept (log: $(count used) used)" [ "$(count used)" -eq 1 ]
+
+echo 'double area(double); int main(void) { return area(1) > 0 ? 0 : 1; }' >"$tmp/src/main.c"
+memo -std=c11 -c main.c -o main.o 2>/dev/null
+memo main.o a1.o -o prog
+check "a link runs the compiler itself" [ -x "$tmp/src/prog" ]
+check "... and is neither kept nor served ($(count compiled) compiled, $(count used) used)" \
+    [ "$(count compiled)" -eq 4 -a "$(count used)" -eq 1 ]
+(unset CC_MEMO; cd "$tmp/src" && PATH=${memo_cc%/cc}:$PATH cc $flags -o nomemo.o 2>/dev/null)
+check "without CC_MEMO it compiles, keeping nothing" \
+    [ -f "$tmp/src/nomemo.o" -a "$(count compiled)" -eq 4 -a "$(count used)" -eq 1 ]
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
