@@ -97,6 +97,14 @@ Case *test_add_case(Test *test)
     return c;
 }
 
+Hint *case_add_hint(Case *c)
+{
+    c->hints = xrealloc(c->hints, (size_t)(c->nhints + 1) * sizeof *c->hints);
+    Hint *h = &c->hints[c->nhints++];
+    memset(h, 0, sizeof *h);
+    return h;
+}
+
 void test_add_sphere(Test *test, const double c[3], double R, const double color[3])
 {
     test->spheres = xrealloc(test->spheres, (size_t)(test->nspheres + 1) * sizeof *test->spheres);
@@ -115,6 +123,8 @@ void test_add_triangle(Test *test, const double v[9])
 void testlist_free(TestList *list)
 {
     for (int k = 0; k < list->n; k++) {
+        for (int c = 0; c < list->tests[k].ncases; c++)
+            free(list->tests[k].cases[c].hints);
         free(list->tests[k].cases);
         free(list->tests[k].spheres);
         free(list->tests[k].triangles);
@@ -313,7 +323,7 @@ int tests_read(TestList *list, const char *path, bool hidden, char *err, size_t 
         } else if (strncmp(p, "hint", 4) == 0) {
             if (!last || last->nhints == CASE_MAX_HINTS)
                 BAD("hint without a case, or too many hints");
-            Hint *h = &last->hints[last->nhints++];
+            Hint *h = case_add_hint(last);
             p += 4;
             if (get_numbers(&p, h->out, kind_out[t->kind]))
                 BAD("hint needs the mistake's outputs, then | and its text");

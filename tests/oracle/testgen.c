@@ -38,7 +38,7 @@ void tg_add_hint_as(Case *c, const char *text, const double *out, int n, bool un
     }
     if (same)
         return;
-    Hint *h = &c->hints[c->nhints++];
+    Hint *h = case_add_hint(c);
     snprintf(h->text, sizeof h->text, "%s", text);
     memcpy(h->out, out, (size_t)n * sizeof *out);
 }
