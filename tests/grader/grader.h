@@ -64,7 +64,7 @@ typedef struct {
     int nhints;                    /* at most CASE_MAX_HINTS                    */
     Hint *hints;                   /* malloc'd (case_add_hint); most cases have
                                       none, and a case with room for all of them
-                                      inline made the tests' lists six times
+                                      inline made the tests' lists seven times
                                       larger, paid in page faults per grading  */
 } Case;
 

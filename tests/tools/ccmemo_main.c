@@ -21,7 +21,8 @@
  * Anything else (linking, -E, no CC_MEMO, as in the grader's sandbox, which
  * passes the compiler only PATH) runs the real compiler, which is the next
  * cc on PATH after the directories holding this program's marker file
- * "ccmemo.marker".  The last lines of the memo's file "log" count uses.
+ * "ccmemo.marker".  The memo's file "log" has a line for each compile it
+ * saw: "compiled", "used" or "not-kept", the file and the directory.
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE
