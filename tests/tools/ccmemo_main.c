@@ -38,6 +38,7 @@
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
+#include "kit/savefile.h"
 
 #define KEY_MAX (256u << 20)     /* preprocessed text larger than this: compile */
 #define WAIT_SECONDS 120         /* for another build's compile of the same key  */
@@ -155,21 +156,11 @@ static int write_all(int fd, const char *buf, size_t len)
     return 0;
 }
 
-/* Writes (buf, len) as path, through a temporary file renamed into place. */
+/* Writes (buf, len) as path, all or nothing (kit_save_file). */
 static int put(const char *path, const char *buf, size_t len)
 {
-    char tmp[4200];
-    snprintf(tmp, sizeof tmp, "%s.%ld.tmp", path, (long)getpid());
-    int fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd < 0)
-        return -1;
-    int bad = write_all(fd, buf, len);
-    bad |= close(fd);
-    if (bad || rename(tmp, path) != 0) {
-        unlink(tmp);
-        return -1;
-    }
-    return 0;
+    char err[64];
+    return kit_save_file(path, buf, len, err, sizeof err);
 }
 
 static uint64_t fnv1a(const char *s, size_t n, uint64_t h)
