@@ -197,25 +197,28 @@ void measure_ceiling(Ceiling *c, bool quick, double mhz_during)
     long n = quick ? 5000000L : 40000000L, nf = n / 8;
     double mhz[REPS], mul[REPS], add[REPS], mix[REPS], sq[REPS], dv[REPS];
     int reps = quick ? 3 : REPS;
-    /* Each repetition measures the clock and then the rates in cycles of
-     * that clock; the medians shrug off the repetitions another process
-     * disturbed. */
+    /* Each repetition measures the clock and the rates per microsecond;
+     * the medians shrug off the repetitions another process disturbed, and
+     * the rates are turned into cycles with one clock, the median one.  (A
+     * rate in cycles of its own repetition's clock came out several times
+     * too high whenever another process stopped the clock's loop, as under
+     * make test's parallel lanes: 4.28 divisions a cycle once.) */
     for (int r = 0; r < reps; r++) {
         mhz[r] = chain_mhz(n);
-        mul[r] = ops_per_cycle(0, nf, mhz[r]);
-        add[r] = ops_per_cycle(1, nf, mhz[r]);
-        mix[r] = ops_per_cycle(2, nf, mhz[r]);
-        sq[r] = lanes_per_cycle(0, nf / 8, mhz[r]);
-        dv[r] = lanes_per_cycle(1, nf / 8, mhz[r]);
+        mul[r] = ops_per_cycle(0, nf, 1);
+        add[r] = ops_per_cycle(1, nf, 1);
+        mix[r] = ops_per_cycle(2, nf, 1);
+        sq[r] = lanes_per_cycle(0, nf / 8, 1);
+        dv[r] = lanes_per_cycle(1, nf / 8, 1);
     }
     c->mhz_cpuinfo = cpuinfo_mhz();
     c->mhz_measured = mhz_during > 0 ? mhz_during : median(mhz, reps);
     c->mhz = c->mhz_measured;
-    c->mul_per_cycle = median(mul, reps);
-    c->add_per_cycle = median(add, reps);
-    c->mix_per_cycle = median(mix, reps);
-    c->sqrt_per_cycle = median(sq, reps);
-    c->div_per_cycle = median(dv, reps);
+    c->mul_per_cycle = median(mul, reps) / c->mhz;
+    c->add_per_cycle = median(add, reps) / c->mhz;
+    c->mix_per_cycle = median(mix, reps) / c->mhz;
+    c->sqrt_per_cycle = median(sq, reps) / c->mhz;
+    c->div_per_cycle = median(dv, reps) / c->mhz;
     /* Pipes come in whole numbers: use the nearest (at least 1). */
     double pm = floor(c->mul_per_cycle + 0.5), pa = floor(c->add_per_cycle + 0.5),
            px = floor(c->mix_per_cycle + 0.5);
