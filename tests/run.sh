@@ -27,14 +27,31 @@ mkdir -p "$dir"
 start=$(date +%s)
 
 # Builds in the suites compile each distinct file once (tests/tools/ccmemo_main.c):
-# four suites build a packaged kit from the same sources.  NO_CC_MEMO=1: not.
+# four suites build a packaged kit from the same sources.  The memo is kept
+# from one run to the next while the compiler is the same one (its
+# --version and the size and time of its files); a run of every suite
+# then drops the entries it did not use.  NO_CC_MEMO=1: no memo.
 memo=$PWD/out/tests/cc-memo
-rm -rf "$memo"
-if [ -x out/build/ccmemo/cc ] && [ -z "${NO_CC_MEMO:-}" ] && mkdir -p "$memo"; then
-    PATH=$PWD/out/build/ccmemo:$PATH
-    CC_MEMO=$memo
-    export PATH CC_MEMO
+compiler_identity() {
+    cc --version 2>&1
+    for f in "$(command -v cc)" "$(cc -print-prog-name=cc1 2>/dev/null)"; do
+        [ -f "$f" ] && ls -lLn "$f"
+    done
+}
+if [ -x out/build/ccmemo/cc ] && [ -z "${NO_CC_MEMO:-}" ]; then
+    compiler_identity >"$dir/compiler" 2>&1
+    cmp -s "$dir/compiler" "$memo/compiler" || rm -rf "$memo"
+    if mkdir -p "$memo" && cp "$dir/compiler" "$memo/compiler"; then
+        : >"$memo/log"
+        PATH=$PWD/out/build/ccmemo:$PATH
+        CC_MEMO=$memo
+        export PATH CC_MEMO
+    fi
+else
+    rm -rf "$memo"
 fi
+
+: >"$dir/started"
 
 # The items, in the order they are shown: "name|command".
 items=$dir/items
@@ -48,7 +65,9 @@ done
 for s in tests/suites/*.sh; do
     [ -f "$s" ] && printf '%s|sh %s\n' "${s##*/}" "$s" >>"$items"
 done
+every_suite=yes
 if [ $# -gt 0 ]; then
+    every_suite=no
     for want in "$@"; do
         grep "^$want|" "$items"
     done >"$items.only"
@@ -148,8 +167,11 @@ fi
 lanes=$(wc -l <"$queue" | tr -d ' ')
 alone=0
 [ -f "$dir/lane.alone" ] && alone=$(wc -l <"$dir/lane.alone" | tr -d ' ')
-if [ -f "$memo/log" ]; then
+if [ -n "${CC_MEMO:-}" ] && [ -f "$memo/log" ]; then
     echo "compiles in the suites: $(grep -c '^compiled ' "$memo/log") compiled, $(grep -c '^used ' "$memo/log") served from the memo"
+    # Every suite ran: what none of them used (nor compiled) goes.
+    [ "$every_suite" = yes ] && find "$memo" ! -path "$memo" -prune ! -name compiler ! -name log \
+        ! -newer "$dir/started" -exec rm -rf {} +
 fi
 echo "took $(($(date +%s) - start)) s ($k suites: $lanes lanes shared by $workers workers, then $alone alone)"
 echo "$passed passed, $failed failed"

@@ -1,6 +1,6 @@
 /*
- * ccmemo - a stand-in for cc that compiles each distinct file once in a run
- * of the kit's own tests.
+ * ccmemo - a stand-in for cc that compiles each distinct file once for the
+ * kit's own tests.
  *
  * Four suites build a packaged kit from the same sources (the student kit,
  * the Gradescope bundle, the PrairieLearn course and the Classroom
@@ -22,7 +22,10 @@
  * passes the compiler only PATH) runs the real compiler, which is the next
  * cc on PATH after the directories holding this program's marker file
  * "ccmemo.marker".  The memo's file "log" has a line for each compile it
- * saw: "compiled", "used" or "not-kept", the file and the directory.
+ * saw: "compiled", "used" or "not-kept", the file and the directory.  An
+ * entry's time is set when it is used, so that tests/run.sh, which keeps
+ * the memo from run to run for the same compiler, can drop those a whole
+ * run did not use.
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE
@@ -304,6 +307,7 @@ int main(int argc, char **argv)
     struct timespec nap = { 0, 20 * 1000 * 1000 };
     for (long waited = 0;; waited++) {
         if (use_entry(entry, key, keylen, obj) == 0) {
+            utimensat(AT_FDCWD, entry, NULL, 0);   /* used now: tests/run.sh keeps it */
             log_use(memo, "used", src);
             return 0;
         }
