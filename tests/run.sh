@@ -30,19 +30,11 @@ start=$(date +%s)
 # four suites build a packaged kit from the same sources.  The memo is kept
 # from one run to the next while the compiler is the same one (its
 # --version and the size and time of its files); a run of every suite
-# then drops the entries it did not use.  NO_CC_MEMO=1: no memo.
+# then drops the entries it did not use (tests/tools/ccmemo_keep.sh).
+# NO_CC_MEMO=1: no memo.
 memo=$PWD/out/tests/cc-memo
-compiler_identity() {
-    cc --version 2>&1
-    for f in "$(command -v cc)" "$(cc -print-prog-name=cc1 2>/dev/null)"; do
-        [ -f "$f" ] && ls -lLn "$f"
-    done
-}
 if [ -x out/build/ccmemo/cc ] && [ -z "${NO_CC_MEMO:-}" ]; then
-    compiler_identity >"$dir/compiler" 2>&1
-    cmp -s "$dir/compiler" "$memo/compiler" || rm -rf "$memo"
-    if mkdir -p "$memo" && cp "$dir/compiler" "$memo/compiler"; then
-        : >"$memo/log"
+    if sh tests/tools/ccmemo_keep.sh open "$memo"; then
         PATH=$PWD/out/build/ccmemo:$PATH
         CC_MEMO=$memo
         export PATH CC_MEMO
@@ -170,8 +162,7 @@ alone=0
 if [ -n "${CC_MEMO:-}" ] && [ -f "$memo/log" ]; then
     echo "compiles in the suites: $(grep -c '^compiled ' "$memo/log") compiled, $(grep -c '^used ' "$memo/log") served from the memo"
     # Every suite ran: what none of them used (nor compiled) goes.
-    [ "$every_suite" = yes ] && find "$memo" ! -path "$memo" -prune ! -name compiler ! -name log \
-        ! -newer "$dir/started" -exec rm -rf {} +
+    [ "$every_suite" = yes ] && sh tests/tools/ccmemo_keep.sh prune "$memo" "$dir/started"
 fi
 echo "took $(($(date +%s) - start)) s ($k suites: $lanes lanes shared by $workers workers, then $alone alone)"
 echo "$passed passed, $failed failed"

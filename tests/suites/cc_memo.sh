@@ -5,7 +5,10 @@
 # - a change to a header the file includes, or to the flags, compiles again;
 # - a compile that fails is not kept, and says why as the compiler does;
 # - links and compiles without CC_MEMO (the grader's sandbox passes only
-#   PATH) run the compiler itself.
+#   PATH) run the compiler itself;
+# - kept from run to run (tests/tools/ccmemo_keep.sh): an entry stays for
+#   the same compiler, all go for another; after a run, the entries it
+#   neither made nor used go and those it used stay.
 set -u
 passed=0
 failed=0
@@ -65,6 +68,37 @@ check "... and is neither kept nor served ($(count compiled) compiled, $(count u
 (unset CC_MEMO; cd "$tmp/src" && PATH=${memo_cc%/cc}:$PATH cc $flags -o nomemo.o 2>/dev/null)
 check "without CC_MEMO it compiles, keeping nothing" \
     [ -f "$tmp/src/nomemo.o" -a "$(count compiled)" -eq 4 -a "$(count used)" -eq 1 ]
+
+# Kept from run to run.
+keep=tests/tools/ccmemo_keep.sh
+entries() { ls "$tmp/memo" | grep -c '^[0-9a-f]*$'; }
+before=$(entries)
+sh "$keep" open "$tmp/memo"
+check "a memo with no record of its compiler is emptied ($before entries, now $(entries))" \
+    [ "$before" -ge 4 -a "$(entries)" -eq 0 -a -f "$tmp/memo/compiler" ]
+memo $flags -o b1.o 2>/dev/null
+memo -std=c11 -O1 -Wall -c area.c -o b2.o 2>/dev/null
+sh "$keep" open "$tmp/memo"
+check "opened again with the same compiler, its entries stay ($(entries) of 2)" [ "$(entries)" -eq 2 ]
+check "... and its log starts empty" [ ! -s "$tmp/memo/log" ]
+sleep 1                           # a second later than the entries' times
+: >"$tmp/stamp"
+memo -std=c11 -O1 -Wall -c area.c -o a5.o 2>/dev/null       # b2.o's entry, used
+check "an entry kept from an earlier run is served (log: $(count used) used)" [ "$(count used)" -eq 1 ]
+sh "$keep" prune "$tmp/memo" "$tmp/stamp"
+check "pruned after a run, only the entry it used stays ($(entries) of 2)" [ "$(entries)" -eq 1 ]
+check "... and the memo's compiler and log stay" [ -f "$tmp/memo/compiler" -a -f "$tmp/memo/log" ]
+memo -std=c11 -O1 -Wall -c area.c -o a6.o 2>/dev/null
+check "... and is served again (log: $(count used) used)" [ "$(count used)" -eq 2 ]
+mkdir "$tmp/other"
+printf '#!/bin/sh\necho "another cc 1.0"\n' >"$tmp/other/cc"
+chmod +x "$tmp/other/cc"
+PATH=$tmp/other:$PATH sh "$keep" open "$tmp/memo"
+check "opened for another compiler, the memo is emptied ($(entries) entries)" \
+    [ "$(entries)" -eq 0 -a -f "$tmp/memo/compiler" ]
+sh "$keep" open "$tmp/memo"
+memo -std=c11 -O1 -Wall -c area.c -o a7.o 2>/dev/null
+check "... so that compile is compiled again (log: $(count compiled) compiled)" [ "$(count compiled)" -eq 1 ]
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -1,0 +1,39 @@
+#!/bin/sh
+# Keeps the suites' compile memo (tests/tools/ccmemo_main.c) from one run of
+# the kit's tests to the next, for as long as the compiler is the same one.
+#
+#   sh tests/tools/ccmemo_keep.sh open DIR
+#       Readies DIR for a run: kept if the compiler `cc` on PATH is the one
+#       that filled it (its --version, and the size and time of the driver
+#       and of cc1), else emptied; its log emptied.  Fails if DIR cannot be
+#       made.
+#   sh tests/tools/ccmemo_keep.sh prune DIR STAMP
+#       Removes the entries of DIR neither made nor used since the file
+#       STAMP was written (the stand-in sets an entry's time when it serves
+#       it): after a run of every suite, those that no suite needs now.
+set -u
+compiler_identity() {
+    cc --version 2>&1
+    for f in "$(command -v cc)" "$(cc -print-prog-name=cc1 2>/dev/null)"; do
+        [ -f "$f" ] && ls -lLn "$f"
+    done
+}
+case ${1:-} in
+open)
+    [ $# -eq 2 ] || { echo "usage: ccmemo_keep.sh open DIR" >&2; exit 2; }
+    dir=$2
+    now=$(compiler_identity)
+    if [ ! -f "$dir/compiler" ] || [ "$(cat "$dir/compiler")" != "$now" ]; then
+        rm -rf "$dir"
+    fi
+    mkdir -p "$dir" && printf '%s\n' "$now" >"$dir/compiler" && : >"$dir/log"
+    ;;
+prune)
+    [ $# -eq 3 ] || { echo "usage: ccmemo_keep.sh prune DIR STAMP" >&2; exit 2; }
+    find "$2" ! -path "$2" -prune ! -name compiler ! -name log ! -newer "$3" -exec rm -rf {} +
+    ;;
+*)
+    echo "usage: ccmemo_keep.sh open DIR | prune DIR STAMP" >&2
+    exit 2
+    ;;
+esac
