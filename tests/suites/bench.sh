@@ -11,9 +11,7 @@
 # grader's hard cases.  Speed is not checked here (it is noisy); `make bench`
 # reports it.
 set -u
-passed=0
-failed=0
-check() { name=$1; shift; if "$@"; then passed=$((passed + 1)); else echo "FAIL: $name"; failed=$((failed + 1)); fi; }
+. tests/lib/checks.sh
 
 bench=out/build/bin/bench
 if [ ! -d solutions ]; then
@@ -164,5 +162,4 @@ if [ -f README.md ] && [ -f tests/bench/README.md ]; then
         cmp -s "$dir/part5-top" "$dir/part5-dir"
 fi
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

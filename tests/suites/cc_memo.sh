@@ -10,9 +10,7 @@
 #   the same compiler, all go for another; after a run, the entries it
 #   neither made nor used go and those it used stay.
 set -u
-passed=0
-failed=0
-check() { name=$1; shift; if "$@"; then passed=$((passed + 1)); else echo "FAIL: $name"; failed=$((failed + 1)); fi; }
+. tests/lib/checks.sh
 if [ ! -x out/build/ccmemo/cc ]; then
     echo "FAIL: out/build/ccmemo/cc is not built (make test-build)"
     echo "0 passed, 1 failed"
@@ -100,5 +98,4 @@ sh "$keep" open "$tmp/memo"
 memo -std=c11 -O1 -Wall -c area.c -o a7.o 2>/dev/null
 check "... so that compile is compiled again (log: $(count compiled) compiled)" [ "$(count compiled)" -eq 1 ]
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

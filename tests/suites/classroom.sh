@@ -25,15 +25,10 @@
 set -u
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 top=$(pwd)
-passed=0
-failed=0
+. tests/lib/checks.sh
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtclassroom.XXXXXX") || { echo "0 passed, 1 failed"; exit 1; }
 trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
-pass() { passed=$((passed + 1)); }
-fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
-check() { what=$1; shift; if "$@"; then pass; else fail "$what"; fi; }
-finish() { echo "$passed passed, $failed failed"; [ "$failed" -eq 0 ]; exit $?; }
 
 # ---- the reporter's rules, in C ---------------------------------------------
 totals="$tmp/reporter_totals"

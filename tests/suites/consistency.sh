@@ -8,9 +8,7 @@
 # - labs/raytracer.h keeps the lab contract (when the contract probe is
 #   beside the kit).
 set -u
-passed=0
-failed=0
-check() { name=$1; shift; if "$@"; then passed=$((passed + 1)); else echo "FAIL: $name"; failed=$((failed + 1)); fi; }
+. tests/lib/checks.sh
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtconsistency.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 
@@ -59,5 +57,4 @@ if [ -f "$probe" ]; then
         ${CC:-cc} -std=c11 -Wall -Wextra -Werror -I labs -c "$probe" -o "$tmp/probe.o"
 fi
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -10,12 +10,7 @@ grade=out/build/bin/grade
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtselftest.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
-# check NAME CONDITION...: pass if the command succeeds
-check() { what=$1; shift; if "$@"; then pass; else fail "$what"; fi; }
+. tests/lib/checks.sh
 
 max1=20; max2=20; max3a=30; max3b=30; max4=20; max5=20     # tests/weights.conf
 # The same points with the optional Parts 4 and 5 turned on.
@@ -295,5 +290,4 @@ check "forged results: no score of 1000 anywhere" sh -c "! grep -rq '\"score\": 
 check "forged results: nothing written beside the submissions" \
     sh -c "[ \$(ls '$tmp/grades-subs' | wc -l) -eq \$(( 2 * \$(ls '$tmp/subs' | wc -l) + 1 )) ]"
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -7,9 +7,7 @@ set -u
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtgradescope.XXXXXX")
 trap '[ -n "${KEEP:-}" ] || rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
-passed=0
-failed=0
-check() { name=$1; shift; if "$@"; then passed=$((passed + 1)); else echo "FAIL: $name"; failed=$((failed + 1)); fi; }
+. tests/lib/checks.sh
 
 make -s gradescope >"$tmp/make.log" 2>&1
 check "make gradescope" [ -f out/gradescope/autograder.zip ]
@@ -62,5 +60,4 @@ cp "$ag/run_autograder" "$broken/"
 AUTOGRADER_ROOT="$broken" "$broken/run_autograder" >"$tmp/run3.log" 2>&1
 check "results.json when the grader cannot run" grep -q 'could not grade' "$broken/results/results.json"
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -12,11 +12,7 @@ grade=out/build/bin/grade
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtlimits.XXXXXX") || { echo "no temporary directory"; echo "0 passed, 1 failed"; exit 1; }
 trap 'rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
-check() { what=$1; shift; if "$@"; then pass; else fail "$what"; fi; }
+. tests/lib/checks.sh
 
 # submission NAME PART-FILE LINE...: the reference with one stage file
 # replaced by the lines given.
@@ -112,5 +108,4 @@ fi
 check "a killed test loses Part 1 alone, and Part 2 is graded after it" \
     grep -q '^summary 0 20 0 0 ' "$tmp/killed-test.out"
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

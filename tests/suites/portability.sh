@@ -26,11 +26,7 @@ set -u
 top=$(pwd)
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtport.XXXXXX") || { echo "no temporary directory"; echo "0 passed, 1 failed"; exit 1; }
 trap 'rm -rf "$tmp"' EXIT
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
-check() { what=$1; shift; if "$@"; then pass; else fail "$what"; fi; }
+. tests/lib/checks.sh
 have() { command -v "$1" >/dev/null 2>&1; }
 start=$(date +%s)
 
@@ -390,5 +386,4 @@ if [ -n "${MACOS_SDK:-}" ]; then
 fi
 
 echo "   portability checks took $(( $(date +%s) - start )) s"
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -23,15 +23,10 @@
 # after make).  KEEP=1 keeps the temporary directory.
 set -u
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
-passed=0
-failed=0
+. tests/lib/checks.sh
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtprairielearn.XXXXXX") || { echo "0 passed, 1 failed"; exit 1; }
 trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
-pass() { passed=$((passed + 1)); }
-fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
-check() { what=$1; shift; if "$@"; then pass; else fail "$what"; fi; }
-finish() { echo "$passed passed, $failed failed"; [ "$failed" -eq 0 ]; exit $?; }
 
 checker="$tmp/check_results"
 ${CC:-cc} -std=c11 -O2 -ffp-contract=off -Wall -Wextra -Wpedantic -Werror -o "$checker" \

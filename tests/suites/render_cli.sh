@@ -16,8 +16,7 @@ RENDER_LABS=${RENDER_LABS:-out/build/sub/labs/render}
 RENDER_ASAN=${RENDER_ASAN:-out/asan/bin/render-solutions}
 COMPARE=${COMPARE:-out/build/bin/compare}
 
-passed=0
-failed=0
+. tests/lib/checks.sh
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/render_cli.XXXXXX") || {
     echo "cannot make a temporary directory"
     echo "0 passed, 1 failed"
@@ -39,10 +38,7 @@ RENDER_LABS=$(absolute "$RENDER_LABS")
 RENDER_ASAN=$(absolute "$RENDER_ASAN")
 COMPARE=$(absolute "$COMPARE")
 
-# pass / fail WHAT: counts a check; a failure is shown with what went wrong.
-pass() {
-    passed=$((passed + 1))
-}
+# fail WHAT: counts a failure, shown with what went wrong.
 fail() {
     failed=$((failed + 1))
     echo "FAIL: $*"
@@ -425,5 +421,4 @@ else
     echo "note: no sanitized renderer at $RENDER_ASAN (make $RENDER_ASAN): its checks were skipped"
 fi
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

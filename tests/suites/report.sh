@@ -21,11 +21,7 @@ compare=out/build/bin/compare
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtreport.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
-check() { what=$1; shift; if "$@"; then pass; else fail "$what"; fi; }
+. tests/lib/checks.sh
 
 for f in "$grade" "$check_html" "$compare"; do
     if [ ! -x "$f" ]; then
@@ -242,5 +238,4 @@ else
     fi
 fi
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

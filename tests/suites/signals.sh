@@ -13,12 +13,7 @@ grade=out/build/bin/grade
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtsignals.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
-# check NAME CONDITION...: pass if the command succeeds
-check() { what=$1; shift; if "$@"; then pass; else fail "$what"; fi; }
+. tests/lib/checks.sh
 
 if [ "$(id -u)" = 0 ]; then
     mkdir -p "$tmp/killers/a-reference" "$tmp/killers/b-kill-all"
@@ -58,5 +53,4 @@ else
     echo "   not root: the children run as this user; the check of signalling code was skipped"
 fi
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

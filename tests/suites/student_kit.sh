@@ -29,8 +29,7 @@ set -u
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 
 top=$(pwd)
-passed=0
-failed=0
+. tests/lib/checks.sh
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/student_kit.XXXXXX") || {
     echo "cannot make a temporary directory"
     echo "0 passed, 1 failed"
@@ -39,9 +38,6 @@ tmp=$(mktemp -d "${TMPDIR:-/tmp}/student_kit.XXXXXX") || {
 trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
 trap 'exit 1' HUP INT TERM
 
-pass() {
-    passed=$((passed + 1))
-}
 # fail WHAT: counts a failure; shows the start of the last output, if any.
 fail() {
     failed=$((failed + 1))
@@ -55,11 +51,6 @@ check() {
     what=$1
     shift
     if "$@"; then pass; else failed=$((failed + 1)); echo "FAIL: $what"; fi
-}
-finish() {
-    echo "$passed passed, $failed failed"
-    if [ "$failed" -eq 0 ]; then exit 0; fi
-    exit 1
 }
 
 # mk DIR ARGS...: runs make ARGS in DIR, output in $tmp/out.  Sets status

@@ -1,0 +1,20 @@
+# checks.sh - the counting every suite of tests/suites shares.  A suite
+# sources it, from the kit's top directory, before its first check:
+#     . tests/lib/checks.sh
+# and may define its own fail afterwards (to show more of what went wrong).
+#   pass                     counts a check that passed
+#   fail WHAT                counts one that failed and says so: "FAIL: WHAT"
+#   check WHAT COMMAND...    pass if COMMAND succeeds, else fail WHAT
+#   finish                   prints "N passed, N failed", the last line that
+#                            tests/run.sh reads, and exits 0 if none failed
+# (Not in tests/suites itself: tests/run.sh runs every file there.)
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); }
+fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
+check() { what=$1; shift; if "$@"; then pass; else fail "$what"; fi; }
+finish() {
+    echo "$passed passed, $failed failed"
+    [ "$failed" -eq 0 ] && exit 0
+    exit 1
+}
