@@ -32,7 +32,7 @@ start=$(date +%s)
 # from one run to the next while the compiler is the same one (its
 # --version and the size and time of its files); a run of every suite
 # then drops the entries it did not use (tests/tools/ccmemo_keep.sh).
-# NO_CC_MEMO=1: no memo.
+# NO_CC_MEMO=1: every compile is compiled (the memo is left as it is).
 memo=$PWD/out/tests/cc-memo
 if [ -x out/build/ccmemo/cc ] && [ -z "${NO_CC_MEMO:-}" ]; then
     if sh tests/tools/ccmemo_keep.sh open "$memo"; then
@@ -40,8 +40,6 @@ if [ -x out/build/ccmemo/cc ] && [ -z "${NO_CC_MEMO:-}" ]; then
         CC_MEMO=$memo
         export PATH CC_MEMO
     fi
-else
-    rm -rf "$memo"
 fi
 
 : >"$dir/started"
