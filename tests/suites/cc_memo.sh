@@ -6,9 +6,12 @@
 # - a compile that fails is not kept, and says why as the compiler does;
 # - links and compiles without CC_MEMO (the grader's sandbox passes only
 #   PATH) run the compiler itself;
+# - a lock whose maker has died is taken over, one whose maker lives is
+#   waited for;
 # - kept from run to run (tests/tools/ccmemo_keep.sh): an entry stays for
-#   the same compiler, all go for another; after a run, the entries it
-#   neither made nor used go and those it used stay.
+#   the same compiler, all go for another, and what an interrupted run left
+#   goes; after a run, the entries it neither made nor used go and those it
+#   used stay.
 set -u
 . tests/lib/checks.sh
 if [ ! -x out/build/ccmemo/cc ]; then
@@ -67,6 +70,31 @@ check "... and is neither kept nor served ($(count compiled) compiled, $(count u
 check "without CC_MEMO it compiles, keeping nothing" \
     [ -f "$tmp/src/nomemo.o" -a "$(count compiled)" -eq 4 -a "$(count used)" -eq 1 ]
 
+# Locks.  An entry made with -O3 is removed and its lock made by hand.
+ls "$tmp/memo" >"$tmp/before"
+memo -std=c11 -O3 -c area.c -o l1.o 2>/dev/null
+h=$(ls "$tmp/memo" | grep -v -x -F -f "$tmp/before" | grep '^[0-9a-f]*$')
+rm -rf "${tmp:?}/memo/$h"
+mkdir "$tmp/memo/$h.lock"
+dead=$(sh -c 'echo $$')
+echo "$dead" >"$tmp/memo/$h.lock/pid"
+start=$(date +%s)
+memo -std=c11 -O3 -c area.c -o l2.o 2>/dev/null
+took=$(($(date +%s) - start))
+check "a lock whose maker has died is taken over at once ($took s; the wait is 120 s)" \
+    [ -n "$h" -a "$took" -le 10 -a -f "$tmp/src/l2.o" ]
+check "... the compile is kept, and the lock is gone" [ -d "$tmp/memo/$h" -a ! -d "$tmp/memo/$h.lock" ]
+rm -rf "${tmp:?}/memo/$h"
+mkdir "$tmp/memo/$h.lock"
+echo $$ >"$tmp/memo/$h.lock/pid"
+memo -std=c11 -O3 -c area.c -o l3.o 2>/dev/null &
+waiter=$!
+sleep 1
+check "a lock whose maker lives is waited for" sh -c "kill -0 $waiter && [ ! -f '$tmp/src/l3.o' ]"
+rm -rf "${tmp:?}/memo/$h.lock"
+wait "$waiter"
+check "... until it goes" [ -f "$tmp/src/l3.o" ]
+
 # Kept from run to run.
 keep=tests/tools/ccmemo_keep.sh
 entries() { ls "$tmp/memo" | grep -c '^[0-9a-f]*$'; }
@@ -76,9 +104,13 @@ check "a memo with no record of its compiler is emptied ($before entries, now $(
     [ "$before" -ge 4 -a "$(entries)" -eq 0 -a -f "$tmp/memo/compiler" ]
 memo $flags -o b1.o 2>/dev/null
 memo -std=c11 -O1 -Wall -c area.c -o b2.o 2>/dev/null
+mkdir "$tmp/memo/0123456789abcdef.lock" "$tmp/memo/0123456789abcdef.77.new"
+: >"$tmp/memo/messages.77"
 sh "$keep" open "$tmp/memo"
 check "opened again with the same compiler, its entries stay ($(entries) of 2)" [ "$(entries)" -eq 2 ]
 check "... and its log starts empty" [ ! -s "$tmp/memo/log" ]
+check "... and what an interrupted run left is gone: $(ls "$tmp/memo" | grep -v '^[0-9a-f]*$' | tr '\n' ' ')" \
+    [ "$(ls "$tmp/memo" | grep -v -c -e '^[0-9a-f]*$' -e '^compiler$' -e '^log$')" -eq 0 ]
 sleep 1                           # a second later than the entries' times
 : >"$tmp/stamp"
 memo -std=c11 -O1 -Wall -c area.c -o a5.o 2>/dev/null       # b2.o's entry, used

@@ -5,8 +5,9 @@
 #   sh tests/tools/ccmemo_keep.sh open DIR
 #       Readies DIR for a run: kept if the compiler `cc` on PATH is the one
 #       that filled it (its --version, and the size and time of the driver
-#       and of cc1), else emptied; its log emptied.  Fails if DIR cannot be
-#       made.
+#       and of cc1), else emptied; its log emptied, and what an interrupted
+#       run left (locks, half-made entries, messages) removed.  Fails if DIR
+#       cannot be made.
 #   sh tests/tools/ccmemo_keep.sh prune DIR STAMP
 #       Removes the entries of DIR neither made nor used since the file
 #       STAMP was written (the stand-in sets an entry's time when it serves
@@ -26,7 +27,9 @@ open)
     if [ ! -f "$dir/compiler" ] || [ "$(cat "$dir/compiler")" != "$now" ]; then
         rm -rf "$dir"
     fi
-    mkdir -p "$dir" && printf '%s\n' "$now" >"$dir/compiler" && : >"$dir/log"
+    mkdir -p "$dir" && printf '%s\n' "$now" >"$dir/compiler" && : >"$dir/log" &&
+        find "$dir" ! -path "$dir" -prune \( -name '*.lock' -o -name '*.new' -o -name 'messages.*' \) \
+            -exec rm -rf {} +
     ;;
 prune)
     [ $# -eq 3 ] || { echo "usage: ccmemo_keep.sh prune DIR STAMP" >&2; exit 2; }

@@ -16,7 +16,8 @@
  * The preprocessed text holds every header's text and the file names as
  * written (the kits build with the same relative paths), so an entry is
  * used only where compiling would give the same object.  Two builds asking
- * for the same entry at once: one compiles, the other waits for it.
+ * for the same entry at once: one compiles, the other waits for it, or
+ * takes the compile over if the first has died (its pid is in the lock).
  *
  * Anything else (linking, -E, no CC_MEMO, as in the grader's sandbox, which
  * passes the compiler only PATH) runs the real compiler, which is the next
@@ -303,7 +304,11 @@ int main(int argc, char **argv)
              (unsigned long long)fnv1a(key, keylen, 14695981039346656037u));
     snprintf(lock, sizeof lock, "%s.lock", entry);
 
-    /* 2. An entry, or the lock to make it, or wait for who holds it. */
+    /* 2. An entry, or the lock to make it, or wait for who holds it.  The
+     * lock holds its maker's pid: a lock whose maker has died (a build
+     * interrupted while it compiled) is taken over, not waited for. */
+    char holder[4300];
+    snprintf(holder, sizeof holder, "%s/pid", lock);
     struct timespec nap = { 0, 20 * 1000 * 1000 };
     for (long waited = 0;; waited++) {
         if (use_entry(entry, key, keylen, obj) == 0) {
@@ -311,13 +316,26 @@ int main(int argc, char **argv)
             log_use(memo, "used", src);
             return 0;
         }
-        if (mkdir(lock, 0755) == 0)
+        if (mkdir(lock, 0755) == 0) {
+            char mine[32];
+            int n = snprintf(mine, sizeof mine, "%ld\n", (long)getpid());
+            put(holder, mine, (size_t)n);
             break;
+        }
         if (errno != EEXIST || waited > WAIT_SECONDS * 50)
             run_real(argv);
         struct stat est;
         if (stat(entry, &est) == 0 && waited > 0)
             run_real(argv);                     /* an entry for another key */
+        size_t n;
+        char *kept = slurp(holder, &n);
+        long who = kept ? strtol(kept, NULL, 10) : 0;
+        free(kept);
+        if (who > 0 && kill((pid_t)who, 0) != 0 && errno == ESRCH) {
+            unlink(holder);                     /* its maker is gone */
+            rmdir(lock);
+            continue;
+        }
         nanosleep(&nap, NULL);
     }
 
@@ -355,6 +373,7 @@ int main(int argc, char **argv)
         free(o);
         log_use(memo, "compiled", src);
     }
+    unlink(holder);
     rmdir(lock);
     free(m);
     if (status < 0)
