@@ -159,10 +159,13 @@ lanes=$(wc -l <"$queue" | tr -d ' ')
 alone=0
 [ -f "$dir/lane.alone" ] && alone=$(wc -l <"$dir/lane.alone" | tr -d ' ')
 if [ -n "${CC_MEMO:-}" ] && [ -f "$memo/log" ]; then
-    echo "compiles in the suites: $(grep -c '^compiled ' "$memo/log") compiled, $(grep -c '^used ' "$memo/log") served from the memo"
+    made=$(grep -c '^compiled ' "$memo/log")
+    used=$(grep -c '^used ' "$memo/log")
+    [ $((made + used)) -gt 0 ] && echo "compiles in the suites: $made compiled, $used served from the memo"
     # Every suite ran: what none of them used (nor compiled) goes.
     [ "$every_suite" = yes ] && sh tests/tools/ccmemo_keep.sh prune "$memo" "$dir/started"
 fi
-echo "took $(($(date +%s) - start)) s ($k suites: $lanes lanes shared by $workers workers, then $alone alone)"
+plural() { [ "$1" -eq 1 ] && echo "$1 $2" || echo "$1 ${2}s"; }
+echo "took $(($(date +%s) - start)) s ($(plural "$k" suite): $(plural "$lanes" lane) shared by $(plural "$workers" worker), then $alone alone)"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
