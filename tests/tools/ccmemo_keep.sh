@@ -28,12 +28,12 @@ open)
         rm -rf "$dir"
     fi
     mkdir -p "$dir" && printf '%s\n' "$now" >"$dir/compiler" && : >"$dir/log" &&
-        find "$dir" ! -path "$dir" -prune \( -name '*.lock' -o -name '*.new' -o -name 'messages.*' \) \
+        find "$dir/." ! -name . -prune \( -name '*.lock' -o -name '*.new' -o -name 'messages.*' \) \
             -exec rm -rf {} +
     ;;
 prune)
     [ $# -eq 3 ] || { echo "usage: ccmemo_keep.sh prune DIR STAMP" >&2; exit 2; }
-    find "$2" ! -path "$2" -prune ! -name compiler ! -name log ! -newer "$3" -exec rm -rf {} +
+    find "$2/." ! -name . -prune ! -name compiler ! -name log ! -newer "$3" -exec rm -rf {} +
     ;;
 *)
     echo "usage: ccmemo_keep.sh open DIR | prune DIR STAMP" >&2
