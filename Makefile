@@ -374,8 +374,19 @@ $(BUILD)/bin/bench: $(BENCH_OBJ) $(STAGES:%=$(BUILD)/sub/solutions/%.o) \
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 all: $(if $(HAVE_BENCH),$(BUILD)/bin/bench)
-bench: $(BUILD)/bin/bench
-	$(BUILD)/bin/bench --out out/bench
+# Where the code lies moves the reference/textbook ratio by more than its
+# 5% target, so `make bench` measures it twice: in bench-reordered, the
+# same objects linked in the reverse order, then in bench, whose report
+# gives both (tests/bench/README.md).
+reverse = $(if $(1),$(call reverse,$(wordlist 2,$(words $(1)),$(1))) $(firstword $(1)))
+$(BUILD)/bin/bench-reordered: $(BENCH_OBJ) $(STAGES:%=$(BUILD)/sub/solutions/%.o) \
+                              $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(call reverse,$(filter %.o,$^)) $(filter %.a,$^) -o $@ $(LDLIBS)
+bench: $(BUILD)/bin/bench $(BUILD)/bin/bench-reordered
+	@mkdir -p out/bench
+	$(BUILD)/bin/bench-reordered --ratio-only >out/bench/placement.txt.new && mv out/bench/placement.txt.new out/bench/placement.txt
+	$(BUILD)/bin/bench --out out/bench --placement out/bench/placement.txt
 
 # ---- the kit's own tests ---------------------------------------------------
 # The renderer with the reference stages, sanitized (tests/suites/render_cli.sh).

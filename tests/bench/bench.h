@@ -347,6 +347,10 @@ typedef struct {
     ErrorStats all[BENCH_MAX_METHODS];   /* the families pooled */
     /* reference / textbook, double, the ordinary scene */
     double ratio_of_medians, ratio_paired, ratio_q1, ratio_q3;
+    /* the same ratio measured by the same objects linked in another order
+     * (bench --placement FILE; placed is false without it) */
+    bool placed;
+    double placed_ratio, placed_q1, placed_q3;
     /* the reference's miss test on the throughput workload: pairs decided at
      * each stage (reference_stage), and exits that sphere_intersect
      * contradicts (must be 0) */

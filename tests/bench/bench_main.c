@@ -3,7 +3,8 @@
  * the progress line.
  *
  *     bench [--quick] [--out DIR] [--scenes DIR] [--size WxH] [--rounds N]
- *           [--seed N]
+ *           [--seed N] [--placement FILE]
+ *     bench --ratio-only [--quick] [--scenes DIR] [--rounds N]
  *
  *   1. throughput: every method's closest-hit loop over the camera rays of
  *      default.scene, interleaved rounds, medians
@@ -18,6 +19,12 @@
  *      results_triangles.csv, report.md, plot.svg, plot_triangles.svg in
  *      DIR (default out/bench)
  * --quick does the same with small sizes, in a few seconds (make test).
+ * --ratio-only runs stage 1 alone and prints one line, "ratio R q1 Q1 q3
+ * Q3" (the reference's time over the textbook's, double); `make bench`
+ * runs it in the bench linked in the reverse order (bench-reordered) and
+ * hands that line to the bench with --placement FILE, whose report then
+ * gives the ratio under both placements of the code: where the code lies
+ * moves it by more than the 5% of its target (tests/bench/README.md).
  * Exit status: 0, or 1 if something could not run (the reason on stderr).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -165,8 +172,8 @@ static void pool_stats(ErrorStats *all, const ErrorStats *fam, double *errs, lon
 /* ---- the stages ------------------------------------------------------------------- */
 
 typedef struct {
-    bool quick;
-    const char *out, *scenes;
+    bool quick, ratio_only;
+    const char *out, *scenes, *placement;
     int width, height, rounds;
     uint64_t seed;
 } Options;
@@ -403,16 +410,40 @@ static int stage_renders(const Options *o, BenchResults *br, char *err, size_t e
 static void usage(void)
 {
     fprintf(stderr, "usage: bench [--quick] [--out DIR] [--scenes DIR] [--size WxH] "
-                    "[--rounds N] [--seed N]\n");
+                    "[--rounds N] [--seed N] [--placement FILE]\n"
+                    "       bench --ratio-only [--quick] [--scenes DIR] [--rounds N]\n");
+}
+
+/* The line bench --ratio-only printed, from file path, into br. */
+static int read_placement(const char *path, BenchResults *br, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        snprintf(err, errlen, "%s: cannot read it", path);
+        return -1;
+    }
+    int got = fscanf(f, "ratio %lf q1 %lf q3 %lf", &br->placed_ratio, &br->placed_q1, &br->placed_q3);
+    fclose(f);
+    if (got != 3 || !(br->placed_ratio > 0) || !(br->placed_q1 > 0) || !(br->placed_q3 > 0)) {
+        snprintf(err, errlen, "%s: not a line of bench --ratio-only (\"ratio R q1 Q1 q3 Q3\")", path);
+        return -1;
+    }
+    br->placed = true;
+    return 0;
 }
 
 int main(int argc, char **argv)
 {
-    Options o = { false, "out/bench", "labs/scenes", 1920, 1080, 0, 20260101 };
+    Options o = { false, false, "out/bench", "labs/scenes", NULL, 1920, 1080, 0, 20260101 };
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (strcmp(a, "--quick") == 0) {
             o.quick = true;
+        } else if (strcmp(a, "--ratio-only") == 0) {
+            o.ratio_only = true;
+        } else if (strcmp(a, "--placement") == 0 && v) {
+            o.placement = v;
+            i++;
         } else if (strcmp(a, "--out") == 0 && v) {
             o.out = v;
             i++;
@@ -444,6 +475,20 @@ int main(int argc, char **argv)
     char err[1200] = "";
     start_time = now_seconds();
     progress_tty = isatty(2);
+    if (o.ratio_only) {
+        int status = stage_throughput(&o, &br, err, sizeof err);
+        progress_done();
+        if (status != 0) {
+            fprintf(stderr, "bench: %s\n", err);
+            return 1;
+        }
+        printf("ratio %.4f q1 %.4f q3 %.4f\n", br.ratio_of_medians, br.ratio_q1, br.ratio_q3);
+        return 0;
+    }
+    if (o.placement && read_placement(o.placement, &br, err, sizeof err) != 0) {
+        fprintf(stderr, "bench: %s\n", err);
+        return 1;
+    }
     br.quick = o.quick;
     br.seed = o.seed;
     br.load_before = load_average();

@@ -149,6 +149,25 @@ if [ -s "$md" ]; then
         grep -q "went through the reference's meshes and [0-9]* through Moller-Trumbore's" "$md"
 fi
 
+# The ratio under a second placement of the code (make bench): --ratio-only
+# prints its one line, and --placement puts that line in the report; a
+# file that is not such a line is refused, naming it.
+if [ -x "$bench" ]; then
+    "$bench" --ratio-only --quick >"$dir/placement.txt" 2>/dev/null
+    check "bench --ratio-only prints 'ratio R q1 Q1 q3 Q3' ($(cat "$dir/placement.txt"))" \
+        grep -qx 'ratio [0-9.]* q1 [0-9.]* q3 [0-9.]*' "$dir/placement.txt"
+    echo 'ratio 1.5 q1 1.4 q3 1.6' >"$dir/placed.txt"
+    "$bench" --quick --out "$dir/placed" --placement "$dir/placed.txt" >/dev/null 2>&1
+    check "bench --placement: the report gives the other placement's ratio, and both must meet the target" \
+        sh -c "grep -q 'linked in the reverse order: \*\*1.500x\*\*' '$dir/placed/report.md' &&
+               grep -q 'Under both placements of the code: not met' '$dir/placed/report.md'"
+    echo 'ratio one' >"$dir/bad.txt"
+    "$bench" --quick --out "$dir/bad" --placement "$dir/bad.txt" >/dev/null 2>"$dir/bad.err"
+    status=$?
+    check "bench --placement refuses a file that is not such a line, naming it (exit $status)" \
+        sh -c "[ $status -eq 1 ] && grep -q 'bad.txt: not a line of bench --ratio-only' '$dir/bad.err'"
+fi
+
 # The Part 5 table stands in README.md and tests/bench/README.md: the two
 # copies must be the same (the first table, Part 3a's, is compared by
 # consistency.sh).
