@@ -359,7 +359,7 @@ $(GRADER_UNITS:%=$(ASAN)/tests/test_%): $(ASAN)/tests/test_%: tests/unit/test_%.
 
 # ---- bench: speed against accuracy (tests/bench) ----------------------------
 # `make bench` writes out/bench/: results.csv, report.md, plot.svg and more
-# (about a minute).  tests/suites/bench.sh runs `bench --quick`.  It links the
+# (about a minute and a half).  tests/suites/bench.sh runs `bench --quick`.  It links the
 # reference solutions and the oracle, so only the instructor's kit has it.
 BENCH_SRC  = $(wildcard tests/bench/*.c)
 BENCH_OBJ  = $(BENCH_SRC:tests/bench/%.c=$(BUILD)/bench/%.o)
