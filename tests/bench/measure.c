@@ -98,7 +98,8 @@ static double chain_mhz(long n)
 
 /* Twelve independent chains of 128-bit vector multiplies by 1 (or adds of
  * 0): enough to hide the latency of any current core, so the time measures
- * how many vector instructions of each kind it starts per cycle.  With gcc
+ * how many vector instructions of each kind it starts per microsecond
+ * (measure_ceiling turns that into cycles with the clock).  With gcc
  * and clang the chains are written as 128-bit vectors (their vector
  * extension), else as scalars, which use the same pipes. */
 #if defined(__GNUC__) || defined(__clang__)
@@ -109,7 +110,7 @@ typedef double Pair;
 #define PAIR(a, b) a
 #endif
 
-static double ops_per_cycle(int kind, long n, double mhz)
+static double ops_per_us(int kind, long n)
 {
     Pair m = PAIR(opaque_one, opaque_one), z = PAIR(opaque_zero, opaque_zero);
     Pair a[12] = { PAIR(1, 2), PAIR(3, 4), PAIR(5, 6), PAIR(7, 8), PAIR(9, 10), PAIR(11, 12),
@@ -141,10 +142,11 @@ static double ops_per_cycle(int kind, long n, double mhz)
     double out[sizeof(Pair) / sizeof(double)];
     memcpy(out, &sum, sizeof sum);
     bench_sink += out[0];
-    return 12.0 * (double)n / (dt * mhz * 1e6);
+    return 12.0 * (double)n / (dt * 1e6);
 }
 
-/* What a hit costs on top: sqrt and division, per number (lane).  Each of
+/* What a hit costs on top: sqrt and division, per number (lane) and per
+ * microsecond, as ops_per_us.  Each of
  * 24 numbers is its own chain, x = sqrt(x) or x = x / 1, written as the fast
  * path's solve writes them (a loop over an array), so that the compiler
  * makes of them what it makes of the solve: vectors of two doubles with the
@@ -157,7 +159,7 @@ static double ops_per_cycle(int kind, long n, double mhz)
 #define MEMORY_BARRIER() ((void)0)
 #endif
 
-static double lanes_per_cycle(int kind, long n, double mhz)
+static double lanes_per_us(int kind, long n)
 {
     double a[24];
     for (int k = 0; k < 24; k++)
@@ -182,7 +184,7 @@ static double lanes_per_cycle(int kind, long n, double mhz)
     for (int k = 0; k < 24; k++)
         sum += a[k];
     bench_sink += sum;
-    return 24.0 * (double)n / (dt * mhz * 1e6);
+    return 24.0 * (double)n / (dt * 1e6);
 }
 
 /* The least work a test needs in the lab's scenes: with the eye at the
@@ -205,11 +207,11 @@ void measure_ceiling(Ceiling *c, bool quick, double mhz_during)
      * make test's parallel lanes: 4.28 divisions a cycle once.) */
     for (int r = 0; r < reps; r++) {
         mhz[r] = chain_mhz(n);
-        mul[r] = ops_per_cycle(0, nf, 1);
-        add[r] = ops_per_cycle(1, nf, 1);
-        mix[r] = ops_per_cycle(2, nf, 1);
-        sq[r] = lanes_per_cycle(0, nf / 8, 1);
-        dv[r] = lanes_per_cycle(1, nf / 8, 1);
+        mul[r] = ops_per_us(0, nf);
+        add[r] = ops_per_us(1, nf);
+        mix[r] = ops_per_us(2, nf);
+        sq[r] = lanes_per_us(0, nf / 8);
+        dv[r] = lanes_per_us(1, nf / 8);
     }
     c->mhz_cpuinfo = cpuinfo_mhz();
     c->mhz_measured = mhz_during > 0 ? mhz_during : median(mhz, reps);
