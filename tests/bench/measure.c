@@ -146,8 +146,8 @@ static double ops_per_us(int kind, long n)
 }
 
 /* What a hit costs on top: sqrt and division, per number (lane) and per
- * microsecond, as ops_per_us.  Each of
- * 24 numbers is its own chain, x = sqrt(x) or x = x / 1, written as the fast
+ * microsecond, as ops_per_us.  Each of 24 numbers is its own chain,
+ * x = sqrt(x) or x = x / 1, written as the fast
  * path's solve writes them (a loop over an array), so that the compiler
  * makes of them what it makes of the solve: vectors of two doubles with the
  * flags the bench builds both with (-fno-math-errno, as fastpath.o).  The
