@@ -77,3 +77,26 @@ int kit_save_file(const char *path, const void *data, size_t n, char *err, size_
     return failed ? -1 : 0;
 }
 
+char *kit_load_file(const char *path, size_t max, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    struct stat st;
+    char *buf = NULL;
+    size_t n = 0;
+    if (fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode) && (size_t)st.st_size <= max &&
+        (buf = malloc((size_t)st.st_size + 1)) != NULL) {
+        n = fread(buf, 1, (size_t)st.st_size, f);
+        if (n != (size_t)st.st_size || ferror(f) || getc(f) != EOF) {
+            free(buf);                  /* changed while read */
+            buf = NULL;
+        }
+    }
+    fclose(f);
+    if (!buf)
+        return NULL;
+    buf[n] = '\0';
+    *len = n;
+    return buf;
+}

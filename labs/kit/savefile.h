@@ -1,5 +1,6 @@
 /*
- * savefile.h - writing a whole file so that it is never left half-written.
+ * savefile.h - writing a whole file so that it is never left half-written,
+ * and reading a whole file back.
  */
 #ifndef KIT_SAVEFILE_H
 #define KIT_SAVEFILE_H
@@ -11,5 +12,11 @@
  * path.  Returns 0, or -1 with "path: reason" in err and no temporary file
  * left behind. */
 int kit_save_file(const char *path, const void *data, size_t n, char *err, size_t errlen);
+
+/* Reads the whole regular file at path, any bytes, into a fresh buffer with
+ * a NUL after them, and sets *len to their number.  NULL when it cannot be
+ * opened, is not a regular file, holds more than max bytes, changed while
+ * it was read, or memory runs out.  (Text to parse: text_read_file.) */
+char *kit_load_file(const char *path, size_t max, size_t *len);
 
 #endif

@@ -20,31 +20,6 @@
 #define MEMO_FILE_MAX (64 << 20)    /* an object or a shared object           */
 #define MEMO_CHAIN 64               /* files of one stage sharing a hash      */
 
-/* The whole file (at most max bytes) in a malloc'd buffer, or NULL. */
-static char *slurp(const char *path, size_t max, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return NULL;
-    struct stat st;
-    char *buf = NULL;
-    size_t n = 0;
-    if (fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode) && (size_t)st.st_size <= max &&
-        (buf = malloc((size_t)st.st_size + 1)) != NULL) {
-        n = fread(buf, 1, (size_t)st.st_size, f);
-        if (n != (size_t)st.st_size || ferror(f) || getc(f) != EOF) {
-            free(buf);                  /* changed while read */
-            buf = NULL;
-        }
-    }
-    fclose(f);
-    if (!buf)
-        return NULL;
-    buf[n] = '\0';
-    *len = n;
-    return buf;
-}
-
 /* Writes len bytes as name in dir, all or nothing (kit_save_file). */
 static int put(const char *dir, const char *name, const char *bytes, size_t len)
 {
@@ -60,7 +35,7 @@ bool memo_find(const char *memo, const char *stage, const char *kind, const char
     if (!memo || !*memo)
         return false;
     size_t len = 0;
-    char *bytes = slurp(src, MEMO_SOURCE_MAX, &len);
+    char *bytes = kit_load_file(src, MEMO_SOURCE_MAX, &len);
     if (!bytes)
         return false;
     uint64_t h = 14695981039346656037u;
@@ -81,7 +56,7 @@ bool memo_find(const char *memo, const char *stage, const char *kind, const char
         char path[1200];
         size_t kept_len = 0;
         snprintf(path, sizeof path, "%s/source", e->dir);
-        char *kept = slurp(path, MEMO_SOURCE_MAX, &kept_len);
+        char *kept = kit_load_file(path, MEMO_SOURCE_MAX, &kept_len);
         bool same = kept && kept_len == len && memcmp(kept, bytes, len) == 0;
         free(kept);
         if (same) {
@@ -107,7 +82,7 @@ int memo_keep(const MemoEntry *e, const char *name, const char *file)
     if (!e->dir[0])
         return -1;
     size_t len = 0;
-    char *bytes = slurp(file, MEMO_FILE_MAX, &len);
+    char *bytes = kit_load_file(file, MEMO_FILE_MAX, &len);
     if (!bytes)
         return -1;
     int status = put(e->dir, name, bytes, len);
@@ -136,5 +111,5 @@ char *memo_read_text(const MemoEntry *e, const char *name)
     char path[1200];
     size_t len = 0;
     memo_path(e, name, path, sizeof path);
-    return e->dir[0] ? slurp(path, MEMO_FILE_MAX, &len) : NULL;
+    return e->dir[0] ? kit_load_file(path, MEMO_FILE_MAX, &len) : NULL;
 }

@@ -136,16 +136,6 @@ static char *slurp_fd(int fd, size_t max, size_t *len)
     return buf;
 }
 
-static char *slurp(const char *path, size_t *len)
-{
-    int fd = open(path, O_RDONLY);
-    if (fd < 0)
-        return NULL;
-    char *buf = slurp_fd(fd, KEY_MAX, len);
-    close(fd);
-    return buf;
-}
-
 static int write_all(int fd, const char *buf, size_t len)
 {
     while (len > 0) {
@@ -183,7 +173,7 @@ static int use_entry(const char *entry, const char *key, size_t keylen, const ch
     char path[4200];
     size_t n;
     snprintf(path, sizeof path, "%s/key", entry);
-    char *kept = slurp(path, &n);
+    char *kept = kit_load_file(path, KEY_MAX, &n);
     if (!kept)
         return -1;
     int same = n == keylen && memcmp(kept, key, n) == 0;
@@ -191,7 +181,7 @@ static int use_entry(const char *entry, const char *key, size_t keylen, const ch
     if (!same)
         return -1;
     snprintf(path, sizeof path, "%s/object", entry);
-    char *o = slurp(path, &n);
+    char *o = kit_load_file(path, KEY_MAX, &n);
     if (!o)
         return -1;
     int bad = put(obj, o, n);
@@ -199,7 +189,7 @@ static int use_entry(const char *entry, const char *key, size_t keylen, const ch
     if (bad)
         return -1;
     snprintf(path, sizeof path, "%s/messages", entry);
-    char *m = slurp(path, &n);
+    char *m = kit_load_file(path, KEY_MAX, &n);
     if (m) {
         write_all(2, m, n);
         free(m);
@@ -328,7 +318,7 @@ int main(int argc, char **argv)
         if (stat(entry, &est) == 0 && waited > 0)
             run_real(argv);                     /* an entry for another key */
         size_t n;
-        char *kept = slurp(holder, &n);
+        char *kept = kit_load_file(holder, KEY_MAX, &n);
         long who = kept ? strtol(kept, NULL, 10) : 0;
         free(kept);
         if (who > 0 && kill((pid_t)who, 0) != 0 && errno == ESRCH) {
@@ -358,7 +348,7 @@ int main(int argc, char **argv)
         char tmpdir[4300], path[4400];
         snprintf(tmpdir, sizeof tmpdir, "%s.%ld.new", entry, (long)getpid());
         size_t on;
-        char *o = slurp(obj, &on);
+        char *o = kit_load_file(obj, KEY_MAX, &on);
         int ok = o && mkdir(tmpdir, 0755) == 0;
         if (ok) {
             snprintf(path, sizeof path, "%s/object", tmpdir);
