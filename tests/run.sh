@@ -32,13 +32,22 @@ start=$(date +%s)
 # from one run to the next while the compiler is the same one (its
 # --version and the size and time of its files); a run of every suite
 # then drops the entries it did not use (tests/tools/ccmemo_keep.sh).
-# NO_CC_MEMO=1: every compile is compiled (the memo is left as it is).
+# The grader's own compiles of stage files (the hundreds of gradings in the
+# suites) are kept the same way, by the grader itself (GRADE_KEEP_BUILDS,
+# tests/grader/memo.h; used as root only, in a directory no one else may
+# write in), for the same compiler.
+# NO_CC_MEMO=1: every compile is compiled (the memos are left as they are).
 memo=$PWD/out/tests/cc-memo
+gmemo=$PWD/out/tests/grade-memo
 if [ -x out/build/ccmemo/cc ] && [ -z "${NO_CC_MEMO:-}" ]; then
     if sh tests/tools/ccmemo_keep.sh open "$memo"; then
         PATH=$PWD/out/build/ccmemo:$PATH
         CC_MEMO=$memo
         export PATH CC_MEMO
+    fi
+    if sh tests/tools/ccmemo_keep.sh open "$gmemo" && chmod 700 "$gmemo"; then
+        GRADE_KEEP_BUILDS=$gmemo
+        export GRADE_KEEP_BUILDS
     fi
 fi
 
@@ -164,6 +173,14 @@ if [ -n "${CC_MEMO:-}" ] && [ -f "$memo/log" ]; then
     [ $((made + used)) -gt 0 ] && echo "compiles in the suites: $made compiled, $used served from the memo"
     # Every suite ran: what none of them used (nor compiled) goes.
     [ "$every_suite" = yes ] && sh tests/tools/ccmemo_keep.sh prune "$memo" "$dir/started"
+fi
+if [ -n "${GRADE_KEEP_BUILDS:-}" ]; then
+    # An entry's file "uses" is written whenever it is made or used, its
+    # object only when made.
+    made=$(find "$gmemo/." -path '*/object.o' -newer "$dir/started" | wc -l | tr -d ' ')
+    used=$(( $(find "$gmemo/." -path '*/uses' -newer "$dir/started" | wc -l) - made ))
+    [ $((made + used)) -gt 0 ] && echo "the grader's stage files: $made compiled, $used kept from an earlier run"
+    [ "$every_suite" = yes ] && sh tests/tools/ccmemo_keep.sh prune "$gmemo" "$dir/started"
 fi
 plural() { [ "$1" -eq 1 ] && echo "$1 $2" || echo "$1 ${2}s"; }
 echo "took $(($(date +%s) - start)) s ($(plural "$k" suite): $(plural "$lanes" lane) shared by $(plural "$workers" worker), then $alone alone)"

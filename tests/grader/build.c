@@ -8,6 +8,7 @@
 #include "grader.h"
 #include "include_scan.h"
 #include "sandbox.h"
+#include "kit/savefile.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -244,21 +245,29 @@ static int check_dependencies(const BuildConfig *cfg, Build *b, const char *depf
  * whole program would: a symbol defined nowhere, main or another part's
  * function defined again.  Returns as build_program. */
 static int load_program(const BuildConfig *cfg, Build *b, int part, const char *ofile,
-                        const MemoEntry *memo, char *err, size_t errlen)
+                        const MemoEntry *memo, const MemoEntry *stored, char *err, size_t errlen)
 {
-    char so[PATH_MAX], kept[1200] = "";
+    char so[PATH_MAX], from_memo[1200] = "", from_store[1200] = "";
     snprintf(so, sizeof so, "%s/src/student.so", b->dir);
     if (memo->dir[0])
-        memo_path(memo, "student.so", kept, sizeof kept);
-    if (!kept[0] || access(kept, R_OK) != 0 || copy_file(kept, so, 64 << 20, err, errlen) != 0) {
+        memo_path(memo, "student.so", from_memo, sizeof from_memo);
+    if (stored->dir[0])
+        memo_path(stored, "student.so", from_store, sizeof from_store);
+    bool have = (from_memo[0] && access(from_memo, R_OK) == 0 &&
+                 copy_file(from_memo, so, 64 << 20, err, errlen) == 0) ||
+                (from_store[0] && access(from_store, R_OK) == 0 &&
+                 copy_file(from_store, so, 64 << 20, err, errlen) == 0);
+    if (!have) {
         char *so_argv[] = { (char *)cfg->cc, "-shared", "-nostdlib", "-Wl,-Bsymbolic", (char *)ofile,
                             "-lgcc", "-o", "student.so", NULL };
         int rc = run_cc(cfg, b, so_argv, &b->cpu_link, err, errlen);
         if (rc != 0)
             return rc < 0 ? -1 : 0;
-        if (kept[0])
-            memo_keep(memo, "student.so", so);
+        if (from_store[0])
+            memo_keep(stored, "student.so", so);
     }
+    if (from_memo[0] && access(from_memo, F_OK) != 0)
+        memo_keep(memo, "student.so", so);
     char from[PATH_MAX];
     snprintf(from, sizeof from, "%s/runner_%d", cfg->objdir, part + 1);
     if (copy_file(from, b->runner, 16 << 20, err, errlen) || chmod(b->runner, 0755))
@@ -288,6 +297,120 @@ static int load_program(const BuildConfig *cfg, Build *b, int part, const char *
     return 0;
 }
 
+/* Appends n bytes to the buffer *buf of *len bytes; -1 when out of memory. */
+static int append(char **buf, size_t *len, const void *bytes, size_t n)
+{
+    char *grown = realloc(*buf, *len + n + 1);
+    if (!grown)
+        return -1;
+    memcpy(grown + *len, bytes, n);
+    *len += n;
+    grown[*len] = '\0';
+    *buf = grown;
+    return 0;
+}
+
+/* The kit's own tests keep what stage files built from one run to the next
+ * (cfg->store, memo.h).  There an entry's key is not the file's bytes alone
+ * but all that decides the object: the compiler's path and arguments, and
+ * the bytes of the headers and of the file, written to a file of the build
+ * that memo_find compares whole.  False when there is no entry. */
+static bool store_find(const BuildConfig *cfg, const Build *b, const char *stage, const char *kind,
+                       char *const *argv, const char *cfile, MemoEntry *e)
+{
+    e->dir[0] = '\0';
+    e->found = false;
+    if (!cfg->store)
+        return false;
+    char *key = NULL;
+    size_t len = 0;
+    int bad = append(&key, &len, "grade build\n", 12);
+    for (int k = 0; argv[k] && !bad; k++)
+        bad = append(&key, &len, argv[k], strlen(argv[k]) + 1);
+    const char *files[] = { "raytracer.h", "vec3.h", cfile };
+    for (int k = 0; k < 3 && !bad; k++) {
+        char path[PATH_MAX + 700], head[200];
+        size_t n = 0;
+        snprintf(path, sizeof path, "%s/src/%s", b->dir, files[k]);
+        char *bytes = kit_load_file(path, SOURCE_MAX, &n);
+        snprintf(head, sizeof head, "\n%s %zu\n", files[k], n);
+        bad = !bytes || append(&key, &len, head, strlen(head)) || append(&key, &len, bytes, n);
+        free(bytes);
+    }
+    char path[PATH_MAX + 700], why[256];
+    snprintf(path, sizeof path, "%s/%s.key", b->dir, stage);
+    bool found = !bad && kit_save_file(path, key, len, why, sizeof why) == 0 &&
+                 memo_find(cfg->store, stage, kind, path, e);
+    free(key);
+    return found;
+}
+
+/* Copies the object (and the compiler's dependency list, when dpath) kept
+ * in e to opath, then says what the compiler said; false if e lacks one. */
+static bool served(Build *b, MemoEntry *e, const char *opath, const char *dpath)
+{
+    char from[1200], why[256];
+    memo_path(e, "object.o", from, sizeof from);
+    if (!e->found || access(from, R_OK) != 0 || copy_file(from, opath, 64 << 20, why, sizeof why))
+        return false;
+    memo_path(e, "depends", from, sizeof from);
+    if (dpath && (access(from, R_OK) != 0 || copy_file(from, dpath, 1 << 20, why, sizeof why)))
+        return false;
+    char *said = memo_read_text(e, "messages");
+    if (said)
+        say(b, said);
+    free(said);
+    memo_use(e);
+    return true;
+}
+
+/* Compiles the stage file copied into the build (b->dir/src/<stage>.c) to
+ * <stage>.o beside it, or takes the object the same bytes built before: in
+ * this grade --all run (cfg->memo), or, in the kit's own tests, in an
+ * earlier run (cfg->store: the compiler's dependency list is kept too and
+ * checked again, since the kit may lie elsewhere now).  Returns 0 when
+ * there is an object, 1 when the student's file did not build (b->messages
+ * says why), -1 when the sandbox failed (err). */
+static int compile_stage(const BuildConfig *cfg, Build *b, const char *stage, bool load,
+                         MemoEntry *memo, MemoEntry *stored, char *err, size_t errlen)
+{
+    const char *kind = load ? "pic" : "o";
+    char cfile[80], ofile[80], dfile[80], cpath[PATH_MAX + 700], opath[PATH_MAX + 700],
+         dpath[PATH_MAX + 700];
+    snprintf(cfile, sizeof cfile, "%s.c", stage);
+    snprintf(ofile, sizeof ofile, "%s.o", stage);
+    snprintf(dfile, sizeof dfile, "%s.d", stage);
+    snprintf(cpath, sizeof cpath, "%s/src/%s", b->dir, cfile);
+    snprintf(opath, sizeof opath, "%s/src/%s", b->dir, ofile);
+    snprintf(dpath, sizeof dpath, "%s/src/%s", b->dir, dfile);
+    /* The same bytes built before in this grade --all run: what they
+     * built, and what the compiler said of them, again. */
+    bool memo_on = memo_find(cfg->memo, stage, kind, cpath, memo);
+    if (memo_on && served(b, memo, opath, NULL))
+        return 0;
+    size_t before = strlen(b->messages);
+    char *argv[] = { (char *)cfg->cc, "-std=c11", "-O1", "-ffp-contract=off", "-Wall", "-Wextra",
+                     "-I.", "-MD", "-MF", dfile, "-c", cfile, "-o", ofile,
+                     load ? "-fPIC" : NULL, NULL };
+    bool store_on = store_find(cfg, b, stage, kind, argv, cfile, stored);
+    bool compiled = !(store_on && served(b, stored, opath, dpath));
+    if (compiled) {
+        int rc = run_cc(cfg, b, argv, &b->cpu_compile, err, errlen);
+        if (rc != 0)
+            return rc;
+    }
+    if (check_dependencies(cfg, b, dpath))
+        return 1;
+    /* The messages first: an entry with an object has them. */
+    const char *said = b->messages + before;
+    if (compiled && store_on && memo_keep_text(stored, "messages", said) == 0 &&
+        memo_keep(stored, "depends", dpath) == 0 && memo_keep(stored, "object.o", opath) == 0)
+        memo_use(stored);
+    if (memo_on && memo_keep_text(memo, "messages", said) == 0 && memo_keep(memo, "object.o", opath) == 0)
+        memo_use(memo);
+    return 0;
+}
+
 /* Builds b->dir/src/runner from the prebuilt harness object harness (a file
  * name in cfg->objdir), the submission's stage files of the nparts parts
  * listed (each compiled here, or copied from the directory kept when it
@@ -296,7 +419,7 @@ static int load_program(const BuildConfig *cfg, Build *b, int part, const char *
  * skip; with cfg->load and one stage file of one part, that file as a
  * shared object and the part's prebuilt runner instead (load_program).
  * Each stage file's object comes from cfg->memo when the same bytes built
- * before in this grade --all run.  Returns 0 when the grader could do its
+ * before in this grade --all run (or from cfg->store: compile_stage).  Returns 0 when the grader could do its
  * job (b->ok says whether the student's code built), -1 when it could not
  * (err says why). */
 static int build_program(const BuildConfig *cfg, const char *harness, const int *parts, int nparts,
@@ -337,15 +460,14 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
     char *link[16];
     int nlink = 0;
     static char names[16][96];
-    MemoEntry memo = { "", false };
+    MemoEntry memo = { "", false }, stored = { "", false };
     link[nlink++] = (char *)cfg->cc;
     link[nlink++] = "harness.o";
     for (int k = 0; k < nparts; k++) {
         const char *stage = stage_names[parts[k]];
-        char cfile[80], ofile[80], dfile[80];
+        char cfile[80], ofile[80];
         snprintf(cfile, sizeof cfile, "%s.c", stage);
         snprintf(ofile, sizeof ofile, "%s.o", stage);
-        snprintf(dfile, sizeof dfile, "%s.d", stage);
         char cerr[512];
         if (kept) {
             snprintf(path, sizeof path, "%s/%s", kept, ofile);
@@ -369,45 +491,15 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
         }
         if (scan_includes(cfg, b, to, src))
             return 0;
-        /* The same bytes built before in this grade --all run: what they
-         * built, and what the compiler said of them, again. */
-        char kept_o[1200], opath[PATH_MAX + 700];
-        snprintf(opath, sizeof opath, "%s/%s", src, ofile);
-        bool memo_on = memo_find(cfg->memo, stage, load ? "pic" : "o", to, &memo);
-        if (memo_on)
-            memo_path(&memo, "object.o", kept_o, sizeof kept_o);
-        if (memo_on && memo.found && access(kept_o, R_OK) == 0 &&
-            copy_file(kept_o, opath, 64 << 20, cerr, sizeof cerr) == 0) {
-            char *said = memo_read_text(&memo, "messages");
-            if (said)
-                say(b, said);
-            free(said);
-            memo_use(&memo);
-        } else {
-            size_t before = strlen(b->messages);
-            char *argv[] = { (char *)cfg->cc, "-std=c11", "-O1", "-ffp-contract=off", "-Wall", "-Wextra",
-                             "-I.", "-MD", "-MF", dfile, "-c", cfile, "-o", ofile,
-                             load ? "-fPIC" : NULL, NULL };
-            int rc = run_cc(cfg, b, argv, &b->cpu_compile, err, errlen);
-            if (rc < 0)
-                return -1;
-            if (rc > 0)
-                return 0;
-            char dpath[PATH_MAX + 700];
-            snprintf(dpath, sizeof dpath, "%s/%s", src, dfile);
-            if (check_dependencies(cfg, b, dpath))
-                return 0;
-            /* The messages first: an entry with an object has them. */
-            if (memo_on && memo_keep_text(&memo, "messages", b->messages + before) == 0 &&
-                memo_keep(&memo, "object.o", opath) == 0)
-                memo_use(&memo);
-        }
+        int rc = compile_stage(cfg, b, stage, load, &memo, &stored, err, errlen);
+        if (rc != 0)
+            return rc < 0 ? -1 : 0;
         snprintf(names[nlink], sizeof names[nlink], "%s", ofile);
         link[nlink] = names[nlink];
         nlink++;
     }
     if (load)
-        return load_program(cfg, b, skip, names[nlink - 1], &memo, err, errlen);
+        return load_program(cfg, b, skip, names[nlink - 1], &memo, &stored, err, errlen);
     /* In the instructor's kit: the reference for every other part. */
     if (skip >= 0 && cfg->reference) {
         for (int p = 0; p < NPARTS; p++) {

@@ -25,6 +25,9 @@ typedef struct {
                                   built as a shared object they load       */
     const char *memo;          /* NULL, or where grade --all keeps what each
                                   distinct stage file built into (memo.h)   */
+    const char *store;         /* NULL, or where the kit's own tests keep
+                                  what stage files built, from one run to
+                                  the next (GRADE_KEEP_BUILDS, memo.h)      */
 } BuildConfig;
 
 typedef struct {

@@ -155,6 +155,20 @@ static void write_page(const char *page, const Grade *g, const GradeConfig *cfg,
  * given to each submission's grading with --memo, and used only as root. */
 static const char *memo_dir;
 
+/* GRADE_KEEP_BUILDS=DIR: the kit's own tests (tests/run.sh) keep what
+ * stage files built in DIR from one run to the next (memo.h).  As the memo,
+ * as root only; and only when DIR is the grader's own user's and no one
+ * else may write in it.  GRADE_NO_MEMO=1 turns it off too. */
+static const char *store_dir(void)
+{
+    const char *dir = getenv("GRADE_KEEP_BUILDS"), *no_memo = getenv("GRADE_NO_MEMO");
+    struct stat st;
+    if (!dir || !*dir || (no_memo && *no_memo) || !sandbox_drops_privileges() ||
+        stat(dir, &st) != 0 || !S_ISDIR(st.st_mode) || st.st_uid != geteuid() || (st.st_mode & 022))
+        return NULL;
+    return dir;
+}
+
 static int grade_one(const char *submission, const char *part, const char *results,
                      const char *weights, const char *page, bool quiet, bool summary)
 {
@@ -204,7 +218,8 @@ static int grade_one(const char *submission, const char *part, const char *resul
     const char *no_load = getenv("GRADE_NO_LOAD");
     BuildConfig bc = { .root = root, .cc = cc, .objdir = objdir, .reference = access(ref, R_OK) == 0,
                        .load = access(runner, X_OK) == 0 && !(no_load && *no_load),
-                       .memo = memo_dir && sandbox_drops_privileges() ? memo_dir : NULL };
+                       .memo = memo_dir && sandbox_drops_privileges() ? memo_dir : NULL,
+                       .store = store_dir() };
 
     GradeOptions opt = { .submission = submission, .cfg = &cfg, .build = &bc, .verbose = verbose };
     /* The page's render reuses the objects the graded builds compiled. */

@@ -10,6 +10,7 @@
 #include "kit/savefile.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -103,6 +104,7 @@ void memo_use(const MemoEntry *e)
     if (f) {
         fputc('+', f);
         fclose(f);
+        utimensat(AT_FDCWD, e->dir, NULL, 0);   /* a kept memo prunes by it */
     }
 }
 
