@@ -32,8 +32,9 @@ start=$(date +%s)
 # from one run to the next while the compiler is the same one (its
 # --version and the size and time of its files); a run of every suite
 # then drops the entries it did not use (tests/tools/ccmemo_keep.sh).
-# The grader's own compiles of stage files (the hundreds of gradings in the
-# suites) are kept the same way, by the grader itself (GRADE_KEEP_BUILDS,
+# The grader's own builds (its compiles of stage files and links of
+# programs, in the hundreds of gradings of the suites) are kept the same
+# way, by the grader itself (GRADE_KEEP_BUILDS,
 # tests/grader/memo.h; used as root only, in a directory no one else may
 # write in), for the same compiler.
 # NO_CC_MEMO=1: every compile is compiled (the memos are left as they are).
@@ -175,11 +176,14 @@ if [ -n "${CC_MEMO:-}" ] && [ -f "$memo/log" ]; then
     [ "$every_suite" = yes ] && sh tests/tools/ccmemo_keep.sh prune "$memo" "$dir/started"
 fi
 if [ -n "${GRADE_KEEP_BUILDS:-}" ]; then
-    # An entry's file "uses" is written whenever it is made or used, its
-    # object only when made.
-    made=$(find "$gmemo/." -path '*/object.o' -newer "$dir/started" | wc -l | tr -d ' ')
-    used=$(( $(find "$gmemo/." -path '*/uses' -newer "$dir/started" | wc -l) - made ))
-    [ $((made + used)) -gt 0 ] && echo "the grader's stage files: $made compiled, $used kept from an earlier run"
+    # An entry's file "uses" is written whenever what it keeps is made or
+    # used, its file "source" (its key) whenever it is made, even for a
+    # build that failed.
+    find "$gmemo/." \( -name uses -o -name source \) -newer "$dir/started" |
+        awk '{ n = split($0, p, "/"); e = substr($0, 1, length($0) - length(p[n]) - 1); seen[e] = seen[e] " " p[n] }
+             END { for (e in seen) { if (seen[e] ~ /uses/ && seen[e] ~ /source/) made++
+                                     else if (seen[e] ~ /uses/) used++ }
+                   if (made + used) printf "the grader'"'"'s builds (stage files compiled, programs linked): %d made, %d kept from an earlier run\n", made, used }'
     [ "$every_suite" = yes ] && sh tests/tools/ccmemo_keep.sh prune "$gmemo" "$dir/started"
 fi
 plural() { [ "$1" -eq 1 ] && echo "$1 $2" || echo "$1 ${2}s"; }

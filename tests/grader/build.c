@@ -310,13 +310,14 @@ static int append(char **buf, size_t *len, const void *bytes, size_t n)
     return 0;
 }
 
-/* The kit's own tests keep what stage files built from one run to the next
- * (cfg->store, memo.h).  There an entry's key is not the file's bytes alone
- * but all that decides the object: the compiler's path and arguments, and
- * the bytes of the headers and of the file, written to a file of the build
- * that memo_find compares whole.  False when there is no entry. */
-static bool store_find(const BuildConfig *cfg, const Build *b, const char *stage, const char *kind,
-                       char *const *argv, const char *cfile, MemoEntry *e)
+/* The kit's own tests keep what stage files and programs built from one run
+ * to the next (cfg->store, memo.h).  There an entry's key is not a file's
+ * bytes alone but all that decides what is built: the compiler's path and
+ * arguments and the bytes of the nfiles files of the build's src directory
+ * it reads, written to a file of the build that memo_find compares whole.
+ * False when there is no entry. */
+static bool store_find(const BuildConfig *cfg, const Build *b, const char *what, const char *kind,
+                       char *const *argv, const char *const *files, int nfiles, MemoEntry *e)
 {
     e->dir[0] = '\0';
     e->found = false;
@@ -327,20 +328,19 @@ static bool store_find(const BuildConfig *cfg, const Build *b, const char *stage
     int bad = append(&key, &len, "grade build\n", 12);
     for (int k = 0; argv[k] && !bad; k++)
         bad = append(&key, &len, argv[k], strlen(argv[k]) + 1);
-    const char *files[] = { "raytracer.h", "vec3.h", cfile };
-    for (int k = 0; k < 3 && !bad; k++) {
+    for (int k = 0; k < nfiles && !bad; k++) {
         char path[PATH_MAX + 700], head[200];
         size_t n = 0;
         snprintf(path, sizeof path, "%s/src/%s", b->dir, files[k]);
-        char *bytes = kit_load_file(path, SOURCE_MAX, &n);
+        char *bytes = kit_load_file(path, 64 << 20, &n);
         snprintf(head, sizeof head, "\n%s %zu\n", files[k], n);
         bad = !bytes || append(&key, &len, head, strlen(head)) || append(&key, &len, bytes, n);
         free(bytes);
     }
     char path[PATH_MAX + 700], why[256];
-    snprintf(path, sizeof path, "%s/%s.key", b->dir, stage);
+    snprintf(path, sizeof path, "%s/%s.key", b->dir, what);
     bool found = !bad && kit_save_file(path, key, len, why, sizeof why) == 0 &&
-                 memo_find(cfg->store, stage, kind, path, e);
+                 memo_find(cfg->store, what, kind, path, e);
     free(key);
     return found;
 }
@@ -392,7 +392,8 @@ static int compile_stage(const BuildConfig *cfg, Build *b, const char *stage, bo
     char *argv[] = { (char *)cfg->cc, "-std=c11", "-O1", "-ffp-contract=off", "-Wall", "-Wextra",
                      "-I.", "-MD", "-MF", dfile, "-c", cfile, "-o", ofile,
                      load ? "-fPIC" : NULL, NULL };
-    bool store_on = store_find(cfg, b, stage, kind, argv, cfile, stored);
+    const char *read[] = { "raytracer.h", "vec3.h", cfile };
+    bool store_on = store_find(cfg, b, stage, kind, argv, read, 3, stored);
     bool compiled = !(store_on && served(b, stored, opath, dpath));
     if (compiled) {
         int rc = run_cc(cfg, b, argv, &b->cpu_compile, err, errlen);
@@ -518,10 +519,34 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
     link[nlink++] = "-o";
     link[nlink++] = "runner";
     link[nlink] = NULL;
+    /* The kit's own tests: the same objects linked in an earlier run. */
+    const char *objects[16];
+    int nobjects = 0;
+    for (int k = 1; k < nlink; k++)
+        if (strlen(link[k]) > 2 && !strcmp(link[k] + strlen(link[k]) - 2, ".o"))
+            objects[nobjects++] = link[k];
+    MemoEntry linked;
+    bool store_on = store_find(cfg, b, "program", harness, link, objects, nobjects, &linked);
+    char kept_runner[1200];
+    memo_path(&linked, "runner", kept_runner, sizeof kept_runner);
+    if (store_on && linked.found && access(kept_runner, R_OK) == 0 &&
+        copy_file(kept_runner, b->runner, 64 << 20, err, errlen) == 0 && chmod(b->runner, 0755) == 0) {
+        char *said = memo_read_text(&linked, "messages");
+        if (said)
+            say(b, said);
+        free(said);
+        memo_use(&linked);
+        b->ok = true;
+        return 0;
+    }
+    size_t before = strlen(b->messages);
     int rc = run_cc(cfg, b, link, &b->cpu_link, err, errlen);
     if (rc < 0)
         return -1;
     b->ok = rc == 0;
+    if (b->ok && store_on && memo_keep_text(&linked, "messages", b->messages + before) == 0 &&
+        memo_keep(&linked, "runner", b->runner) == 0)
+        memo_use(&linked);
     return 0;
 }
 

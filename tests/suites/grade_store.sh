@@ -7,6 +7,8 @@
 # - the compiler's dependency list kept with an object is checked again
 #   when it is served (a kept file that includes a file of the kit is
 #   refused);
+# - a program linked whole (as on macOS, or for the report page's render)
+#   is kept too, and what is kept is what runs;
 # - another compiler makes another entry;
 # - nothing is kept where someone else may write in the store, with
 #   GRADE_NO_MEMO=1, or when the grader is not root.
@@ -71,6 +73,19 @@ if [ -f "$bad_entry/student.so" ]; then
     check "... and so is the shared object (planted: $(score planted_so))" \
         [ "$(score planted_so)" = "$(score bad)" ]
 fi
+
+# Linked whole (GRADE_NO_LOAD=1, as on macOS): the program is kept, and a
+# planted program is what runs.
+rm -rf "$tmp/store"/* "$tmp/other"/*
+whole() { (GRADE_NO_LOAD=1 && export GRADE_NO_LOAD && grade1 "$@"); }
+programs() { ls "$1" | grep -c '^program-'; }
+whole "$tmp/store" "$tmp/ref" whole1
+check "a program linked whole is kept ($(programs "$tmp/store") entry)" [ "$(programs "$tmp/store")" -eq 1 ]
+whole "$tmp/other" "$tmp/bad" whole_bad
+cp "$(ls -d "$tmp/other"/program-* | head -n 1)/runner" "$(ls -d "$tmp/store"/program-* | head -n 1)/runner"
+whole "$tmp/store" "$tmp/ref" whole2
+check "the program the store serves is what runs (planted: $(score whole2), faulty file: $(score whole_bad))" \
+    [ "$(score whole2)" = "$(score whole_bad)" ] && [ "$(score whole1)" = "$(score first)" ]
 
 # A dependency list naming a file of the kit, as a macro include would.
 rm -rf "$tmp/store"/*

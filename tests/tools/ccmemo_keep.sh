@@ -4,8 +4,8 @@
 #
 #   sh tests/tools/ccmemo_keep.sh open DIR
 #       Readies DIR for a run: kept if the compiler `cc` on PATH is the one
-#       that filled it (its --version, and the size and time of the driver
-#       and of cc1), else emptied; its log emptied, and what an interrupted
+#       that filled it (its --version, and the size and time of the driver,
+#       cc1, the linker and crt1.o), else emptied; its log emptied, and what an interrupted
 #       run left (locks, half-made entries, messages) removed.  Fails if DIR
 #       cannot be made.
 #   sh tests/tools/ccmemo_keep.sh prune DIR STAMP
@@ -15,7 +15,12 @@
 set -u
 compiler_identity() {
     cc --version 2>&1
-    for f in "$(command -v cc)" "$(cc -print-prog-name=cc1 2>/dev/null)"; do
+    # The linker and the C library's start file too: the grader's kept
+    # builds (GRADE_KEEP_BUILDS) hold linked programs.
+    ld=$(cc -print-prog-name=ld 2>/dev/null)
+    case $ld in */*) ;; *) ld=$(command -v "$ld") ;; esac
+    for f in "$(command -v cc)" "$(cc -print-prog-name=cc1 2>/dev/null)" "$ld" \
+             "$(cc -print-file-name=crt1.o 2>/dev/null)"; do
         [ -f "$f" ] && ls -lLn "$f"
     done
 }
