@@ -179,7 +179,7 @@ if [ -n "${GRADE_KEEP_BUILDS:-}" ]; then
     # An entry's file "uses" is written whenever what it keeps is made or
     # used, its file "source" (its key) whenever it is made, even for a
     # build that failed.
-    find "$gmemo/." \( -name uses -o -name source \) -newer "$dir/started" |
+    find "$gmemo/." \( -name 'uses' -o -name 'source' \) -newer "$dir/started" |
         awk '{ n = split($0, p, "/"); e = substr($0, 1, length($0) - length(p[n]) - 1); seen[e] = seen[e] " " p[n] }
              END { for (e in seen) { if (seen[e] ~ /uses/ && seen[e] ~ /source/) made++
                                      else if (seen[e] ~ /uses/) used++ }
