@@ -369,12 +369,13 @@ HAVE_BENCH := $(and $(HAVE_SOLUTIONS),$(wildcard tests/oracle/hard.h),$(BENCH_SR
 # and three 1.10x.  With every function and loop of the bench and of its
 # own copies of the reference's objects starting on a 64-byte boundary,
 # six orders gave 0.997x-1.005x (tests/bench/README.md).  Used where the
-# compiler takes the flags.
+# compiler takes the flags.  The bench's objects depend on the Makefile,
+# whose flags its figures depend on.
 BENCH_ALIGN = $(shell $(CC) -falign-functions=64 -falign-loops=64 -Werror -x c -c /dev/null -o /dev/null 2>/dev/null && echo -falign-functions=64 -falign-loops=64)
-$(BUILD)/bench/%.o: tests/bench/%.c $(wildcard tests/bench/*.h) $(wildcard tests/oracle/*.h) $(KIT_HDR)
+$(BUILD)/bench/%.o: tests/bench/%.c $(wildcard tests/bench/*.h) $(wildcard tests/oracle/*.h) $(KIT_HDR) Makefile
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(BENCH_ALIGN) -Ilabs -c $< -o $@
-$(BUILD)/bench/solutions/%.o: solutions/%.c $(KIT_HDR)
+$(BUILD)/bench/solutions/%.o: solutions/%.c $(KIT_HDR) Makefile
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(BENCH_ALIGN) -Ilabs -c $< -o $@
 # The fast path's sqrt is vectorised only if it need not set errno (no result changes).
