@@ -420,9 +420,10 @@ static int compile_stage(const BuildConfig *cfg, Build *b, const char *stage, bo
  * skip; with cfg->load and one stage file of one part, that file as a
  * shared object and the part's prebuilt runner instead (load_program).
  * Each stage file's object comes from cfg->memo when the same bytes built
- * before in this grade --all run (or from cfg->store: compile_stage).  Returns 0 when the grader could do its
- * job (b->ok says whether the student's code built), -1 when it could not
- * (err says why). */
+ * before in this grade --all run (or from cfg->store: compile_stage), and
+ * the program from cfg->store when the same objects were linked before.
+ * Returns 0 when the grader could do its job (b->ok says whether the
+ * student's code built), -1 when it could not (err says why). */
 static int build_program(const BuildConfig *cfg, const char *harness, const int *parts, int nparts,
                          int skip, const char *kept, const char *submission, Build *b,
                          char *err, size_t errlen)
