@@ -88,7 +88,8 @@ static size_t png_filter_row(int type, const unsigned char *row, const unsigned 
                              size_t len, size_t bpp, unsigned char *dst)
 {
     /* The first pixel (no left neighbour) as png_predict says; the rest in
-     * a loop of one filter type each, which the compiler can vectorise. */
+     * a loop of one filter type each, with no test of the type or of the
+     * left edge per byte. */
     size_t first = bpp < len ? bpp : len;
     for (size_t k = 0; k < first; k++)
         dst[k] = (unsigned char)(row[k] - png_predict(type, row, prev, k, bpp));
@@ -105,13 +106,9 @@ static size_t png_filter_row(int type, const unsigned char *row, const unsigned 
         for (size_t k = first; k < len; k++)
             dst[k] = (unsigned char)(row[k] - (row[k - bpp] + prev[k]) / 2);
         break;
-    case 4:             /* png_paeth, without branches */
-        for (size_t k = first; k < len; k++) {
-            int a = row[k - bpp], b = prev[k], c = prev[k - bpp];
-            int pa = abs(b - c), pb = abs(a - c), pc = abs(a + b - 2 * c);
-            int pred = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
-            dst[k] = (unsigned char)(row[k] - pred);
-        }
+    case 4:
+        for (size_t k = first; k < len; k++)
+            dst[k] = (unsigned char)(row[k] - png_paeth(row[k - bpp], prev[k], prev[k - bpp]));
         break;
     default:
         memcpy(dst + first, row + first, len - first);
