@@ -26,8 +26,9 @@ typedef struct {
     const char *memo;          /* NULL, or where grade --all keeps what each
                                   distinct stage file built into (memo.h)   */
     const char *store;         /* NULL, or where the kit's own tests keep
-                                  what stage files built, from one run to
-                                  the next (GRADE_KEEP_BUILDS, memo.h)      */
+                                  what stage files and programs built, from
+                                  one run to the next (GRADE_KEEP_BUILDS,
+                                  memo.h)                                   */
 } BuildConfig;
 
 typedef struct {

@@ -155,8 +155,9 @@ static void write_page(const char *page, const Grade *g, const GradeConfig *cfg,
  * given to each submission's grading with --memo, and used only as root. */
 static const char *memo_dir;
 
-/* GRADE_KEEP_BUILDS=DIR: the kit's own tests (tests/run.sh) keep what
- * stage files built in DIR from one run to the next (memo.h).  As the memo,
+/* GRADE_KEEP_BUILDS=DIR: the kit's own tests (tests/run.sh) keep what the
+ * grader builds (objects, shared objects, programs) in DIR from one run to
+ * the next (memo.h).  As the memo,
  * as root only; and only when DIR is the grader's own user's and no one
  * else may write in it.  GRADE_NO_MEMO=1 turns it off too. */
 static const char *store_dir(void)
