@@ -180,10 +180,14 @@ if [ -n "${GRADE_KEEP_BUILDS:-}" ]; then
     # used, its file "source" (its key) whenever it is made, even for a
     # build that failed.
     find "$gmemo/." \( -name 'uses' -o -name 'source' \) -newer "$dir/started" |
-        awk '{ n = split($0, p, "/"); e = substr($0, 1, length($0) - length(p[n]) - 1); seen[e] = seen[e] " " p[n] }
-             END { for (e in seen) { if (seen[e] ~ /uses/ && seen[e] ~ /source/) made++
-                                     else if (seen[e] ~ /uses/) used++ }
-                   if (made + used) printf "the grader'"'"'s builds (stage files compiled, programs linked): %d made, %d kept from an earlier run\n", made, used }'
+        awk -F/ '{ entry = $0; sub("/[^/]*$", "", entry); has[entry] = has[entry] " " $NF }
+            END {
+                for (e in has)
+                    if (has[e] ~ /uses/) { if (has[e] ~ /source/) made++; else used++ }
+                if (made + used)
+                    printf "the grader'"'"'s builds (stage files compiled, programs linked): " \
+                           "%d made, %d kept from an earlier run\n", made, used
+            }'
     [ "$every_suite" = yes ] && sh tests/tools/ccmemo_keep.sh prune "$gmemo" "$dir/started"
 fi
 plural() { [ "$1" -eq 1 ] && echo "$1 $2" || echo "$1 ${2}s"; }

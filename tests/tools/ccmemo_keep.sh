@@ -1,13 +1,14 @@
 #!/bin/sh
-# Keeps the suites' compile memo (tests/tools/ccmemo_main.c) from one run of
-# the kit's tests to the next, for as long as the compiler is the same one.
+# Keeps the suites' compile memo (tests/tools/ccmemo_main.c), and the
+# grader's kept builds (GRADE_KEEP_BUILDS), from one run of the kit's tests
+# to the next, for as long as the compiler is the same one.
 #
 #   sh tests/tools/ccmemo_keep.sh open DIR
 #       Readies DIR for a run: kept if the compiler `cc` on PATH is the one
 #       that filled it (its --version, and the size and time of the driver,
-#       cc1, the linker and crt1.o), else emptied; its log emptied, and what an interrupted
-#       run left (locks, half-made entries, messages) removed.  Fails if DIR
-#       cannot be made.
+#       cc1, the linker and crt1.o), else emptied; its log emptied, and
+#       what an interrupted run left (locks, half-made entries, messages)
+#       removed.  Fails if DIR cannot be made.
 #   sh tests/tools/ccmemo_keep.sh prune DIR STAMP
 #       Removes the entries of DIR neither made nor used since the file
 #       STAMP was written (the stand-in sets an entry's time when it serves
