@@ -10,6 +10,7 @@
  * test alone.  A failed check prints "file:line: what" and the test goes on.
  * Messages appear only on failure; the last line is "N passed, N failed".
  * An argument runs only the tests whose names contain it.
+ * check_temp_dir and check_remove_tree give a test a directory of its own.
  * Include it before any other header: it sets _POSIX_C_SOURCE.
  */
 #ifndef CHECK_H
@@ -22,6 +23,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <dirent.h>
+#include <sys/stat.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -83,6 +86,44 @@ static void check_fail_(const char *file, int line, const char *fmt, ...)
     do { const char *h_ = (haystack), *n_ = (needle);                       \
          if (!h_ || !strstr(h_, n_))                                        \
              check_fail_(__FILE__, __LINE__, "%s is \"%s\", want it to contain \"%s\"", #haystack, h_ ? h_ : "(null)", n_); } while (0)
+
+/* A fresh empty directory under $TMPDIR or /tmp, named after name, in
+ * path[]; 0, or -1 with a failed check. */
+static inline int check_temp_dir(char *path, size_t size, const char *name)
+{
+    const char *base = getenv("TMPDIR");
+    int n = snprintf(path, size, "%s/kit-test-%s-XXXXXX", base && *base ? base : "/tmp", name);
+    if (n > 0 && (size_t)n < size && mkdtemp(path))
+        return 0;
+    CHECK_MSG(0, "cannot make the directory %s (TMPDIR too long?)", path);
+    return -1;
+}
+
+/* Removes path and everything below it (links are removed, not followed;
+ * directories made unreadable are opened again first).  0 when nothing of
+ * it is left. */
+static inline int check_remove_tree(const char *path)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0)
+        return 0;
+    if (S_ISDIR(st.st_mode)) {
+        chmod(path, 0700);
+        DIR *d = opendir(path);
+        struct dirent *e;
+        char sub[2048];
+        while (d && (e = readdir(d)) != NULL) {
+            if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
+                continue;
+            if (snprintf(sub, sizeof sub, "%s/%s", path, e->d_name) < (int)sizeof sub)
+                check_remove_tree(sub);
+        }
+        if (d)
+            closedir(d);
+        return rmdir(path);
+    }
+    return unlink(path);
+}
 
 static int check_main(int argc, char **argv, const CheckTest *tests, int ntests)
 {

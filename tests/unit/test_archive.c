@@ -101,39 +101,6 @@ static void encode_decode(const Archive *a, KitBuf *bytes, Archive *b)
     CHECK_EQ_INT(b->format, a->format);
 }
 
-/* A fresh empty directory under $TMPDIR or /tmp, in path[]. */
-static void make_temp_dir(char *path, size_t size)
-{
-    const char *base = getenv("TMPDIR");
-    snprintf(path, size, "%s/kit-test-archive-XXXXXX", base && *base ? base : "/tmp");
-    CHECK(mkdtemp(path) != NULL);
-}
-
-/* Removes path and everything below it (links are removed, not followed). */
-static void remove_tree(const char *path)
-{
-    struct stat st;
-    if (lstat(path, &st) != 0)
-        return;
-    if (S_ISDIR(st.st_mode)) {
-        chmod(path, 0700);
-        DIR *d = opendir(path);
-        struct dirent *e;
-        char sub[2048];
-        while (d && (e = readdir(d)) != NULL) {
-            if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
-                continue;
-            snprintf(sub, sizeof sub, "%s/%s", path, e->d_name);
-            remove_tree(sub);
-        }
-        if (d)
-            closedir(d);
-        rmdir(path);
-    } else {
-        unlink(path);
-    }
-}
-
 /* Writes a file of n bytes with the given mode (exactly). */
 static void write_file(const char *path, const void *data, size_t n, mode_t mode)
 {
@@ -619,7 +586,7 @@ static void check_source_tree(const char *root)
 static void test_tree_save_load_extract(void)
 {
     char dir[512], src[600], out[700], dest[700], err[1500] = "";
-    make_temp_dir(dir, sizeof dir);
+    check_temp_dir(dir, sizeof dir, "archive");
     make_source_tree(dir, src, sizeof src);
     for (int fmt = 0; fmt < 2; fmt++) {
         const char *prefix = fmt ? "kit" : NULL;
@@ -652,13 +619,13 @@ static void test_tree_save_load_extract(void)
         archive_free(&a);
         archive_free(&b);
     }
-    remove_tree(dir);
+    check_remove_tree(dir);
 }
 
 static void test_add_tree_refuses_links(void)
 {
     char dir[512], p[700], q[700], err[1500] = "";
-    make_temp_dir(dir, sizeof dir);
+    check_temp_dir(dir, sizeof dir, "archive");
     snprintf(p, sizeof p, "%s/file", dir);
     write_file(p, "x", 1, 0644);
     snprintf(q, sizeof q, "%s/link", dir);
@@ -672,13 +639,13 @@ static void test_add_tree_refuses_links(void)
     snprintf(p, sizeof p, "%s/missing", dir);
     CHECK_EQ_INT(archive_add_tree(&a, p, NULL, err, sizeof err), -1);
     CHECK_STR_CONTAINS(err, p);
-    remove_tree(dir);
+    check_remove_tree(dir);
 }
 
 static void test_extract_refuses_symlinks_in_dest(void)
 {
     char dir[512], dest[700], outside[700], link[800], err[1500] = "";
-    make_temp_dir(dir, sizeof dir);
+    check_temp_dir(dir, sizeof dir, "archive");
     snprintf(dest, sizeof dest, "%s/dest", dir);
     snprintf(outside, sizeof outside, "%s/outside", dir);
     CHECK_EQ_INT(mkdir(dest, 0755), 0);
@@ -706,13 +673,13 @@ static void test_extract_refuses_symlinks_in_dest(void)
     if (d)
         closedir(d);
     CHECK_EQ_INT(entries, 0);
-    remove_tree(dir);
+    check_remove_tree(dir);
 }
 
 static void test_save_failure_leaves_nothing(void)
 {
     char dir[512], path[700], err[1500] = "";
-    make_temp_dir(dir, sizeof dir);
+    check_temp_dir(dir, sizeof dir, "archive");
     Archive a;
     archive_init(&a, ARCHIVE_TARGZ);
     archive_add_file(&a, "f", "x", 1, 0644, err, sizeof err);
@@ -736,7 +703,7 @@ static void test_save_failure_leaves_nothing(void)
     CHECK_EQ_INT(archive_load(&b, path, err, sizeof err), -1);
     CHECK_STR_CONTAINS(err, path);
     archive_free(&a);
-    remove_tree(dir);
+    check_remove_tree(dir);
 }
 
 static const CheckTest tests[] = {

@@ -25,11 +25,8 @@ static int scan(const char *text)
 
 static void setup(void)
 {
-    snprintf(dir, sizeof dir, "/tmp/rtscan.XXXXXX");
-    if (!mkdtemp(dir)) {
-        CHECK_MSG(0, "mkdtemp failed");
+    if (check_temp_dir(dir, sizeof dir, "scan") != 0)
         return;
-    }
     char path[128];
     snprintf(path, sizeof path, "%s/raytracer.h", dir);
     FILE *f = fopen(path, "w");
@@ -45,9 +42,7 @@ static void setup(void)
 
 static void teardown(void)
 {
-    char cmd[128];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-    if (system(cmd) != 0)
+    if (check_remove_tree(dir) != 0)
         printf("    (could not remove %s)\n", dir);
 }
 

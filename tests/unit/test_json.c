@@ -513,9 +513,7 @@ static void test_misuse_fails(void)
 static void test_write_file(void)
 {
     char dir[512], path[700], err[1000] = "";
-    const char *base = getenv("TMPDIR");
-    snprintf(dir, sizeof dir, "%s/kit-test-json-XXXXXX", base && *base ? base : "/tmp");
-    CHECK(mkdtemp(dir) != NULL);
+    check_temp_dir(dir, sizeof dir, "json");
     snprintf(path, sizeof path, "%s/results.json", dir);
     JsonWriter w;
     json_init(&w, 0);
@@ -559,8 +557,7 @@ static void test_write_file(void)
     if (d)
         closedir(d);
     CHECK_EQ_INT(entries, 1);
-    unlink(path);
-    rmdir(dir);
+    check_remove_tree(dir);
 }
 
 static const CheckTest tests[] = {

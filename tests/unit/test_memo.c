@@ -23,17 +23,13 @@ static void write_file(const char *path, const char *text)
 
 static void setup(void)
 {
-    snprintf(dir, sizeof dir, "/tmp/rtmemo.XXXXXX");
-    snprintf(work, sizeof work, "/tmp/rtmemowork.XXXXXX");
-    CHECK(mkdtemp(dir) != NULL);
-    CHECK(mkdtemp(work) != NULL);
+    check_temp_dir(dir, sizeof dir, "memo");
+    check_temp_dir(work, sizeof work, "memowork");
 }
 
 static void cleanup(void)
 {
-    char cmd[200];
-    snprintf(cmd, sizeof cmd, "rm -rf %s %s", dir, work);
-    if (system(cmd) != 0)
+    if (check_remove_tree(dir) != 0 || check_remove_tree(work) != 0)
         printf("    (could not remove %s, %s)\n", dir, work);
 }
 

@@ -696,14 +696,6 @@ static void test_png_decode_random_damage(void)
 
 /* ---- image files --------------------------------------------------------------------- */
 
-/* A fresh empty directory under $TMPDIR or /tmp, in path[]. */
-static void make_temp_dir(char *path, size_t size)
-{
-    const char *base = getenv("TMPDIR");
-    snprintf(path, size, "%s/kit-test-png-XXXXXX", base && *base ? base : "/tmp");
-    CHECK(mkdtemp(path) != NULL);
-}
-
 /* The names in dir other than . and .., sorted and joined with spaces. */
 static void list_dir(const char *dir, char *out, size_t size)
 {
@@ -729,26 +721,6 @@ static void list_dir(const char *dir, char *out, size_t size)
             }
     for (int k = 0; k < count; k++)
         snprintf(out + strlen(out), size - strlen(out), "%s%s", k ? " " : "", names[k]);
-}
-
-/* Removes dir and the plain files and empty directories in it. */
-static void remove_dir(const char *dir)
-{
-    DIR *d = opendir(dir);
-    if (d) {
-        struct dirent *e;
-        char path[1024];
-        while ((e = readdir(d)) != NULL) {
-            if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
-                continue;
-            snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-            chmod(path, 0700);
-            if (unlink(path) != 0)
-                remove_dir(path);
-        }
-        closedir(d);
-    }
-    rmdir(dir);
 }
 
 static void test_image_channel(void)
@@ -792,7 +764,7 @@ static void test_image_alloc(void)
 static void test_image_write_read(void)
 {
     char dir[512], path[600], listing[1024];
-    make_temp_dir(dir, sizeof dir);
+    check_temp_dir(dir, sizeof dir, "png");
     static const char *names[] = {"a.ppm", "b.png", "C.PNG", "d.PpM"};
     Image img = random_image(37, 23);
     for (int k = 0; k < 4; k++) {
@@ -833,7 +805,7 @@ static void test_image_write_read(void)
     umask(mask);
     CHECK(stat(path, &st) == 0 && (st.st_mode & 0777) == (0666 & ~mask));
     image_free(&img);
-    remove_dir(dir);
+    check_remove_tree(dir);
 }
 
 /* Writes bytes to dir/name and returns image_read's result. */
@@ -854,7 +826,7 @@ static int read_bytes_as_image(const char *dir, const char *name, const void *by
 static void test_image_read_ppm_variants(void)
 {
     char dir[512], err[700];
-    make_temp_dir(dir, sizeof dir);
+    check_temp_dir(dir, sizeof dir, "png");
     Image img;
     static const char ok[] = "P6\n# made by hand\n2 # width\n 1\n#maxval next\n255\nABCDEF";
     CHECK_EQ_INT(read_bytes_as_image(dir, "ok.ppm", ok, sizeof ok - 1, &img, err, sizeof err), 0);
@@ -892,13 +864,13 @@ static void test_image_read_ppm_variants(void)
     CHECK_STR_CONTAINS(err, path);
     CHECK_EQ_INT(image_read(&img, dir, err, sizeof err), -1);      /* a directory */
     CHECK_STR_CONTAINS(err, dir);
-    remove_dir(dir);
+    check_remove_tree(dir);
 }
 
 static void test_image_write_failures(void)
 {
     char dir[512], path[700], err[900], listing[1024];
-    make_temp_dir(dir, sizeof dir);
+    check_temp_dir(dir, sizeof dir, "png");
     Image img = random_image(5, 4);
     /* a directory that does not exist */
     snprintf(path, sizeof path, "%s/no/such/dir/out.png", dir);
@@ -954,7 +926,7 @@ static void test_image_write_failures(void)
     list_dir(dir, listing, sizeof listing);
     CHECK_MSG(strcmp(listing, "readonly taken.png") == 0, "directory holds: %s", listing);
     image_free(&img);
-    remove_dir(dir);
+    check_remove_tree(dir);
 }
 
 static const CheckTest tests[] = {

@@ -14,8 +14,8 @@
 /* Runs sh -c script in a fresh directory with spec's limits; 0 if it ran. */
 static int run_sh(const char *script, SandboxSpec spec, SandboxResult *res)
 {
-    char dir[] = "/tmp/rtsandbox.XXXXXX";
-    if (!mkdtemp(dir))
+    char dir[512];
+    if (check_temp_dir(dir, sizeof dir, "sandbox") != 0)
         return -1;
     chmod(dir, 0755);
     sandbox_give(dir);
@@ -29,9 +29,7 @@ static int run_sh(const char *script, SandboxSpec spec, SandboxResult *res)
     char err[256];
     int rc = sandbox_run(&spec, res, err, sizeof err);
     CHECK_MSG(rc == 0, "sandbox_run: %s", err);
-    char cmd[64];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-    if (system(cmd) != 0)
+    if (check_remove_tree(dir) != 0)
         printf("    (could not remove %s)\n", dir);
     return rc;
 }

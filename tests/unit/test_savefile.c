@@ -11,15 +11,12 @@ static char dir[64];
 
 static void setup(void)
 {
-    snprintf(dir, sizeof dir, "/tmp/rtsavefile.XXXXXX");
-    CHECK(mkdtemp(dir) != NULL);
+    check_temp_dir(dir, sizeof dir, "savefile");
 }
 
 static void cleanup(void)
 {
-    char cmd[100];
-    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
-    if (system(cmd) != 0)
+    if (check_remove_tree(dir) != 0)
         printf("    (could not remove %s)\n", dir);
 }
 

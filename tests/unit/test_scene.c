@@ -450,8 +450,8 @@ static int write_file(const char *dir, const char *name, const char *text)
  * a vertex share its bits. */
 static void test_mesh_files(void)
 {
-    char dir[] = "/tmp/test_mesh_XXXXXX", path[512], err[512];
-    CHECK(mkdtemp(dir) != NULL);
+    char dir[64], path[512], err[512];
+    check_temp_dir(dir, sizeof dir, "mesh");
     snprintf(path, sizeof path, "%s/meshes", dir);
     CHECK(mkdir(path, 0700) == 0);
     CHECK(write_file(dir, "meshes/quad.obj",
@@ -496,8 +496,7 @@ static void test_mesh_files(void)
     CHECK_EQ_INT(scene.ntriangles, 3);
     scene_free(&scene);
 
-    snprintf(path, sizeof path, "rm -rf '%s'", dir);
-    CHECK(system(path) == 0);
+    CHECK(check_remove_tree(dir) == 0);
 }
 
 /* Bad OBJ files: the OBJ's own file and line first, then the scene's. */
@@ -515,8 +514,8 @@ static void test_mesh_errors(void)
         { "v 0 0 0\nv 1 0 0\nv 0 1 0\n", ": ", "no faces" },
         { "v 0 0 0\n\0 1 0\n", ":2: ", "NUL" },
     };
-    char dir[] = "/tmp/test_mesh_XXXXXX", path[512], err[512], want[600];
-    CHECK(mkdtemp(dir) != NULL);
+    char dir[64], path[512], err[512], want[600];
+    check_temp_dir(dir, sizeof dir, "mesh");
     for (int k = 0; k < CHECK_COUNT(bad); k++) {
         snprintf(path, sizeof path, "%s/bad.obj", dir);
         FILE *f = fopen(path, "wb");
@@ -538,8 +537,7 @@ static void test_mesh_errors(void)
         CHECK_STR_CONTAINS(err, "(the mesh of m.scene:4)");
         CHECK(scene.triangles == NULL && scene.ntriangles == 0);
     }
-    snprintf(path, sizeof path, "rm -rf '%s'", dir);
-    CHECK(system(path) == 0);
+    CHECK(check_remove_tree(dir) == 0);
 }
 
 /* The default scene holds what its file says. */
