@@ -40,15 +40,17 @@ start=$(date +%s)
 # NO_CC_MEMO=1: every compile is compiled (the memos are left as they are).
 memo=$PWD/out/tests/cc-memo
 gmemo=$PWD/out/tests/grade-memo
+# (Both are opened before the stand-in goes on PATH: the compiler they
+# are kept for is the real one.)
 if [ -x out/build/ccmemo/cc ] && [ -z "${NO_CC_MEMO:-}" ]; then
+    if sh tests/tools/ccmemo_keep.sh open "$gmemo" && chmod 700 "$gmemo"; then
+        GRADE_KEEP_BUILDS=$gmemo
+        export GRADE_KEEP_BUILDS
+    fi
     if sh tests/tools/ccmemo_keep.sh open "$memo"; then
         PATH=$PWD/out/build/ccmemo:$PATH
         CC_MEMO=$memo
         export PATH CC_MEMO
-    fi
-    if sh tests/tools/ccmemo_keep.sh open "$gmemo" && chmod 700 "$gmemo"; then
-        GRADE_KEEP_BUILDS=$gmemo
-        export GRADE_KEEP_BUILDS
     fi
 fi
 
