@@ -214,18 +214,24 @@ $(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
 LOAD_RUNNERS := $(if $(filter Linux,$(shell uname -s)),1)
 RUNNERS    = $(if $(LOAD_RUNNERS),$(foreach k,1 2 3 4 5 6,$(BUILD)/grader/runner_$(k)))
 RUNNER_DEFS = $(if $(HAVE_SOLUTIONS),-DHARNESS_REFS)
-$(BUILD)/grader/harness_load_%.o: tests/grader/harness.c tests/grader/harness_load.h $(KIT_HDR)
+$(BUILD)/grader/harness_load_%.o: tests/grader/harness.c tests/grader/harness_load.h \
+                                  tests/grader/harness_serve.h $(KIT_HDR)
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -DHARNESS_LOAD $(RUNNER_DEFS) -c $< -o $@
 $(BUILD)/grader/harness_load.o: tests/grader/harness_load.c tests/grader/harness_load.h $(KIT_HDR)
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+$(BUILD)/grader/harness_serve.o: tests/grader/harness_serve.c tests/grader/harness_serve.h \
+                                 tests/grader/serve_protocol.h
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -c $< -o $@
 # (runner_3, Part 3a's, leaves out Part 3b's reference too: it calls
 # sphere_intersect, which only the student's object defines.)
 runner_refs = $(if $(HAVE_SOLUTIONS),$(filter-out $(BUILD)/grader/ref_$(word $(1),$(STAGES)).o \
               $(if $(filter 3,$(1)),$(BUILD)/grader/ref_part3b_ray_color.o),$(GRADER_REF)))
 define RUNNER_RULE
-$(BUILD)/grader/runner_$(1): $(BUILD)/grader/harness_load_$(1).o $(BUILD)/grader/harness_load.o $(call runner_refs,$(1))
+$(BUILD)/grader/runner_$(1): $(BUILD)/grader/harness_load_$(1).o $(BUILD)/grader/harness_load.o \
+                           $(BUILD)/grader/harness_serve.o $(call runner_refs,$(1))
 	$$(CC) $$(CFLAGS) -rdynamic $$^ -o $$@ $$(LDLIBS) -ldl
 endef
 $(foreach k,1 2 3 4 5 6,$(eval $(call RUNNER_RULE,$(k))))
@@ -349,13 +355,27 @@ $(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN)
 # The unit tests of the grader's sandbox, include scan and memo link the part alone.
 GRADER_UNITS = sandbox include_scan memo
 $(GRADER_UNITS:%=$(BUILD)/tests/test_%): $(BUILD)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
-                                         tests/grader/%.c tests/grader/%.h $(BUILD)/kit/libkit.a
+                                         tests/grader/%.c tests/grader/%.h tests/grader/serve_protocol.h \
+                                         $(BUILD)/kit/libkit.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -Ilabs $< tests/grader/$*.c $(BUILD)/kit/libkit.a -o $@ $(LDLIBS)
 $(GRADER_UNITS:%=$(ASAN)/tests/test_%): $(ASAN)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
-                                        tests/grader/%.c tests/grader/%.h $(ASAN)/kit/libkit.a
+                                        tests/grader/%.c tests/grader/%.h tests/grader/serve_protocol.h \
+                                        $(ASAN)/kit/libkit.a
 	@mkdir -p $(@D)
 	$(CC) $(SANFLAGS) -Ilabs $< tests/grader/$*.c $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
+# The server of tests' unit test links the sandbox and, on Linux, the
+# runner's server side (test_serve is its own server).
+SERVE_SRC = tests/grader/sandbox.c $(if $(LOAD_RUNNERS),tests/grader/harness_serve.c)
+SERVE_HDR = tests/grader/sandbox.h tests/grader/harness_serve.h tests/grader/serve_protocol.h
+$(BUILD)/tests/test_serve: tests/unit/test_serve.c tests/unit/check.h $(SERVE_SRC) $(SERVE_HDR) \
+                           $(BUILD)/kit/libkit.a
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -Ilabs $< $(SERVE_SRC) $(BUILD)/kit/libkit.a -o $@ $(LDLIBS)
+$(ASAN)/tests/test_serve: tests/unit/test_serve.c tests/unit/check.h $(SERVE_SRC) $(SERVE_HDR) \
+                          $(ASAN)/kit/libkit.a
+	@mkdir -p $(@D)
+	$(CC) $(SANFLAGS) -Ilabs $< $(SERVE_SRC) $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
 
 # ---- bench: speed against accuracy (tests/bench) ----------------------------
 # `make bench` writes out/bench/: results.csv, report.md, plot.svg and more

@@ -107,10 +107,11 @@ static SandboxSpec test_spec(const GradeOptions *opt, const Build *b, char **arg
     };
 }
 
-/* Runs test t in a fresh sandboxed child of the part's program; 0 when
- * it ran (res then holds what it did), -1 with a reason in err. */
-static int run_child(const GradeOptions *opt, const Build *b, const Test *t, SandboxResult *res,
-                     char *err, size_t errlen)
+/* Runs test t in a fresh sandboxed child of the part's program (forked by
+ * srv, the part's server, or started for it); 0 when it ran (res then
+ * holds what it did), -1 with a reason in err. */
+static int run_child(const GradeOptions *opt, const Build *b, SandboxServer *srv, const Test *t,
+                     SandboxResult *res, char *err, size_t errlen)
 {
     size_t len = 0;
     char *input = test_input(t, &len);
@@ -122,17 +123,19 @@ static int run_child(const GradeOptions *opt, const Build *b, const Test *t, San
     SandboxSpec spec = test_spec(opt, b, argv, input, len, 1);
     spec.answer_max = 512 + (size_t)t->ncases * 160;
     spec.output_max = 64 * 1024;
-    int status = sandbox_run(&spec, res, err, errlen);
+    int status = b->object[0] ? sandbox_serve_run(srv, &spec, res, err, errlen)
+                              : sandbox_run(&spec, res, err, errlen);
     free(input);
     return status;
 }
 
 /* Runs one test in the sandbox and judges it. */
-static void run_test(const GradeOptions *opt, const Build *b, const Test *t, TestResult *r)
+static void run_test(const GradeOptions *opt, const Build *b, SandboxServer *srv, const Test *t,
+                     TestResult *r)
 {
     SandboxResult res;
     char err[256];
-    if (run_child(opt, b, t, &res, err, sizeof err) != 0) {
+    if (run_child(opt, b, srv, t, &res, err, sizeof err) != 0) {
         r->output = xasprintf("the grader could not run this test: %s", err);
         return;
     }
@@ -312,6 +315,7 @@ static void run_batch(const GradeOptions *opt, const Build *b, const TestList *t
 typedef struct {
     const GradeOptions *opt;
     const Build *b;
+    SandboxServer *srv;
     bool stopped;
 } ProbeContext;
 
@@ -320,7 +324,7 @@ static int run_probe(void *ctx, const Test *t, Answers *a)
     ProbeContext *pc = ctx;
     SandboxResult res;
     char err[256], *verdict = NULL;
-    if (pc->stopped || run_child(pc->opt, pc->b, t, &res, err, sizeof err) != 0)
+    if (pc->stopped || run_child(pc->opt, pc->b, pc->srv, t, &res, err, sizeof err) != 0)
         return -1;
     pc->stopped = res.timed_out || res.memory_exceeded || res.output_exceeded;
     check_answers(t, res.answer, res.answer_len, &verdict, a);
@@ -378,6 +382,11 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         }
         if (b.ok)
             run_batch(opt, &b, tests, p, g->results, done);
+        /* The tests the batch did not pass, then the probes, each through a
+         * server of the part's runner (one for each, so that each one's
+         * CPU, counted when it ends, is its own). */
+        SandboxServer srv;
+        sandbox_serve_init(&srv, b.runner, b.object, opt->serve && b.object[0]);
         for (int k = 0; k < tests->n; k++) {
             const Test *t = &tests->tests[k];
             TestResult *r = &g->results[k];
@@ -392,24 +401,27 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
             } else {
                 if (opt->verbose)
                     fprintf(stderr, "  %s\n", t->name);
-                run_test(opt, &b, t, r);
+                run_test(opt, &b, &srv, t, r);
                 if (!r->passed && r->seconds >= cfg->timeout)
                     timeouts++;
             }
             first = false;
         }
         free(done);
+        sandbox_serve_stop(&srv);
         g->cpu_tests += sandbox_cpu(false) - children;
         children = sandbox_cpu(false);
         if (b.ok) {
             /* After two tests out of time, a probe would be the third. */
-            ProbeContext pc = { opt, &b, timeouts >= 2 };
+            sandbox_serve_init(&srv, b.runner, b.object, opt->serve && b.object[0]);
+            ProbeContext pc = { opt, &b, &srv, timeouts >= 2 };
             Probes probes = { run_probe, &pc, p == PART3B && !opt->build->reference, false };
             for (int k = 0; k < tests->n; k++)
                 probes.part3a_failed = probes.part3a_failed ||
                     (tests->tests[k].part == PART3A && !tests->tests[k].hard && g->results[k].ran &&
                      !g->results[k].passed);
             diagnose_part(p, tests, g->results, &probes, &g->diagnosis[p], &g->causes[p]);
+            sandbox_serve_stop(&srv);
         }
         g->cpu_probes += sandbox_cpu(false) - children;
         if (opt->keep_objects && b.ok)

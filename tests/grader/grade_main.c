@@ -222,7 +222,11 @@ static int grade_one(const char *submission, const char *part, const char *resul
                        .memo = memo_dir && sandbox_drops_privileges() ? memo_dir : NULL,
                        .store = store_dir() };
 
-    GradeOptions opt = { .submission = submission, .cfg = &cfg, .build = &bc, .verbose = verbose };
+    /* GRADE_NO_SERVE=1: every test alone in a runner of its own (the kit's
+     * tests compare the two ways). */
+    const char *no_serve = getenv("GRADE_NO_SERVE");
+    GradeOptions opt = { .submission = submission, .cfg = &cfg, .build = &bc, .verbose = verbose,
+                         .serve = !(no_serve && *no_serve) };
     /* The page's render reuses the objects the graded builds compiled. */
     char kept[PATH_MAX] = "";
     if (page && build_tempdir(kept, sizeof kept, err, sizeof err) == 0)

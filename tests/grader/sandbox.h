@@ -23,6 +23,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <sys/types.h>
 
 typedef struct {
     char *const *argv;         /* argv[0] is the program's path               */
@@ -70,6 +71,34 @@ typedef struct {
  * process: the child's plan is prepared in static storage (sandbox.c). */
 int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t errlen);
 void sandbox_result_free(SandboxResult *res);
+
+/* A part's prebuilt runner started once as a server of tests (Linux;
+ * harness_serve.h): each test then runs in a child the server forks, in the
+ * same sandbox and with the same limits as a runner started for it, at a
+ * fraction of the cost.  Should the server die, stop or fall silent (its
+ * children run as its user, so a test can signal it), the test runs again
+ * in a runner the grader starts, and so does every later one. */
+typedef struct {
+    char *argv[4];             /* program, "--serve", object                 */
+    pid_t pid;                 /* 0: not started                             */
+    int sock;                  /* the grader's end of its socket             */
+    bool reaped;
+    bool off;                  /* every test runs in a runner of its own     */
+    bool failed;               /* it failed once (and so is off)             */
+} SandboxServer;
+
+#define SERVE_CPU_SECONDS 600  /* the server's own: forks, one per test      */
+
+/* Readies s to serve the tests of program (a prebuilt runner) with object;
+ * on false, every test runs in a runner of its own.  Started at its first
+ * test. */
+void sandbox_serve_init(SandboxServer *s, const char *program, const char *object, bool on);
+/* As sandbox_run for `program object`, through the server. */
+int sandbox_serve_run(SandboxServer *s, const SandboxSpec *spec, SandboxResult *res, char *err,
+                      size_t errlen);
+/* Ends the server, if started; its children's CPU then counts among the
+ * grader's children's (sandbox_cpu). */
+void sandbox_serve_stop(SandboxServer *s);
 
 /* True where the parent can see the child's memory (Linux, macOS), so that
  * memory_mb holds even where the kernel ignores RLIMIT_AS. */
