@@ -622,6 +622,10 @@ void sandbox_serve_stop(SandboxServer *s)
     s->reaped = false;
 }
 
+#ifndef MSG_NOSIGNAL
+#define MSG_NOSIGNAL 0          /* macOS has none; SIGPIPE is ignored here anyway */
+#endif
+
 static int send_request(int sock, const ServeRequest *rq, const int fds[3])
 {
     char control[CMSG_SPACE(3 * sizeof(int))];
