@@ -382,9 +382,10 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         }
         if (b.ok)
             run_batch(opt, &b, tests, p, g->results, done);
-        /* The tests the batch did not pass, then the probes, each through a
-         * server of the part's runner (one for each, so that each one's
-         * CPU, counted when it ends, is its own). */
+        /* The tests the batch did not pass, then the probes, through a
+         * server of the part's runner: one for the tests and another for
+         * the probes, as a server's children's CPU counts among the
+         * grader's when the server ends (cpu_tests, cpu_probes). */
         SandboxServer srv;
         sandbox_serve_init(&srv, b.runner, b.object, opt->serve && b.object[0]);
         for (int k = 0; k < tests->n; k++) {

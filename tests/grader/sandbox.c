@@ -10,6 +10,13 @@
  * borrows the parent's memory until it runs the program, so everything it
  * needs is prepared before (ChildPlan) and the child itself only calls the
  * system.
+ *
+ * sandbox_serve_run runs a test through a server of tests instead (a
+ * prebuilt runner started with --serve, harness_serve.c): the test's pipes
+ * go to the server over a socket (SCM_RIGHTS), the server forks the child,
+ * and one watch (watch below) serves both ways; only how the child's end
+ * is learnt (the grader's waitpid, or the server's message) and how it is
+ * stopped (the grader's kill, or a word to the server) differ.
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DEFAULT_SOURCE         /* setgroups, on glibc */
