@@ -17,6 +17,10 @@
 #include <string.h>
 
 #define OUTPUT_SHOWN 1500     /* bytes of the student's own printing shown */
+/* A part's server of tests starts at its fourth run alone: its own start
+ * costs about what three served runs save (README, "What grading costs"),
+ * so a part with a few tests alone starts a runner for each, as before. */
+#define SERVE_START_AT 3
 #define TEST_MEMORY_MB 64     /* a test program needs 3 to 4 MiB of address space */
 #define TEST_OUTPUT_KIB 4096  /* what a test may print: a line of debugging
                                  output per call is a few hundred KiB at most */
@@ -387,7 +391,8 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
          * the probes, as a server's children's CPU counts among the
          * grader's when the server ends (cpu_tests, cpu_probes). */
         SandboxServer srv;
-        sandbox_serve_init(&srv, b.runner, b.object, opt->serve && b.object[0]);
+        int serve_at = opt->serve && b.object[0] ? SERVE_START_AT : -1;
+        sandbox_serve_init(&srv, b.runner, b.object, serve_at);
         for (int k = 0; k < tests->n; k++) {
             const Test *t = &tests->tests[k];
             TestResult *r = &g->results[k];
@@ -414,7 +419,7 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         children = sandbox_cpu(false);
         if (b.ok) {
             /* After two tests out of time, a probe would be the third. */
-            sandbox_serve_init(&srv, b.runner, b.object, opt->serve && b.object[0]);
+            sandbox_serve_init(&srv, b.runner, b.object, serve_at);
             ProbeContext pc = { opt, &b, &srv, timeouts >= 2 };
             Probes probes = { run_probe, &pc, p == PART3B && !opt->build->reference, false };
             for (int k = 0; k < tests->n; k++)

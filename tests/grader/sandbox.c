@@ -571,7 +571,7 @@ int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t e
 
 /* ---- a server of tests -------------------------------------------------------- */
 
-void sandbox_serve_init(SandboxServer *s, const char *program, const char *object, bool on)
+void sandbox_serve_init(SandboxServer *s, const char *program, const char *object, int start_at)
 {
     memset(s, 0, sizeof *s);
     s->argv[0] = (char *)program;
@@ -579,7 +579,8 @@ void sandbox_serve_init(SandboxServer *s, const char *program, const char *objec
     s->argv[2] = (char *)object;
     s->argv[3] = NULL;
     s->sock = -1;
-    s->off = !on;
+    s->off = start_at < 0;
+    s->start_at = start_at;
 }
 
 /* Starts the server in the sandbox spec describes (its directory, user,
@@ -700,9 +701,10 @@ int sandbox_serve_run(SandboxServer *s, const SandboxSpec *spec, SandboxResult *
     if (errlen)
         err[0] = '\0';
     signal(SIGPIPE, SIG_IGN);
-    if (!s->off && !s->pid && serve_start(s, spec) != 0)
+    bool now = !s->off && s->runs++ >= s->start_at;
+    if (now && !s->pid && serve_start(s, spec) != 0)
         s->off = true;
-    if (!s->off) {
+    if (now && !s->off) {
         int status = served(s, spec, res, err, errlen);
         if (status != 1)
             return status;

@@ -85,14 +85,16 @@ typedef struct {
     bool reaped;
     bool off;                  /* every test runs in a runner of its own     */
     bool failed;               /* it failed once (and so is off)             */
+    int start_at;              /* the run it starts at (0: the first)        */
+    int runs;                  /* runs so far                                */
 } SandboxServer;
 
 #define SERVE_CPU_SECONDS 600  /* the server's own: forks, one per test      */
 
-/* Readies s to serve the tests of program (a prebuilt runner) with object;
- * on false, every test runs in a runner of its own.  Started at its first
- * test. */
-void sandbox_serve_init(SandboxServer *s, const char *program, const char *object, bool on);
+/* Readies s to serve the tests of program (a prebuilt runner) with object.
+ * The server starts at run start_at (0: the first); the runs before it,
+ * and every run when start_at < 0, start a runner of their own. */
+void sandbox_serve_init(SandboxServer *s, const char *program, const char *object, int start_at);
 /* As sandbox_run for `program object`, through the server. */
 int sandbox_serve_run(SandboxServer *s, const SandboxSpec *spec, SandboxResult *res, char *err,
                       size_t errlen);

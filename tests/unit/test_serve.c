@@ -27,7 +27,7 @@ static char dir[512];
 static void serve_init(SandboxServer *s, char *object, size_t size, const char *script)
 {
     snprintf(object, size, "sh:%s", script);
-    sandbox_serve_init(s, self, object, true);
+    sandbox_serve_init(s, self, object, 0);
 }
 
 /* One run of s's script with spec's limits; 0 if it ran. */
@@ -219,19 +219,31 @@ static void test_server_gone(void)
     sandbox_serve_stop(&s);
 }
 
-/* Turned off, it never starts a server. */
+/* Turned off, it never starts a server; told to start at the third run,
+ * the first two start a runner each. */
 static void test_server_off(void)
 {
     SandboxServer s;
     char object[256];
     snprintf(object, sizeof object, "sh:" PPID "exit 0");
-    sandbox_serve_init(&s, self, object, false);
+    sandbox_serve_init(&s, self, object, -1);
     SandboxResult res;
-    if (run(&s, (SandboxSpec){ .max_procs = 0 }, &res) != 0)
-        return;
-    CHECK(started_by(&res, &s, 0, true));
-    CHECK(s.pid == 0 && !s.failed);
-    sandbox_result_free(&res);
+    for (int k = 0; k < 3; k++) {
+        if (run(&s, (SandboxSpec){ .max_procs = 0 }, &res) != 0)
+            return;
+        CHECK(started_by(&res, &s, 0, true));
+        CHECK(s.pid == 0 && !s.failed);
+        sandbox_result_free(&res);
+    }
+    sandbox_serve_stop(&s);
+    sandbox_serve_init(&s, self, object, 2);
+    for (int k = 0; k < 4; k++) {
+        if (run(&s, (SandboxSpec){ .max_procs = 0 }, &res) != 0)
+            return;
+        CHECK_MSG(started_by(&res, &s, s.pid, k < 2), "run %d: %s", k, res.answer);
+        CHECK_MSG((s.pid != 0) == (k >= 2), "run %d: server %ld", k, (long)s.pid);
+        sandbox_result_free(&res);
+    }
     sandbox_serve_stop(&s);
 }
 
