@@ -66,17 +66,6 @@ void image_free(Image *img)
     img->height = 0;
 }
 
-/* round(255 c) clamped to 0..255; NaN and negative values give 0. */
-unsigned char image_channel(double c)
-{
-    if (!(c > 0))
-        return 0;
-    if (c >= 1)
-        return 255;
-    double x = 255 * c;               /* in (0, 255): round half up, no libm call */
-    int k = (int)x;
-    return (unsigned char)(k + (x - k >= 0.5));
-}
 
 /* ---- writing ---------------------------------------------------------------------- */
 

@@ -22,8 +22,20 @@ typedef struct {
 int image_alloc(Image *img, int width, int height, char *err, size_t errlen);
 void image_free(Image *img);
 
-/* A colour channel in [0, 1] as a byte: round(255 c), clamped; NaN gives 0. */
-unsigned char image_channel(double c);
+/* A colour channel in [0, 1] as a byte: round(255 c), clamped; NaN gives 0.
+ * Defined here so that the grader's render program
+ * (tests/grader/harness_render.c), which links no kit library, makes the
+ * same bytes as the renderer. */
+static inline unsigned char image_channel(double c)
+{
+    if (!(c > 0))
+        return 0;
+    if (c >= 1)
+        return 255;
+    double x = 255 * c;               /* in (0, 255): round half up, no libm call */
+    int k = (int)x;
+    return (unsigned char)(k + (x - k >= 0.5));
+}
 
 /* Writes img to path as PNG (.png) or binary PPM (.ppm), chosen by the
  * extension.  The bytes go to a temporary file beside path that is renamed

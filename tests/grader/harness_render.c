@@ -8,14 +8,15 @@
  *                     fov F d D
  *                     background r g b
  *                     spheres M, then M lines cx cy cz R r g b
- * Writes to fd 3:     nx * ny * 3 doubles (r, g, b per pixel, rows from
- *                     the top), in this machine's byte order.
- * The parent turns the colours into bytes with the kit's image_channel, as
- * the renderer does, and checks that the count is right.
+ * Writes to fd 3:     nx * ny * 3 bytes (r, g, b per pixel, rows from the
+ *                     top): each colour made a byte by the kit's
+ *                     image_channel, as the renderer makes it.
+ * The parent checks that the count is right.
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "raytracer.h"
+#include "kit/image.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -71,7 +72,8 @@ int main(void)
         for (int i = 0; i < nx; i++) {
             Ray ray = camera_ray(scene.eye, pixel_coordinates(i, j, nx, ny, w, h, scene.d));
             Vec3 seen = ray_color(&scene, &ray);
-            double rgb[3] = { seen.x, seen.y, seen.z };
+            unsigned char rgb[3] = { image_channel(seen.x), image_channel(seen.y),
+                                     image_channel(seen.z) };
             if (fwrite(rgb, sizeof rgb, 1, out) != 1)
                 return 3;
         }

@@ -65,7 +65,7 @@ static int render_submission(const ReportRenderOptions *o, const Scene *scene, R
     }
     size_t len = 0;
     char *input = scene_input(scene, &len);
-    size_t want = (size_t)scene->nx * (size_t)scene->ny * 3 * sizeof(double);
+    size_t want = (size_t)scene->nx * (size_t)scene->ny * 3;
     char *argv[] = { b.runner, NULL };
     SandboxSpec spec = {
         .argv = argv, .workdir = b.rundir, .input = input, .input_len = len,
@@ -96,11 +96,7 @@ static int render_submission(const ReportRenderOptions *o, const Scene *scene, R
         sandbox_result_free(&res);
         return -1;
     } else {
-        double v;
-        for (size_t k = 0; k < 3 * (size_t)scene->nx * (size_t)scene->ny; k++) {
-            memcpy(&v, res.answer + k * sizeof v, sizeof v);   /* the buffer need not be aligned */
-            rr->sub.rgb[k] = image_channel(v);
-        }
+        memcpy(rr->sub.rgb, res.answer, want);
         rr->have_sub = true;
     }
     sandbox_result_free(&res);
