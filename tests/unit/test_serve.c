@@ -170,23 +170,49 @@ static void test_served_endings(void)
     sandbox_serve_stop(&s);
 }
 
+/* Over memory_mb, the grader's watch stops a served child too (it reads
+ * the child's memory, though the child is the server's and cannot be
+ * traced), with the address space left wide open. */
+static void test_served_memory(void)
+{
+    SandboxServer s;
+    char object[256];
+    serve_init(&s, object, sizeof object,
+               "x=0123456789abcdef; while [ ${#x} -lt 134217728 ]; do x=$x$x; done; sleep 10");
+    SandboxResult res;
+    SandboxSpec spec = { .memory_mb = 48, .address_mb = 2048, .max_procs = 0 };
+    if (run(&s, spec, &res) != 0)
+        return;
+    CHECK_MSG(res.memory_exceeded, "not stopped for memory: exit %d, signal %d, timed out %d, %.2f s",
+              res.exit_code, res.signal, res.timed_out, res.seconds);
+    CHECK_MSG(res.seconds < 5, "stopped after %.2f s", res.seconds);
+    CHECK(s.pid > 0 && !s.failed);
+    sandbox_result_free(&res);
+    sandbox_serve_stop(&s);
+}
+
 /* A test that kills the server, or stops it, runs again in a runner the
  * grader starts, and so does every later test; the verdict is that run's.
  * The grader notices at once, not at the end of the test's time. */
 static void test_server_attacked(void)
 {
-    const char *scripts[] = { "kill -KILL $PPID; " PPID "exit 5", "kill -STOP $PPID; " PPID "exit 5" };
+    /* Only the server: run by the grader, the script's parent is the
+     * grader, which it could signal too when the grader is not root (as
+     * any test could: the sandbox then runs tests as the grader's user). */
+    const char *signals[] = { "KILL", "STOP" };
     for (int k = 0; k < 2; k++) {
         SandboxServer s;
-        char object[256];
-        serve_init(&s, object, sizeof object, scripts[k]);
+        char object[256], script[200];
+        snprintf(script, sizeof script, "[ $PPID = %ld ] || kill -%s $PPID; " PPID "exit 5",
+                 (long)getpid(), signals[k]);
+        serve_init(&s, object, sizeof object, script);
         SandboxResult res;
         double start = sandbox_now();
         if (run(&s, (SandboxSpec){ .max_procs = 0, .timeout = 5 }, &res) != 0)
             return;
         double took = sandbox_now() - start;
-        CHECK_MSG(took < 2, "%s: noticed after %.2f s", scripts[k], took);
-        CHECK_MSG(started_by(&res, &s, 0, true), "%s: the verdict's run: %s", scripts[k], res.answer);
+        CHECK_MSG(took < 2, "%s: noticed after %.2f s", script, took);
+        CHECK_MSG(started_by(&res, &s, 0, true), "%s: the verdict's run: %s", script, res.answer);
         CHECK_EQ_INT(res.exit_code, 5);
         CHECK(s.failed && s.off && s.pid == 0);
         sandbox_result_free(&res);
@@ -249,8 +275,8 @@ static void test_server_off(void)
 
 static const CheckTest tests[] = {
     CHECK_TEST(test_served_runs),    CHECK_TEST(test_served_limits), CHECK_TEST(test_served_descriptors),
-    CHECK_TEST(test_served_endings), CHECK_TEST(test_server_attacked), CHECK_TEST(test_server_gone),
-    CHECK_TEST(test_server_off),
+    CHECK_TEST(test_served_endings), CHECK_TEST(test_served_memory), CHECK_TEST(test_server_attacked),
+    CHECK_TEST(test_server_gone),    CHECK_TEST(test_server_off),
 };
 
 int main(int argc, char **argv)
