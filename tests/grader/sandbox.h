@@ -82,7 +82,7 @@ typedef struct {
     char *argv[4];             /* program, "--serve", object                 */
     pid_t pid;                 /* 0: not started                             */
     int sock;                  /* the grader's end of its socket             */
-    bool reaped;
+    bool reaped;               /* waited for already: it died              */
     bool off;                  /* every test runs in a runner of its own     */
     bool failed;               /* it failed once (and so is off)             */
     int start_at;              /* the run it starts at (0: the first)        */
