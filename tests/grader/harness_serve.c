@@ -55,9 +55,9 @@ static int write_full(int fd, const void *p, size_t n)
     return 0;
 }
 
-/* The next request and its three descriptors; -1 when the grader closed
- * the socket or sent something else. */
-static int receive(int sock, ServeRequest *rq, int fds[3])
+/* One message: 0 a request (rq and fds filled), 1 a late SERVE_KILL, -1
+ * anything else or the end. */
+static int receive_one(int sock, ServeRequest *rq, int fds[3])
 {
     char control[CMSG_SPACE(3 * sizeof(int))];
     struct iovec iov = { rq, sizeof *rq };
@@ -72,6 +72,8 @@ static int receive(int sock, ServeRequest *rq, int fds[3])
         n = recvmsg(sock, &msg, 0);
     while (n < 0 && errno == EINTR);
     struct cmsghdr *c = CMSG_FIRSTHDR(&msg);
+    if (n == 1 && !c && *(const char *)rq == SERVE_KILL)
+        return 1;
     bool ok = n == (ssize_t)sizeof *rq && !(msg.msg_flags & (MSG_TRUNC | MSG_CTRUNC)) && c &&
               c->cmsg_level == SOL_SOCKET && c->cmsg_type == SCM_RIGHTS &&
               c->cmsg_len == CMSG_LEN(3 * sizeof(int));
@@ -86,6 +88,17 @@ static int receive(int sock, ServeRequest *rq, int fds[3])
         }
     }
     return ok ? 0 : -1;
+}
+
+/* The next request and its three descriptors, past any late SERVE_KILL;
+ * -1 when the grader closed the socket or sent something else. */
+static int receive(int sock, ServeRequest *rq, int fds[3])
+{
+    for (;;) {
+        int got = receive_one(sock, rq, fds);
+        if (got != 1)
+            return got;
+    }
 }
 
 static void limit(int resource, rlim_t value)

@@ -588,7 +588,8 @@ void sandbox_serve_init(SandboxServer *s, const char *program, const char *objec
 static int serve_start(SandboxServer *s, const SandboxSpec *spec)
 {
     int sv[2];
-    if (socketpair(AF_UNIX, SOCK_STREAM, 0, sv) != 0)
+    /* Packets: each message is read whole and alone (serve_protocol.h). */
+    if (socketpair(AF_UNIX, SOCK_SEQPACKET, 0, sv) != 0)
         return -1;
     int null_r = open("/dev/null", O_RDONLY), null_w = open("/dev/null", O_WRONLY);
     SandboxSpec ss = *spec;

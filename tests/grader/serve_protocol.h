@@ -12,6 +12,9 @@
  *   grader -> server  at most one byte, SERVE_KILL, when the grader stops
  *                     the test (out of time, memory or output)
  *   server -> grader  a ServeEnded, once it has reaped the child
+ * The socket keeps messages apart (SOCK_SEQPACKET): a SERVE_KILL that
+ * reaches the server after the child has ended (it ended at its deadline)
+ * is read alone, and ignored, never as the start of the next request.
  * Both sides are the kit's own code: the student's code runs only in the
  * children, which close the socket before anything of theirs runs.
  */

@@ -16,6 +16,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <time.h>
 #include "../grader/sandbox.h"
 #if defined(__linux__)
 #include "../grader/harness_serve.h"
@@ -224,6 +225,42 @@ static void test_server_attacked(void)
     }
 }
 
+/* A word to stop a test that reaches the server after the test has ended
+ * (it ended at its deadline, say) is ignored, even when it arrives with
+ * the next test's request: that test still gets its own limits, from the
+ * same server.  (The server is stopped while both are sent, so that it
+ * reads them together.) */
+static void test_late_kill(void)
+{
+    SandboxServer s;
+    char object[256];
+    serve_init(&s, object, sizeof object, PPID "for o in t v; do printf '%s ' $o; ulimit -$o; done >&3");
+    SandboxResult res;
+    SandboxSpec spec = { .max_procs = 0, .cpu_seconds = 7, .address_mb = 512 };
+    if (run(&s, spec, &res) != 0)
+        return;
+    sandbox_result_free(&res);
+    pid_t server = s.pid;
+    kill(server, SIGSTOP);
+    char k = 'k';
+    CHECK(write(s.sock, &k, 1) == 1);
+    pid_t helper = fork();
+    if (helper == 0) {
+        struct timespec wait = { 0, 300 * 1000 * 1000 };
+        nanosleep(&wait, NULL);
+        kill(server, SIGCONT);
+        _exit(0);
+    }
+    if (run(&s, spec, &res) == 0) {
+        CHECK_MSG(s.pid == server && !s.failed, "the server %s", s.failed ? "failed" : "changed");
+        CHECK(started_by(&res, &s, server, false));
+        CHECK_STR_CONTAINS(res.answer, "t 7\nv 524288\n");
+        sandbox_result_free(&res);
+    }
+    waitpid(helper, NULL, 0);
+    sandbox_serve_stop(&s);
+}
+
 /* A server gone between two tests: the second runs in a runner of its own. */
 static void test_server_gone(void)
 {
@@ -276,7 +313,7 @@ static void test_server_off(void)
 static const CheckTest tests[] = {
     CHECK_TEST(test_served_runs),    CHECK_TEST(test_served_limits), CHECK_TEST(test_served_descriptors),
     CHECK_TEST(test_served_endings), CHECK_TEST(test_served_memory), CHECK_TEST(test_server_attacked),
-    CHECK_TEST(test_server_gone),    CHECK_TEST(test_server_off),
+    CHECK_TEST(test_late_kill),      CHECK_TEST(test_server_gone),    CHECK_TEST(test_server_off),
 };
 
 int main(int argc, char **argv)
