@@ -76,7 +76,9 @@ static int receive_one(int sock, ServeRequest *rq, int fds[3])
         return 1;
     bool ok = n == (ssize_t)sizeof *rq && !(msg.msg_flags & (MSG_TRUNC | MSG_CTRUNC)) && c &&
               c->cmsg_level == SOL_SOCKET && c->cmsg_type == SCM_RIGHTS &&
-              c->cmsg_len == CMSG_LEN(3 * sizeof(int));
+              c->cmsg_len == CMSG_LEN(3 * sizeof(int)) &&
+              rq->cpu_seconds > 0 && rq->max_procs >= -1 && rq->address_bytes >= 0 &&
+              rq->file_bytes >= 0;      /* a request's limits make sense, or none is run */
     if (c && c->cmsg_level == SOL_SOCKET && c->cmsg_type == SCM_RIGHTS) {
         int got = (int)((c->cmsg_len - CMSG_LEN(0)) / sizeof(int));
         int passed[3] = { -1, -1, -1 };
