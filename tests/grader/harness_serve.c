@@ -57,16 +57,12 @@ static int write_full(int fd, const void *p, size_t n)
 
 /* One message: 0 a request (rq and fds filled), 1 a late SERVE_KILL, -1
  * anything else or the end. */
-static int receive_one(int sock, ServeRequest *rq, int fds[3])
+static int receive_one(int sock, ServeRequest *rq, int fds[SERVE_FDS])
 {
-    char control[CMSG_SPACE(3 * sizeof(int))];
-    struct iovec iov = { rq, sizeof *rq };
+    char control[SERVE_CONTROL];
+    struct iovec iov;
     struct msghdr msg;
-    memset(&msg, 0, sizeof msg);
-    msg.msg_iov = &iov;
-    msg.msg_iovlen = 1;
-    msg.msg_control = control;
-    msg.msg_controllen = sizeof control;
+    serve_message(&msg, &iov, rq, control);
     ssize_t n;
     do
         n = recvmsg(sock, &msg, 0);
@@ -76,14 +72,14 @@ static int receive_one(int sock, ServeRequest *rq, int fds[3])
         return 1;
     bool ok = n == (ssize_t)sizeof *rq && !(msg.msg_flags & (MSG_TRUNC | MSG_CTRUNC)) && c &&
               c->cmsg_level == SOL_SOCKET && c->cmsg_type == SCM_RIGHTS &&
-              c->cmsg_len == CMSG_LEN(3 * sizeof(int)) &&
+              c->cmsg_len == CMSG_LEN(SERVE_FDS * sizeof(int)) &&
               rq->cpu_seconds > 0 && rq->max_procs >= -1 && rq->address_bytes >= 0 &&
               rq->file_bytes >= 0;      /* a request's limits make sense, or none is run */
     if (c && c->cmsg_level == SOL_SOCKET && c->cmsg_type == SCM_RIGHTS) {
         int got = (int)((c->cmsg_len - CMSG_LEN(0)) / sizeof(int));
-        int passed[3] = { -1, -1, -1 };
-        memcpy(passed, CMSG_DATA(c), (size_t)(got < 3 ? got : 3) * sizeof(int));
-        for (int k = 0; k < 3; k++) {
+        int passed[SERVE_FDS] = { -1, -1, -1 };
+        memcpy(passed, CMSG_DATA(c), (size_t)(got < SERVE_FDS ? got : SERVE_FDS) * sizeof(int));
+        for (int k = 0; k < SERVE_FDS; k++) {
             fds[k] = passed[k];
             if (!ok && passed[k] >= 0)
                 close(passed[k]);
@@ -94,7 +90,7 @@ static int receive_one(int sock, ServeRequest *rq, int fds[3])
 
 /* The next request and its three descriptors, past any late SERVE_KILL;
  * -1 when the grader closed the socket or sent something else. */
-static int receive(int sock, ServeRequest *rq, int fds[3])
+static int receive(int sock, ServeRequest *rq, int fds[SERVE_FDS])
 {
     for (;;) {
         int got = receive_one(sock, rq, fds);
@@ -111,7 +107,7 @@ static void limit(int resource, rlim_t value)
 
 /* In the child: the test's descriptors on 0-3 and nothing else, its own
  * process group, the test's limits. */
-static void become_test(int sock, const ServeRequest *rq, const int fds[3])
+static void become_test(int sock, const ServeRequest *rq, const int fds[SERVE_FDS])
 {
     /* The grader learns the child's pid from the child, before any of the
      * student's code runs: even if that code kills the server at once, the
@@ -127,7 +123,7 @@ static void become_test(int sock, const ServeRequest *rq, const int fds[3])
     setpgid(0, 0);
     if (dup2(fds[0], 0) < 0 || dup2(fds[1], 1) < 0 || dup2(fds[1], 2) < 0 || dup2(fds[2], 3) < 0)
         _exit(126);
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < SERVE_FDS; k++)
         if (fds[k] > 3)
             close(fds[k]);
     limit(RLIMIT_CPU, (rlim_t)rq->cpu_seconds);
@@ -191,7 +187,7 @@ void harness_serve(int sock)
         _exit(126);
     for (;;) {
         ServeRequest rq;
-        int fds[3];
+        int fds[SERVE_FDS];
         if (receive(sock, &rq, fds) != 0)
             _exit(0);
         pid_t pid = fork();
@@ -199,7 +195,7 @@ void harness_serve(int sock)
             become_test(sock, &rq, fds);
             return;
         }
-        for (int k = 0; k < 3; k++)
+        for (int k = 0; k < SERVE_FDS; k++)
             close(fds[k]);
         if (pid < 0) {
             ServeStarted st = { -1 };

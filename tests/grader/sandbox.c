@@ -521,6 +521,9 @@ static int open_pipes(int p[3][2], char *err, size_t errlen)
     return 0;
 }
 
+/* The server's own CPU limit: it only forks, once per test. */
+#define SERVE_CPU_SECONDS 600
+
 /* The plan of the child about to be forked (see ChildPlan). */
 static ChildPlan plan;
 
@@ -635,22 +638,17 @@ void sandbox_serve_stop(SandboxServer *s)
 #define MSG_NOSIGNAL 0          /* macOS has none; SIGPIPE is ignored here anyway */
 #endif
 
-static int send_request(int sock, const ServeRequest *rq, const int fds[3])
+static int send_request(int sock, const ServeRequest *rq, const int fds[SERVE_FDS])
 {
-    char control[CMSG_SPACE(3 * sizeof(int))];
-    memset(control, 0, sizeof control);
-    struct iovec iov = { (void *)rq, sizeof *rq };
+    char control[SERVE_CONTROL];
+    struct iovec iov;
     struct msghdr msg;
-    memset(&msg, 0, sizeof msg);
-    msg.msg_iov = &iov;
-    msg.msg_iovlen = 1;
-    msg.msg_control = control;
-    msg.msg_controllen = sizeof control;
+    serve_message(&msg, &iov, (void *)rq, control);
     struct cmsghdr *c = CMSG_FIRSTHDR(&msg);
     c->cmsg_level = SOL_SOCKET;
     c->cmsg_type = SCM_RIGHTS;
-    c->cmsg_len = CMSG_LEN(3 * sizeof(int));
-    memcpy(CMSG_DATA(c), fds, 3 * sizeof(int));
+    c->cmsg_len = CMSG_LEN(SERVE_FDS * sizeof(int));
+    memcpy(CMSG_DATA(c), fds, SERVE_FDS * sizeof(int));
     ssize_t n;
     do
         n = sendmsg(sock, &msg, MSG_NOSIGNAL);
@@ -673,7 +671,7 @@ static int served(SandboxServer *s, const SandboxSpec *spec, SandboxResult *res,
         .address_bytes = address_mb > 0 ? (int64_t)address_mb << 20 : 0,
         .file_bytes = (int64_t)spec->max_file_mb << 20,
     };
-    int fds[3] = { p[0][0], p[2][1], p[1][1] };
+    int fds[SERVE_FDS] = { p[0][0], p[2][1], p[1][1] };
     double start = sandbox_now();
     ServeStarted st;
     bool sent = send_request(s->sock, &rq, fds) == 0;

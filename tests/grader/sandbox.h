@@ -89,8 +89,6 @@ typedef struct {
     int runs;                  /* runs so far                                */
 } SandboxServer;
 
-#define SERVE_CPU_SECONDS 600  /* the server's own: forks, one per test      */
-
 /* Readies s to serve the tests of program (a prebuilt runner) with object.
  * The server starts at run start_at (0: the first); the runs before it,
  * and every run when start_at < 0, start a runner of their own. */

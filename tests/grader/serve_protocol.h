@@ -22,8 +22,12 @@
 #define SERVE_PROTOCOL_H
 
 #include <stdint.h>
+#include <string.h>
+#include <sys/socket.h>
 
 #define SERVE_KILL 'k'
+#define SERVE_FDS 3                /* a request's descriptors               */
+#define SERVE_CONTROL CMSG_SPACE(SERVE_FDS * sizeof(int))
 
 typedef struct {
     int32_t cpu_seconds;       /* RLIMIT_CPU                                 */
@@ -41,5 +45,20 @@ typedef struct {
     int32_t unused;
     double cpu_seconds;        /* the child's user and system CPU            */
 } ServeEnded;
+
+/* A request's message, as both sides lay it out: the request in iov,
+ * room for SERVE_FDS descriptors in control (SERVE_CONTROL bytes). */
+static inline void serve_message(struct msghdr *msg, struct iovec *iov, void *request,
+                                 char *control)
+{
+    iov->iov_base = request;
+    iov->iov_len = sizeof(ServeRequest);
+    memset(msg, 0, sizeof *msg);
+    memset(control, 0, SERVE_CONTROL);
+    msg->msg_iov = iov;
+    msg->msg_iovlen = 1;
+    msg->msg_control = control;
+    msg->msg_controllen = SERVE_CONTROL;
+}
 
 #endif
