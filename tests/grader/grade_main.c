@@ -222,8 +222,8 @@ static int grade_one(const char *submission, const char *part, const char *resul
                        .memo = memo_dir && sandbox_drops_privileges() ? memo_dir : NULL,
                        .store = store_dir() };
 
-    /* GRADE_NO_SERVE=1: every test alone in a runner of its own (the kit's
-     * tests compare the two ways). */
+    /* GRADE_NO_SERVE=1: every test alone in a runner of its own, as before
+     * the servers of tests (to measure them, or to rule them out). */
     const char *no_serve = getenv("GRADE_NO_SERVE");
     GradeOptions opt = { .submission = submission, .cfg = &cfg, .build = &bc, .verbose = verbose,
                          .serve = !(no_serve && *no_serve) };
