@@ -45,16 +45,13 @@ static int run(SandboxServer *s, SandboxSpec spec, SandboxResult *res)
     return rc;
 }
 
-/* Whether the run's answer says "ppid P" with P the server's pid (or, if
- * by_grader, this process's). */
-static bool started_by(const SandboxResult *res, const SandboxServer *s, pid_t server, bool by_grader)
+/* Whether the run's answer says "ppid P" with P parent: the server's pid
+ * for a served run, this process's for a runner the grader started. */
+static bool started_by(const SandboxResult *res, pid_t parent)
 {
     long ppid = -1;
     const char *at = strstr(res->answer, "ppid ");
-    if (!at || sscanf(at, "ppid %ld", &ppid) != 1)
-        return false;
-    (void)s;
-    return by_grader ? ppid == (long)getpid() : ppid == (long)server;
+    return at && sscanf(at, "ppid %ld", &ppid) == 1 && ppid == (long)parent;
 }
 
 #define PPID "echo \"ppid $PPID\" >&3; "
@@ -71,11 +68,11 @@ static void test_served_runs(void)
         return;
     pid_t server = s.pid;
     CHECK(server > 0);
-    CHECK(started_by(&a, &s, server, false));
+    CHECK(started_by(&a, server));
     CHECK_EQ_INT(a.exit_code, 3);
     CHECK_STR_CONTAINS(a.output, "out");
     if (run(&s, spec, &b) == 0) {
-        CHECK(started_by(&b, &s, server, false));
+        CHECK(started_by(&b, server));
         CHECK_MSG(strcmp(a.answer, b.answer) != 0, "one process for two runs: %s", a.answer);
         CHECK(s.pid == server && !s.failed);
         sandbox_result_free(&b);
@@ -98,7 +95,7 @@ static void test_served_limits(void)
     SandboxSpec spec = { .max_procs = 0, .cpu_seconds = 7, .address_mb = 512, .max_file_mb = 0 };
     if (run(&s, spec, &res) != 0)
         return;
-    CHECK(started_by(&res, &s, s.pid, false));
+    CHECK(started_by(&res, s.pid));
     CHECK_STR_CONTAINS(res.answer, "t 7\nf 0\nv 524288\n");
     CHECK_MSG(!strstr(res.answer, "forked"), "the child could fork: %s", res.answer);
     sandbox_result_free(&res);
@@ -118,7 +115,7 @@ static void test_served_descriptors(void)
     SandboxSpec spec = { .max_procs = -1 };
     if (run(&s, spec, &res) != 0)
         return;
-    CHECK(started_by(&res, &s, s.pid, false));
+    CHECK(started_by(&res, s.pid));
     CHECK_STR_CONTAINS(res.answer, "checked");
     CHECK_MSG(!strstr(res.answer, "open"), "the child kept descriptors: %s", res.answer);
     sandbox_result_free(&res);
@@ -213,12 +210,12 @@ static void test_server_attacked(void)
             return;
         double took = sandbox_now() - start;
         CHECK_MSG(took < 2, "%s: noticed after %.2f s", script, took);
-        CHECK_MSG(started_by(&res, &s, 0, true), "%s: the verdict's run: %s", script, res.answer);
+        CHECK_MSG(started_by(&res, getpid()), "%s: the verdict's run: %s", script, res.answer);
         CHECK_EQ_INT(res.exit_code, 5);
         CHECK(s.failed && s.off && s.pid == 0);
         sandbox_result_free(&res);
         if (run(&s, (SandboxSpec){ .max_procs = 0 }, &res) == 0) {
-            CHECK(started_by(&res, &s, 0, true));
+            CHECK(started_by(&res, getpid()));
             sandbox_result_free(&res);
         }
         sandbox_serve_stop(&s);
@@ -253,7 +250,7 @@ static void test_late_kill(void)
     }
     if (run(&s, spec, &res) == 0) {
         CHECK_MSG(s.pid == server && !s.failed, "the server %s", s.failed ? "failed" : "changed");
-        CHECK(started_by(&res, &s, server, false));
+        CHECK(started_by(&res, server));
         CHECK_STR_CONTAINS(res.answer, "t 7\nv 524288\n");
         sandbox_result_free(&res);
     }
@@ -270,11 +267,11 @@ static void test_server_gone(void)
     SandboxResult res;
     if (run(&s, (SandboxSpec){ .max_procs = 0 }, &res) != 0)
         return;
-    CHECK(started_by(&res, &s, s.pid, false));
+    CHECK(started_by(&res, s.pid));
     sandbox_result_free(&res);
     kill(s.pid, SIGKILL);
     if (run(&s, (SandboxSpec){ .max_procs = 0 }, &res) == 0) {
-        CHECK(started_by(&res, &s, 0, true));
+        CHECK(started_by(&res, getpid()));
         CHECK_EQ_INT(res.exit_code, 0);
         CHECK(s.failed);
         sandbox_result_free(&res);
@@ -294,7 +291,7 @@ static void test_server_off(void)
     for (int k = 0; k < 3; k++) {
         if (run(&s, (SandboxSpec){ .max_procs = 0 }, &res) != 0)
             return;
-        CHECK(started_by(&res, &s, 0, true));
+        CHECK(started_by(&res, getpid()));
         CHECK(s.pid == 0 && !s.failed);
         sandbox_result_free(&res);
     }
@@ -303,7 +300,7 @@ static void test_server_off(void)
     for (int k = 0; k < 4; k++) {
         if (run(&s, (SandboxSpec){ .max_procs = 0 }, &res) != 0)
             return;
-        CHECK_MSG(started_by(&res, &s, s.pid, k < 2), "run %d: %s", k, res.answer);
+        CHECK_MSG(started_by(&res, k < 2 ? getpid() : s.pid), "run %d: %s", k, res.answer);
         CHECK_MSG((s.pid != 0) == (k >= 2), "run %d: server %ld", k, (long)s.pid);
         sandbox_result_free(&res);
     }
