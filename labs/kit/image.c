@@ -66,7 +66,6 @@ void image_free(Image *img)
     img->height = 0;
 }
 
-
 /* ---- writing ---------------------------------------------------------------------- */
 
 /* The format named by path's extension, ignoring case. */
