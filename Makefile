@@ -167,7 +167,7 @@ $(BUILD)/bin/htmlcheck: $(BUILD)/tools/htmlcheck_main.o
 all: $(BUILD)/bin/htmlcheck
 # The kit's own tests compile each distinct file once (tests/tools/ccmemo_main.c):
 # built as "cc", beside a marker that tells it its own directory on PATH.
-$(BUILD)/ccmemo/cc: $(BUILD)/tools/ccmemo_main.o $(BUILD)/kit/libkit.a
+$(BUILD)/ccmemo/cc: $(BUILD)/tools/ccmemo_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $^ -o $@
 	: >$(@D)/ccmemo.marker

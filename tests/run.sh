@@ -172,8 +172,10 @@ alone=0
 [ -f "$dir/lane.alone" ] && alone=$(wc -l <"$dir/lane.alone" | tr -d ' ')
 if [ -n "${CC_MEMO:-}" ] && [ -f "$memo/log" ]; then
     made=$(grep -c '^compiled ' "$memo/log")
-    used=$(grep -c '^used ' "$memo/log")
-    [ $((made + used)) -gt 0 ] && echo "compiles in the suites: $made compiled, $used served from the memo"
+    used=$(grep -c -e '^used ' -e '^used-direct ' "$memo/log")
+    direct=$(grep -c '^used-direct ' "$memo/log")
+    [ $((made + used)) -gt 0 ] &&
+        echo "compiles in the suites: $made compiled, $used served from the memo ($direct without preprocessing)"
     # Every suite ran: what none of them used (nor compiled) goes.
     [ "$every_suite" = yes ] && sh tests/tools/ccmemo_keep.sh prune "$memo" "$dir/started"
 fi

@@ -2,7 +2,12 @@
 # The compile memo the suites build with (tests/tools/ccmemo_main.c):
 # - a second compile of the same file is served from the memo, and gives
 #   the object a direct compile gives, byte for byte, with its warnings;
+# - served the direct way (tests/tools/ccmemo_direct.h), without running
+#   the preprocessor, when the files read and the places looked at are as
+#   they were;
 # - a change to a header the file includes, or to the flags, compiles again;
+#   so does a new header that shadows the old one, a file that changes
+#   what __has_include says, and a file that uses __DATE__;
 # - a compile that fails is not kept, and says why as the compiler does;
 # - links and compiles without CC_MEMO (the grader's sandbox passes only
 #   PATH) run the compiler itself;
@@ -32,13 +37,15 @@ cat >"$tmp/src/area.c" <<'EOF'
 double area(double r) { int unused; return SCALE * 3.14159 * r * r; }
 EOF
 count() { c=$(grep -c "^$1 " "$tmp/memo/log" 2>/dev/null); echo "${c:-0}"; }
+served() { echo $(($(count used) + $(count used-direct))); }
 memo() { (cd "$tmp/src" && PATH=${memo_cc%/cc}:$PATH CC_MEMO=$tmp/memo cc "$@"); }
 flags="-std=c11 -O2 -Wall -c area.c"
 
 memo $flags -o a1.o 2>"$tmp/err1"
 check "a first compile through the memo compiles (log: $(count compiled) compiled)" [ "$(count compiled)" -eq 1 ]
 memo $flags -o a2.o 2>"$tmp/err2"
-check "the same compile again is served from the memo (log: $(count used) used)" [ "$(count used)" -eq 1 ]
+check "the same compile again is served from the memo, the direct way (log: $(count used-direct) used-direct)" \
+    [ "$(count used-direct)" -eq 1 -a "$(served)" -eq 1 ]
 (cd "$tmp/src" && "$real_cc" $flags -o direct.o 2>"$tmp/err-direct")
 check "the served object is the direct compile's, byte for byte" cmp -s "$tmp/src/a2.o" "$tmp/src/direct.o"
 check "the served compile repeats the compiler's warning" grep -q "unused" "$tmp/err2"
@@ -58,23 +65,61 @@ status=$?
 check "a failing compile fails (exit $status)" [ "$status" -ne 0 ]
 check "... saying why, as the compiler does" grep -q "error" "$tmp/err-bad"
 memo -std=c11 -c bad.c -o bad.o 2>/dev/null
-check "... and is not kept (log: $(count used) used)" [ "$(count used)" -eq 1 ]
+check "... and is not kept (log: $(served) served)" [ "$(served)" -eq 1 ]
 
 echo 'double area(double); int main(void) { return area(1) > 0 ? 0 : 1; }' >"$tmp/src/main.c"
 memo -std=c11 -c main.c -o main.o 2>/dev/null
 memo main.o a1.o -o prog
 check "a link runs the compiler itself" [ -x "$tmp/src/prog" ]
-check "... and is neither kept nor served ($(count compiled) compiled, $(count used) used)" \
-    [ "$(count compiled)" -eq 4 -a "$(count used)" -eq 1 ]
+check "... and is neither kept nor served ($(count compiled) compiled, $(served) served)" \
+    [ "$(count compiled)" -eq 4 -a "$(served)" -eq 1 ]
 (unset CC_MEMO; cd "$tmp/src" && PATH=${memo_cc%/cc}:$PATH cc $flags -o nomemo.o 2>/dev/null)
 check "without CC_MEMO it compiles, keeping nothing" \
-    [ -f "$tmp/src/nomemo.o" -a "$(count compiled)" -eq 4 -a "$(count used)" -eq 1 ]
+    [ -f "$tmp/src/nomemo.o" -a "$(count compiled)" -eq 4 -a "$(served)" -eq 1 ]
+
+# The direct way.  Each case: a first compile through the memo, a change,
+# then the same compile again, which must give the object a direct compile
+# gives after the change.
+# direct_case NAME FLAGS: compiles twice through the memo (NAME.1.o,
+# NAME.2.o), and once directly (NAME.d.o) after the caller's change, read
+# from $tmp/change.
+direct_case() {
+    memo $2 -o "$1.1.o" 2>/dev/null
+    d=$(count used-direct)
+    memo $2 -o "$1.1b.o" 2>/dev/null
+    d=$(($(count used-direct) - d))
+    sh "$tmp/change"
+    memo $2 -o "$1.2.o" 2>/dev/null
+    (cd "$tmp/src" && "$real_cc" $2 -o "$1.d.o" 2>/dev/null)
+    check "$1: served the direct way before the change ($d of 1 used-direct)" [ "$d" -eq 1 ]
+    check "$1: after the change, the object is the direct compile's" cmp -s "$tmp/src/$1.2.o" "$tmp/src/$1.d.o"
+    check "$1: ... not the object from before the change" sh -c "! cmp -s '$tmp/src/$1.1.o' '$tmp/src/$1.2.o'"
+}
+mkdir "$tmp/src/inc1" "$tmp/src/inc2"
+echo '#define SIDE 2.0' >"$tmp/src/inc1/side.h"
+printf '#include <side.h>\ndouble side(void) { return SIDE; }\n' >"$tmp/src/side.c"
+echo "echo '#define SIDE 5.0' >'$tmp/src/inc2/side.h'" >"$tmp/change"
+: >"$tmp/memo/log"
+direct_case shadowed "-std=c11 -O2 -Iinc2 -Iinc1 -c side.c"
+printf '#include "inc1/side.h"\ndouble quoted(void) { return SIDE; }\n' >"$tmp/src/inc2/quoted.c"
+echo "mkdir -p '$tmp/src/inc2/inc1' && echo '#define SIDE 7.0' >'$tmp/src/inc2/inc1/side.h'" >"$tmp/change"
+direct_case quoted-shadowed "-std=c11 -O2 -I. -c inc2/quoted.c"
+printf '#if __has_include("extra.h")\ndouble asked(void) { return 1; }\n#else\ndouble asked(void) { return 2; }\n#endif\n' \
+    >"$tmp/src/asked.c"
+echo "echo '/* here now */' >'$tmp/src/extra.h'" >"$tmp/change"
+direct_case has-include "-std=c11 -O2 -c asked.c"
+printf 'const char *when(void) { return __TIME__; }\n' >"$tmp/src/when.c"
+: >"$tmp/memo/log"
+memo -std=c11 -c when.c -o when1.o 2>/dev/null
+memo -std=c11 -c when.c -o when2.o 2>/dev/null
+check "a file that uses __TIME__ is never served the direct way (log: $(count used-direct) used-direct)" \
+    [ "$(count used-direct)" -eq 0 ]
 
 # Locks.  An entry made with -O3 is removed and its lock made by hand.
 ls "$tmp/memo" >"$tmp/before"
 memo -std=c11 -O3 -c area.c -o l1.o 2>/dev/null
 h=$(ls "$tmp/memo" | grep -v -x -F -f "$tmp/before" | grep '^[0-9a-f]*$')
-rm -rf "${tmp:?}/memo/$h"
+rm -rf "${tmp:?}/memo/$h" "$tmp/memo"/direct-*          # the preprocessed way, to its lock
 mkdir "$tmp/memo/$h.lock"
 dead=$(sh -c 'echo $$')
 echo "$dead" >"$tmp/memo/$h.lock/pid"
@@ -84,7 +129,7 @@ took=$(($(date +%s) - start))
 check "a lock whose maker has died is taken over at once ($took s; the wait is 120 s)" \
     [ -n "$h" -a "$took" -le 10 -a -f "$tmp/src/l2.o" ]
 check "... the compile is kept, and the lock is gone" [ -d "$tmp/memo/$h" -a ! -d "$tmp/memo/$h.lock" ]
-rm -rf "${tmp:?}/memo/$h"
+rm -rf "${tmp:?}/memo/$h" "$tmp/memo"/direct-*
 mkdir "$tmp/memo/$h.lock"
 echo $$ >"$tmp/memo/$h.lock/pid"
 memo -std=c11 -O3 -c area.c -o l3.o 2>/dev/null &
@@ -98,34 +143,38 @@ check "... until it goes" [ -f "$tmp/src/l3.o" ]
 # Kept from run to run.
 keep=tests/tools/ccmemo_keep.sh
 entries() { ls "$tmp/memo" | grep -c '^[0-9a-f]*$'; }
+directs() { ls "$tmp/memo" | grep -c '^direct-[0-9a-f]*$'; }
 before=$(entries)
 sh "$keep" open "$tmp/memo"
-check "a memo with no record of its compiler is emptied ($before entries, now $(entries))" \
-    [ "$before" -ge 4 -a "$(entries)" -eq 0 -a -f "$tmp/memo/compiler" ]
+check "a memo with no record of its compiler is emptied ($before entries, now $(entries) and $(directs))" \
+    [ "$before" -ge 4 -a "$(entries)" -eq 0 -a "$(directs)" -eq 0 -a -f "$tmp/memo/compiler" ]
 memo $flags -o b1.o 2>/dev/null
 memo -std=c11 -O1 -Wall -c area.c -o b2.o 2>/dev/null
-mkdir "$tmp/memo/0123456789abcdef.lock" "$tmp/memo/0123456789abcdef.77.new"
+mkdir "$tmp/memo/0123456789abcdef.lock" "$tmp/memo/0123456789abcdef.77.new" \
+      "$tmp/memo/direct-0123456789abcdef.77.new" "$tmp/memo/direct-0123456789abcdef.77.old"
 : >"$tmp/memo/messages.77"
 sh "$keep" open "$tmp/memo"
-check "opened again with the same compiler, its entries stay ($(entries) of 2)" [ "$(entries)" -eq 2 ]
+check "opened again with the same compiler, its entries stay ($(entries) and $(directs) of 2 each)" \
+    [ "$(entries)" -eq 2 -a "$(directs)" -eq 2 ]
 check "... and its log starts empty" [ ! -s "$tmp/memo/log" ]
 check "... and what an interrupted run left is gone: $(ls "$tmp/memo" | grep -v '^[0-9a-f]*$' | tr '\n' ' ')" \
-    [ "$(ls "$tmp/memo" | grep -v -c -e '^[0-9a-f]*$' -e '^compiler$' -e '^log$')" -eq 0 ]
+    [ "$(ls "$tmp/memo" | grep -v -c -e '^[0-9a-f]*$' -e '^direct-[0-9a-f]*$' -e '^compiler$' -e '^log$')" -eq 0 ]
 sleep 1                           # a second later than the entries' times
 : >"$tmp/stamp"
 memo -std=c11 -O1 -Wall -c area.c -o a5.o 2>/dev/null       # b2.o's entry, used
-check "an entry kept from an earlier run is served (log: $(count used) used)" [ "$(count used)" -eq 1 ]
+check "an entry kept from an earlier run is served (log: $(served) served)" [ "$(served)" -eq 1 ]
 sh "$keep" prune "$tmp/memo" "$tmp/stamp"
-check "pruned after a run, only the entry it used stays ($(entries) of 2)" [ "$(entries)" -eq 1 ]
+check "pruned after a run, only the entry it used stays ($(directs) of 2 direct, $(entries) of 2 others)" \
+    [ "$(directs)" -eq 1 -a "$(entries)" -eq 0 ]
 check "... and the memo's compiler and log stay" [ -f "$tmp/memo/compiler" -a -f "$tmp/memo/log" ]
 memo -std=c11 -O1 -Wall -c area.c -o a6.o 2>/dev/null
-check "... and is served again (log: $(count used) used)" [ "$(count used)" -eq 2 ]
+check "... and is served again (log: $(served) served)" [ "$(served)" -eq 2 ]
 mkdir "$tmp/other"
 printf '#!/bin/sh\necho "another cc 1.0"\n' >"$tmp/other/cc"
 chmod +x "$tmp/other/cc"
 PATH=$tmp/other:$PATH sh "$keep" open "$tmp/memo"
-check "opened for another compiler, the memo is emptied ($(entries) entries)" \
-    [ "$(entries)" -eq 0 -a -f "$tmp/memo/compiler" ]
+check "opened for another compiler, the memo is emptied ($(entries) and $(directs) entries)" \
+    [ "$(entries)" -eq 0 -a "$(directs)" -eq 0 -a -f "$tmp/memo/compiler" ]
 sh "$keep" open "$tmp/memo"
 memo -std=c11 -O1 -Wall -c area.c -o a7.o 2>/dev/null
 check "... so that compile is compiled again (log: $(count compiled) compiled)" [ "$(count compiled)" -eq 1 ]

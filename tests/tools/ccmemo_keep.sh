@@ -34,7 +34,7 @@ open)
         rm -rf "$dir"
     fi
     mkdir -p "$dir" && printf '%s\n' "$now" >"$dir/compiler" && : >"$dir/log" &&
-        find "$dir/." ! -name . -prune \( -name '*.lock' -o -name '*.new' -o -name 'messages.*' \) \
+        find "$dir/." ! -name . -prune \( -name '*.lock' -o -name '*.new' -o -name '*.old' -o -name 'messages.*' \) \
             -exec rm -rf {} +
     ;;
 prune)

@@ -7,12 +7,16 @@
  * repository), each from scratch as a new user would.  Put the directory
  * holding this program (built as "cc") first on PATH and name a directory
  * in CC_MEMO: a compile "cc ARGS -c FILE.c -o OBJ" then
+ *   0. is served the direct way if it can be: without preprocessing, when
+ *      every file its last compile read, and every place it looked in,
+ *      are as they were (ccmemo_direct.h); else it
  *   1. preprocesses FILE.c with the same ARGS (cc -E),
  *   2. looks for an entry whose key -- the real compiler's path, ARGS and
  *      the whole preprocessed text, compared whole, not only by its hash --
  *      is the same, and if there is one copies its object to OBJ and writes
  *      its messages to stderr;
- *   3. else compiles, and keeps the object and the messages as a new entry.
+ *   3. else compiles, and keeps the object and the messages as a new entry;
+ *   4. after 2 or 3, keeps a direct entry for step 0 the next time.
  * The preprocessed text holds every header's text and the file names as
  * written (the kits build with the same relative paths), so an entry is
  * used only where compiling would give the same object.  Two builds asking
@@ -23,7 +27,8 @@
  * passes the compiler only PATH) runs the real compiler, which is the next
  * cc on PATH after the directories holding this program's marker file
  * "ccmemo.marker".  The memo's file "log" has a line for each compile it
- * saw: "compiled", "used" or "not-kept", the file and the directory.  An
+ * saw: "compiled", "used", "used-direct" or "not-kept", the file and the
+ * directory.  An
  * entry's time is set when it is used, so that tests/run.sh, which keeps
  * the memo from run to run for the same compiler, can drop those a whole
  * run did not use.
@@ -42,6 +47,8 @@
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
+#include "ccmemo_direct.h"
+#include "ccmemo_util.h"
 #include "kit/savefile.h"
 
 #define KEY_MAX (256u << 20)     /* preprocessed text larger than this: compile */
@@ -81,75 +88,6 @@ static void run_real(char **argv)
     exit(127);
 }
 
-/* Runs argv with stdout to out_fd (-1: ours) and stderr to err_fd (-1:
- * ours); the exit status, or -1. */
-static int run(char **argv, int out_fd, int err_fd)
-{
-    pid_t pid = fork();
-    if (pid < 0)
-        return -1;
-    if (pid == 0) {
-        if ((out_fd >= 0 && dup2(out_fd, 1) < 0) || (err_fd >= 0 && dup2(err_fd, 2) < 0))
-            _exit(127);
-        execv(argv[0], argv);
-        _exit(127);
-    }
-    int st;
-    while (waitpid(pid, &st, 0) < 0)
-        if (errno != EINTR)
-            return -1;
-    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
-
-/* The whole file in a malloc'd buffer (len set), or NULL. */
-static char *slurp_fd(int fd, size_t max, size_t *len)
-{
-    size_t cap = 1 << 16, n = 0;
-    char *buf = malloc(cap);
-    if (!buf)
-        return NULL;
-    for (;;) {
-        if (n == cap) {
-            if (cap >= max) {
-                free(buf);
-                return NULL;
-            }
-            char *b = realloc(buf, cap *= 2);
-            if (!b) {
-                free(buf);
-                return NULL;
-            }
-            buf = b;
-        }
-        ssize_t r = read(fd, buf + n, cap - n);
-        if (r < 0 && errno == EINTR)
-            continue;
-        if (r < 0) {
-            free(buf);
-            return NULL;
-        }
-        if (r == 0)
-            break;
-        n += (size_t)r;
-    }
-    *len = n;
-    return buf;
-}
-
-static int write_all(int fd, const char *buf, size_t len)
-{
-    while (len > 0) {
-        ssize_t w = write(fd, buf, len);
-        if (w < 0 && errno == EINTR)
-            continue;
-        if (w <= 0)
-            return -1;
-        buf += w;
-        len -= (size_t)w;
-    }
-    return 0;
-}
-
 /* Writes (buf, len) as path, all or nothing (kit_save_file). */
 static int put(const char *path, const char *buf, size_t len)
 {
@@ -157,18 +95,11 @@ static int put(const char *path, const char *buf, size_t len)
     return kit_save_file(path, buf, len, err, sizeof err);
 }
 
-static uint64_t fnv1a(const char *s, size_t n, uint64_t h)
-{
-    for (size_t i = 0; i < n; i++) {
-        h ^= (unsigned char)s[i];
-        h *= 1099511628211u;
-    }
-    return h;
-}
-
-/* The entry's object copied to obj and its messages to stderr: its exit
- * status, or -1 when there is no entry for this key. */
-static int use_entry(const char *entry, const char *key, size_t keylen, const char *obj)
+/* The entry's object copied to obj and its messages to stderr (and to
+ * *messages, malloc'd, *mlen set): 0, or -1 when there is no entry for this
+ * key. */
+static int use_entry(const char *entry, const char *key, size_t keylen, const char *obj,
+                     char **messages, size_t *mlen)
 {
     char path[4200];
     size_t n;
@@ -190,10 +121,10 @@ static int use_entry(const char *entry, const char *key, size_t keylen, const ch
         return -1;
     snprintf(path, sizeof path, "%s/messages", entry);
     char *m = kit_load_file(path, KEY_MAX, &n);
-    if (m) {
-        write_all(2, m, n);
-        free(m);
-    }
+    if (m)
+        ccmemo_write_all(2, m, n);
+    *messages = m;
+    *mlen = m ? n : 0;
     return 0;
 }
 
@@ -206,7 +137,7 @@ static void log_use(const char *memo, const char *what, const char *src)
     snprintf(path, sizeof path, "%s/log", memo);
     int fd = open(path, O_WRONLY | O_CREAT | O_APPEND, 0644);
     if (fd >= 0) {
-        write_all(fd, line, strlen(line));
+        ccmemo_write_all(fd, line, strlen(line));
         close(fd);
     }
 }
@@ -238,7 +169,8 @@ int main(int argc, char **argv)
     if (!memo || !*memo || compile != 1 || !obj || !src)
         run_real(argv);
 
-    /* 1. The key: the compiler, the arguments but -c and -o OBJ, the text. */
+    /* 0. The direct way (ccmemo_direct.h): no preprocessing if the files
+     * the compile read last time read the same. */
     char **pre = calloc((size_t)argc + 2, sizeof *pre);
     if (!pre)
         run_real(argv);
@@ -247,6 +179,16 @@ int main(int argc, char **argv)
     for (int k = 1; k < argc; k++)
         if (k != oarg && k != oarg - 1 && strcmp(argv[k], "-c") != 0)
             pre[np++] = argv[k];
+    size_t dlen = 0;
+    char *dkey = direct_key(pre, np, src, &dlen);
+    if (dkey && direct_use(memo, dkey, dlen, obj) == 0) {
+        log_use(memo, "used-direct", src);
+        free(dkey);
+        free(pre);
+        return 0;
+    }
+
+    /* 1. The key: the compiler, the arguments but -c and -o OBJ, the text. */
     pre[np++] = "-E";
     pre[np] = NULL;
     int fds[2];
@@ -265,7 +207,7 @@ int main(int argc, char **argv)
     }
     close(fds[1]);
     size_t textlen = 0;
-    char *text = slurp_fd(fds[0], KEY_MAX, &textlen);
+    char *text = ccmemo_slurp_fd(fds[0], KEY_MAX, &textlen);
     close(fds[0]);
     int st;
     while (waitpid(pid, &st, 0) < 0 && errno == EINTR)
@@ -287,11 +229,10 @@ int main(int argc, char **argv)
     }
     memcpy(key + keylen, text, textlen);
     keylen += textlen;
-    free(text);
 
     char entry[4096], lock[4200];
     snprintf(entry, sizeof entry, "%s/%016llx", memo,
-             (unsigned long long)fnv1a(key, keylen, 14695981039346656037u));
+             (unsigned long long)ccmemo_fnv1a(key, keylen, 14695981039346656037u));
     snprintf(lock, sizeof lock, "%s.lock", entry);
 
     /* 2. An entry, or the lock to make it, or wait for who holds it.  The
@@ -301,9 +242,14 @@ int main(int argc, char **argv)
     snprintf(holder, sizeof holder, "%s/pid", lock);
     struct timespec nap = { 0, 20 * 1000 * 1000 };
     for (long waited = 0;; waited++) {
-        if (use_entry(entry, key, keylen, obj) == 0) {
+        char *kept_messages = NULL;
+        size_t kept_len = 0;
+        if (use_entry(entry, key, keylen, obj, &kept_messages, &kept_len) == 0) {
             utimensat(AT_FDCWD, entry, NULL, 0);   /* used now: tests/run.sh keeps it */
             log_use(memo, "used", src);
+            if (dkey)
+                direct_keep(memo, dkey, dlen, pre, np - 1, src, text, textlen, obj, kept_messages,
+                            kept_len);
             return 0;
         }
         if (mkdir(lock, 0755) == 0) {
@@ -334,16 +280,16 @@ int main(int argc, char **argv)
     snprintf(messages, sizeof messages, "%s/messages.%ld", memo, (long)getpid());
     int mfd = open(messages, O_RDWR | O_CREAT | O_TRUNC, 0644);
     argv[0] = real_cc;
-    int status = mfd < 0 ? -1 : run(argv, -1, mfd);
+    int status = mfd < 0 ? -1 : ccmemo_run(argv, -1, mfd);
     size_t mlen = 0;
     char *m = NULL;
     if (mfd >= 0 && lseek(mfd, 0, SEEK_SET) == 0)
-        m = slurp_fd(mfd, KEY_MAX, &mlen);
+        m = ccmemo_slurp_fd(mfd, KEY_MAX, &mlen);
     if (mfd >= 0)
         close(mfd);
     unlink(messages);
     if (m)
-        write_all(2, m, mlen);
+        ccmemo_write_all(2, m, mlen);
     if (status == 0) {
         char tmpdir[4300], path[4400];
         snprintf(tmpdir, sizeof tmpdir, "%s.%ld.new", entry, (long)getpid());
@@ -362,6 +308,8 @@ int main(int argc, char **argv)
         }
         free(o);
         log_use(memo, "compiled", src);
+        if (dkey)
+            direct_keep(memo, dkey, dlen, pre, np - 1, src, text, textlen, obj, m, mlen);
     }
     unlink(holder);
     rmdir(lock);
