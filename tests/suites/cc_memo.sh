@@ -108,6 +108,12 @@ printf '#if __has_include("extra.h")\ndouble asked(void) { return 1; }\n#else\nd
     >"$tmp/src/asked.c"
 echo "echo '/* here now */' >'$tmp/src/extra.h'" >"$tmp/change"
 direct_case has-include "-std=c11 -O2 -c asked.c"
+printf '/* as <limits.h> says:\n   #include'"'"'s protect themselves */\nint x;\n' >"$tmp/src/comment.c"
+: >"$tmp/memo/log"
+memo -std=c11 -c comment.c -o comment1.o 2>/dev/null
+memo -std=c11 -c comment.c -o comment2.o 2>/dev/null
+check "\"#include's\" in a comment is no directive: served the direct way ($(count used-direct) used-direct)" \
+    [ "$(count used-direct)" -eq 1 ]
 printf 'const char *when(void) { return __TIME__; }\n' >"$tmp/src/when.c"
 : >"$tmp/memo/log"
 memo -std=c11 -c when.c -o when1.o 2>/dev/null

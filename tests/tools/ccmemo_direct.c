@@ -390,7 +390,9 @@ static bool probe_includes(const char *text, size_t len, const char *from, const
                 p += 7;
                 if (nl - p >= 5 && strncmp(p, "_next", 5) == 0)
                     p += 5;
-                if (!written_name(p, nl, from, search, probes))
+                /* "#include's" in a comment is not a directive */
+                bool directive = p < nl && (*p == ' ' || *p == '\t' || *p == '"' || *p == '<');
+                if (directive && !written_name(p, nl, from, search, probes))
                     return false;
             }
         }
