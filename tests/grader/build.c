@@ -240,10 +240,12 @@ static int check_dependencies(const BuildConfig *cfg, Build *b, const char *depf
 }
 
 /* The shared-object way (cfg->load): links the student's object alone
- * into b->dir/src/student.so, copies the prebuilt runner for the part, and
- * has it load the object once (runner --check) to see what the linker of a
- * whole program would: a symbol defined nowhere, main or another part's
- * function defined again.  Returns as build_program. */
+ * into b->dir/src/student.so and copies the prebuilt runner for the part.
+ * Whether the object links as a whole program would (a symbol defined
+ * nowhere, main or another part's function defined again) is known only
+ * once the runner has loaded it: the build is left unchecked, and the
+ * part's first run tells (build_link_verdict), or build_check.  Returns as
+ * build_program. */
 static int load_program(const BuildConfig *cfg, Build *b, int part, const char *ofile,
                         const MemoEntry *memo, const MemoEntry *stored, char *err, size_t errlen)
 {
@@ -273,6 +275,31 @@ static int load_program(const BuildConfig *cfg, Build *b, int part, const char *
     if (copy_file(from, b->runner, 16 << 20, err, errlen) || chmod(b->runner, 0755))
         return -1;
     snprintf(b->object, sizeof b->object, "%s/src/student.so", b->dir);
+    b->ok = true;
+    b->unchecked = true;
+    return 0;
+}
+
+int build_link_verdict(Build *b, const SandboxResult *res)
+{
+    /* Only the runner's own verdict counts: code run as the object loads
+     * (a constructor) may exit or crash first, and then the tests show it. */
+    if (res->exit_code == 4 && res->answer && strncmp(res->answer, "link-error ", 11) == 0) {
+        char *nl = strchr(res->answer, '\n');
+        if (nl)
+            *nl = '\0';
+        build_say(b, "the linker: ", res->answer + 11);
+        b->ok = false;
+        b->unchecked = false;
+        return 1;
+    }
+    if (res->exit_code == 0 && !res->signal && !res->timed_out)
+        b->unchecked = false;
+    return 0;
+}
+
+int build_check(Build *b, char *err, size_t errlen)
+{
     char *check_argv[] = { b->runner, "--check", b->object, NULL };
     SandboxSpec spec = {
         .argv = check_argv, .workdir = b->rundir, .timeout = LOAD_SECONDS, .answer_max = 1024,
@@ -282,18 +309,9 @@ static int load_program(const BuildConfig *cfg, Build *b, int part, const char *
     if (sandbox_run(&spec, &res, err, errlen) != 0)
         return -1;
     b->cpu_link += res.cpu_seconds;
-    /* Only the runner's own verdict counts: code run as the object loads
-     * (a constructor) may exit or crash first, and then the tests show it. */
-    if (strncmp(res.answer, "link-error ", 11) == 0 && res.exit_code == 4) {
-        char *nl = strchr(res.answer, '\n');
-        if (nl)
-            *nl = '\0';
-        build_say(b, "the linker: ", res.answer + 11);
-        sandbox_result_free(&res);
-        return 0;
-    }
+    build_link_verdict(b, &res);
+    b->unchecked = false;
     sandbox_result_free(&res);
-    b->ok = true;
     return 0;
 }
 

@@ -37,12 +37,16 @@ typedef struct {
     char object[600];          /* "" or the shared object it loads (its argument) */
     char rundir[600];          /* the empty working directory for its runs      */
     bool ok;
+    bool unchecked;            /* ok, but whether the object links is not
+                                  known until the runner has loaded it once
+                                  (build_link_verdict, build_check)         */
     char *messages;            /* the compiler's output (malloc'd, may be "")   */
     double cpu_compile;        /* CPU seconds of the compiler's runs, compiling */
     double cpu_link;           /* and linking                                   */
 } Build;
 
 #include "grader.h"
+#include "sandbox.h"
 
 extern const char *const stage_names[NPARTS];   /* "part1_image_plane", ...  */
 
@@ -52,6 +56,18 @@ extern const char *const stage_names[NPARTS];   /* "part1_image_plane", ...  */
 int build_part(const BuildConfig *cfg, int part, const char *submission, Build *b,
                char *err, size_t errlen);
 void build_remove(Build *b);
+
+/* An unchecked build's first run (res) tells whether its object links:
+ * when the runner says it does not, b->ok becomes false with the linker's
+ * message added, and 1 is returned; when the run ended cleanly, the object
+ * loaded and b->unchecked becomes false.  Otherwise (a crash, a time out:
+ * code run as the object loads may do that) the build stays unchecked. */
+int build_link_verdict(Build *b, const SandboxResult *res);
+
+/* Loads an unchecked build's object once (runner --check) and takes its
+ * verdict; b->unchecked becomes false.  0, or -1 when the grader could not
+ * run it (err says why). */
+int build_check(Build *b, char *err, size_t errlen);
 
 /* Builds the report page's render program: harness_render.o (which draws a
  * scene with Parts 1-3b) and the submission's four core stage files, those

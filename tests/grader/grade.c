@@ -194,7 +194,7 @@ static void run_test(const GradeOptions *opt, const Build *b, SandboxServer *srv
  * exited early, hung or printed a malformed answer, runs alone afterwards
  * (run_test), so that its verdict and what the student reads come from a
  * process of its own.  Marks in done[] the tests passed here. */
-static void run_batch(const GradeOptions *opt, const Build *b, const TestList *tests, int part,
+static void run_batch(const GradeOptions *opt, Build *b, const TestList *tests, int part,
                       TestResult *results, bool *done)
 {
     size_t len = 0, cap = 0, answer_max = 0;
@@ -237,6 +237,10 @@ static void run_batch(const GradeOptions *opt, const Build *b, const TestList *t
     free(input);
     if (status != 0)
         return;
+    if (b->unchecked && build_link_verdict(b, &res)) {      /* it does not link */
+        sandbox_result_free(&res);
+        return;
+    }
     if (res.exit_code != 0 || res.signal || res.timed_out || res.memory_exceeded ||
         res.output_exceeded || res.answer_truncated) {
         if (opt->verbose)
@@ -371,10 +375,6 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
             build_remove(&b);
             return -1;
         }
-        g->build_messages[p] = b.messages;
-        b.messages = NULL;
-        g->cpu_compile += b.cpu_compile;
-        g->cpu_link += b.cpu_link;
         double children = sandbox_cpu(false);
         int timeouts = 0;
         bool first = true;
@@ -384,8 +384,25 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
             snprintf(err, errlen, "out of memory");
             return -1;
         }
+        /* A loaded part's first run, the batch, also tells whether its
+         * object links; when it cannot (no batch, or it crashed), a run that
+         * only loads it does, as the build's. */
         if (b.ok)
             run_batch(opt, &b, tests, p, g->results, done);
+        if (b.ok && b.unchecked) {
+            double before = sandbox_cpu(false);
+            int rc = build_check(&b, err, errlen);
+            children += sandbox_cpu(false) - before;
+            if (rc != 0) {
+                free(done);
+                build_remove(&b);
+                return -1;
+            }
+        }
+        g->build_messages[p] = b.messages;
+        b.messages = NULL;
+        g->cpu_compile += b.cpu_compile;
+        g->cpu_link += b.cpu_link;
         /* The tests the batch did not pass, then the probes, through a
          * server of the part's runner: one for the tests and another for
          * the probes, as a server's children's CPU counts among the

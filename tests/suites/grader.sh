@@ -258,12 +258,15 @@ done <"$tmp/points"
 # On Linux a part with one student file is built as a shared object that a
 # prebuilt runner loads; GRADE_NO_LOAD=1 links the whole program as
 # elsewhere.  Both ways must give the same grades, link errors included.
-# GRADE_NO_MEMO=1 too: as root the classes above reused identical files'
-# objects, and compiling every file must not change a grade either.
 # Each submission below differs from the reference in one part's file, and
 # each part is graded on its own (the classes above check that the other
 # parts keep full marks), so each is graded whole on that part alone; the
-# reference itself is graded whole on every part.
+# reference itself is graded whole on every part.  Identical files: as root
+# the classes above compiled each distinct file once (memo.h) and graded
+# the reference's files from that one object; here the reference's are
+# compiled for the reference alone, and must keep full marks.  (As in the
+# rest of the suites, what was built in an earlier run of the tests is
+# served from the grader's store, tests/suites/grade_store.sh.)
 if [ -x out/build/grader/runner_1 ]; then
     # parity PART SUBMISSION...: grades them on PART alone, linked whole.
     parity() {
@@ -275,7 +278,7 @@ if [ -x out/build/grader/runner_1 ]; then
         done
         chmod -R a+rX "$tmp/parity-$p"
         sed "s/^parts .*/parts $p/" tests/weights.conf >"$tmp/parity-$p.conf"
-        GRADE_NO_LOAD=1 GRADE_NO_MEMO=1 $grade --all "$tmp/parity-$p" --out "$tmp/grades-parity-$p" \
+        GRADE_NO_LOAD=1 $grade --all "$tmp/parity-$p" --out "$tmp/grades-parity-$p" \
             --weights "$tmp/parity-$p.conf" --jobs 2 >"$tmp/parity-$p.out" 2>&1
         for sname in "$@"; do
             # The gradebook's row: "name,points,hard,total,status"; the
@@ -291,7 +294,7 @@ if [ -x out/build/grader/runner_1 ]; then
     parity 2 link-defines-other-part p2-no-half
     parity 3a link-undefined hostile-constructor hostile-segfault rw-rtiow-v1
     parity 3b p3b-reversed
-    GRADE_NO_LOAD=1 GRADE_NO_MEMO=1 $grade --submission solutions --weights "$all" --summary \
+    GRADE_NO_LOAD=1 $grade --submission solutions --weights "$all" --summary \
         >"$tmp/ref-whole.out" 2>&1
     check "the reference linked whole scores full marks on every part" \
         grep -q "^summary $max1 $max2 $max3a $max3b $max4 $max5 " "$tmp/ref-whole.out"
