@@ -349,8 +349,12 @@ fi
 # is Moller-Trumbore (tests/selftest/moller-trumbore, the skeleton's
 # formula).
 if [ -d solutions ] && [ -d tests/selftest/independent ] && [ -d tests/selftest/moller-trumbore ]; then
-    sub=$tmp/independent
-    mkdir "$sub"
+    # In out/tests, not in $tmp: its path is the same from one run to the
+    # next, so the suites' compile memo serves its compiles (the path is
+    # in each compile's arguments).
+    sub=$PWD/out/tests/independent
+    rm -rf "$sub"
+    mkdir -p "$sub"
     cp tests/selftest/independent/*.c tests/selftest/moller-trumbore/*.c "$sub/"
     for scene in labs/scenes/*.scene; do
         name=$(basename "$scene" .scene)
