@@ -108,16 +108,18 @@ printf '#if __has_include("extra.h")\ndouble asked(void) { return 1; }\n#else\nd
     >"$tmp/src/asked.c"
 echo "echo '/* here now */' >'$tmp/src/extra.h'" >"$tmp/change"
 direct_case has-include "-std=c11 -O2 -c asked.c"
+# twice NAME: compiles NAME.c through the memo twice, the log emptied first.
+twice() {
+    : >"$tmp/memo/log"
+    memo -std=c11 -c "$1.c" -o "${1}1.o" 2>/dev/null
+    memo -std=c11 -c "$1.c" -o "${1}2.o" 2>/dev/null
+}
 printf '/* as <limits.h> says:\n   #include'"'"'s protect themselves */\nint x;\n' >"$tmp/src/comment.c"
-: >"$tmp/memo/log"
-memo -std=c11 -c comment.c -o comment1.o 2>/dev/null
-memo -std=c11 -c comment.c -o comment2.o 2>/dev/null
+twice comment
 check "\"#include's\" in a comment is no directive: served the direct way ($(count used-direct) used-direct)" \
     [ "$(count used-direct)" -eq 1 ]
 printf 'const char *when(void) { return __TIME__; }\n' >"$tmp/src/when.c"
-: >"$tmp/memo/log"
-memo -std=c11 -c when.c -o when1.o 2>/dev/null
-memo -std=c11 -c when.c -o when2.o 2>/dev/null
+twice when
 check "a file that uses __TIME__ is never served the direct way (log: $(count used-direct) used-direct)" \
     [ "$(count used-direct)" -eq 0 ]
 

@@ -195,30 +195,15 @@ int direct_use(const char *memo, const char *key, size_t keylen, const char *obj
 {
     char entry[PATH_LEN], path[PATH_LEN + 32];
     entry_name(memo, key, keylen, entry, sizeof entry);
-    size_t n;
-    snprintf(path, sizeof path, "%s/key", entry);
-    char *kept = kit_load_file(path, FILE_MAX, &n);
-    bool same = kept && n == keylen && memcmp(kept, key, n) == 0;
-    free(kept);
-    if (!same)
+    if (!ccmemo_same_key(entry, key, keylen, FILE_MAX))
         return -1;
+    size_t n;
     snprintf(path, sizeof path, "%s/manifest", entry);
     char *manifest = kit_load_file(path, FILE_MAX, &n);
     bool holds = manifest && manifest_holds(manifest, manifest + n);
     free(manifest);
-    if (!holds)
+    if (!holds || ccmemo_serve(entry, obj, FILE_MAX, NULL, NULL) != 0)
         return -1;
-    snprintf(path, sizeof path, "%s/object", entry);
-    char *o = kit_load_file(path, FILE_MAX, &n), err[64];
-    int bad = !o || kit_save_file(obj, o, n, err, sizeof err) != 0;
-    free(o);
-    if (bad)
-        return -1;
-    snprintf(path, sizeof path, "%s/messages", entry);
-    char *m = kit_load_file(path, FILE_MAX, &n);
-    if (m)
-        ccmemo_write_all(2, m, n);
-    free(m);
     utimensat(AT_FDCWD, entry, NULL, 0);   /* used now: tests/run.sh keeps it */
     return 0;
 }

@@ -101,31 +101,9 @@ static int put(const char *path, const char *buf, size_t len)
 static int use_entry(const char *entry, const char *key, size_t keylen, const char *obj,
                      char **messages, size_t *mlen)
 {
-    char path[4200];
-    size_t n;
-    snprintf(path, sizeof path, "%s/key", entry);
-    char *kept = kit_load_file(path, KEY_MAX, &n);
-    if (!kept)
+    if (!ccmemo_same_key(entry, key, keylen, KEY_MAX))
         return -1;
-    int same = n == keylen && memcmp(kept, key, n) == 0;
-    free(kept);
-    if (!same)
-        return -1;
-    snprintf(path, sizeof path, "%s/object", entry);
-    char *o = kit_load_file(path, KEY_MAX, &n);
-    if (!o)
-        return -1;
-    int bad = put(obj, o, n);
-    free(o);
-    if (bad)
-        return -1;
-    snprintf(path, sizeof path, "%s/messages", entry);
-    char *m = kit_load_file(path, KEY_MAX, &n);
-    if (m)
-        ccmemo_write_all(2, m, n);
-    *messages = m;
-    *mlen = m ? n : 0;
-    return 0;
+    return ccmemo_serve(entry, obj, KEY_MAX, messages, mlen);
 }
 
 static void log_use(const char *memo, const char *what, const char *src)

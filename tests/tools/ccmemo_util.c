@@ -7,10 +7,14 @@
 #include "ccmemo_util.h"
 
 #include <errno.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include "kit/savefile.h"
 
 uint64_t ccmemo_fnv1a(const char *s, size_t n, uint64_t h)
 {
@@ -86,4 +90,38 @@ char *ccmemo_slurp_fd(int fd, size_t max, size_t *len)
     buf[n] = '\0';
     *len = n;
     return buf;
+}
+
+bool ccmemo_same_key(const char *entry, const char *key, size_t keylen, size_t max)
+{
+    char path[4200];
+    size_t n;
+    snprintf(path, sizeof path, "%s/key", entry);
+    char *kept = kit_load_file(path, max, &n);
+    bool same = kept && n == keylen && memcmp(kept, key, n) == 0;
+    free(kept);
+    return same;
+}
+
+int ccmemo_serve(const char *entry, const char *obj, size_t max, char **messages, size_t *mlen)
+{
+    char path[4200], err[64];
+    size_t n;
+    snprintf(path, sizeof path, "%s/object", entry);
+    char *o = kit_load_file(path, max, &n);
+    int bad = !o || kit_save_file(obj, o, n, err, sizeof err) != 0;
+    free(o);
+    if (bad)
+        return -1;
+    snprintf(path, sizeof path, "%s/messages", entry);
+    char *m = kit_load_file(path, max, &n);
+    if (m)
+        ccmemo_write_all(2, m, n);
+    if (messages) {
+        *messages = m;
+        *mlen = m ? n : 0;
+    } else {
+        free(m);
+    }
+    return 0;
 }
