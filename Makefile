@@ -51,6 +51,10 @@ KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
 .DELETE_ON_ERROR:
 .SECONDARY:                             # keep the objects a chain of rules makes (the renderer's lto/)
 .SECONDEXPANSION:
+# A target's directory is made once, before the first target in it (an
+# order-only prerequisite "| $$(@D)/."), not by a mkdir per target.
+%/.:
+	@mkdir -p $@
 
 all: $(BUILD)/kit/libkit.a $(BUILD)/bin/compare $(BUILD)/sub/labs/render \
      $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render) grader unit-tests
@@ -63,11 +67,9 @@ help:
 	@echo "make grade-all SUBMISSIONS=dir [OUT=dir] [JOBS=n]"
 	@echo "make gradescope | prairielearn | student-kit | bench | handouts | test | clean"
 
-$(BUILD)/kit/%.o: labs/kit/%.c $(KIT_HDR)
-	@mkdir -p $(@D)
+$(BUILD)/kit/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) $(THREADS) -c $< -o $@
-$(ASAN)/kit/%.o: labs/kit/%.c $(KIT_HDR)
-	@mkdir -p $(@D)
+$(ASAN)/kit/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(SANFLAGS) $(THREADS) -c $< -o $@
 $(BUILD)/kit/libkit.a: $(KIT_OBJ)
 	rm -f $@ && ar rcs $@ $^
@@ -85,33 +87,26 @@ SUB_BUILD  = $(BUILD)/sub/$(SUB_NAME)
 
 # The renderer's own objects (lto/) are built with link-time optimisation,
 # so the per-pixel calls into the stage files can be inlined.
-$(BUILD)/sub/labs/%.o: labs/%.c $(KIT_HDR)
-	@mkdir -p $(@D)
+$(BUILD)/sub/labs/%.o: labs/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/sub/solutions/%.o: solutions/%.c $(KIT_HDR)
-	@mkdir -p $(@D)
+$(BUILD)/sub/solutions/%.o: solutions/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/sub/labs/lto/%.o: labs/%.c $(KIT_HDR)
-	@mkdir -p $(@D)
+$(BUILD)/sub/labs/lto/%.o: labs/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@
-$(BUILD)/sub/solutions/lto/%.o: solutions/%.c $(KIT_HDR)
-	@mkdir -p $(@D)
+$(BUILD)/sub/solutions/lto/%.o: solutions/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@
 ifeq ($(filter labs solutions,$(SUB_NAME)),)
-$(SUB_BUILD)/lto/%.o: $$(call stage_src,$$*,$(SUBMISSION)) $(KIT_HDR)
-	@mkdir -p $(@D)
+$(SUB_BUILD)/lto/%.o: $$(call stage_src,$$*,$(SUBMISSION)) $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@
 endif
-$(BUILD)/kit/lto/%.o: labs/kit/%.c $(KIT_HDR)
-	@mkdir -p $(@D)
+$(BUILD)/kit/lto/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) -c $< -o $@
 RENDER_OBJ = $(BUILD)/kit/lto/render_main.o $(BUILD)/kit/lto/render.o $(BUILD)/kit/lto/image.o \
              $(BUILD)/kit/lto/closest.o
 $(BUILD)/sub/%/render: $(RENDER_OBJ) \
                        $$(addprefix $(BUILD)/sub/$$*/lto/,$$(addsuffix .o,$$(STAGES))) $(BUILD)/kit/libkit.a
 	$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) $^ -o $@ $(LDLIBS)
-$(BUILD)/bin/compare: $(BUILD)/kit/compare_main.o $(BUILD)/kit/libkit.a
-	@mkdir -p $(@D)
+$(BUILD)/bin/compare: $(BUILD)/kit/compare_main.o $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 
 SCENE_NAME = $(basename $(notdir $(SCENE)))
@@ -133,11 +128,9 @@ compare: $(SUB_BUILD)/render $(BUILD)/bin/compare $(if $(HAVE_SOLUTIONS),$(BUILD
 # ---- the oracle: independent double-double answers (tests/oracle) ----------
 ORACLE_SRC = $(filter-out %_main.c,$(wildcard tests/oracle/*.c))
 ORACLE_OBJ = $(ORACLE_SRC:tests/oracle/%.c=$(BUILD)/oracle/%.o)
-$(BUILD)/oracle/%.o: tests/oracle/%.c $(wildcard tests/oracle/*.h) $(KIT_HDR)
-	@mkdir -p $(@D)
+$(BUILD)/oracle/%.o: tests/oracle/%.c $(wildcard tests/oracle/*.h) $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(ASAN)/oracle/%.o: tests/oracle/%.c $(wildcard tests/oracle/*.h) $(KIT_HDR)
-	@mkdir -p $(@D)
+$(ASAN)/oracle/%.o: tests/oracle/%.c $(wildcard tests/oracle/*.h) $(KIT_HDR) | $$(@D)/.
 	$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/oracle/liboracle.a: $(ORACLE_OBJ)
 	rm -f $@ && ar rcs $@ $^
@@ -147,28 +140,23 @@ $(ASAN)/oracle/liboracle.a: $(ORACLE_SRC:tests/oracle/%.c=$(ASAN)/oracle/%.o)
 # ---- instructor tools: archives (zip, tar.gz) and JSON (tests/tools) -------
 TOOLS_SRC  = $(filter-out %_main.c,$(wildcard tests/tools/*.c))
 TOOLS_OBJ  = $(TOOLS_SRC:tests/tools/%.c=$(BUILD)/tools/%.o)
-$(BUILD)/tools/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) $(KIT_HDR)
-	@mkdir -p $(@D)
+$(BUILD)/tools/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(ASAN)/tools/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) $(KIT_HDR)
-	@mkdir -p $(@D)
+$(ASAN)/tools/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) $(KIT_HDR) | $$(@D)/.
 	$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/tools/libtools.a: $(TOOLS_OBJ)
 	rm -f $@ && ar rcs $@ $^
 $(ASAN)/tools/libtools.a: $(TOOLS_SRC:tests/tools/%.c=$(ASAN)/tools/%.o)
 	rm -f $@ && ar rcs $@ $^
-$(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
-	@mkdir -p $(@D)
+$(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 # The report page's checker (tests/suites/report.sh).
-$(BUILD)/bin/htmlcheck: $(BUILD)/tools/htmlcheck_main.o
-	@mkdir -p $(@D)
+$(BUILD)/bin/htmlcheck: $(BUILD)/tools/htmlcheck_main.o | $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 all: $(BUILD)/bin/htmlcheck
 # The kit's own tests compile each distinct file once (tests/tools/ccmemo_main.c):
 # built as "cc", beside a marker that tells it its own directory on PATH.
-$(BUILD)/ccmemo/cc: $(BUILD)/tools/ccmemo_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
-	@mkdir -p $(@D)
+$(BUILD)/ccmemo/cc: $(BUILD)/tools/ccmemo_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@
 	: >$(@D)/ccmemo.marker
 
@@ -194,15 +182,12 @@ GRADER_REF = $(if $(HAVE_SOLUTIONS),$(STAGES:%=$(BUILD)/grader/ref_%.o))
 GRADE_DEFS = $(if $(and $(HAVE_ORACLE),$(HAVE_HIDDEN)),-DGRADER_ORACLE)
 GRADE_EXTRA = $(if $(GRADE_DEFS),$(BUILD)/grader/hidden.o $(BUILD)/oracle/liboracle.a)
 
-$(BUILD)/grader/%.o: tests/grader/%.c $(GRADER_HDR)
-	@mkdir -p $(@D)
+$(BUILD)/grader/%.o: tests/grader/%.c $(GRADER_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/grader/harness_%.o: tests/grader/harness.c $(KIT_HDR)
-	@mkdir -p $(@D)
+$(BUILD)/grader/harness_%.o: tests/grader/harness.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -c $< -o $@
 # The report page's render program (build_render): harness_render.c draws a scene.
-$(BUILD)/grader/harness_render.o: tests/grader/harness_render.c $(KIT_HDR)
-	@mkdir -p $(@D)
+$(BUILD)/grader/harness_render.o: tests/grader/harness_render.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
 	cp $< $@
@@ -215,15 +200,12 @@ LOAD_RUNNERS := $(if $(filter Linux,$(shell uname -s)),1)
 RUNNERS    = $(if $(LOAD_RUNNERS),$(foreach k,1 2 3 4 5 6,$(BUILD)/grader/runner_$(k)))
 RUNNER_DEFS = $(if $(HAVE_SOLUTIONS),-DHARNESS_REFS)
 $(BUILD)/grader/harness_load_%.o: tests/grader/harness.c tests/grader/harness_load.h \
-                                  tests/grader/harness_serve.h $(KIT_HDR)
-	@mkdir -p $(@D)
+                                  tests/grader/harness_serve.h $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -DHARNESS_LOAD $(RUNNER_DEFS) -c $< -o $@
-$(BUILD)/grader/harness_load.o: tests/grader/harness_load.c tests/grader/harness_load.h $(KIT_HDR)
-	@mkdir -p $(@D)
+$(BUILD)/grader/harness_load.o: tests/grader/harness_load.c tests/grader/harness_load.h $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/grader/harness_serve.o: tests/grader/harness_serve.c tests/grader/harness_serve.h \
-                                 tests/grader/serve_protocol.h
-	@mkdir -p $(@D)
+                                 tests/grader/serve_protocol.h | $$(@D)/.
 	$(CC) $(CFLAGS) -c $< -o $@
 # (runner_3, Part 3a's, leaves out Part 3b's reference too: it calls
 # sphere_intersect, which only the student's object defines.)
@@ -235,26 +217,21 @@ $(BUILD)/grader/runner_$(1): $(BUILD)/grader/harness_load_$(1).o $(BUILD)/grader
 	$$(CC) $$(CFLAGS) -rdynamic $$^ -o $$@ $$(LDLIBS) -ldl
 endef
 $(foreach k,1 2 3 4 5 6,$(eval $(call RUNNER_RULE,$(k))))
-$(BUILD)/grader/hidden.o: tests/hidden/hidden.c $(GRADER_HDR) $(wildcard tests/oracle/*.h)
-	@mkdir -p $(@D)
+$(BUILD)/grader/hidden.o: tests/hidden/hidden.c $(GRADER_HDR) $(wildcard tests/oracle/*.h) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/grader/libgrader.a: $(GRADER_OBJ)
 	rm -f $@ && ar rcs $@ $^
-$(BUILD)/grader/grade_main.o: tests/grader/grade_main.c $(GRADER_HDR) $(wildcard tests/oracle/*.h)
-	@mkdir -p $(@D)
+$(BUILD)/grader/grade_main.o: tests/grader/grade_main.c $(GRADER_HDR) $(wildcard tests/oracle/*.h) | $$(@D)/.
 	$(CC) $(CFLAGS) $(GRADE_DEFS) -DGRADER_BUILD='"$(BUILD)"' -Ilabs -c $< -o $@
 $(BUILD)/bin/grade: $(BUILD)/grader/grade_main.o $(GRADE_EXTRA) $(BUILD)/grader/libgrader.a \
-                    $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $(HARNESS) $(GRADER_REF) $(RUNNERS)
-	@mkdir -p $(@D)
+                    $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $(HARNESS) $(GRADER_REF) $(RUNNERS) $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/gentests: $(BUILD)/oracle/gentests_main.o $(BUILD)/oracle/liboracle.a \
-                       $(BUILD)/grader/libgrader.a $(BUILD)/kit/libkit.a
-	@mkdir -p $(@D)
+                       $(BUILD)/grader/libgrader.a $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 # The reference solutions' accuracy on the hard cases (tables for the README).
 $(BUILD)/bin/accuracy: $(BUILD)/oracle/accuracy_main.o $(BUILD)/oracle/liboracle.a \
-                       $(STAGES:%=$(BUILD)/sub/solutions/%.o)
-	@mkdir -p $(@D)
+                       $(STAGES:%=$(BUILD)/sub/solutions/%.o) | $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 
 grader: $(BUILD)/bin/grade $(HARNESS) $(GRADER_REF) $(RUNNERS)
@@ -264,8 +241,7 @@ grader: $(BUILD)/bin/grade $(HARNESS) $(GRADER_REF) $(RUNNERS)
 # rendered here with solutions/, in the student kit the stored
 # labs/reference/default.png (the grader takes the first that exists).
 REPORT_REF = $(if $(HAVE_SOLUTIONS),$(BUILD)/report/default.png)
-$(BUILD)/report/default.png: $(BUILD)/sub/solutions/render labs/scenes/default.scene
-	@mkdir -p $(@D)
+$(BUILD)/report/default.png: $(BUILD)/sub/solutions/render labs/scenes/default.scene | $$(@D)/.
 	$(BUILD)/sub/solutions/render labs/scenes/default.scene --quiet -o $@
 all: $(REPORT_REF)
 grade: grader $(REPORT_REF)
@@ -337,44 +313,36 @@ REF_DIR    = $(if $(HAVE_SOLUTIONS),solutions,labs)
 REF_OBJ    = $(STAGES:%=$(BUILD)/sub/$(REF_DIR)/%.o)
 REF_ASAN   = $(STAGES:%=$(ASAN)/sub/$(REF_DIR)/%.o)
 unit-tests: $(UNIT_BIN)
-$(ASAN)/sub/solutions/%.o: solutions/%.c $(KIT_HDR)
-	@mkdir -p $(@D)
+$(ASAN)/sub/solutions/%.o: solutions/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
-$(ASAN)/sub/labs/%.o: labs/%.c $(KIT_HDR)
-	@mkdir -p $(@D)
+$(ASAN)/sub/labs/%.o: labs/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
 UNIT_LIBS  = $(if $(HAVE_ORACLE),$(BUILD)/oracle/liboracle.a) $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
 UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
-$(BUILD)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS)
-	@mkdir -p $(@D)
+$(BUILD)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS) | $$(@D)/.
 	$(CC) $(CFLAGS) $(THREADS) -Ilabs $< $(REF_OBJ) $(UNIT_LIBS) -o $@ $(LDLIBS)
-$(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN)
-	@mkdir -p $(@D)
+$(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN) | $$(@D)/.
 	$(CC) $(SANFLAGS) $(THREADS) -Ilabs $< $(REF_ASAN) $(UNIT_LIBS_ASAN) -o $@ $(LDLIBS)
 
 # The unit tests of the grader's sandbox, include scan and memo link the part alone.
 GRADER_UNITS = sandbox include_scan memo
 $(GRADER_UNITS:%=$(BUILD)/tests/test_%): $(BUILD)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
                                          tests/grader/%.c tests/grader/%.h tests/grader/serve_protocol.h \
-                                         $(BUILD)/kit/libkit.a
-	@mkdir -p $(@D)
+                                         $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs $< tests/grader/$*.c $(BUILD)/kit/libkit.a -o $@ $(LDLIBS)
 $(GRADER_UNITS:%=$(ASAN)/tests/test_%): $(ASAN)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
                                         tests/grader/%.c tests/grader/%.h tests/grader/serve_protocol.h \
-                                        $(ASAN)/kit/libkit.a
-	@mkdir -p $(@D)
+                                        $(ASAN)/kit/libkit.a | $$(@D)/.
 	$(CC) $(SANFLAGS) -Ilabs $< tests/grader/$*.c $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
 # The server of tests' unit test links the sandbox and, on Linux, the
 # runner's server side (test_serve is its own server).
 SERVE_SRC = tests/grader/sandbox.c $(if $(LOAD_RUNNERS),tests/grader/harness_serve.c)
 SERVE_HDR = tests/grader/sandbox.h tests/grader/harness_serve.h tests/grader/serve_protocol.h
 $(BUILD)/tests/test_serve: tests/unit/test_serve.c tests/unit/check.h $(SERVE_SRC) $(SERVE_HDR) \
-                           $(BUILD)/kit/libkit.a
-	@mkdir -p $(@D)
+                           $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs $< $(SERVE_SRC) $(BUILD)/kit/libkit.a -o $@ $(LDLIBS)
 $(ASAN)/tests/test_serve: tests/unit/test_serve.c tests/unit/check.h $(SERVE_SRC) $(SERVE_HDR) \
-                          $(ASAN)/kit/libkit.a
-	@mkdir -p $(@D)
+                          $(ASAN)/kit/libkit.a | $$(@D)/.
 	$(CC) $(SANFLAGS) -Ilabs $< $(SERVE_SRC) $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
 
 # ---- bench: speed against accuracy (tests/bench) ----------------------------
@@ -392,17 +360,14 @@ HAVE_BENCH := $(and $(HAVE_SOLUTIONS),$(wildcard tests/oracle/hard.h),$(BENCH_SR
 # compiler takes the flags.  The bench's objects depend on the Makefile,
 # whose flags its figures depend on.
 BENCH_ALIGN = $(shell $(CC) -falign-functions=64 -falign-loops=64 -Werror -x c -c /dev/null -o /dev/null 2>/dev/null && echo -falign-functions=64 -falign-loops=64)
-$(BUILD)/bench/%.o: tests/bench/%.c $(wildcard tests/bench/*.h) $(wildcard tests/oracle/*.h) $(KIT_HDR) Makefile
-	@mkdir -p $(@D)
+$(BUILD)/bench/%.o: tests/bench/%.c $(wildcard tests/bench/*.h) $(wildcard tests/oracle/*.h) $(KIT_HDR) Makefile | $$(@D)/.
 	$(CC) $(CFLAGS) $(BENCH_ALIGN) -Ilabs -c $< -o $@
-$(BUILD)/bench/solutions/%.o: solutions/%.c $(KIT_HDR) Makefile
-	@mkdir -p $(@D)
+$(BUILD)/bench/solutions/%.o: solutions/%.c $(KIT_HDR) Makefile | $$(@D)/.
 	$(CC) $(CFLAGS) $(BENCH_ALIGN) -Ilabs -c $< -o $@
 # The fast path's sqrt is vectorised only if it need not set errno (no result changes).
 $(BUILD)/bench/fastpath.o $(BUILD)/bench/measure.o: CFLAGS += -fno-math-errno
 $(BUILD)/bin/bench: $(BENCH_OBJ) $(STAGES:%=$(BUILD)/bench/solutions/%.o) \
-                    $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a
-	@mkdir -p $(@D)
+                    $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 all: $(if $(HAVE_BENCH),$(BUILD)/bin/bench)
 # `make bench` also measures the ratio in bench-reordered, the same objects
@@ -410,8 +375,7 @@ all: $(if $(HAVE_BENCH),$(BUILD)/bin/bench)
 # that the placement no longer moves it (tests/bench/README.md).
 reverse = $(if $(1),$(call reverse,$(wordlist 2,$(words $(1)),$(1))) $(firstword $(1)))
 $(BUILD)/bin/bench-reordered: $(BENCH_OBJ) $(STAGES:%=$(BUILD)/bench/solutions/%.o) \
-                              $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a
-	@mkdir -p $(@D)
+                              $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(CC) $(CFLAGS) $(call reverse,$(filter %.o,$^)) $(filter %.a,$^) -o $@ $(LDLIBS)
 bench: $(BUILD)/bin/bench $(BUILD)/bin/bench-reordered
 	@mkdir -p out/bench
@@ -420,8 +384,7 @@ bench: $(BUILD)/bin/bench $(BUILD)/bin/bench-reordered
 
 # ---- the kit's own tests ---------------------------------------------------
 # The renderer with the reference stages, sanitized (tests/suites/render_cli.sh).
-$(ASAN)/bin/render-solutions: $(ASAN)/kit/render_main.o $(REF_ASAN) $(ASAN)/kit/libkit.a
-	@mkdir -p $(@D)
+$(ASAN)/bin/render-solutions: $(ASAN)/kit/render_main.o $(REF_ASAN) $(ASAN)/kit/libkit.a | $$(@D)/.
 	$(CC) $(SANFLAGS) $(THREADS) $^ -o $@ $(LDLIBS)
 
 # What the tests need built (`make -j2 test-build` builds it on two cores).
