@@ -85,17 +85,28 @@ core=$tmp/core.conf
 sed 's/^\(timeout\) .*/\1 0.25/' tests/weights.conf >"$core"
 only45=$tmp/parts45.conf
 sed 's/^parts .*/parts 4 5/' "$core" >"$only45"
-mkdir "$tmp/subs" "$tmp/subs45"
+mkdir "$tmp/subs" "$tmp/subs45" "$tmp/reference"
+cp solutions/part*.c "$tmp/reference/"
+# Two processes a submission (a copy of the reference, then its own files
+# over it): the shell's own words do the rest.
 for dir in tests/selftest/*/; do
-    name=$(basename "$dir")
+    name=${dir%/}
+    name=${name##*/}
+    # The optional parts' class: files part4_* or part5_* only.
+    has45=no hasother=no
+    for f in "$dir"part*; do
+        case ${f##*/} in
+        part4_* | part5_*) has45=yes ;;
+        part\*) ;;
+        *) hasother=yes ;;
+        esac
+    done
     class=subs
-    if ls "$dir" | grep -q '^part[45]_' && ! ls "$dir" | grep '^part' | grep -qv '^part[45]_'; then
-        class=subs45
-    fi
+    [ "$has45" = yes ] && [ "$hasother" = no ] && class=subs45
     sub="$tmp/$class/$name"
-    mkdir "$sub"
-    cp solutions/part*.c "$sub/"
-    for f in "$dir"part*.c; do [ -f "$f" ] && cp "$f" "$sub/"; done
+    cp -R "$tmp/reference" "$sub"
+    set -- "$dir"part*.c
+    [ -f "$1" ] && cp "$@" "$sub/"
     [ -f "$dir/MISSING" ] && rm -f "$sub/$(cat "$dir/MISSING")"
 done
 # A file that includes the reference by its absolute path must be refused.
