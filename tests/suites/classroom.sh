@@ -193,6 +193,18 @@ fi
 check "the student kit's grader builds" [ -x "$kit/out/build/bin/grade" ]
 [ -x "$kit/out/build/bin/grade" ] || { tail -n 20 "$tmp/build.log"; finish; }
 
+# reporter_env MAP OUTPUTS: the reporter's environment, "VAR=VALUE" for
+# each "VAR ID" line of MAP, VALUE being what OUTPUTS holds after "ID=" (as
+# the workflow passes the grade step's outputs); one awk for all runners.
+reporter_env() {
+    awk 'NR == FNR { var[++n] = $1; id[n] = $2; next }
+         { k = index($0, "=") }
+         k > 1 { key = substr($0, 1, k - 1)
+                 v = (key in val) ? val[key] "\n" substr($0, k + 1) : substr($0, k + 1)
+                 val[key] = v }
+         END { for (i = 1; i <= n; i++) print var[i] "=" val[id[i]] }' "$1" "$2"
+}
+
 # grade_kit LABEL SUBMISSION: make grade in the kit, CLASSROOM standing in
 # for $GITHUB_OUTPUT (with an earlier step's line in it), then the
 # environment the workflow gives the reporter.
@@ -204,9 +216,7 @@ grade_kit() {
         sh -c "head -n 1 '$tmp/$label.outputs' | grep -qx 'earlier=an output of an earlier step'"
     check "$label: one line per runner of the workflow, in its order" \
         sh -c "sed -n '2,\$p' '$tmp/$label.outputs' | cut -d= -f1 | paste -s -d, - | grep -qx '$runners'"
-    while read -r var id; do
-        printf '%s=%s\n' "$var" "$(sed -n "s/^$id=//p" "$tmp/$label.outputs")"
-    done <"$tmp/envmap" >"$tmp/$label.env"
+    reporter_env "$tmp/envmap" "$tmp/$label.outputs" >"$tmp/$label.env"
     longest=$(awk '{ if (length($0) > n) n = length($0) } END { print n + 0 }' "$tmp/$label.outputs")
     check "$label: every runner's results are under 64 KB (an environment variable may hold 128 KB): $longest bytes" \
         [ "$longest" -lt 65536 ]
@@ -239,9 +249,7 @@ sed -n 's/^          \([A-Za-z0-9_-]*\): "\${{ steps\.grade\.outputs\.\([A-Za-z0
 (cd "$kit" && make grade SUBMISSION="$tmp/full" CLASSROOM="$tmp/all.outputs") >"$tmp/all.kit" 2>&1
 check "Parts 4 and 5 on: the grader writes the workflow's runners, in its order" \
     sh -c "cut -d= -f1 '$tmp/all.outputs' | paste -s -d, - | grep -qx '$runners_all'"
-while read -r var id; do
-    printf '%s=%s\n' "$var" "$(sed -n "s/^$id=//p" "$tmp/all.outputs")"
-done <"$tmp/envmap.all" >"$tmp/all.env"
+reporter_env "$tmp/envmap.all" "$tmp/all.outputs" >"$tmp/all.env"
 totals "student kit, Parts 1 to 5, reference" "$tmp/all.kit" "$runners_all" "$tmp/all.env" pass
 check "student kit, Parts 1 to 5, reference: 140 / 140" grep -q '^Score: 140 / 140' "$tmp/all.kit"
 
