@@ -87,8 +87,8 @@ only45=$tmp/parts45.conf
 sed 's/^parts .*/parts 4 5/' "$core" >"$only45"
 mkdir "$tmp/subs" "$tmp/subs45" "$tmp/reference"
 cp solutions/part*.c "$tmp/reference/"
-# Two processes a submission (a copy of the reference, then its own files
-# over it): the shell's own words do the rest.
+# Each submission: a copy of the reference, then its own files over it (two
+# processes; the shell itself tells the classes apart).
 for dir in tests/selftest/*/; do
     name=${dir%/}
     name=${name##*/}
@@ -110,8 +110,7 @@ for dir in tests/selftest/*/; do
     [ -f "$dir/MISSING" ] && rm -f "$sub/$(cat "$dir/MISSING")"
 done
 # A file that includes the reference by its absolute path must be refused.
-mkdir "$tmp/subs/hostile-include-reference"
-cp solutions/part*.c "$tmp/subs/hostile-include-reference/"
+cp -R "$tmp/reference" "$tmp/subs/hostile-include-reference"
 printf '#include "%s/solutions/part1_image_plane.c"\n' "$root" \
     >"$tmp/subs/hostile-include-reference/part1_image_plane.c"
 mkdir -p "$tmp/expect/hostile-include-reference"
@@ -121,8 +120,7 @@ printf 'part 1\noutput refused\n' >"$tmp/expect/hostile-include-reference/expect
 # The refusal must not depend on that.
 mkdir -p out/tests/private && chmod 700 out/tests/private
 cp solutions/part1_image_plane.c out/tests/private/secret.c
-mkdir "$tmp/subs/hostile-include-unreadable"
-cp solutions/part*.c "$tmp/subs/hostile-include-unreadable/"
+cp -R "$tmp/reference" "$tmp/subs/hostile-include-unreadable"
 printf '#include "%s/out/tests/private/secret.c"\n' "$root" \
     >"$tmp/subs/hostile-include-unreadable/part1_image_plane.c"
 mkdir -p "$tmp/expect/hostile-include-unreadable"
