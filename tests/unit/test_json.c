@@ -345,10 +345,16 @@ static void test_numbers(void)
 
 static void test_numbers_round_trip(void)
 {
-    for (int k = 0; k < 100000; k++) {
+    /* random bits, then every power of two and the doubles on either side
+     * of it (where those below lie twice as close as those above) */
+    for (int k = 0; k < 100000 + 3 * 2098; k++) {
         uint64_t bits = rng_next();
         double x;
         memcpy(&x, &bits, sizeof x);
+        if (k >= 100000) {
+            double p = ldexp(1.0, (k - 100000) / 3 - 1074);
+            x = (k - 100000) % 3 == 0 ? p : nextafter(p, (k - 100000) % 3 == 1 ? 0 : INFINITY);
+        }
         JsonWriter w;
         json_init(&w, 0);
         json_number(&w, x);
