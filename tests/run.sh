@@ -77,15 +77,21 @@ if [ $# -gt 0 ]; then
     mv "$items.only" "$items"
 fi
 
-# lane_of NAME: the lane a suite runs in; "alone" for the suites that run
-# after all the lanes, by themselves (signals.sh runs code that signals
-# every process of the tests' unprivileged user, other suites' included).
+# lane_of NAME: sets lane to the lane a suite runs in (a variable, not
+# output, so that no subshell is started per item); "alone" for the suites
+# that run after all the lanes, by themselves (signals.sh runs code that
+# signals every process of the tests' unprivileged user, other suites'
+# included).  A lane is a file name: characters other than letters,
+# digits, "_" and "." become "_".
 lane_of() {
     case $1 in
-    unit*) echo unit ;;
-    student_kit.sh | classroom.sh) echo kit ;;
-    signals.sh) echo alone ;;
-    *) echo "$1" ;;
+    unit*) lane=unit ;;
+    student_kit.sh | classroom.sh) lane=kit ;;
+    signals.sh) lane=alone ;;
+    *) lane=$1 ;;
+    esac
+    case $lane in
+    *[!a-zA-Z0-9_.]*) lane=$(printf '%s\n' "$lane" | tr -c 'a-zA-Z0-9_.\n' _) ;;
     esac
 }
 
@@ -101,7 +107,8 @@ run_item() {
 n=0
 while IFS='|' read -r name cmd; do
     n=$((n + 1))
-    printf '%s|%s|%s\n' "$n" "$name" "$cmd" >>"$dir/lane.$(lane_of "$name" | tr -c 'a-zA-Z0-9_.\n' _)"
+    lane_of "$name"
+    printf '%s|%s|%s\n' "$n" "$name" "$cmd" >>"$dir/lane.$lane"
 done <"$items"
 
 # The lanes in the order the workers take them: the longest first (the
@@ -109,11 +116,14 @@ done <"$items"
 # A worker takes the first lane no other worker has claimed (mkdir claims
 # a lane at most once).
 queue=$dir/queue
-for lane in grader.sh kit unit prairielearn.sh render_cli.sh report.sh gradescope.sh; do
+first="grader.sh kit unit prairielearn.sh render_cli.sh report.sh gradescope.sh"
+for lane in $first; do
     [ -f "$dir/lane.$lane" ] && echo "$dir/lane.$lane"
 done >"$queue"
-for lane in "$dir"/lane.*; do
-    [ -f "$lane" ] && [ "$lane" != "$dir/lane.alone" ] && ! grep -qxF "$lane" "$queue" && echo "$lane"
+for path in "$dir"/lane.*; do
+    lane=${path##*/lane.}
+    case " $first alone " in *" $lane "*) continue ;; esac
+    [ -f "$path" ] && echo "$path"
 done >>"$queue"
 workers=${TEST_WORKERS:-$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 2)}
 case $workers in '' | *[!0-9]* | 0) workers=2 ;; esac
@@ -136,31 +146,68 @@ if [ -f "$dir/lane.alone" ]; then
     done <"$dir/lane.alone"
 fi
 
-passed=0
-failed=0
-k=0
-while IFS='|' read -r name cmd; do
-    k=$((k + 1))
-    out=$dir/$k.out
-    status=$(cat "$dir/$k.status" 2>/dev/null || echo 127)
-    printf '== %s (%s s)\n' "$name" "$(cat "$dir/$k.seconds" 2>/dev/null || echo '?')"
-    cat "$out"
-    cat "$out" >>"$log"
-    grep '^FAIL' "$out" | sed "s|^|   $name: |" >>"$failures"
-    counts=$(tail -n 1 "$out" | sed -n 's/^\(.*[^0-9]\)\{0,1\}\([0-9][0-9]*\) passed, \([0-9][0-9]*\) failed.*$/\2 \3/p')
-    if [ -z "$counts" ]; then
-        echo "   $name printed no count (exit $status): counted as 1 failed" | tee -a "$failures"
-        failed=$((failed + 1))
-        continue
-    fi
-    set -- $counts
-    passed=$((passed + $1))
-    failed=$((failed + $2))
-    if [ "$status" -ne 0 ] && [ "$2" -eq 0 ]; then
-        echo "   $name exited $status with no failure counted: counted as 1 failed" | tee -a "$failures"
-        failed=$((failed + 1))
-    fi
-done <"$items"
+# One awk shows every item's output in order, with its name and seconds,
+# appends it to the log, collects the failing checks' lines and adds up
+# the counts, which it leaves in $dir/counts (one process, not ten an item
+# at the end of the run).  An item's count is the last "N passed, N
+# failed" of its last line; one that printed none, or that exited non-zero
+# with no failure counted, counts as 1 failed.
+awk -F'|' -v dir="$dir" -v logfile="$log" -v failures="$failures" '
+    function first_line(file,   line) {
+        line = ""
+        if ((getline line <file) <= 0)
+            line = ""
+        close(file)
+        return line
+    }
+    function note(text) {
+        print text
+        print text >>failures
+    }
+    {
+        k++
+        name = $1
+        status = first_line(dir "/" k ".status")
+        if (status == "")
+            status = 127
+        seconds = first_line(dir "/" k ".seconds")
+        if (seconds == "")
+            seconds = "?"
+        printf "== %s (%s s)\n", name, seconds
+        out = dir "/" k ".out"
+        last = ""
+        while ((getline line <out) > 0) {
+            print line
+            print line >>logfile
+            if (line ~ /^FAIL/)
+                print "   " name ": " line >>failures
+            last = line
+        }
+        close(out)
+        p = f = ""
+        rest = last
+        while (match(rest, /[0-9]+ passed, [0-9]+ failed/)) {
+            if (RSTART == 1 || substr(rest, RSTART - 1, 1) !~ /[0-9]/) {
+                split(substr(rest, RSTART, RLENGTH), w, " ")
+                p = w[1]
+                f = w[3]
+            }
+            rest = substr(rest, RSTART + RLENGTH)
+        }
+        if (p == "") {
+            note("   " name " printed no count (exit " status "): counted as 1 failed")
+            failed++
+            next
+        }
+        passed += p
+        failed += f
+        if (status != 0 && f == 0) {
+            note("   " name " exited " status " with no failure counted: counted as 1 failed")
+            failed++
+        }
+    }
+    END { print passed + 0, failed + 0 >dir "/counts" }' "$items"
+read -r passed failed <"$dir/counts"
 
 if [ -s "$failures" ]; then
     echo
@@ -195,6 +242,6 @@ if [ -n "${GRADE_KEEP_BUILDS:-}" ]; then
     [ "$every_suite" = yes ] && sh tests/tools/ccmemo_keep.sh prune "$gmemo" "$dir/started"
 fi
 plural() { [ "$1" -eq 1 ] && echo "$1 $2" || echo "$1 ${2}s"; }
-echo "took $(($(date +%s) - start)) s ($(plural "$k" suite): $(plural "$lanes" lane) shared by $(plural "$workers" worker), then $alone alone)"
+echo "took $(($(date +%s) - start)) s ($(plural "$n" suite): $(plural "$lanes" lane) shared by $(plural "$workers" worker), then $alone alone)"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
