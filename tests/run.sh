@@ -27,8 +27,9 @@ mkdir -p "$dir"
 : >"$failures"
 start=$(date +%s)
 
-# Builds in the suites compile each distinct file once (tests/tools/ccmemo_main.c):
-# four suites build a packaged kit from the same sources.  The memo is kept
+# Builds in the suites compile each distinct file once, and link each
+# distinct program once (tests/tools/ccmemo_main.c): four suites build a
+# packaged kit from the same sources.  The memo is kept
 # from one run to the next while the compiler is the same one (its
 # --version and the size and time of its files); a run of every suite
 # then drops the entries it did not use (tests/tools/ccmemo_keep.sh).
@@ -223,6 +224,10 @@ if [ -n "${CC_MEMO:-}" ] && [ -f "$memo/log" ]; then
     direct=$(grep -c '^used-direct ' "$memo/log")
     [ $((made + used)) -gt 0 ] &&
         echo "compiles in the suites: $made compiled, $used served from the memo ($direct without preprocessing)"
+    linked=$(grep -c '^linked ' "$memo/log")
+    served=$(grep -c '^used-link ' "$memo/log")
+    [ $((linked + served)) -gt 0 ] &&
+        echo "links in the suites: $linked linked, $served served from the memo"
     # Every suite ran: what none of them used (nor compiled) goes.
     [ "$every_suite" = yes ] && sh tests/tools/ccmemo_keep.sh prune "$memo" "$dir/started"
 fi

@@ -23,12 +23,21 @@
  * for the same entry at once: one compiles, the other waits for it, or
  * takes the compile over if the first has died (its pid is in the lock).
  *
- * Anything else (linking, -E, no CC_MEMO, as in the grader's sandbox, which
- * passes the compiler only PATH) runs the real compiler, which is the next
- * cc on PATH after the directories holding this program's marker file
- * "ccmemo.marker".  The memo's file "log" has a line for each compile it
- * saw: "compiled", "used", "used-direct" or "not-kept", the file and the
- * directory.  An
+ * A link "cc FLAGS FILES.o/.a -o PROG -lLIB..." is kept the same way: its
+ * key is the real compiler's path, the arguments but -o PROG, and the
+ * name, size and bytes of every object and archive it links, compared
+ * whole; the program is copied out with the mode a new program gets.
+ * Only links whose arguments are all of a few known kinds (-std=, -O, -W
+ * but not -Wl, -f, -g, -pthread, -rdynamic, -no-pie, -lNAME, and files
+ * ending in .o or .a) are kept: nothing else they read can change without
+ * the compiler changing too, and then tests/tools/ccmemo_keep.sh empties
+ * the memo (it keys on the linker and the C library's start file too).
+ * Anything else (another link, -E, no CC_MEMO, as in the grader's sandbox,
+ * which passes the compiler only PATH) runs the real compiler, which is
+ * the next cc on PATH after the directories holding this program's marker
+ * file "ccmemo.marker".  The memo's file "log" has a line for each compile
+ * or link it saw: "compiled", "used", "used-direct", "linked",
+ * "used-link" or "not-kept", the file and the directory.  An
  * entry's time is set when it is used, so that tests/run.sh, which keeps
  * the memo from run to run for the same compiler, can drop those a whole
  * run did not use.
@@ -120,6 +129,190 @@ static void log_use(const char *memo, const char *what, const char *src)
     }
 }
 
+/* Whether argument a of a link is of a kind the memo keeps: see the top. */
+static int link_flag_known(const char *a)
+{
+    static const char *const exact[] = { "-pthread", "-rdynamic", "-no-pie" };
+    for (size_t k = 0; k < sizeof exact / sizeof exact[0]; k++)
+        if (strcmp(a, exact[k]) == 0)
+            return 1;
+    if (strncmp(a, "-Wl", 3) == 0)
+        return 0;
+    if (strncmp(a, "-std=", 5) == 0 || strncmp(a, "-O", 2) == 0 || strncmp(a, "-W", 2) == 0 ||
+        strncmp(a, "-f", 2) == 0 || strncmp(a, "-g", 2) == 0)
+        return 1;
+    if (strncmp(a, "-l", 2) == 0 && a[2] != '\0') {
+        for (const char *p = a + 2; *p; p++)
+            if (!((*p >= 'a' && *p <= 'z') || (*p >= '0' && *p <= '9') || *p == '_'))
+                return 0;
+        return 1;
+    }
+    return 0;
+}
+
+/* Appends n bytes to (*key, *len, *cap); 0, or -1 out of memory or past
+ * KEY_MAX. */
+static int key_add(char **key, size_t *len, size_t *cap, const void *bytes, size_t n)
+{
+    if (n > KEY_MAX - *len)
+        return -1;
+    if (*len + n > *cap) {
+        size_t c = *cap ? *cap : 4096;
+        while (c < *len + n)
+            c *= 2;
+        char *more = realloc(*key, c);
+        if (!more)
+            return -1;
+        *key = more;
+        *cap = c;
+    }
+    memcpy(*key + *len, bytes, n);
+    *len += n;
+    return 0;
+}
+
+/* The key of a link the memo keeps (see the top), malloc'd with *len set;
+ * NULL when argv is not such a link. */
+static char *link_key(int argc, char **argv, int oarg, size_t *len)
+{
+    char *key = NULL;
+    size_t cap = 0;
+    *len = 0;
+    int files = 0, bad = key_add(&key, len, &cap, "link\n", 5) ||
+                         key_add(&key, len, &cap, real_cc, strlen(real_cc) + 1);
+    for (int k = 1; k < argc && !bad; k++) {
+        const char *a = argv[k];
+        size_t n = strlen(a);
+        if (k == oarg || k == oarg - 1)
+            continue;
+        if (a[0] == '-') {
+            bad = !link_flag_known(a) || key_add(&key, len, &cap, a, n + 1);
+            continue;
+        }
+        struct stat st;
+        if (n < 3 || (strcmp(a + n - 2, ".o") != 0 && strcmp(a + n - 2, ".a") != 0) ||
+            stat(a, &st) != 0 || !S_ISREG(st.st_mode)) {
+            bad = 1;
+            break;
+        }
+        size_t size = 0;
+        char *bytes = kit_load_file(a, KEY_MAX, &size);
+        char head[64];
+        int hn = snprintf(head, sizeof head, "\n%zu\n", size);
+        bad = !bytes || key_add(&key, len, &cap, a, n) || key_add(&key, len, &cap, head, (size_t)hn) ||
+              key_add(&key, len, &cap, bytes, size);
+        free(bytes);
+        files++;
+    }
+    if (bad || files == 0) {
+        free(key);
+        return NULL;
+    }
+    return key;
+}
+
+/* Steps 2 and 3 for a key: the entry's object (or program) to obj and its
+ * messages to stderr, or, with no entry, argv run and a successful result
+ * kept.  made and used are the log's words for the two; name is what the
+ * log names.  Returns argv's exit status (0 when served); *served set, and
+ * what the compiler said in *messages (malloc'd, *mlen) for a result that
+ * is there. */
+static int serve_or_make(const char *memo, const char *key, size_t keylen, const char *obj,
+                         char **argv, const char *made, const char *used, const char *name,
+                         int *served, char **messages, size_t *mlen)
+{
+    char entry[4096], lock[4200];
+    snprintf(entry, sizeof entry, "%s/%016llx", memo,
+             (unsigned long long)ccmemo_fnv1a(key, keylen, 14695981039346656037u));
+    snprintf(lock, sizeof lock, "%s.lock", entry);
+    *served = 0;
+    *messages = NULL;
+    *mlen = 0;
+
+    /* 2. An entry, or the lock to make it, or wait for who holds it.  The
+     * lock holds its maker's pid: a lock whose maker has died (a build
+     * interrupted while it compiled) is taken over, not waited for. */
+    char holder[4300];
+    snprintf(holder, sizeof holder, "%s/pid", lock);
+    struct timespec nap = { 0, 20 * 1000 * 1000 };
+    for (long waited = 0;; waited++) {
+        if (use_entry(entry, key, keylen, obj, messages, mlen) == 0) {
+            utimensat(AT_FDCWD, entry, NULL, 0);   /* used now: tests/run.sh keeps it */
+            log_use(memo, used, name);
+            *served = 1;
+            return 0;
+        }
+        if (mkdir(lock, 0755) == 0) {
+            char mine[32];
+            int n = snprintf(mine, sizeof mine, "%ld\n", (long)getpid());
+            put(holder, mine, (size_t)n);
+            break;
+        }
+        if (errno != EEXIST || waited > WAIT_SECONDS * 50)
+            run_real(argv);
+        struct stat est;
+        if (stat(entry, &est) == 0 && waited > 0)
+            run_real(argv);                     /* an entry for another key */
+        size_t n;
+        char *kept = kit_load_file(holder, KEY_MAX, &n);
+        long who = kept ? strtol(kept, NULL, 10) : 0;
+        free(kept);
+        if (who > 0 && kill((pid_t)who, 0) != 0 && errno == ESRCH) {
+            unlink(holder);                     /* its maker is gone */
+            rmdir(lock);
+            continue;
+        }
+        nanosleep(&nap, NULL);
+    }
+
+    /* 3. Compile (or link), with the messages kept, and keep a successful
+     * result. */
+    char mpath[4300];
+    snprintf(mpath, sizeof mpath, "%s/messages.%ld", memo, (long)getpid());
+    int mfd = open(mpath, O_RDWR | O_CREAT | O_TRUNC, 0644);
+    argv[0] = real_cc;
+    int status = mfd < 0 ? -1 : ccmemo_run(argv, -1, mfd);
+    char *m = NULL;
+    if (mfd >= 0 && lseek(mfd, 0, SEEK_SET) == 0)
+        m = ccmemo_slurp_fd(mfd, KEY_MAX, mlen);
+    if (mfd >= 0)
+        close(mfd);
+    unlink(mpath);
+    if (m)
+        ccmemo_write_all(2, m, *mlen);
+    if (status == 0) {
+        char tmpdir[4300], path[4400];
+        snprintf(tmpdir, sizeof tmpdir, "%s.%ld.new", entry, (long)getpid());
+        size_t on;
+        char *o = kit_load_file(obj, KEY_MAX, &on);
+        int ok = o && mkdir(tmpdir, 0755) == 0;
+        if (ok) {
+            snprintf(path, sizeof path, "%s/object", tmpdir);
+            ok = put(path, o, on) == 0;
+            snprintf(path, sizeof path, "%s/messages", tmpdir);
+            ok = ok && put(path, m ? m : "", m ? *mlen : 0) == 0;
+            snprintf(path, sizeof path, "%s/key", tmpdir);
+            ok = ok && put(path, key, keylen) == 0;   /* last: an entry with a key is whole */
+            if (!ok || rename(tmpdir, entry) != 0)
+                log_use(memo, "not-kept", name);
+        }
+        free(o);
+        log_use(memo, made, name);
+    }
+    unlink(holder);
+    rmdir(lock);
+    if (status < 0)
+        run_real(argv);
+    if (status != 0) {
+        free(m);
+        *messages = NULL;
+        *mlen = 0;
+    } else {
+        *messages = m;
+    }
+    return status;
+}
+
 int main(int argc, char **argv)
 {
     if (find_real_cc() != 0) {
@@ -128,7 +321,7 @@ int main(int argc, char **argv)
     }
     const char *memo = getenv("CC_MEMO");
     const char *obj = NULL, *src = NULL;
-    int compile = 0, oarg = -1;
+    int compile = 0, oarg = -1, others = 0;
     for (int k = 1; k < argc; k++) {
         const char *a = argv[k];
         size_t n = strlen(a);
@@ -138,13 +331,35 @@ int main(int argc, char **argv)
             obj = argv[oarg = ++k];
         else if (a[0] == '-' && (a[1] == 'E' || a[1] == 'S' || a[1] == 'M' || a[1] == 'o' ||
                                  strcmp(a, "-") == 0))
-            compile = -1;                       /* not a plain compile */
+            compile = -1;                       /* neither a plain compile nor a link */
         else if (a[0] != '-' && n > 2 && strcmp(a + n - 2, ".c") == 0 && !src)
             src = a;
         else if (a[0] != '-')
-            compile = -1;                       /* another input */
+            others++;                           /* a link's input, or not a plain compile */
     }
-    if (!memo || !*memo || compile != 1 || !obj || !src)
+    if (!memo || !*memo || !obj)
+        run_real(argv);
+    int served;
+    char *said = NULL;
+    size_t said_len = 0;
+    if (compile == 0 && !src && others > 0) {
+        /* A link: kept if it is of the kinds known (see the top). */
+        size_t keylen = 0;
+        char *key = link_key(argc, argv, oarg, &keylen);
+        if (!key)
+            run_real(argv);
+        int status = serve_or_make(memo, key, keylen, obj, argv, "linked", "used-link", obj,
+                                   &served, &said, &said_len);
+        if (status == 0 && served) {
+            mode_t mask = umask(022);           /* the mode a new program gets */
+            umask(mask);
+            chmod(obj, 0777 & ~mask);
+        }
+        free(said);
+        free(key);
+        return status;
+    }
+    if (compile != 1 || !src || others > 0)
         run_real(argv);
 
     /* 0. The direct way (ccmemo_direct.h): no preprocessing if the files
@@ -208,91 +423,11 @@ int main(int argc, char **argv)
     memcpy(key + keylen, text, textlen);
     keylen += textlen;
 
-    char entry[4096], lock[4200];
-    snprintf(entry, sizeof entry, "%s/%016llx", memo,
-             (unsigned long long)ccmemo_fnv1a(key, keylen, 14695981039346656037u));
-    snprintf(lock, sizeof lock, "%s.lock", entry);
-
-    /* 2. An entry, or the lock to make it, or wait for who holds it.  The
-     * lock holds its maker's pid: a lock whose maker has died (a build
-     * interrupted while it compiled) is taken over, not waited for. */
-    char holder[4300];
-    snprintf(holder, sizeof holder, "%s/pid", lock);
-    struct timespec nap = { 0, 20 * 1000 * 1000 };
-    for (long waited = 0;; waited++) {
-        char *kept_messages = NULL;
-        size_t kept_len = 0;
-        if (use_entry(entry, key, keylen, obj, &kept_messages, &kept_len) == 0) {
-            utimensat(AT_FDCWD, entry, NULL, 0);   /* used now: tests/run.sh keeps it */
-            log_use(memo, "used", src);
-            if (dkey)
-                direct_keep(memo, dkey, dlen, pre, np - 1, src, text, textlen, obj, kept_messages,
-                            kept_len);
-            return 0;
-        }
-        if (mkdir(lock, 0755) == 0) {
-            char mine[32];
-            int n = snprintf(mine, sizeof mine, "%ld\n", (long)getpid());
-            put(holder, mine, (size_t)n);
-            break;
-        }
-        if (errno != EEXIST || waited > WAIT_SECONDS * 50)
-            run_real(argv);
-        struct stat est;
-        if (stat(entry, &est) == 0 && waited > 0)
-            run_real(argv);                     /* an entry for another key */
-        size_t n;
-        char *kept = kit_load_file(holder, KEY_MAX, &n);
-        long who = kept ? strtol(kept, NULL, 10) : 0;
-        free(kept);
-        if (who > 0 && kill((pid_t)who, 0) != 0 && errno == ESRCH) {
-            unlink(holder);                     /* its maker is gone */
-            rmdir(lock);
-            continue;
-        }
-        nanosleep(&nap, NULL);
-    }
-
-    /* 3. Compile, with the messages kept, and keep a successful result. */
-    char messages[4300];
-    snprintf(messages, sizeof messages, "%s/messages.%ld", memo, (long)getpid());
-    int mfd = open(messages, O_RDWR | O_CREAT | O_TRUNC, 0644);
-    argv[0] = real_cc;
-    int status = mfd < 0 ? -1 : ccmemo_run(argv, -1, mfd);
-    size_t mlen = 0;
-    char *m = NULL;
-    if (mfd >= 0 && lseek(mfd, 0, SEEK_SET) == 0)
-        m = ccmemo_slurp_fd(mfd, KEY_MAX, &mlen);
-    if (mfd >= 0)
-        close(mfd);
-    unlink(messages);
-    if (m)
-        ccmemo_write_all(2, m, mlen);
-    if (status == 0) {
-        char tmpdir[4300], path[4400];
-        snprintf(tmpdir, sizeof tmpdir, "%s.%ld.new", entry, (long)getpid());
-        size_t on;
-        char *o = kit_load_file(obj, KEY_MAX, &on);
-        int ok = o && mkdir(tmpdir, 0755) == 0;
-        if (ok) {
-            snprintf(path, sizeof path, "%s/object", tmpdir);
-            ok = put(path, o, on) == 0;
-            snprintf(path, sizeof path, "%s/messages", tmpdir);
-            ok = ok && put(path, m ? m : "", m ? mlen : 0) == 0;
-            snprintf(path, sizeof path, "%s/key", tmpdir);
-            ok = ok && put(path, key, keylen) == 0;   /* last: an entry with a key is whole */
-            if (!ok || rename(tmpdir, entry) != 0)
-                log_use(memo, "not-kept", src);
-        }
-        free(o);
-        log_use(memo, "compiled", src);
-        if (dkey)
-            direct_keep(memo, dkey, dlen, pre, np - 1, src, text, textlen, obj, m, mlen);
-    }
-    unlink(holder);
-    rmdir(lock);
-    free(m);
-    if (status < 0)
-        run_real(argv);
+    /* 2 and 3; then 4, a direct entry for the next time. */
+    int status = serve_or_make(memo, key, keylen, obj, argv, "compiled", "used", src, &served, &said,
+                               &said_len);
+    if (status == 0 && dkey)
+        direct_keep(memo, dkey, dlen, pre, np - 1, src, text, textlen, obj, said, said_len);
+    free(said);
     return status;
 }
