@@ -11,8 +11,9 @@
 # - a compile that fails is not kept, and says why as the compiler does;
 # - a link of objects and archives is kept the same way: served, it gives
 #   the direct link's program, byte for byte, executable; an object with
-#   other bytes, or other flags, link again; an argument of a kind it does
-#   not know, or a link that fails, keeps nothing;
+#   other bytes, other flags or another LIBRARY_PATH link again; an
+#   argument of a kind it does not know, or a link that fails, keeps
+#   nothing;
 # - compiles and links without CC_MEMO (the grader's sandbox passes only
 #   PATH) run the compiler itself;
 # - a lock whose maker has died is taken over, one whose maker lives is
@@ -106,6 +107,9 @@ check "... saying why, as the linker does" grep -q "nowhere" "$tmp/err-link"
 memo lost.o -o lost 2>/dev/null
 check "... and is not kept (log: $(count linked) linked, $(count used-link) used-link)" \
     [ "$(count linked)" -eq 3 -a "$(count used-link)" -eq 1 ]
+(cd "$tmp/src" && LIBRARY_PATH=$tmp/src PATH=${memo_cc%/cc}:$PATH CC_MEMO=$tmp/memo cc -O2 main.o a1.o -o prog6 -lm)
+check "a LIBRARY_PATH of another value links again (log: $(count linked) linked)" \
+    [ -x "$tmp/src/prog6" -a "$(count linked)" -eq 4 -a "$(count used-link)" -eq 1 ]
 (unset CC_MEMO; cd "$tmp/src" && PATH=${memo_cc%/cc}:$PATH cc $flags -o nomemo.o 2>/dev/null)
 check "without CC_MEMO it compiles, keeping nothing" \
     [ -f "$tmp/src/nomemo.o" -a "$(count compiled)" -eq 4 -a "$(served)" -eq 1 ]

@@ -29,9 +29,12 @@
  * whole; the program is copied out with the mode a new program gets.
  * Only links whose arguments are all of a few known kinds (-std=, -O, -W
  * but not -Wl, -f, -g, -pthread, -rdynamic, -no-pie, -lNAME, and files
- * ending in .o or .a) are kept: nothing else they read can change without
- * the compiler changing too, and then tests/tools/ccmemo_keep.sh empties
- * the memo (it keys on the linker and the C library's start file too).
+ * ending in .o or .a) are kept, and the values of LIBRARY_PATH,
+ * GCC_EXEC_PREFIX, COMPILER_PATH and LD_RUN_PATH are part of the key:
+ * nothing else they read can change without the compiler changing too,
+ * and then
+ * tests/tools/ccmemo_keep.sh empties the memo (it keys on the linker and
+ * the C library's start file too).
  * Anything else (another link, -E, no CC_MEMO, as in the grader's sandbox,
  * which passes the compiler only PATH) runs the real compiler, which is
  * the next cc on PATH after the directories holding this program's marker
@@ -180,6 +183,15 @@ static char *link_key(int argc, char **argv, int oarg, size_t *len)
     *len = 0;
     int files = 0, bad = key_add(&key, len, &cap, "link\n", 5) ||
                          key_add(&key, len, &cap, real_cc, strlen(real_cc) + 1);
+    /* Where these are set, the linker may look for libraries and tools
+     * elsewhere: their values are part of the key. */
+    static const char *const moves[] = { "LIBRARY_PATH", "GCC_EXEC_PREFIX", "COMPILER_PATH",
+                                         "LD_RUN_PATH" };
+    for (size_t k = 0; k < sizeof moves / sizeof moves[0] && !bad; k++) {
+        const char *v = getenv(moves[k]);
+        bad = v && (key_add(&key, len, &cap, moves[k], strlen(moves[k])) ||
+                    key_add(&key, len, &cap, "=", 1) || key_add(&key, len, &cap, v, strlen(v) + 1));
+    }
     for (int k = 1; k < argc && !bad; k++) {
         const char *a = argv[k];
         size_t n = strlen(a);
