@@ -110,6 +110,11 @@ void fast_closest_m(const FastScene *fs, const float *fdx, const float *fdy, con
  * inside the sphere). */
 void fast_count_solves(const FastScene *fs, const double *dx, const double *dy, const double *dz,
                        int count, long *pairs, long *solved);
+/* The double fast path's filter alone, as fast_closest_d runs it (two
+ * spheres per pass where it can), with no solve: the (packet, sphere)
+ * pairs that pass.  The bench times it to split the fast path's time. */
+long fast_filter_only(const FastScene *fs, const double *dx, const double *dy, const double *dz,
+                      int count);
 
 /* ---- workload.c: rays -------------------------------------------------- */
 /* A set of rays in every layout a method may want. */
@@ -357,6 +362,9 @@ typedef struct {
     long ref_stage[REF_STAGES], ref_stage_pairs, ref_stage_wrong;
     /* the fast path's (packet, sphere) pairs on that workload, and those solved */
     long fast_pairs, fast_solved;
+    /* the filter alone (fast_filter_only) on that workload: Mtests per second,
+     * the median of the rounds, timed after the throughput rounds */
+    double fast_filter_mtests;
     /* ns per call on pairs of the ordinary scene that miss and that hit */
     double miss_ns[BENCH_MAX_METHODS], hit_ns[BENCH_MAX_METHODS];
     double hit_share;                    /* share of the scene's tests that hit */

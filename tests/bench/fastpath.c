@@ -223,3 +223,27 @@ void fast_count_solves(const FastScene *fs, const double *dx, const double *dy, 
         }
     }
 }
+
+long fast_filter_only(const FastScene *fs, const double *dx, const double *dy, const double *dz,
+                      int count)
+{
+    long passed = 0;
+    for (int p0 = 0; p0 < count; p0 += FAST_PACKET) {
+        int np = count - p0 < FAST_PACKET ? count - p0 : FAST_PACKET;
+        const double *rx, *ry, *rz;
+        double pad[3][FAST_PACKET];
+        packet_rays_d(dx, dy, dz, p0, np, pad, &rx, &ry, &rz);
+        for (int k = 0; k < fs->n; k++) {
+            if (!(fs->c[k] > 0)) {
+                passed++;
+            } else if (k + 1 < fs->n && fs->c[k + 1] > 0) {
+                unsigned pass = filter2_d(fs, k, rx, ry, rz);
+                passed += (long)(pass & 1u) + (long)(pass >> 1);
+                k++;
+            } else {
+                passed += filter_d(fs->cx[k], fs->cy[k], fs->cz[k], fs->bthr[k], rx, ry, rz);
+            }
+        }
+    }
+    return passed;
+}

@@ -491,9 +491,16 @@ static void md_fast_budget(FILE *f, const BenchResults *br, int fd)
                "divisions take %.1f of their own unit (%s of the pairs, %d rays each, %.1f "
                "cycles a ray at the %.2f sqrts and %.2f divisions per cycle measured, per "
                "number), which may overlap the multiplies and adds; the rest is the solves' "
-               "other arithmetic, loading rays, forming masks, the loops and calls.\n",
+               "other arithmetic, loading rays, forming masks, the loops and calls.",
             pair, filter, solve, P(solved), FAST_PACKET, ray_solve, c->sqrt_per_cycle,
             c->div_per_cycle);
+    if (br->fast_filter_mtests > 0) {
+        double alone = FAST_PACKET * c->mhz / br->fast_filter_mtests;
+        fprintf(f, " Timed alone, with no solve, the filter takes %.1f (%s of the ceiling's "
+                   "rate), so the solves and what surrounds them add %.1f.",
+                alone, P(filter / alone), pair - alone);
+    }
+    fprintf(f, "\n");
 }
 
 static void md_ceiling(FILE *f, const BenchResults *br)
