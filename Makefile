@@ -25,12 +25,14 @@ SAN_LINK   = $(SANFLAGS) $$($(CC) -static-libubsan -E -x c /dev/null >/dev/null 
 THREADS    = -pthread
 RENDER_LTO = -flto                      # the renderer inlines across the stage files; empty to disable
 LDLIBS     = -lm
+SYSTEM    := $(shell uname -s)
 # The archiver.  GNU ar loads every linker plugin installed beside it; where
 # clang's LLVMgold is one, that loads all of LLVM (about 70 ms and 3,400
 # page faults for the kit's dozen objects).  gcc-ar hands ar gcc's own
 # plugin, and ar loads that one alone (about 10 ms); the archive is the
-# same.  Found on PATH without starting a process; else plain ar.
-KIT_AR    ?= $(firstword $(wildcard $(addsuffix /gcc-ar,$(subst :, ,$(PATH)))) ar)
+# same.  On Linux, where ar is GNU ar, gcc-ar is used if it is on PATH
+# (found without starting a process); plain ar elsewhere.
+KIT_AR    ?= $(if $(filter Linux,$(SYSTEM)),$(firstword $(wildcard $(addsuffix /gcc-ar,$(subst :, ,$(PATH)))) ar),ar)
 
 # What the targets act on (all accept absolute paths).
 SUBMISSION ?= labs
@@ -210,7 +212,7 @@ $(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
 # fraction of linking a whole program, and the runner loads it (build.c).
 # runner_K holds the harness for Part K (HARNESS_PART's numbering) and, in
 # the instructor's kit, the reference for every other part.
-LOAD_RUNNERS := $(if $(filter Linux,$(shell uname -s)),1)
+LOAD_RUNNERS := $(if $(filter Linux,$(SYSTEM)),1)
 RUNNERS    = $(if $(LOAD_RUNNERS),$(foreach k,1 2 3 4 5 6,$(BUILD)/grader/runner_$(k)))
 RUNNER_DEFS = $(if $(HAVE_SOLUTIONS),-DHARNESS_REFS)
 $(BUILD)/grader/harness_load_%.o: tests/grader/harness.c tests/grader/harness_load.h \

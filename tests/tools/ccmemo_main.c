@@ -32,9 +32,8 @@
  * ending in .o or .a) are kept, and the values of LIBRARY_PATH,
  * GCC_EXEC_PREFIX, COMPILER_PATH and LD_RUN_PATH are part of the key:
  * nothing else they read can change without the compiler changing too,
- * and then
- * tests/tools/ccmemo_keep.sh empties the memo (it keys on the linker and
- * the C library's start file too).
+ * and then tests/tools/ccmemo_keep.sh empties the memo (it keys on the
+ * linker and the C library's start file too).
  * Anything else (another link, -E, no CC_MEMO, as in the grader's sandbox,
  * which passes the compiler only PATH) runs the real compiler, which is
  * the next cc on PATH after the directories holding this program's marker
