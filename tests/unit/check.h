@@ -11,6 +11,8 @@
  * Messages appear only on failure; the last line is "N passed, N failed".
  * An argument runs only the tests whose names contain it.
  * check_temp_dir and check_remove_tree give a test a directory of its own.
+ * check_xorshift32 is a small deterministic pseudo-random generator for a
+ * test's inputs.
  * Include it before any other header: it sets _POSIX_C_SOURCE.
  */
 #ifndef CHECK_H
@@ -20,6 +22,7 @@
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include <math.h>
 #include <signal.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -86,6 +89,17 @@ static void check_fail_(const char *file, int line, const char *fmt, ...)
     do { const char *h_ = (haystack), *n_ = (needle);                       \
          if (!h_ || !strstr(h_, n_))                                        \
              check_fail_(__FILE__, __LINE__, "%s is \"%s\", want it to contain \"%s\"", #haystack, h_ ? h_ : "(null)", n_); } while (0)
+
+/* The next number of a small deterministic pseudo-random generator
+ * (xorshift32) whose state is *state, not 0. */
+static inline uint32_t check_xorshift32(uint32_t *state)
+{
+    uint32_t x = *state;
+    x ^= x << 13;
+    x ^= x >> 17;
+    x ^= x << 5;
+    return *state = x;
+}
 
 /* A fresh empty directory under $TMPDIR or /tmp, named after name, in
  * path[]; 0, or -1 with a failed check. */

@@ -13,14 +13,9 @@
 
 static uint32_t rng_state = 2463534242u;
 
-/* A small deterministic pseudo-random generator (xorshift32). */
 static uint32_t rng_next(void)
 {
-    uint32_t x = rng_state;
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    return rng_state = x;
+    return check_xorshift32(&rng_state);
 }
 
 static uint32_t le32(const unsigned char *p)

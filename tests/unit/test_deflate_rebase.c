@@ -42,11 +42,7 @@ static uint32_t rng_state = 2463534242u;
 
 static uint32_t rng_next(void)
 {
-    uint32_t x = rng_state;
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    return rng_state = x;
+    return check_xorshift32(&rng_state);
 }
 
 /* n bytes of text with repeats near and far, random stretches and long

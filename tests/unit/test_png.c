@@ -15,14 +15,9 @@
 
 static uint32_t rng_state = 12345u;
 
-/* A small deterministic pseudo-random generator (xorshift32). */
 static uint32_t rng_next(void)
 {
-    uint32_t x = rng_state;
-    x ^= x << 13;
-    x ^= x >> 17;
-    x ^= x << 5;
-    return rng_state = x;
+    return check_xorshift32(&rng_state);
 }
 
 /* n pseudo-random bytes, malloc'd. */
