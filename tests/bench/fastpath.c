@@ -210,18 +210,10 @@ void fast_closest_m(const FastScene *fs, const float *fdx, const float *fdy, con
 void fast_count_solves(const FastScene *fs, const double *dx, const double *dy, const double *dz,
                        int count, long *pairs, long *solved)
 {
-    *pairs = *solved = 0;
-    for (int p0 = 0; p0 < count; p0 += FAST_PACKET) {
-        int np = count - p0 < FAST_PACKET ? count - p0 : FAST_PACKET;
-        const double *rx, *ry, *rz;
-        double pad[3][FAST_PACKET];
-        packet_rays_d(dx, dy, dz, p0, np, pad, &rx, &ry, &rz);
-        for (int k = 0; k < fs->n; k++) {
-            (*pairs)++;
-            if (!(fs->c[k] > 0) || filter_d(fs->cx[k], fs->cy[k], fs->cz[k], fs->bthr[k], rx, ry, rz))
-                (*solved)++;
-        }
-    }
+    /* A pair is solved when the filter lets some ray through, or when the
+     * eye is inside the sphere: the pairs fast_filter_only counts. */
+    *pairs = (long)((count + FAST_PACKET - 1) / FAST_PACKET) * fs->n;
+    *solved = fast_filter_only(fs, dx, dy, dz, count);
 }
 
 long fast_filter_only(const FastScene *fs, const double *dx, const double *dy, const double *dz,
