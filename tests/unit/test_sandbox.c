@@ -36,7 +36,11 @@ static int run_sh(const char *script, SandboxSpec spec, SandboxResult *res)
 
 /* A shell that doubles a string up to 128 MiB (about three times that in
  * use while it copies), then sleeps: a hog with a ceiling, so that a broken
- * limit fails the test without taking the machine's memory. */
+ * limit fails the test without taking the machine's memory.  The hogs'
+ * limit, HOG_MB, is well above what the shell needs to start (under 4 MiB)
+ * and low enough that the hog reaches it in a few doublings: each test
+ * with a hog burns CPU until it is stopped. */
+#define HOG_MB 16
 static const char *const hog =
     "x=0123456789abcdef; while [ ${#x} -lt 134217728 ]; do x=$x$x; done; sleep 10";
 
@@ -49,7 +53,7 @@ static void test_memory_watch(void)
         return;
     }
     SandboxResult res;
-    SandboxSpec spec = { .memory_mb = 48, .address_mb = 2048, .max_procs = 0 };
+    SandboxSpec spec = { .memory_mb = HOG_MB, .address_mb = 2048, .max_procs = 0 };
     if (run_sh(hog, spec, &res) != 0)
         return;
     CHECK_MSG(res.memory_exceeded, "not stopped for memory: exit %d, signal %d, timed out %d, %.2f s",
@@ -65,7 +69,7 @@ static void test_memory_watch(void)
 static void test_memory_stops_hog(void)
 {
     SandboxResult res;
-    SandboxSpec spec = { .memory_mb = 48, .max_procs = 0 };
+    SandboxSpec spec = { .memory_mb = HOG_MB, .max_procs = 0 };
     if (run_sh(hog, spec, &res) != 0)
         return;
     CHECK_MSG(!res.timed_out && (res.memory_exceeded || res.exit_code != 0),
@@ -137,7 +141,7 @@ static void test_cpu_limit(void)
 static void test_wall_clock(void)
 {
     SandboxResult res;
-    SandboxSpec spec = { .memory_mb = 48, .max_procs = -1, .timeout = 0.5 };
+    SandboxSpec spec = { .memory_mb = 48, .max_procs = -1, .timeout = 0.2 };
     if (run_sh("sleep 5", spec, &res) != 0)
         return;
     CHECK(res.timed_out);
@@ -221,7 +225,7 @@ static void test_output_stop(void)
     CHECK_STR_CONTAINS(res.output, "spam");
     sandbox_result_free(&res);
     spec.output_stop = 0;
-    spec.timeout = 0.5;
+    spec.timeout = 0.2;                            /* spent printing: kept short */
     if (run_sh("while :; do echo spam spam spam spam spam spam spam; done", spec, &res) != 0)
         return;
     CHECK(!res.output_exceeded);

@@ -130,7 +130,7 @@ static void test_served_endings(void)
     char object[256];
     SandboxResult res;
     serve_init(&s, object, sizeof object, "while :; do :; done");
-    SandboxSpec spec = { .max_procs = 0, .timeout = 0.3 };
+    SandboxSpec spec = { .max_procs = 0, .timeout = 0.15 };       /* spent spinning: kept short */
     if (run(&s, spec, &res) == 0) {
         CHECK(res.timed_out);
         CHECK_EQ_INT(res.exit_code, -1);
@@ -170,7 +170,8 @@ static void test_served_endings(void)
 
 /* Over memory_mb, the grader's watch stops a served child too (it reads
  * the child's memory, though the child is the server's and cannot be
- * traced), with the address space left wide open. */
+ * traced), with the address space left wide open.  The limit is low, as
+ * test_sandbox's hogs' (HOG_MB): the hog spins until it is stopped. */
 static void test_served_memory(void)
 {
     SandboxServer s;
@@ -178,7 +179,7 @@ static void test_served_memory(void)
     serve_init(&s, object, sizeof object,
                "x=0123456789abcdef; while [ ${#x} -lt 134217728 ]; do x=$x$x; done; sleep 10");
     SandboxResult res;
-    SandboxSpec spec = { .memory_mb = 48, .address_mb = 2048, .max_procs = 0 };
+    SandboxSpec spec = { .memory_mb = 16, .address_mb = 2048, .max_procs = 0 };
     if (run(&s, spec, &res) != 0)
         return;
     CHECK_MSG(res.memory_exceeded, "not stopped for memory: exit %d, signal %d, timed out %d, %.2f s",
