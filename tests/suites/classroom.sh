@@ -26,15 +26,15 @@ set -u
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 top=$(pwd)
 . tests/lib/checks.sh
+. tests/lib/cc_build.sh
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtclassroom.XXXXXX") || { echo "0 passed, 1 failed"; exit 1; }
 trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
 
 # ---- the reporter's rules, in C ---------------------------------------------
 totals="$tmp/reporter_totals"
-${CC:-cc} -std=c11 -O2 -ffp-contract=off -Wall -Wextra -Wpedantic -Werror -o "$totals" \
-    tests/classroom/reporter_totals.c tests/tools/base64.c tests/tools/json_read.c labs/kit/numtext.c \
-    -lm >"$tmp/cc.log" 2>&1
+cc_build "$tmp" reporter_totals "$tmp/cc.log" \
+    tests/classroom/reporter_totals.c tests/tools/base64.c tests/tools/json_read.c labs/kit/numtext.c
 check "tests/classroom/reporter_totals.c builds without a warning" [ -x "$totals" ]
 [ -x "$totals" ] || { cat "$tmp/cc.log"; finish; }
 have_node=

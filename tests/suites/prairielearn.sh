@@ -24,13 +24,14 @@
 set -u
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 . tests/lib/checks.sh
+. tests/lib/cc_build.sh
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtprairielearn.XXXXXX") || { echo "0 passed, 1 failed"; exit 1; }
 trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
 
 checker="$tmp/check_results"
-${CC:-cc} -std=c11 -O2 -ffp-contract=off -Wall -Wextra -Wpedantic -Werror -o "$checker" \
-    tests/prairielearn/check_results.c tests/tools/json_read.c labs/kit/numtext.c -lm >"$tmp/cc.log" 2>&1
+cc_build "$tmp" check_results "$tmp/cc.log" \
+    tests/prairielearn/check_results.c tests/tools/json_read.c labs/kit/numtext.c
 check "tests/prairielearn/check_results.c builds without a warning" [ -x "$checker" ]
 [ -x "$checker" ] || { cat "$tmp/cc.log"; finish; }
 
