@@ -37,9 +37,9 @@ static int run_sh(const char *script, SandboxSpec spec, SandboxResult *res)
 /* A shell that doubles a string up to 128 MiB (about three times that in
  * use while it copies), then sleeps: a hog with a ceiling, so that a broken
  * limit fails the test without taking the machine's memory.  The hogs'
- * limit, HOG_MB, is well above what the shell needs to start (under 4 MiB)
- * and low enough that the hog reaches it in a few doublings: each test
- * with a hog burns CPU until it is stopped. */
+ * limit, HOG_MB, is several times what dash or bash holds when it starts
+ * (1.5 and 3 MiB here), and low enough that the hog reaches it in a few
+ * doublings: each test with a hog burns CPU until it is stopped. */
 #define HOG_MB 16
 static const char *const hog =
     "x=0123456789abcdef; while [ ${#x} -lt 134217728 ]; do x=$x$x; done; sleep 10";
