@@ -204,8 +204,11 @@ check "opened again with the same compiler, its entries stay ($(entries) and $(d
 check "... and its log starts empty" [ ! -s "$tmp/memo/log" ]
 check "... and what an interrupted run left is gone: $(ls "$tmp/memo" | grep -v '^[0-9a-f]*$' | tr '\n' ' ')" \
     [ "$(ls "$tmp/memo" | grep -v -c -e '^[0-9a-f]*$' -e '^direct-[0-9a-f]*$' -e '^compiler$' -e '^log$')" -eq 0 ]
-sleep 1                           # a second later than the entries' times
-: >"$tmp/stamp"
+# The entries and then the stamp dated in the past, the stamp a minute
+# later: an entry served now is newer than the stamp, the others are not
+# (no waiting for the clock, whatever the file system's grain of time).
+touch -t 200001010000 "$tmp/memo"/*
+touch -t 200001010001 "$tmp/stamp"
 memo -std=c11 -O1 -Wall -c area.c -o a5.o 2>/dev/null       # b2.o's entry, used
 check "an entry kept from an earlier run is served (log: $(served) served)" [ "$(served)" -eq 1 ]
 sh "$keep" prune "$tmp/memo" "$tmp/stamp"
