@@ -48,10 +48,10 @@ fail() {
 }
 
 # run PROGRAM ARGS...: runs it; sets status, keeps stdout and stderr in
-# files.  Also sets stderr_text (stderr's whole lines) and stderr_lines
-# (how many; a last line without its newline counts as one more), read by
-# the shell itself: these checks run hundreds of times, and a grep or a wc
-# each is a process each.
+# files.  Also sets stderr_text (all of stderr) and stderr_lines (the lines
+# that end in a newline, as wc -l counts them: a message without its final
+# newline is not one line), read by the shell itself: these checks run
+# hundreds of times, and a grep or a wc each is a process each.
 run() {
     "$@" >"$tmp/stdout" 2>"$tmp/stderr"
     status=$?
@@ -63,7 +63,6 @@ run() {
     done <"$tmp/stderr"
     if [ -n "$line" ]; then
         stderr_text="$stderr_text$line"
-        stderr_lines=$((stderr_lines + 1))
     fi
 }
 
