@@ -339,6 +339,7 @@ UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
 # links, not commands that do both (tests/tools/ccmemo_main.c), and the
 # student kit builds three of these in every run of its suite.  The object
 # is made again whenever the libraries are, as the program was before.
+# (Not the grader's units nor test_serve: their own rules are below.)
 GRADER_UNITS = sandbox include_scan memo
 UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) $(BUILD)/tests/test_serve,$(UNIT_BIN))
 $(UNIT_PLAIN:$(BUILD)/tests/%=$(BUILD)/tests/obj/%.o): $(BUILD)/tests/obj/%.o: tests/unit/%.c \
