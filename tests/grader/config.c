@@ -40,6 +40,7 @@ int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
     memset(cfg, 0, sizeof *cfg);
     cfg->hard_is_bonus = true;
     cfg->timeout = 2;
+    cfg->output_kib = CONFIG_OUTPUT_KIB;
     for (int p = 0; p < NCORE_PARTS; p++)
         cfg->parts[p] = true;
     FILE *f = fopen(path, "r");
@@ -53,28 +54,57 @@ int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
         lineno++;
         line[strcspn(line, "#")] = '\0';
         char word[32], label[8], mode[16];
-        double core, hard;
-        unsigned long long seed;
+        double core = 0, hard = 0;
+        unsigned long long seed = 0;
+        long kib = 0;
+        int used = 0;           /* where the line's words ended: only blanks may follow */
         if (sscanf(line, "%31s", word) != 1)
             continue;
-        if (strcmp(word, "part") == 0 &&
-            sscanf(line, " part %7s core %lf hard %lf", label, &core, &hard) == 3 &&
-            part_from_label(label) >= 0 && core >= 0 && hard >= 0 && isfinite(core + hard)) {
-            cfg->core[part_from_label(label)] = core;
-            cfg->hard[part_from_label(label)] = hard;
-        } else if (strcmp(word, "hard") == 0 && sscanf(line, " hard %15s", mode) == 1 &&
-                   (!strcmp(mode, "bonus") || !strcmp(mode, "core"))) {
-            cfg->hard_is_bonus = strcmp(mode, "bonus") == 0;
-        } else if (strcmp(word, "timeout") == 0 && sscanf(line, " timeout %lf", &core) == 1 &&
-                   core > 0 && core <= 600) {
-            cfg->timeout = core;
-        } else if (strcmp(word, "seed") == 0 && sscanf(line, " seed %llu", &seed) == 1) {
-            cfg->seed = seed;
-        } else if (strcmp(word, "parts") == 0 && parse_parts(line, cfg->parts)) {
-            /* the parts graded by default */
+        const char *want = NULL;
+        char wanted[100];
+        if (strcmp(word, "part") == 0) {
+            if (sscanf(line, " part %7s core %lf hard %lf %n", label, &core, &hard, &used) == 3 &&
+                used > 0 && !line[used] && part_from_label(label) >= 0 && core >= 0 && hard >= 0 &&
+                isfinite(core + hard)) {
+                cfg->core[part_from_label(label)] = core;
+                cfg->hard[part_from_label(label)] = hard;
+            } else {
+                want = "'part P core N hard M': P one of 1 2 3a 3b 4 5, N and M points, 0 or more";
+            }
+        } else if (strcmp(word, "hard") == 0) {
+            if (sscanf(line, " hard %15s %n", mode, &used) == 1 && used > 0 && !line[used] &&
+                (!strcmp(mode, "bonus") || !strcmp(mode, "core")))
+                cfg->hard_is_bonus = strcmp(mode, "bonus") == 0;
+            else
+                want = "'hard bonus' or 'hard core'";
+        } else if (strcmp(word, "timeout") == 0) {
+            if (sscanf(line, " timeout %lf %n", &core, &used) == 1 && used > 0 && !line[used] &&
+                core > 0 && core <= 600)
+                cfg->timeout = core;
+            else
+                want = "'timeout S': S seconds, more than 0 and at most 600";
+        } else if (strcmp(word, "output") == 0) {
+            if (sscanf(line, " output %ld %n", &kib, &used) == 1 && used > 0 && !line[used] &&
+                kib >= 1 && kib <= CONFIG_OUTPUT_KIB_MAX)
+                cfg->output_kib = kib;
+            else
+                want = wanted, snprintf(wanted, sizeof wanted, "'output KIB': KIB a whole number "
+                                        "of KiB from 1 to %d", CONFIG_OUTPUT_KIB_MAX);
+        } else if (strcmp(word, "seed") == 0) {
+            if (sscanf(line, " seed %llu %n", &seed, &used) == 1 && used > 0 && !line[used] &&
+                !strchr(line, '-'))
+                cfg->seed = seed;
+            else
+                want = "'seed N': N a whole number, 0 or more";
+        } else if (strcmp(word, "parts") == 0) {
+            if (!parse_parts(line, cfg->parts))
+                want = "'parts P...': each of 1 2 3a 3b 4 5 at most once";
         } else {
-            snprintf(err, errlen, "%s:%d: expected 'part P core N hard M', 'parts P...', "
-                     "'hard bonus|core', 'timeout S' or 'seed N'", path, lineno);
+            want = "'part P core N hard M', 'parts P...', 'hard bonus|core', 'timeout S', "
+                   "'output KIB' or 'seed N'";
+        }
+        if (want) {
+            snprintf(err, errlen, "%s:%d: expected %s", path, lineno, want);
             fclose(f);
             return -1;
         }

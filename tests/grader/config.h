@@ -9,6 +9,12 @@
 #include <stdint.h>
 #include "grader.h"
 
+/* What a test may print (stdout and stderr) unless the file says otherwise
+ * ("output KIB"): a line of debugging output per call is a few hundred KiB
+ * at most.  The most a file may allow. */
+#define CONFIG_OUTPUT_KIB 4096
+#define CONFIG_OUTPUT_KIB_MAX 65536
+
 typedef struct {
     bool parts[NPARTS];        /* the parts graded when none is named: the
                                   "parts" line (Parts 1-3b by default)    */
@@ -16,6 +22,7 @@ typedef struct {
     double hard[NPARTS];       /* points of each part's hard-case tests */
     bool hard_is_bonus;        /* hard points on top of the total        */
     double timeout;            /* seconds per test                       */
+    long output_kib;           /* KiB a test may print before it is stopped */
     uint64_t seed;
 } GradeConfig;
 

@@ -22,8 +22,6 @@
  * so a part with a few tests alone starts a runner for each, as before. */
 #define SERVE_START_AT 3
 #define TEST_MEMORY_MB 64     /* a test program needs 3 to 4 MiB of address space */
-#define TEST_OUTPUT_KIB 4096  /* what a test may print: a line of debugging
-                                 output per call is a few hundred KiB at most */
 #define MAX_BATCH 4096        /* tests of one part run together, at most     */
 
 static const char *kind_word[NKINDS] = { "plane", "pixel", "sphere", "camera", "color", "image",
@@ -96,8 +94,8 @@ static const char *signal_story(int sig)
 }
 
 /* The limits of a child that runs ntests tests of the part's program (b)
- * on input: one test's time and memory, ntests tests' output, no file, no
- * process.  argv (3 slots) is filled with the program and its object. */
+ * on input: one test's time and memory, ntests tests' output (the "output"
+ * of tests/weights.conf each), no file, no process.  argv (3 slots) is filled with the program and its object. */
 static SandboxSpec test_spec(const GradeOptions *opt, const Build *b, char **argv, const char *input,
                              size_t len, int ntests)
 {
@@ -106,7 +104,8 @@ static SandboxSpec test_spec(const GradeOptions *opt, const Build *b, char **arg
     argv[2] = NULL;
     return (SandboxSpec){
         .argv = argv, .workdir = b->rundir, .input = input, .input_len = len,
-        .timeout = opt->cfg->timeout, .output_stop = (size_t)ntests * ((size_t)TEST_OUTPUT_KIB << 10),
+        .timeout = opt->cfg->timeout,
+        .output_stop = (size_t)ntests * ((size_t)opt->cfg->output_kib << 10),
         .memory_mb = TEST_MEMORY_MB, .max_procs = 0, .max_file_mb = 0,
     };
 }
@@ -155,8 +154,8 @@ static void run_test(const GradeOptions *opt, const Build *b, SandboxServer *srv
     } else if (res.memory_exceeded) {
         snprintf(whybuf, sizeof whybuf, "  it used more than %d MiB of memory, and was stopped\n", TEST_MEMORY_MB);
     } else if (res.output_exceeded) {
-        snprintf(whybuf, sizeof whybuf, "  it printed more than %d KiB, and was stopped: print less "
-                 "(or nothing) from this function\n", TEST_OUTPUT_KIB);
+        snprintf(whybuf, sizeof whybuf, "  it printed more than %ld KiB, and was stopped: print less "
+                 "(or nothing) from this function\n", opt->cfg->output_kib);
     } else if (res.signal) {
         snprintf(whybuf, sizeof whybuf, "  it crashed: signal %d%s\n", res.signal, signal_story(res.signal));
     } else if (res.exit_code != 0) {

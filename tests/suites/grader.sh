@@ -69,6 +69,16 @@ $grade --submission "$tmp/core-only" >"$tmp/core-only.out" 2>&1
 status=$?
 check "a Parts 1-3b submission keeps full marks by default (exit $status)" [ "$status" -eq 0 ]
 
+# -- a malformed weights file: refused, naming its file and line -----------
+for line in "timeout 0" "timeout 601" "timeout 2 s" "output 0" "output 65537" "output 12k" \
+    "seed -1" "hard maybe" "part 6 core 1 hard 1" "part 1 core -1 hard 0" "parts 1 1" "colour red"; do
+    printf 'part 1 core 20 hard 2.5\n%s\n' "$line" >"$tmp/bad.conf"
+    $grade --submission solutions --weights "$tmp/bad.conf" >"$tmp/bad.out" 2>&1
+    status=$?
+    check "weights line '$line' is refused, naming the file and line 2 (exit $status)" \
+        sh -c "[ $status -eq 2 ] && grep -q 'bad.conf:2: expected ' '$tmp/bad.out'"
+done
+
 # -- faulty and hostile submissions, graded as two classes -------------------
 # Those of Parts 1-3b with the default points (Parts 1-3b), those of the
 # optional parts alone (files part4_* or part5_* only) with Parts 4 and 5.  Every
@@ -81,8 +91,13 @@ check "a Parts 1-3b submission keeps full marks by default (exit $status)" [ "$s
 # (graded with that limit, it keeps full marks); and a batch that ran out
 # of time on a loaded machine would cost only time, as its tests then run
 # alone, each in milliseconds.
+# And a test may print 256 KiB here, not the default 4096:
+# hostile-output-flood prints until it is stopped, in its batch and in each
+# of its 68 tests alone (17 MiB in all instead of 272).
 core=$tmp/core.conf
-sed 's/^\(timeout\) .*/\1 0.25/' tests/weights.conf >"$core"
+sed -e 's/^\(timeout\) .*/\1 0.25/' -e 's/^\(output\) .*/\1 256/' tests/weights.conf >"$core"
+check "the test classes' weights set a test's time and output" \
+    sh -c "grep -q '^timeout 0.25\$' '$core' && grep -q '^output 256\$' '$core'"
 only45=$tmp/parts45.conf
 sed 's/^parts .*/parts 4 5/' "$core" >"$only45"
 mkdir "$tmp/subs" "$tmp/subs45" "$tmp/reference"
