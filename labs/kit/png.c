@@ -369,6 +369,40 @@ static int png_read_chunks(const unsigned char *p, size_t n, PngHeader *h, KitBu
     }
 }
 
+/* Undoes one row's filter in place: row (stride bytes) from its filtered
+ * bytes, prev the unfiltered row above (zeros for the first).  One loop per
+ * type, as png_predict defines them, the first pixel (no left neighbour)
+ * apart. */
+static void png_unfilter_row(int type, unsigned char *row, const unsigned char *prev,
+                             size_t stride, size_t bpp)
+{
+    size_t first = bpp < stride ? bpp : stride;
+    switch (type) {
+    case 1:
+        for (size_t k = bpp; k < stride; k++)
+            row[k] = (unsigned char)(row[k] + row[k - bpp]);
+        break;
+    case 2:
+        for (size_t k = 0; k < stride; k++)
+            row[k] = (unsigned char)(row[k] + prev[k]);
+        break;
+    case 3:
+        for (size_t k = 0; k < first; k++)
+            row[k] = (unsigned char)(row[k] + prev[k] / 2);
+        for (size_t k = bpp; k < stride; k++)
+            row[k] = (unsigned char)(row[k] + (row[k - bpp] + prev[k]) / 2);
+        break;
+    case 4:
+        for (size_t k = 0; k < first; k++)
+            row[k] = (unsigned char)(row[k] + prev[k]);
+        for (size_t k = bpp; k < stride; k++)
+            row[k] = (unsigned char)(row[k] + png_paeth(row[k - bpp], prev[k], prev[k - bpp]));
+        break;
+    default:
+        break;
+    }
+}
+
 /* Undoes the filter of every row of raw in place (each row: a filter type
  * byte, then stride bytes).  Returns 0, or -1 with a reason. */
 static int png_unfilter(unsigned char *raw, size_t rows, size_t stride, size_t bpp,
@@ -389,9 +423,7 @@ static int png_unfilter(unsigned char *raw, size_t rows, size_t stride, size_t b
             snprintf(err, errlen, "PNG data is corrupt (filter type %d in row %zu)", type, j);
             return -1;
         }
-        if (type != 0)
-            for (size_t k = 0; k < stride; k++)
-                row[k] = (unsigned char)(row[k] + png_predict(type, row, prev, k, bpp));
+        png_unfilter_row(type, row, prev, stride, bpp);
     }
     free(zero);
     return 0;
@@ -422,7 +454,10 @@ int png_decode(const void *data, size_t n, Image *img, char *err, size_t errlen)
     size_t stride = (size_t)h.width * (size_t)h.channels;
     size_t rows = (size_t)h.height, want = rows * (stride + 1);
     char why[200];
-    int rc = kit_zlib_uncompress(idat.data, idat.len, want, &raw, why, sizeof why);
+    /* The whole image's room at once, rather than doubling up to it. */
+    int rc = kit_buf_reserve(&raw, want) == 0
+                 ? kit_zlib_uncompress(idat.data, idat.len, want, &raw, why, sizeof why)
+                 : (snprintf(why, sizeof why, "out of memory"), -1);
     kit_buf_free(&idat);
     if (rc != 0 || raw.len != want) {
         if (rc == 0)
@@ -431,8 +466,21 @@ int png_decode(const void *data, size_t n, Image *img, char *err, size_t errlen)
         kit_buf_free(&raw);
         return -1;
     }
-    if (png_unfilter(raw.data, rows, stride, (size_t)h.channels, err, errlen) != 0 ||
-        image_alloc(img, h.width, h.height, err, errlen) != 0) {
+    if (png_unfilter(raw.data, rows, stride, (size_t)h.channels, err, errlen) != 0) {
+        kit_buf_free(&raw);
+        return -1;
+    }
+    if (h.channels == 3) {
+        /* RGB already: the rows close up over their filter bytes, in place,
+         * and the buffer becomes the image's. */
+        for (size_t j = 0; j < rows; j++)
+            memmove(raw.data + j * stride, raw.data + j * (stride + 1) + 1, stride);
+        img->width = h.width;
+        img->height = h.height;
+        img->rgb = raw.data;
+        return 0;
+    }
+    if (image_alloc(img, h.width, h.height, err, errlen) != 0) {
         kit_buf_free(&raw);
         return -1;
     }

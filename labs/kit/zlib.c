@@ -589,10 +589,19 @@ static int inf_codes(Inflater *s, const InfHuffman *lit, const InfHuffman *dist)
             return inf_fail(s, "deflate data refers to %u bytes back, before its start", distance);
         if (inf_room(s, length) != 0)
             return -1;
+        /* dst[k] = dst[k - distance] for k < length: the copy may overlap
+         * itself.  What is copied repeats with period distance, and so with
+         * any multiple p of it whose source is already written (p <= k +
+         * distance); each memcpy of at most p bytes does not overlap, and p
+         * about doubles each time. */
         unsigned char *dst = s->out->data + s->out->len;
-        const unsigned char *src = dst - distance;
-        for (unsigned k = 0; k < length; k++)      /* may overlap: byte by byte */
-            dst[k] = src[k];
+        unsigned k = 0, p = distance;
+        while (k < length) {
+            unsigned n = length - k < p ? length - k : p;
+            memcpy(dst + k, dst + k - p, n);
+            k += n;
+            p = (k + distance) / distance * distance;
+        }
         s->out->len += length;
     }
 }

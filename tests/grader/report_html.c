@@ -151,13 +151,30 @@ static void heat_scale(Markup *m)
     image_free(&bar);
 }
 
+/* Where a picture's data: URI is in the page's text. */
+typedef struct {
+    size_t at, len;
+} UriSpan;
+
 /* One picture as a PNG data: URI, with its caption (a picture that cannot
- * be encoded becomes an empty data: URI). */
-static void picture(Markup *m, const Image *img, const char *alt, const char *caption)
+ * be encoded becomes an empty data: URI).  With again, the URI of a
+ * picture written before whose pixels are img's, that URI is copied rather
+ * than encoded anew; *uri (when not NULL) is set to where this one's is. */
+static void picture(Markup *m, const Image *img, const char *alt, const char *caption,
+                    const UriSpan *again, UriSpan *uri)
 {
     mk_printf(m, "<figure><img src=\"");
-    if (mk_png_uri(m, img) != 0)
+    size_t at = m->b.len;
+    if (again && again->len > 0) {
+        if (kit_buf_reserve(&m->b, again->len) != 0)
+            m->failed = true;
+        else
+            mk_raw(m, (const char *)m->b.data + again->at, again->len);
+    } else if (mk_png_uri(m, img) != 0) {
         mk_printf(m, "data:,");
+    }
+    if (uri)
+        *uri = (UriSpan){ at, m->failed ? 0 : m->b.len - at };
     mk_printf(m, "\" width=\"%d\" height=\"%d\" alt=\"", img->width, img->height);
     mk_text(m, alt);
     mk_printf(m, "\"><figcaption>");
@@ -185,12 +202,18 @@ static void renders(Markup *m, const ReportRenders *rr)
                  "Parts 1 to 3b); beside it the reference solution's picture and the heat map "
                  "of their difference (as <code>make compare</code> draws it).</p>\n"
                  "<div class=\"renders\">\n");
+    /* Pictures the same, pixel for pixel, are encoded once. */
+    UriSpan sub_uri = { 0, 0 };
+    bool alike = rr->have_sub && rr->have_ref && rr->sub.width == rr->ref.width &&
+                 rr->sub.height == rr->ref.height &&
+                 memcmp(rr->sub.rgb, rr->ref.rgb, (size_t)3 * rr->sub.width * rr->sub.height) == 0;
     if (rr->have_sub)
-        picture(m, &rr->sub, "the scene drawn by your code", "your code");
+        picture(m, &rr->sub, "the scene drawn by your code", "your code", NULL, &sub_uri);
     else
         no_picture(m, "your code: no picture", rr->sub_note);
     if (rr->have_ref)
-        picture(m, &rr->ref, "the scene drawn by the reference solution", "the reference");
+        picture(m, &rr->ref, "the scene drawn by the reference solution", "the reference",
+                alike ? &sub_uri : NULL, NULL);
     else
         no_picture(m, "the reference: no picture", rr->ref_note);
     Image heat;
@@ -205,7 +228,7 @@ static void renders(Markup *m, const ReportRenders *rr)
         else
             snprintf(caption, sizeof caption, "difference: %.3g%% of the pixels differ, by up to "
                      "%d of 255", 100.0 * (double)st.differing / (double)st.pixels, st.max_error);
-        picture(m, &heat, "heat map of the difference", caption);
+        picture(m, &heat, "heat map of the difference", caption, NULL, NULL);
         image_free(&heat);
     }
     mk_printf(m, "</div>\n");

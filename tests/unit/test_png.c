@@ -199,6 +199,23 @@ static void test_deflate_repetitive_text(void)
     kit_buf_free(&mixed);
 }
 
+/* Data that repeats with period p, for p from 1 to 300: its matches copy
+ * from p bytes back, over what they are writing themselves when p is less
+ * than their length (up to 258).  Each compresses to a few matches of 258
+ * bytes, which only such overlapping copies give for short periods. */
+static void test_deflate_periodic(void)
+{
+    enum { N = 6000 };
+    unsigned char *pattern = random_bytes(300), data[N];
+    for (size_t p = 1; p <= 300; p++) {
+        for (size_t k = 0; k < N; k++)
+            data[k] = pattern[k % p];
+        size_t size = deflate_round_trip(data, N);
+        CHECK_MSG(p > 64 || size < N / 20, "period %zu: %d bytes compressed to %zu", p, N, size);
+    }
+    free(pattern);
+}
+
 static void test_deflate_all_sizes_small(void)
 {
     unsigned char *data = random_bytes(300);
@@ -1012,6 +1029,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_deflate_random_1mb),
     CHECK_TEST(test_deflate_zeros_1mb),
     CHECK_TEST(test_deflate_repetitive_text),
+    CHECK_TEST(test_deflate_periodic),
     CHECK_TEST(test_deflate_all_sizes_small),
     CHECK_TEST(test_inflate_stored_by_hand),
     CHECK_TEST(test_inflate_fixed_by_hand),
