@@ -70,8 +70,8 @@ status=$?
 check "a Parts 1-3b submission keeps full marks by default (exit $status)" [ "$status" -eq 0 ]
 
 # -- a malformed weights file: refused, naming its file and line -----------
-for line in "timeout 0" "timeout 601" "timeout 2 s" "output 0" "output 65537" "output 12k" \
-    "seed -1" "hard maybe" "part 6 core 1 hard 1" "part 1 core -1 hard 0" "parts 1 1" "colour red"; do
+for line in "output 0" "output 65537" "output 12k" "seed -1" "hard maybe" "part 6 core 1 hard 1" \
+    "part 1 core -1 hard 0" "parts 1 1" "colour red" "timeout 0" "timeout 601" "timeout 2 s"; do  # portable: text
     printf 'part 1 core 20 hard 2.5\n%s\n' "$line" >"$tmp/bad.conf"
     $grade --submission solutions --weights "$tmp/bad.conf" >"$tmp/bad.out" 2>&1
     status=$?
@@ -97,7 +97,7 @@ done
 core=$tmp/core.conf
 sed -e 's/^\(timeout\) .*/\1 0.25/' -e 's/^\(output\) .*/\1 256/' tests/weights.conf >"$core"
 check "the test classes' weights set a test's time and output" \
-    sh -c "grep -q '^timeout 0.25\$' '$core' && grep -q '^output 256\$' '$core'"
+    sh -c "grep -q '^timeout 0.25\$' '$core' && grep -q '^output 256\$' '$core'"  # portable: text
 only45=$tmp/parts45.conf
 sed 's/^parts .*/parts 4 5/' "$core" >"$only45"
 mkdir "$tmp/subs" "$tmp/subs45" "$tmp/reference"
