@@ -87,9 +87,11 @@ int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
             if (sscanf(line, " output %ld %n", &kib, &used) == 1 && used > 0 && !line[used] &&
                 kib >= 1 && kib <= CONFIG_OUTPUT_KIB_MAX)
                 cfg->output_kib = kib;
-            else
-                want = wanted, snprintf(wanted, sizeof wanted, "'output KIB': KIB a whole number "
-                                        "of KiB from 1 to %d", CONFIG_OUTPUT_KIB_MAX);
+            else {
+                snprintf(wanted, sizeof wanted, "'output KIB': KIB a whole number of KiB from 1 to %d",
+                         CONFIG_OUTPUT_KIB_MAX);
+                want = wanted;
+            }
         } else if (strcmp(word, "seed") == 0) {
             if (sscanf(line, " seed %llu %n", &seed, &used) == 1 && used > 0 && !line[used] &&
                 !strchr(line, '-'))
