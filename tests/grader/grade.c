@@ -95,7 +95,8 @@ static const char *signal_story(int sig)
 
 /* The limits of a child that runs ntests tests of the part's program (b)
  * on input: one test's time and memory, ntests tests' output (the "output"
- * of tests/weights.conf each), no file, no process.  argv (3 slots) is filled with the program and its object. */
+ * of tests/weights.conf each), no file, no process.  argv (3 slots) is
+ * filled with the program and its object. */
 static SandboxSpec test_spec(const GradeOptions *opt, const Build *b, char **argv, const char *input,
                              size_t len, int ntests)
 {

@@ -165,6 +165,7 @@ static void picture(Markup *m, const Image *img, const char *alt, const char *ca
 {
     mk_printf(m, "<figure><img src=\"");
     size_t at = m->b.len;
+    bool encoded = true;
     if (again && again->len > 0) {
         if (kit_buf_reserve(&m->b, again->len) != 0)
             m->failed = true;
@@ -172,9 +173,10 @@ static void picture(Markup *m, const Image *img, const char *alt, const char *ca
             mk_raw(m, (const char *)m->b.data + again->at, again->len);
     } else if (mk_png_uri(m, img) != 0) {
         mk_printf(m, "data:,");
+        encoded = false;
     }
     if (uri)
-        *uri = (UriSpan){ at, m->failed ? 0 : m->b.len - at };
+        *uri = (UriSpan){ at, encoded && !m->failed ? m->b.len - at : 0 };
     mk_printf(m, "\" width=\"%d\" height=\"%d\" alt=\"", img->width, img->height);
     mk_text(m, alt);
     mk_printf(m, "\"><figcaption>");
