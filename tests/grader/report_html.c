@@ -204,27 +204,28 @@ static void renders(Markup *m, const ReportRenders *rr)
                  "Parts 1 to 3b); beside it the reference solution's picture and the heat map "
                  "of their difference (as <code>make compare</code> draws it).</p>\n"
                  "<div class=\"renders\">\n");
-    /* Pictures the same, pixel for pixel, are encoded once. */
+    /* Measured first, so that pictures the same, pixel for pixel, are
+     * encoded once. */
+    CompareStats st = { 0 };
+    bool comparable = rr->have_sub && rr->have_ref && rr->sub.width == rr->ref.width &&
+                      rr->sub.height == rr->ref.height;
+    if (comparable)
+        st = compare_measure(&rr->sub, &rr->ref);
+    bool same = comparable && st.differing == 0;
     UriSpan sub_uri = { 0, 0 };
-    bool alike = rr->have_sub && rr->have_ref && rr->sub.width == rr->ref.width &&
-                 rr->sub.height == rr->ref.height &&
-                 memcmp(rr->sub.rgb, rr->ref.rgb, (size_t)3 * rr->sub.width * rr->sub.height) == 0;
     if (rr->have_sub)
         picture(m, &rr->sub, "the scene drawn by your code", "your code", NULL, &sub_uri);
     else
         no_picture(m, "your code: no picture", rr->sub_note);
     if (rr->have_ref)
         picture(m, &rr->ref, "the scene drawn by the reference solution", "the reference",
-                alike ? &sub_uri : NULL, NULL);
+                same ? &sub_uri : NULL, NULL);
     else
         no_picture(m, "the reference: no picture", rr->ref_note);
     Image heat;
     char err[256];
-    bool same = false;
-    if (rr->have_sub && rr->have_ref && compare_heat_map(&rr->sub, &rr->ref, &heat, err, sizeof err) == 0) {
-        CompareStats st = compare_measure(&rr->sub, &rr->ref);
+    if (comparable && compare_heat_map(&rr->sub, &rr->ref, &heat, err, sizeof err) == 0) {
         char caption[200];
-        same = st.differing == 0;
         if (same)
             snprintf(caption, sizeof caption, "difference: none, the pictures are identical");
         else
