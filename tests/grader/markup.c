@@ -5,6 +5,7 @@
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "markup.h"
 #include "kit/png.h"
+#include "../tools/base64.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -143,9 +144,19 @@ void mk_textf(Markup *m, const char *fmt, ...)
     mk_text(m, buf);
 }
 
+void mk_png_bytes_uri(Markup *m, const void *png, size_t n)
+{
+    mk_raw(m, "data:image/png;base64,", 22);
+    size_t len = base64_encoded_length(n);
+    if (m->failed || kit_buf_reserve(&m->b, len + 1) != 0) {
+        m->failed = true;
+        return;
+    }
+    m->b.len += base64_encode(png, n, (char *)m->b.data + m->b.len);
+}
+
 int mk_png_uri(Markup *m, const Image *img)
 {
-    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     KitBuf png;
     char err[256];
     kit_buf_init(&png);
@@ -153,20 +164,7 @@ int mk_png_uri(Markup *m, const Image *img)
         kit_buf_free(&png);
         return -1;
     }
-    mk_raw(m, "data:image/png;base64,", 22);
-    if (kit_buf_reserve(&m->b, (png.len + 2) / 3 * 4) != 0)
-        m->failed = true;
-    for (size_t k = 0; k < png.len && !m->failed; k += 3) {
-        unsigned v = (unsigned)png.data[k] << 16;
-        size_t left = png.len - k;
-        if (left > 1)
-            v |= (unsigned)png.data[k + 1] << 8;
-        if (left > 2)
-            v |= png.data[k + 2];
-        char q[4] = { digits[v >> 18], digits[(v >> 12) & 63],
-                      left > 1 ? digits[(v >> 6) & 63] : '=', left > 2 ? digits[v & 63] : '=' };
-        mk_raw(m, q, 4);
-    }
+    mk_png_bytes_uri(m, png.data, png.len);
     kit_buf_free(&png);
     return 0;
 }

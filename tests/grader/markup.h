@@ -38,6 +38,9 @@ void mk_textf(Markup *m, const char *fmt, ...) __attribute__((format(printf, 2, 
 /* Appends "data:image/png;base64,..." for img.  Returns 0, or -1 when the
  * image could not be encoded (nothing appended). */
 int mk_png_uri(Markup *m, const Image *img);
+/* Appends "data:image/png;base64,..." for the bytes of a PNG file as they
+ * are (a file the caller has decoded, so known to be a PNG). */
+void mk_png_bytes_uri(Markup *m, const void *png, size_t n);
 
 /* A number for an SVG coordinate: fixed point with 2 decimals, clamped to
  * +-1e6 so that a figure never holds a value a browser cannot draw. */

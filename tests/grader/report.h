@@ -42,6 +42,9 @@ typedef struct {
     char scene[64];            /* the scene's name, e.g. "default"               */
     bool have_sub, have_ref;
     Image sub, ref;            /* each valid when its have_ flag is set         */
+    char *ref_png;             /* with have_ref, the reference's file when it is
+                                  a PNG (the page shows it as it is), or NULL   */
+    size_t ref_png_len;
     char sub_note[2048];       /* when !have_sub: why (for the student)         */
     char ref_note[512];        /* when !have_ref: why                           */
     double seconds;            /* building and drawing them took                */

@@ -157,11 +157,13 @@ typedef struct {
 } UriSpan;
 
 /* One picture as a PNG data: URI, with its caption (a picture that cannot
- * be encoded becomes an empty data: URI).  With again, the URI of a
- * picture written before whose pixels are img's, that URI is copied rather
- * than encoded anew; *uri (when not NULL) is set to where this one's is. */
+ * be encoded becomes an empty data: URI).  Its pixels are img's; they are
+ * encoded only when neither of the others is given: again, the URI of a
+ * picture written before with the same pixels, copied; png, the bytes of a
+ * PNG file of them, shown as they are.  *uri (when not NULL) is set to
+ * where this picture's URI is. */
 static void picture(Markup *m, const Image *img, const char *alt, const char *caption,
-                    const UriSpan *again, UriSpan *uri)
+                    const UriSpan *again, const char *png, size_t png_len, UriSpan *uri)
 {
     mk_printf(m, "<figure><img src=\"");
     size_t at = m->b.len;
@@ -171,6 +173,8 @@ static void picture(Markup *m, const Image *img, const char *alt, const char *ca
             m->failed = true;
         else
             mk_raw(m, (const char *)m->b.data + again->at, again->len);
+    } else if (png) {
+        mk_png_bytes_uri(m, png, png_len);
     } else if (mk_png_uri(m, img) != 0) {
         mk_printf(m, "data:,");
         encoded = false;
@@ -204,8 +208,8 @@ static void renders(Markup *m, const ReportRenders *rr)
                  "Parts 1 to 3b); beside it the reference solution's picture and the heat map "
                  "of their difference (as <code>make compare</code> draws it).</p>\n"
                  "<div class=\"renders\">\n");
-    /* Measured first, so that pictures the same, pixel for pixel, are
-     * encoded once. */
+    /* Measured first: pictures the same, pixel for pixel, are shown by one
+     * PNG, the reference's file as it is (else encoded once). */
     CompareStats st = { 0 };
     bool comparable = rr->have_sub && rr->have_ref && rr->sub.width == rr->ref.width &&
                       rr->sub.height == rr->ref.height;
@@ -214,12 +218,13 @@ static void renders(Markup *m, const ReportRenders *rr)
     bool same = comparable && st.differing == 0;
     UriSpan sub_uri = { 0, 0 };
     if (rr->have_sub)
-        picture(m, &rr->sub, "the scene drawn by your code", "your code", NULL, &sub_uri);
+        picture(m, &rr->sub, "the scene drawn by your code", "your code", NULL,
+                same ? rr->ref_png : NULL, rr->ref_png_len, &sub_uri);
     else
         no_picture(m, "your code: no picture", rr->sub_note);
     if (rr->have_ref)
         picture(m, &rr->ref, "the scene drawn by the reference solution", "the reference",
-                same ? &sub_uri : NULL, NULL);
+                same ? &sub_uri : NULL, rr->ref_png, rr->ref_png_len, NULL);
     else
         no_picture(m, "the reference: no picture", rr->ref_note);
     Image heat;
@@ -231,7 +236,7 @@ static void renders(Markup *m, const ReportRenders *rr)
         else
             snprintf(caption, sizeof caption, "difference: %.3g%% of the pixels differ, by up to "
                      "%d of 255", 100.0 * (double)st.differing / (double)st.pixels, st.max_error);
-        picture(m, &heat, "heat map of the difference", caption, NULL, NULL);
+        picture(m, &heat, "heat map of the difference", caption, NULL, NULL, 0, NULL);
         image_free(&heat);
     }
     mk_printf(m, "</div>\n");

@@ -9,12 +9,18 @@
 #include "report.h"
 #include "build.h"
 #include "sandbox.h"
+#include "kit/png.h"
+#include "kit/savefile.h"
 #include "kit/scene.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+
+/* The largest reference file whose bytes are kept; a larger one (or one
+ * that is not a PNG) is read by image_read and encoded anew. */
+#define REFERENCE_PNG_MAX ((size_t)64 << 20)
 
 /* The harness's input: the scene's size, view and spheres (hex floats, so
  * that the child reads exactly the scene's numbers).  malloc'd, or NULL. */
@@ -119,12 +125,21 @@ int report_render(const ReportRenderOptions *o, ReportRenders *rr, char *err, si
         snprintf(rr->ref_note, sizeof rr->ref_note, "The scene could not be read: %.400s", why);
         return 0;
     }
-    /* The reference: the first of the files named that can be read. */
+    /* The reference: the first of the files named that can be read.  A
+     * PNG's bytes are kept, for the page to show as they are rather than
+     * encode the same pixels again. */
     for (int k = 0; k < 2 && !rr->have_ref; k++) {
         const char *path = o->reference[k];
         if (!path || access(path, R_OK) != 0)
             continue;
-        if (image_read(&rr->ref, path, why, sizeof why) < 0) {
+        free(rr->ref_png);
+        rr->ref_png = kit_load_file(path, REFERENCE_PNG_MAX, &rr->ref_png_len);
+        if (!rr->ref_png || !png_has_signature(rr->ref_png, rr->ref_png_len) ||
+            png_decode(rr->ref_png, rr->ref_png_len, &rr->ref, why, sizeof why) != 0) {
+            free(rr->ref_png);          /* image_read says why, naming the file */
+            rr->ref_png = NULL;
+        }
+        if (!rr->ref_png && image_read(&rr->ref, path, why, sizeof why) < 0) {
             snprintf(rr->ref_note, sizeof rr->ref_note, "The reference picture could not be read: %.400s", why);
         } else if (rr->ref.width != scene.nx || rr->ref.height != scene.ny) {
             snprintf(rr->ref_note, sizeof rr->ref_note, "The reference picture %s is %dx%d, not the "
@@ -134,6 +149,10 @@ int report_render(const ReportRenderOptions *o, ReportRenders *rr, char *err, si
             rr->have_ref = true;
             rr->ref_note[0] = '\0';
         }
+    }
+    if (!rr->have_ref) {
+        free(rr->ref_png);
+        rr->ref_png = NULL;
     }
     if (!rr->have_ref && !rr->ref_note[0])
         snprintf(rr->ref_note, sizeof rr->ref_note, "There is no reference picture of %s here.",
@@ -150,5 +169,6 @@ void report_renders_free(ReportRenders *rr)
         image_free(&rr->sub);
     if (rr->have_ref)
         image_free(&rr->ref);
+    free(rr->ref_png);
     memset(rr, 0, sizeof *rr);
 }
