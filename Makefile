@@ -200,7 +200,7 @@ GRADE_EXTRA = $(if $(GRADE_DEFS),$(BUILD)/grader/hidden.o $(BUILD)/oracle/libora
 
 $(BUILD)/grader/%.o: tests/grader/%.c $(GRADER_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/grader/harness_%.o: tests/grader/harness.c $(KIT_HDR) | $$(@D)/.
+$(BUILD)/grader/harness_%.o: tests/grader/harness.c tests/grader/hexfloat.h $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -c $< -o $@
 # The report page's render program (build_render): harness_render.c draws a scene.
 $(BUILD)/grader/harness_render.o: tests/grader/harness_render.c $(KIT_HDR) | $$(@D)/.
@@ -216,7 +216,8 @@ LOAD_RUNNERS := $(if $(filter Linux,$(SYSTEM)),1)
 RUNNERS    = $(if $(LOAD_RUNNERS),$(foreach k,1 2 3 4 5 6,$(BUILD)/grader/runner_$(k)))
 RUNNER_DEFS = $(if $(HAVE_SOLUTIONS),-DHARNESS_REFS)
 $(BUILD)/grader/harness_load_%.o: tests/grader/harness.c tests/grader/harness_load.h \
-                                  tests/grader/harness_serve.h $(KIT_HDR) | $$(@D)/.
+                                  tests/grader/harness_serve.h tests/grader/hexfloat.h \
+                                  $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -DHARNESS_LOAD $(RUNNER_DEFS) -c $< -o $@
 $(BUILD)/grader/harness_load.o: tests/grader/harness_load.c tests/grader/harness_load.h $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
@@ -349,6 +350,9 @@ $(UNIT_PLAIN): $(BUILD)/tests/%: $(BUILD)/tests/obj/%.o $(REF_OBJ) $(UNIT_LIBS) 
 	$(CC) $(CFLAGS) $(THREADS) $< $(REF_OBJ) $(UNIT_LIBS) -o $@ $(LDLIBS)
 $(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN) | $$(@D)/.
 	$(CC) $(SAN_LINK) $(THREADS) -Ilabs $< $(REF_ASAN) $(UNIT_LIBS_ASAN) -o $@ $(LDLIBS)
+
+# test_hexfloat checks a header of the grader's.
+$(BUILD)/tests/obj/test_hexfloat.o $(ASAN)/tests/test_hexfloat: tests/grader/hexfloat.h
 
 # The unit tests of the grader's sandbox, include scan and memo link the part alone.
 $(GRADER_UNITS:%=$(BUILD)/tests/test_%): $(BUILD)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \

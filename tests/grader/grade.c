@@ -9,6 +9,7 @@
 #include "grade.h"
 #include "sandbox.h"
 #include "diagnose.h"
+#include "hexfloat.h"
 
 #include <signal.h>
 #include <stdarg.h>
@@ -69,12 +70,17 @@ static char *test_input(const Test *t, size_t *len)
                                   v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]);
         }
     }
+    /* The cases, the bulk of it, without snprintf (hexfloat.h). */
     int nin = kind_nin(t->kind);
     for (int c = 0; c < t->ncases; c++) {
-        for (int k = 0; k < nin; k++)
-            n += (size_t)snprintf(s + n, cap - n, k ? " %a" : "%a", t->cases[c].in[k]);
-        n += (size_t)snprintf(s + n, cap - n, "\n");
+        for (int k = 0; k < nin; k++) {
+            if (k)
+                s[n++] = ' ';
+            n += hexfloat_format(s + n, t->cases[c].in[k]);
+        }
+        s[n++] = '\n';
     }
+    s[n] = '\0';
     *len = n;
     return s;
 }

@@ -68,14 +68,19 @@ int main(void)
     /* Part 1 once, then per pixel Part 2, camera_ray and ray_color. */
     double w = 0, h = 0;
     image_plane_size(scene.fov_degrees, (double)nx / ny, scene.d, &w, &h);
-    for (int j = 0; j < ny; j++)
+    unsigned char *row = malloc(3 * (size_t)nx);      /* written a row at a time */
+    if (!row)
+        return 3;
+    for (int j = 0; j < ny; j++) {
         for (int i = 0; i < nx; i++) {
             Ray ray = camera_ray(scene.eye, pixel_coordinates(i, j, nx, ny, w, h, scene.d));
             Vec3 seen = ray_color(&scene, &ray);
-            unsigned char rgb[3] = { image_channel(seen.x), image_channel(seen.y),
-                                     image_channel(seen.z) };
-            if (fwrite(rgb, sizeof rgb, 1, out) != 1)
-                return 3;
+            row[3 * i] = image_channel(seen.x);
+            row[3 * i + 1] = image_channel(seen.y);
+            row[3 * i + 2] = image_channel(seen.z);
         }
+        if (fwrite(row, 3, (size_t)nx, out) != (size_t)nx)
+            return 3;
+    }
     return fflush(out) == 0 ? 0 : 3;
 }
