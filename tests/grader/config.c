@@ -52,6 +52,20 @@ int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
     int lineno = 0;
     while (fgets(line, sizeof line, f)) {
         lineno++;
+        /* A line longer than the buffer: the rest of a comment is skipped;
+         * a setting that long is refused rather than read as two lines. */
+        if (!strchr(line, '\n') && !feof(f)) {
+            bool comment = strchr(line, '#') != NULL;
+            int c;
+            while ((c = getc(f)) != EOF && c != '\n')
+                ;
+            if (!comment) {
+                snprintf(err, errlen, "%s:%d: the line is longer than %d characters", path, lineno,
+                         (int)sizeof line - 2);
+                fclose(f);
+                return -1;
+            }
+        }
         line[strcspn(line, "#")] = '\0';
         char word[32], label[8], mode[16];
         double core = 0, hard = 0;

@@ -79,6 +79,19 @@ for line in "output 0" "output 65537" "output 12k" "seed -1" "hard maybe" "part 
         sh -c "[ $status -eq 2 ] && grep -q 'bad.conf:2: expected ' '$tmp/bad.out'"
 done
 
+# A line longer than the reader's buffer: a comment is read past, a setting
+# refused (it was once read as two lines, the second with the next number).
+long=$(awk 'BEGIN { while (n++ < 600) printf "x" }')
+printf 'part 1 core 20 hard 2.5  # %s\ntimeout 3\n' "$long" >"$tmp/long.conf"
+$grade --submission solutions --part 1 --weights "$tmp/long.conf" --quiet >"$tmp/long.out" 2>&1
+status=$?
+check "a weights comment 600 characters long is read past (exit $status)" [ "$status" -eq 0 ]
+printf 'part 1 core 20 hard 2.5\ntimeout 3 %s\n' "$long" >"$tmp/long.conf"
+$grade --submission solutions --part 1 --weights "$tmp/long.conf" --quiet >"$tmp/long.out" 2>&1
+status=$?
+check "a weights line 600 characters long is refused, naming the file and line 2 (exit $status)" \
+    sh -c "[ $status -eq 2 ] && grep -q 'long.conf:2: the line is longer than 510 characters' '$tmp/long.out'"
+
 # -- faulty and hostile submissions, graded as two classes -------------------
 # Those of Parts 1-3b with the default points (Parts 1-3b), those of the
 # optional parts alone (files part4_* or part5_* only) with Parts 4 and 5.  Every
