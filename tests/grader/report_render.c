@@ -98,11 +98,11 @@ static int render_submission(const ReportRenderOptions *o, const Scene *scene, R
     } else if (res.exit_code != 0 || res.answer_len != want) {
         snprintf(rr->sub_note, sizeof rr->sub_note, "Your code stopped (exit status %d) before "
                  "the picture was drawn, so there is none.", res.exit_code);
-    } else if (image_alloc(&rr->sub, scene->nx, scene->ny, err, errlen) < 0) {
-        sandbox_result_free(&res);
-        return -1;
     } else {
-        memcpy(rr->sub.rgb, res.answer, want);
+        /* The answer is the picture's pixels, row by row: it becomes the
+         * image, rather than a copy made in fresh memory. */
+        rr->sub = (Image){ scene->nx, scene->ny, (unsigned char *)res.answer };
+        res.answer = NULL;
         rr->have_sub = true;
     }
     sandbox_result_free(&res);
