@@ -425,7 +425,11 @@ static int compile_stage(const BuildConfig *cfg, Build *b, const char *stage, bo
     if (compiled && store_on && memo_keep_text(stored, "messages", said) == 0 &&
         memo_keep(stored, "depends", dpath) == 0 && memo_keep(stored, "object.o", opath) == 0)
         memo_use(stored);
-    if (memo_on && memo_keep_text(memo, "messages", said) == 0 && memo_keep(memo, "object.o", opath) == 0)
+    /* An object from the store is marked so, for grade --all's count of
+     * what it compiled. */
+    if (memo_on && memo_keep_text(memo, "messages", said) == 0 &&
+        (compiled || memo_keep_text(memo, "from-store", "") == 0) &&
+        memo_keep(memo, "object.o", opath) == 0)
         memo_use(memo);
     return 0;
 }

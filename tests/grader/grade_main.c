@@ -317,7 +317,7 @@ static void csv_field(FILE *f, const char *s)
 
 /* What a grade --all run's memo holds: entries with an object (distinct
  * files compiled) and files that used them (counted in "uses"). */
-static void count_memo(const char *memo, int *built, int *files)
+static void count_memo(const char *memo, int *built, int *stored, int *files)
 {
     DIR *d = opendir(memo);
     if (!d)
@@ -330,6 +330,9 @@ static void count_memo(const char *memo, int *built, int *files)
         snprintf(path, sizeof path, "%s/%s/object.o", memo, e->d_name);
         if (access(path, F_OK) == 0)
             (*built)++;
+        snprintf(path, sizeof path, "%s/%s/from-store", memo, e->d_name);
+        if (access(path, F_OK) == 0)
+            (*stored)++;
         snprintf(path, sizeof path, "%s/%s/uses", memo, e->d_name);
         struct stat st;
         if (stat(path, &st) == 0)
@@ -476,14 +479,17 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     }
     free(names);
     free(all);
-    int built = 0, files = 0;
+    int built = 0, stored = 0, files = 0;
     if (memo[0]) {
-        count_memo(memo, &built, &files);
+        count_memo(memo, &built, &stored, &files);
         build_rmtree(memo);
     }
     if (fclose(f) != 0 || rename(tmp, csv) != 0)
         return fail(NULL, "%s: cannot write", csv);
-    if (built)
+    if (built && stored)
+        printf("built %d distinct stage files once each (%d compiled, %d from the kept builds), "
+               "for %d files in all\n", built, built - stored, stored, files);
+    else if (built)
         printf("compiled %d distinct stage files once each, for %d files in all\n", built, files);
     printf("graded %d submissions: wrote %s, and one .json and one .html (the report page) each\n",
            n, csv);
