@@ -72,6 +72,11 @@ KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
 %/.:
 	@mkdir -p $@
 
+# The compile flags, for the suites' small helper programs (tests/lib/cc_build.sh).
+.PHONY: print-cflags
+print-cflags:
+	@echo $(CFLAGS)
+
 all: $(BUILD)/kit/libkit.a $(BUILD)/bin/compare $(BUILD)/sub/labs/render \
      $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render) grader unit-tests
 

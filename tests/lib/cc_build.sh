@@ -2,9 +2,9 @@
 # from the kit's top directory:
 #     . tests/lib/cc_build.sh
 #     cc_build DIR PROGRAM LOG FILE.c...
-# compiles each FILE.c on its own (-Werror and the kit's warnings), then
-# links the objects into DIR/PROGRAM with -lm; the compiler's words go to
-# LOG.  Returns the first failing step's status.  One step at a time, and
+# compiles each FILE.c on its own with the kit's flags (the Makefile's
+# CFLAGS, asked of make once) and -Werror, then links the objects into
+# DIR/PROGRAM with -lm; the compiler's words go to LOG.  Returns the first failing step's status.  One step at a time, and
 # the link run inside DIR with names that are the same from run to run,
 # because the compile memo of `make test` keeps compiles and links (each by
 # its arguments and inputs) but not a command that does both.
@@ -12,14 +12,18 @@ cc_build() {
     cc_dir=$1 cc_prog=$2 cc_log=$3
     shift 3
     : >"$cc_log"
+    if [ -z "${cc_flags:-}" ]; then
+        cc_flags=$(${MAKE:-make} -s --no-print-directory print-cflags 2>>"$cc_log") && [ -n "$cc_flags" ] ||
+            { echo "cc_build: make print-cflags failed" >>"$cc_log"; return 1; }
+    fi
     cc_objs=
     for cc_src in "$@"; do
         cc_obj=${cc_src##*/}
         cc_obj=${cc_obj%.c}.o
-        ${CC:-cc} -std=c11 -O2 -ffp-contract=off -Wall -Wextra -Wpedantic -Werror \
-            -c "$cc_src" -o "$cc_dir/$cc_obj" >>"$cc_log" 2>&1 || return
+        # shellcheck disable=SC2086
+        ${CC:-cc} $cc_flags -Werror -c "$cc_src" -o "$cc_dir/$cc_obj" >>"$cc_log" 2>&1 || return
         cc_objs="$cc_objs $cc_obj"
     done
     # shellcheck disable=SC2086
-    (cd "$cc_dir" && ${CC:-cc} -std=c11 -O2 $cc_objs -o "$cc_prog" -lm) >>"$cc_log" 2>&1
+    (cd "$cc_dir" && ${CC:-cc} $cc_flags $cc_objs -o "$cc_prog" -lm) >>"$cc_log" 2>&1
 }
