@@ -72,11 +72,6 @@ KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
 %/.:
 	@mkdir -p $@
 
-# The compile flags, for the suites' small helper programs (tests/lib/cc_build.sh).
-.PHONY: print-cflags
-print-cflags:
-	@echo $(CFLAGS)
-
 all: $(BUILD)/kit/libkit.a $(BUILD)/bin/compare $(BUILD)/sub/labs/render \
      $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render) grader unit-tests
 
@@ -315,6 +310,11 @@ student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 	done
 	$(BUILD)/bin/pack targz out/student-kit.tar.gz $(KIT_DIR) student-kit
 	@echo "wrote $(KIT_DIR)/ and out/student-kit.tar.gz"
+
+# The compile flags, for the suites' small helper programs (tests/lib/cc_build.sh).
+.PHONY: print-cflags
+print-cflags:
+	@echo $(CFLAGS)
 
 # ---- handouts --------------------------------------------------------------
 # The handouts' figures, drawn by the kit from the reference and from faulty
