@@ -66,9 +66,14 @@ static int read_input(void)
     return 0;
 }
 
+static int is_space(char c)
+{
+    return c == ' ' || c == '\n' || c == '\t' || c == '\r';
+}
+
 static void skip_space(void)
 {
-    while (*at == ' ' || *at == '\n' || *at == '\t' || *at == '\r')
+    while (is_space(*at))
         at++;
 }
 
@@ -78,7 +83,7 @@ static int word(const char *w)
 {
     skip_space();
     size_t n = strlen(w);
-    if (strncmp(at, w, n) != 0 || (at[n] && at[n] != ' ' && at[n] != '\n'))
+    if (strncmp(at, w, n) != 0 || (at[n] && !is_space(at[n])))
         return -1;
     at += n;
     return 0;
@@ -90,7 +95,7 @@ static int next_word(char *buf, size_t size)
 {
     skip_space();
     size_t n = 0;
-    while (at[n] && at[n] != ' ' && at[n] != '\n' && at[n] != '\t' && at[n] != '\r')
+    while (at[n] && !is_space(at[n]))
         n++;
     if (n == 0 || n >= size)
         return -1;

@@ -13,7 +13,8 @@
 #include <stdint.h>
 #include <string.h>
 
-#define HEXFLOAT_MAX 32   /* the longest text, "-0x1.fffffffffffffp+1023", and its NUL */
+#define HEXFLOAT_MAX 32   /* room for the longest text, "-0x1.fffffffffffffp+1023"
+                             (24 characters), and its NUL */
 
 /* Writes x into out (at least HEXFLOAT_MAX bytes) with a NUL after it;
  * returns the length. */
