@@ -181,6 +181,8 @@ typedef struct {
     uint32_t *head;     /* per hash: 1 + the latest position - base, or 0 */
     uint32_t *prev;     /* per position mod the window: 1 + the previous
                            position - base, or 0                         */
+    size_t nprev;       /* prev's entries: the window, or n when shorter
+                           (then a position is its own index)           */
 } DfMatcher;
 
 /* Queues the low count bits of value (count <= 32), first bit first. */
@@ -269,7 +271,7 @@ static void df_rebase(DfMatcher *m)
 {
     for (size_t k = 0; k < DF_HASH_SIZE; k++)
         m->head[k] = m->head[k] > DF_REBASE ? (uint32_t)(m->head[k] - DF_REBASE) : 0;
-    for (size_t k = 0; k < DF_WINDOW; k++)
+    for (size_t k = 0; k < m->nprev; k++)
         m->prev[k] = m->prev[k] > DF_REBASE ? (uint32_t)(m->prev[k] - DF_REBASE) : 0;
     m->base += DF_REBASE;
 }
@@ -364,9 +366,14 @@ static void df_emit_stored(DfWriter *w, const unsigned char *data, size_t n, int
 int kit_deflate(const void *in, size_t n, KitBuf *out)
 {
     size_t old_len = out->len;
+    /* The chains and a block's symbols need no more entries than there
+     * are bytes: a small figure's PNG, or a test's, does not clear 384 KiB
+     * it never uses (the hash heads stay whole: they decide the matches). */
+    size_t nprev = n < DF_WINDOW ? (n ? n : 1) : DF_WINDOW;
+    size_t nsyms = n < DF_BLOCK_INPUT ? (n ? n : 1) : DF_BLOCK_INPUT;
     DfMatcher m = {in, n, 0, calloc(DF_HASH_SIZE, sizeof(uint32_t)),
-                   calloc(DF_WINDOW, sizeof(uint32_t))};
-    DfSymbol *syms = malloc(DF_BLOCK_INPUT * sizeof *syms);
+                   calloc(nprev, sizeof(uint32_t)), nprev};
+    DfSymbol *syms = malloc(nsyms * sizeof *syms);
     DfWriter w = {out, 0, 0, 0};
     if (!m.head || !m.prev || !syms)
         w.failed = 1;
