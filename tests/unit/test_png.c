@@ -226,6 +226,31 @@ static void test_deflate_all_sizes_small(void)
     free(data);
 }
 
+/* Inputs of the window's size (32768) and of a block's (65277), and a byte
+ * either side: below them the compressor sizes its tables to the input,
+ * so an entry past the input's end would be out of bounds (the sanitized
+ * build sees it).  Random bytes give a literal per byte, the most symbols
+ * a block can have; repeated, they give matches from as far back as the
+ * window lets. */
+static void test_deflate_sizes_at_the_window(void)
+{
+    static const size_t sizes[] = {32767, 32768, 32769, 65276, 65277, 65278};
+    unsigned char *noise = random_bytes(65278), *repeated = malloc(65278);
+    CHECK(repeated != NULL);
+    if (!repeated)
+        return;
+    for (size_t k = 0; k < 65278; k++)
+        repeated[k] = noise[k % 20000];
+    for (size_t s = 0; s < sizeof sizes / sizeof *sizes; s++) {
+        deflate_round_trip(noise, sizes[s]);
+        size_t size = deflate_round_trip(repeated, sizes[s]);
+        CHECK_MSG(size < sizes[s] * 3 / 4, "%zu bytes, a 20000-byte pattern repeated: %zu bytes compressed",
+                  sizes[s], size);
+    }
+    free(noise);
+    free(repeated);
+}
+
 /* ---- inflate of hand-made streams --------------------------------------------------- */
 
 static void test_inflate_stored_by_hand(void)
@@ -1031,6 +1056,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_deflate_repetitive_text),
     CHECK_TEST(test_deflate_periodic),
     CHECK_TEST(test_deflate_all_sizes_small),
+    CHECK_TEST(test_deflate_sizes_at_the_window),
     CHECK_TEST(test_inflate_stored_by_hand),
     CHECK_TEST(test_inflate_fixed_by_hand),
     CHECK_TEST(test_inflate_dynamic_block),
