@@ -277,8 +277,9 @@ int tests_read(TestList *list, const char *path, bool hidden, char *err, size_t 
             for (int k = 0; k < NKINDS; k++)
                 if (strcmp(kind, kind_names[k]) == 0)
                     kd = k;
-            if (pt < 0 || kd < 0 || (strcmp(group, "core") && strcmp(group, "hard")) || !(weight > 0))
-                BAD("bad part, kind, group or weight");
+            if (pt < 0 || kd < 0 || (strcmp(group, "core") && strcmp(group, "hard")) ||
+                !(weight > 0 && weight <= TEST_MAX_WEIGHT))
+                BAD("bad part, kind, group or weight (more than 0, at most 1000000)");
             t = testlist_add(list, pt, (Kind)kd, "");
             t->hard = strcmp(group, "hard") == 0;
             t->hidden = hidden;
@@ -309,7 +310,14 @@ int tests_read(TestList *list, const char *path, bool hidden, char *err, size_t 
                 BAD("triangle needs 9 numbers");
             test_add_triangle(t, v);
         } else if (strncmp(p, "nx ", 3) == 0) {
-            t->image_nx = atoi(p + 3);
+            char *q;
+            errno = 0;
+            long nx = strtol(p + 3, &q, 10);
+            while (*q == ' ' || *q == '\t' || *q == '\r' || *q == '\n')
+                q++;
+            if (errno || q == p + 3 || *q || nx < 1 || nx > TEST_MAX_NX)
+                BAD("nx needs a whole number from 1 to 16384");
+            t->image_nx = (int)nx;
         } else if (strncmp(p, "case", 4) == 0) {
             int nin = kind_in[t->kind], nout = kind_out[t->kind];
             last = test_add_case(t);
@@ -319,6 +327,8 @@ int tests_read(TestList *list, const char *path, bool hidden, char *err, size_t 
                 get_numbers(&p, last->tol, nout) || get_numbers(&p, last->alt, nout) ||
                 get_numbers(&p, &flags, 1))
                 BAD("case needs: inputs | wanted | tolerances | alternatives | flags");
+            if (flags != 0 && flags != CASE_EITHER_HIT)
+                BAD("case flags must be 0, or 1 (a hit or a miss both accepted)");
             last->flags = (unsigned)flags;
         } else if (strncmp(p, "hint", 4) == 0) {
             if (!last || last->nhints == CASE_MAX_HINTS)

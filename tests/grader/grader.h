@@ -38,6 +38,8 @@ typedef enum {
 #define CASE_MAX_IN   15
 #define CASE_MAX_OUT  6
 #define CASE_MAX_HINTS 12
+#define TEST_MAX_WEIGHT 1e6       /* a test's weight, in a test file        */
+#define TEST_MAX_NX   16384       /* an image test's width, as a scene's     */
 
 /* Case flags */
 #define CASE_EITHER_HIT 1u     /* hit or miss both acceptable (rounding); for
