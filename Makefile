@@ -63,7 +63,7 @@ KIT_OBJ    = $(KIT_SRC:labs/kit/%.c=$(BUILD)/kit/%.o)
 KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
 
 .PHONY: all help render compare grade grade-all gradescope student-kit bench \
-        handouts test test-build unit-tests clean grader public-tests
+        handouts test test-build unit-tests clean grader public-tests fuzz
 .DELETE_ON_ERROR:
 .SECONDARY:                             # keep the objects a chain of rules makes (the renderer's lto/)
 .SECONDEXPANSION:
@@ -81,7 +81,7 @@ help:
 	@echo "make grade   [SUBMISSION=dir] [PART=1|2|3a|3b|4|5] [RESULTS=file]"
 	@echo "             [FORMAT=gradescope|prairielearn] [CLASSROOM=file]"
 	@echo "make grade-all SUBMISSIONS=dir [OUT=dir] [JOBS=n]"
-	@echo "make gradescope | prairielearn | student-kit | bench | handouts | test | clean"
+	@echo "make gradescope | prairielearn | student-kit | bench | fuzz | handouts | test | clean"
 
 $(BUILD)/kit/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) $(THREADS) -c $< -o $@
@@ -428,6 +428,28 @@ bench: $(BUILD)/bin/bench $(BUILD)/bin/bench-reordered
 # The renderer with the reference stages, sanitized (tests/suites/render_cli.sh).
 $(ASAN)/bin/render-solutions: $(ASAN)/kit/render_main.o $(REF_ASAN) $(ASAN)/kit/libkit.a | $$(@D)/.
 	$(CC) $(SAN_LINK) $(THREADS) $^ -o $@ $(LDLIBS)
+
+# ---- fuzzing the readers of untrusted input (tests/fuzz) --------------------
+# `make fuzz [FUZZ="scene png ..."] [FUZZ_SECONDS=n]` builds each target
+# with clang's libFuzzer and the sanitizers, then runs it (tests/fuzz/run.sh).
+# Not part of `make test`: a run finds what it finds in its time.
+FUZZ_CC    ?= clang
+FUZZ_FLAGS  = $(STD) -g -O1 $(FPFLAGS) $(WARN) -fsanitize=fuzzer,address,undefined \
+              -fno-sanitize-recover=all
+FUZZ_SRC    = $(filter-out labs/kit/render.c labs/kit/closest.c,$(KIT_SRC)) tests/grader/cases.c \
+              tests/grader/check.c tests/grader/config.c tests/tools/json_read.c
+FUZZ_OBJ    = $(addprefix $(OUT_ROOT)/fuzz/obj/,$(notdir $(FUZZ_SRC:.c=.o)))
+$(OUT_ROOT)/fuzz/obj/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
+	$(FUZZ_CC) $(FUZZ_FLAGS) -c $< -o $@
+$(OUT_ROOT)/fuzz/obj/%.o: tests/grader/%.c $(GRADER_HDR) | $$(@D)/.
+	$(FUZZ_CC) $(FUZZ_FLAGS) -Ilabs -c $< -o $@
+$(OUT_ROOT)/fuzz/obj/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) | $$(@D)/.
+	$(FUZZ_CC) $(FUZZ_FLAGS) -c $< -o $@
+$(OUT_ROOT)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz.h $(FUZZ_OBJ) | $$(@D)/.
+	$(FUZZ_CC) $(FUZZ_FLAGS) -Ilabs $< $(FUZZ_OBJ) -o $@ $(LDLIBS)
+fuzz:
+	@if [ -f tests/fuzz/run.sh ]; then FUZZ_OUT=$(OUT_ROOT)/fuzz FUZZ_CC=$(FUZZ_CC) sh tests/fuzz/run.sh $(FUZZ); \
+	 else echo "make fuzz: only the instructor's kit has the fuzz targets (tests/fuzz)"; exit 2; fi
 
 # What the tests need built (`make -j2 test-build` builds it on two cores).
 test-build: all $(BUILD)/ccmemo/cc $(UNIT_ASAN) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)
