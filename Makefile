@@ -437,7 +437,9 @@ FUZZ_CC    ?= clang
 FUZZ_FLAGS  = $(STD) -g -O1 $(FPFLAGS) $(WARN) -fsanitize=fuzzer,address,undefined \
               -fno-sanitize-recover=all
 FUZZ_SRC    = $(filter-out labs/kit/render.c labs/kit/closest.c,$(KIT_SRC)) tests/grader/cases.c \
-              tests/grader/check.c tests/grader/config.c tests/tools/json_read.c
+              tests/grader/check.c tests/grader/config.c tests/grader/markup.c \
+              tests/grader/figures.c $(wildcard tests/grader/fig_*.c) tests/tools/json_read.c \
+              tests/tools/base64.c
 FUZZ_OBJ    = $(addprefix $(OUT_ROOT)/fuzz/obj/,$(notdir $(FUZZ_SRC:.c=.o)))
 $(OUT_ROOT)/fuzz/obj/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
 	$(FUZZ_CC) $(FUZZ_FLAGS) -c $< -o $@

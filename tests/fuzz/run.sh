@@ -16,7 +16,7 @@ out=${FUZZ_OUT:-out/fuzz}
 seconds=${FUZZ_SECONDS:-30}
 case $seconds in '' | *[!0-9]* | 0) echo "FUZZ_SECONDS must be a whole number of seconds above 0" >&2; exit 2 ;; esac
 if [ $# -eq 0 ]; then
-    set -- scene obj png ppm inflate answers tests weights json
+    set -- scene obj png ppm inflate answers figures tests weights json
 fi
 for name in "$@"; do
     if [ ! -f "tests/fuzz/fuzz_$name.c" ]; then
@@ -73,6 +73,20 @@ for name in "$@"; do
     answers)
         printf '\000\000%s\n%s\n' '0x1p+1 0x1p+2' 'end 1' >"$dir/part1"
         printf '\040\000%s\n%s\n%s\n' '0x1p+0 0x1.8p+1' 'nan inf' 'end 2' >"$dir/other"
+        ;;
+    figures)
+        # Three bytes pick a test and a case; then doubles, little-endian:
+        # 2, 4, 1 (Part 1's worked example), and NaN, inf, -0, 1e308.
+        two='\000\000\000\000\000\000\000\100' four='\000\000\000\000\000\000\020\100'
+        one='\000\000\000\000\000\000\360\077' nan='\000\000\000\000\000\000\370\177'
+        inf='\000\000\000\000\000\000\360\177' zero='\000\000\000\000\000\000\000\200'
+        big='\240\310\353\205\363\314\341\177'
+        # shellcheck disable=SC2059
+        printf "\000\000\000$four$two$one" >"$dir/worked"
+        # shellcheck disable=SC2059
+        printf "\100\000\001$nan$inf$zero$big$one$two" >"$dir/odd"
+        # shellcheck disable=SC2059
+        printf "\220\000\000$one$two$four$one$zero$one" >"$dir/other"
         ;;
     tests)
         for f in tests/public/*.tests; do

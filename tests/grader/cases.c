@@ -3,13 +3,14 @@
  *
  *     # comment
  *     test 1 plane core 1                  part, kind, group (core|hard), weight
+ *                                          (above 0, at most 1e6)
  *     name Part 1: the worked example      the rest of the line
  *     note what the test is about          (optional)
  *     background r g b                     (color and image tests)
  *     sphere cx cy cz R r g b              (color and image tests, repeated)
- *     nx 32                                (image tests: the image's width)
+ *     nx 32                                (image tests: the image's width, 1 to 16384)
  *     triangle ax ay az bx by bz cx cy cz  (mesh tests, repeated)
- *     case IN... | WANT... | TOL... | ALT... | FLAGS
+ *     case IN... | WANT... | TOL... | ALT... | FLAGS   (FLAGS 0, or 1: CASE_EITHER_HIT)
  *     hint OUT... | what the mistake is
  *     end
  *
