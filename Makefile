@@ -447,7 +447,7 @@ $(OUT_ROOT)/fuzz/obj/%.o: tests/grader/%.c $(GRADER_HDR) | $$(@D)/.
 	$(FUZZ_CC) $(FUZZ_FLAGS) -Ilabs -c $< -o $@
 $(OUT_ROOT)/fuzz/obj/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) | $$(@D)/.
 	$(FUZZ_CC) $(FUZZ_FLAGS) -c $< -o $@
-$(OUT_ROOT)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz.h $(FUZZ_OBJ) | $$(@D)/.
+$(OUT_ROOT)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz.h tests/fuzz/fuzz_public.h $(FUZZ_OBJ) | $$(@D)/.
 	$(FUZZ_CC) $(FUZZ_FLAGS) -Ilabs $< $(FUZZ_OBJ) -o $@ $(LDLIBS)
 fuzz:
 	@if [ -f tests/fuzz/run.sh ]; then FUZZ_OUT=$(OUT_ROOT)/fuzz FUZZ_CC=$(FUZZ_CC) sh tests/fuzz/run.sh $(FUZZ); \

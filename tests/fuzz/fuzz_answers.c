@@ -2,27 +2,14 @@
  * the harness, but the student's code shares its process and may write
  * anything there.  The first two bytes pick one of the public tests. */
 #include "fuzz.h"
-#include "../grader/grader.h"
+#include "fuzz_public.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    static TestList list;
-    static int loaded;
-    if (!loaded) {
-        char err[512];
-        for (int p = 0; p < NPARTS; p++) {
-            char path[64];
-            snprintf(path, sizeof path, "tests/public/part%s.tests", part_label(p));
-            if (tests_read(&list, path, false, err, sizeof err) != 0) {
-                fprintf(stderr, "%s (run from the kit's top directory)\n", err);
-                abort();
-            }
-        }
-        loaded = 1;
-    }
-    if (size < 2 || list.n == 0)
+    const TestList *list = fuzz_public_tests();
+    if (size < 2 || list->n == 0)
         return 0;
-    const Test *t = &list.tests[(data[0] | data[1] << 8) % list.n];
+    const Test *t = &list->tests[(data[0] | data[1] << 8) % list->n];
     char *answers = fuzz_text(data + 2, size - 2), *out = NULL;
     Answers a;
     check_answers(t, answers, size - 2, &out, &a);

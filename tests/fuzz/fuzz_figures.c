@@ -4,30 +4,15 @@
  * public tests, the third its case; the rest are the answers' doubles, as
  * many as a case has outputs (for an image test, every pixel's, repeated). */
 #include "fuzz.h"
+#include "fuzz_public.h"
 #include "../grader/figures.h"
-
-static TestList list;
-
-static void load(void)
-{
-    char err[512];
-    for (int p = 0; p < NPARTS; p++) {
-        char path[64];
-        snprintf(path, sizeof path, "tests/public/part%s.tests", part_label(p));
-        if (tests_read(&list, path, false, err, sizeof err) != 0) {
-            fprintf(stderr, "%s (run from the kit's top directory)\n", err);
-            abort();
-        }
-    }
-}
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    if (!list.n)
-        load();
-    if (size < 3 + sizeof(double))
+    const TestList *list = fuzz_public_tests();
+    if (size < 3 + sizeof(double) || list->n == 0)
         return 0;
-    const Test *t = &list.tests[(data[0] | data[1] << 8) % list.n];
+    const Test *t = &list->tests[(data[0] | data[1] << 8) % list->n];
     int c = data[2] % t->ncases, nout = kind_nout(t->kind);
     size_t nd = (size - 3) / sizeof(double);
     TestResult r;
