@@ -16,7 +16,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
@@ -33,7 +32,8 @@ static inline char *fuzz_text(const uint8_t *data, size_t size)
 }
 
 /* The input written to a file named name in a directory of this process's
- * own (made once, under TMPDIR); returns its path, the same each call. */
+ * own (made once, under TMPDIR: run.sh points it into FUZZ_OUT and clears
+ * it); returns its path, the same each call. */
 static inline const char *fuzz_file(const uint8_t *data, size_t size, const char *name)
 {
     static char dir[256], path[512];

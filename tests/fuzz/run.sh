@@ -116,9 +116,13 @@ runs=0
 failed=0
 for name in "$@"; do
     log=$out/logs/$name.log
-    "$out/fuzz_$name" -max_total_time="$seconds" -max_len=16384 -print_final_stats=1 \
+    # The targets that read files write them under TMPDIR: here, cleared after.
+    rm -rf "$out/tmp" && mkdir -p "$out/tmp"
+    case $out in /*) tmp=$out/tmp ;; *) tmp=$PWD/$out/tmp ;; esac
+    TMPDIR=$tmp "$out/fuzz_$name" -max_total_time="$seconds" -max_len=16384 -print_final_stats=1 \
         -artifact_prefix="$out/crashes/$name-" "$out/corpus/$name" "$out/seeds/$name" >"$log" 2>&1
     status=$?
+    rm -rf "$out/tmp"
     n=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
     runs=$((runs + ${n:-0}))
     if [ "$status" -eq 0 ]; then

@@ -184,5 +184,8 @@ static const CheckTest tests[] = {
 int main(int argc, char **argv)
 {
     setup();
-    return check_main(argc, argv, tests, CHECK_COUNT(tests));
+    int status = check_main(argc, argv, tests, CHECK_COUNT(tests));
+    if (dir[0] && check_remove_tree(dir) != 0)
+        printf("    (could not remove %s)\n", dir);
+    return status;
 }
