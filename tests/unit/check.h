@@ -12,7 +12,7 @@
  * An argument runs only the tests whose names contain it.
  * check_temp_dir and check_remove_tree give a test a directory of its own.
  * check_xorshift32 is a small deterministic pseudo-random generator for a
- * test's inputs.
+ * test's inputs.  CHECK_SANITIZED is 1 in the sanitized build.
  * Include it before any other header: it sets _POSIX_C_SOURCE.
  */
 #ifndef CHECK_H
@@ -31,6 +31,23 @@
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+/* CHECK_SANITIZED: 1 when built with the address sanitizer (gcc says so
+ * with __SANITIZE_ADDRESS__, clang with __has_feature), else 0.  The
+ * sanitized build runs the same tests to find memory errors; where a test
+ * spends seconds on what no build changes (a second of CPU the system's
+ * limit must stop, the same sums at a larger size), that build may do the
+ * cheaper form of it, and the plain build does the whole. */
+#if defined(__SANITIZE_ADDRESS__)
+#define CHECK_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define CHECK_SANITIZED 1
+#endif
+#endif
+#ifndef CHECK_SANITIZED
+#define CHECK_SANITIZED 0
+#endif
 
 #ifndef CHECK_TIMEOUT_SECONDS
 #define CHECK_TIMEOUT_SECONDS 120

@@ -275,7 +275,11 @@ static void check_plain_loop(const char *path, int nx, int ny)
 }
 
 /* The renderer's image is the stage functions' answer at every pixel, for
- * widths on either side of the renderer's runs of 16 pixels. */
+ * widths on either side of the renderer's runs of 16 pixels.  cracks.scene
+ * is checked at its own size, where the rays run along the triangles'
+ * edges and ties decide pixels: 2 x 40 million triangle tests, which take
+ * the sanitized build 2.5 s; that build (CHECK_SANITIZED), whose sums are
+ * the same, checks it at a sixteenth of the size. */
 static void test_same_as_plain_loop(void)
 {
     static const int widths[] = { 1, 2, 15, 16, 17, 31, 32, 33, 97, 640 };
@@ -285,7 +289,10 @@ static void test_same_as_plain_loop(void)
     check_plain_loop("labs/scenes/behind.scene", 161, 120);
     check_plain_loop("labs/scenes/flip.scene", 47, 53);
     check_plain_loop("labs/scenes/ground.scene", 161, 120);
-    check_plain_loop("labs/scenes/cracks.scene", 320, 240);
+    if (CHECK_SANITIZED)
+        check_plain_loop("labs/scenes/cracks.scene", 80, 60);
+    else
+        check_plain_loop("labs/scenes/cracks.scene", 320, 240);
 }
 
 static const Vec3 BLUE = { 0.1, 0.3, 0.9 };
