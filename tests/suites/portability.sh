@@ -268,7 +268,7 @@ else
         if have "$c" && is_clang "$c"; then other=$c; break; fi
     done
 fi
-cflags=$(printf 'print-cflags:\n\t@echo $(CFLAGS) $(THREADS)\n' | ${MAKE:-make} -s -f Makefile -f - print-cflags)
+cflags=$(printf 'portability-flags:\n\t@echo $(CFLAGS) $(THREADS)\n' | ${MAKE:-make} -s -f Makefile -f - portability-flags)
 
 # The default compiler, -Werror, every C file (the main build compiled them
 # without it); only those changed since the last clean pass, or all of them
