@@ -346,9 +346,8 @@ UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
 # student kit builds three of these in every run of its suite.  The object
 # is made again whenever the libraries are, as the program was before.
 # (Not the grader's units nor test_serve: their own rules are below.)
-GRADER_UNITS = sandbox include_scan memo
-UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) $(BUILD)/tests/test_serve \
-             $(BUILD)/tests/test_cases,$(UNIT_BIN))
+GRADER_UNITS = sandbox include_scan memo cases
+UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) $(BUILD)/tests/test_serve,$(UNIT_BIN))
 $(UNIT_PLAIN:$(BUILD)/tests/%=$(BUILD)/tests/obj/%.o): $(BUILD)/tests/obj/%.o: tests/unit/%.c \
                           tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS) | $$(@D)/.
 	$(CC) $(CFLAGS) $(THREADS) -Ilabs -c $< -o $@
@@ -360,22 +359,14 @@ $(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN)
 # test_hexfloat checks a header of the grader's.
 $(BUILD)/tests/obj/test_hexfloat.o $(ASAN)/tests/test_hexfloat: tests/grader/hexfloat.h
 
-# The unit tests of the grader's sandbox, include scan and memo link the part alone.
+# The unit tests of the grader's sandbox, include scan, memo and test files'
+# reader (cases.c) link the part alone.
 $(GRADER_UNITS:%=$(BUILD)/tests/test_%): $(BUILD)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
-                                         tests/grader/%.c tests/grader/%.h tests/grader/serve_protocol.h \
-                                         $(BUILD)/kit/libkit.a | $$(@D)/.
+                                         tests/grader/%.c $(GRADER_HDR) $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs $< tests/grader/$*.c $(BUILD)/kit/libkit.a -o $@ $(LDLIBS)
 $(GRADER_UNITS:%=$(ASAN)/tests/test_%): $(ASAN)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
-                                        tests/grader/%.c tests/grader/%.h tests/grader/serve_protocol.h \
-                                        $(ASAN)/kit/libkit.a | $$(@D)/.
+                                        tests/grader/%.c $(GRADER_HDR) $(ASAN)/kit/libkit.a | $$(@D)/.
 	$(CC) $(SAN_LINK) -Ilabs $< tests/grader/$*.c $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
-# The test files' reader's unit test links the reader alone.
-$(BUILD)/tests/test_cases: tests/unit/test_cases.c tests/unit/check.h tests/grader/cases.c \
-                           tests/grader/grader.h $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(CC) $(CFLAGS) -Ilabs $< tests/grader/cases.c $(BUILD)/kit/libkit.a -o $@ $(LDLIBS)
-$(ASAN)/tests/test_cases: tests/unit/test_cases.c tests/unit/check.h tests/grader/cases.c \
-                          tests/grader/grader.h $(ASAN)/kit/libkit.a | $$(@D)/.
-	$(CC) $(SAN_LINK) -Ilabs $< tests/grader/cases.c $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
 # The server of tests' unit test links the sandbox and, on Linux, the
 # runner's server side (test_serve is its own server).
 SERVE_SRC = tests/grader/sandbox.c $(if $(LOAD_RUNNERS),tests/grader/harness_serve.c)
