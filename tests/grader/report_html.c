@@ -51,6 +51,7 @@ static const char *const style =
     ".renders img{width:100%;height:auto;border:1px solid #bbb;image-rendering:pixelated}\n"
     ".nopic{border:1px dashed #b42318;background:#fff6f5;padding:.8em;font-size:.92em}\n"
     ".nopic pre{border:none;background:none;padding:0;margin:0}\n"
+    ".nopic.same{border-color:#1a7f37;background:#f2fbf4}\n"
     "figcaption{font-size:.9em;color:#444;margin-top:.3em}\n"
     "article.test{border:1px solid #ddd;border-radius:6px;padding:.8em 1em;margin:1em 0;"
     "break-inside:avoid;page-break-inside:avoid}\n"
@@ -198,6 +199,14 @@ static void no_picture(Markup *m, const char *caption, const char *why)
     mk_printf(m, "</figcaption></figure>\n");
 }
 
+/* In place of the heat map of identical pictures, which is all black. */
+static void no_difference(Markup *m)
+{
+    mk_printf(m, "<figure><div class=\"nopic same\"><pre>The two pictures are identical, pixel "
+                 "for pixel:\nthere is no difference to map.</pre></div><figcaption>difference: "
+                 "none</figcaption></figure>\n");
+}
+
 /* The scene drawn by the submission, by the reference, and their heat map. */
 static void renders(Markup *m, const ReportRenders *rr)
 {
@@ -227,20 +236,21 @@ static void renders(Markup *m, const ReportRenders *rr)
                 same ? &sub_uri : NULL, rr->ref_png, rr->ref_png_len, NULL);
     else
         no_picture(m, "the reference: no picture", rr->ref_note);
+    /* Identical pictures have an all-black heat map: a box says so
+     * instead, and the page spares encoding it and the map's scale. */
     Image heat;
     char err[256];
-    if (comparable && compare_heat_map(&rr->sub, &rr->ref, &heat, err, sizeof err) == 0) {
+    if (same) {
+        no_difference(m);
+    } else if (comparable && compare_heat_map(&rr->sub, &rr->ref, &heat, err, sizeof err) == 0) {
         char caption[200];
-        if (same)
-            snprintf(caption, sizeof caption, "difference: none, the pictures are identical");
-        else
-            snprintf(caption, sizeof caption, "difference: %.3g%% of the pixels differ, by up to "
-                     "%d of 255", 100.0 * (double)st.differing / (double)st.pixels, st.max_error);
+        snprintf(caption, sizeof caption, "difference: %.3g%% of the pixels differ, by up to "
+                 "%d of 255", 100.0 * (double)st.differing / (double)st.pixels, st.max_error);
         picture(m, &heat, "heat map of the difference", caption, NULL, NULL, 0, NULL);
         image_free(&heat);
     }
     mk_printf(m, "</div>\n");
-    if (rr->have_sub && rr->have_ref)
+    if (rr->have_sub && rr->have_ref && !same)
         heat_scale(m);
     if (same)
         mk_printf(m, "<p>Your picture is exactly the reference's.</p>\n");

@@ -169,6 +169,9 @@ check "the reference's page: its picture is exactly the reference's" \
     grep -q 'exactly the reference' "$page/reference.html"
 check "a page per submission: the renders are there (3 images and the heat scale)" \
     sh -c "'$check_html' '$page/p1-w-h-swapped.html' | grep -qx 'images 4'"
+check "identical pictures: the two renders, and a box in place of the all-black heat map and its scale" \
+    sh -c "'$check_html' '$page/reference.html' | grep -qx 'images 2' &&
+           grep -q 'identical, pixel for pixel' '$page/reference.html'"
 check "a part that does not build: the page shows what the compiler said" \
     grep -q 'Your file did not build' "$page/hostile-compile-error.html"
 check "a part that does not build: no render, and the page says why" \
