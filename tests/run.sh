@@ -8,8 +8,8 @@
 # Suites that build the same thing share a lane (student_kit.sh and
 # classroom.sh both make the student kit), and so do the unit tests.  As
 # many workers as the machine has cores take lanes in a set order (below)
-# until none is left; a suite that could disturb the others runs alone once they
-# have finished.  (Starting all twelve lanes at once on 2 cores took 163 s
+# until none is left; a suite that could disturb the others runs alone
+# once they have finished.  (Starting all twelve lanes at once on 2 cores took 163 s
 # and 311 CPU-seconds, against 151 s and 284 with two workers.)  Each
 # suite's output is kept apart and shown whole, in a fixed order, once all
 # have finished.
