@@ -289,6 +289,7 @@ static int grade_one(const char *submission, const char *part, const char *resul
 typedef struct {
     char name[256];
     pid_t pid;
+    int slot;                   /* its place among those graded at once */
     int fd;                     /* the child's stdout */
     char line[512];
     size_t len;
@@ -341,6 +342,25 @@ static void count_memo(const char *memo, int *built, int *stored, int *files)
     closedir(d);
 }
 
+/* As root, the ids the submissions graded at once run their code as, one
+ * each: nobody for the first, spare ids for the others (sandbox.h).  Fewer
+ * ids than jobs (a system that gives no spare ids) means fewer jobs; jobs
+ * is at most MAX_ROOT_JOBS. */
+#define MAX_ROOT_JOBS 64
+static int job_users(int jobs, char ids[][16])
+{
+    uid_t spare[MAX_ROOT_JOBS - 1];
+    int found = jobs > 1 ? sandbox_spare_users(spare, jobs - 1) : 0;
+    ids[0][0] = '\0';                   /* nobody, as when graded alone */
+    for (int k = 0; k < found; k++)
+        snprintf(ids[k + 1], sizeof ids[k + 1], "%lu", (unsigned long)spare[k]);
+    if (found < jobs - 1)
+        fprintf(stderr, "grade: %d submission%s at a time: this system gave %d unprivileged "
+                        "user%s to run them as, one each\n", found + 1, found ? "s" : "",
+                found + 1, found ? "s" : "");
+    return found + 1;
+}
+
 static int grade_all(const char *self, const char *dir, const char *out, const char *weights, int jobs)
 {
     char err[1024];
@@ -378,6 +398,18 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
         build_tempdir(memo, sizeof memo, err, sizeof err) != 0)
         memo[0] = '\0';
 
+    char (*users)[16] = NULL;
+    bool *busy = NULL;
+    jobs = jobs < n ? jobs : n > 0 ? n : 1;
+    if (sandbox_drops_privileges()) {
+        jobs = jobs < MAX_ROOT_JOBS ? jobs : MAX_ROOT_JOBS;
+        users = calloc((size_t)jobs, sizeof *users);
+        busy = calloc((size_t)jobs, sizeof *busy);
+        if (!users || !busy)
+            return fail(NULL, "%s", "out of memory");
+        jobs = job_users(jobs, users);
+    }
+
     Job *all = calloc((size_t)n + 1, sizeof *all);
     int next = 0, running = 0, done = 0;
     const bool show_progress = isatty(STDERR_FILENO);   /* a log gets only the summary */
@@ -389,6 +421,13 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
             snprintf(sub, sizeof sub, "%s/%s", dir, names[next]);
             snprintf(res, sizeof res, "%s/%s.json", out, names[next]);
             snprintf(page, sizeof page, "%s/%s.html", out, names[next]);
+            /* As root, a free place, and with it the id the code runs as. */
+            j->slot = 0;
+            while (busy && busy[j->slot])
+                j->slot++;
+            const char *user = users ? users[j->slot] : "";
+            if (busy)
+                busy[j->slot] = true;
             int p[2];
             if (pipe(p) != 0)
                 return fail(NULL, "pipe: %s", strerror(errno));
@@ -397,9 +436,20 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
                 dup2(p[1], 1);
                 close(p[0]);
                 close(p[1]);
-                execl(self, self, "--submission", sub, "--results", res, "--weights", weights,
-                      "--report-file", page, "--quiet", "--summary",
-                      memo[0] ? "--memo" : (char *)NULL, memo, (char *)NULL);
+                char *argv[18] = { (char *)self, "--submission", sub, "--results", res,
+                                   "--weights", (char *)weights, "--report-file", page,
+                                   "--quiet", "--summary" };
+                int argc = 11;
+                if (memo[0]) {
+                    argv[argc++] = "--memo";
+                    argv[argc++] = memo;
+                }
+                if (user[0]) {
+                    argv[argc++] = "--sandbox-user";
+                    argv[argc++] = (char *)user;
+                }
+                argv[argc] = NULL;
+                execv(self, argv);
                 _exit(2);
             }
             close(p[1]);
@@ -423,6 +473,8 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
             close(j->fd);
             j->status = WIFEXITED(status) ? WEXITSTATUS(status) : 2;
             j->pid = 0;
+            if (busy)
+                busy[j->slot] = false;
             running--;
             done++;
         }
@@ -479,6 +531,8 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     }
     free(names);
     free(all);
+    free(users);
+    free(busy);
     int built = 0, stored = 0, files = 0;
     if (memo[0]) {
         count_memo(memo, &built, &stored, &files);
@@ -491,6 +545,9 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
                "for %d files in all\n", built, built - stored, stored, files);
     else if (built)
         printf("compiled %d distinct stage files once each, for %d files in all\n", built, files);
+    if (users && jobs > 1)
+        printf("graded %d at a time, as root: each one's code ran as an unprivileged user of its "
+               "own\n", jobs);
     printf("graded %d submissions: wrote %s, and one .json and one .html (the report page) each\n",
            n, csv);
     return worst;
@@ -503,7 +560,6 @@ int main(int argc, char **argv)
     char page_buf[PATH_MAX];
     bool quiet = false, summary = false;
     long jobs = sysconf(_SC_NPROCESSORS_ONLN);
-    bool jobs_given = false;
     for (int k = 1; k < argc; k++) {
         const char *a = argv[k];
         const char *v = k + 1 < argc ? argv[k + 1] : NULL;
@@ -525,7 +581,7 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--weights") && v)
             weights = v, k++;
         else if (!strcmp(a, "--jobs") && v)
-            jobs = atol(v), jobs_given = true, k++;
+            jobs = atol(v), k++;
         else if (!strcmp(a, "--quiet"))
             quiet = true;
         else if (!strcmp(a, "--summary"))
@@ -538,6 +594,14 @@ int main(int argc, char **argv)
             format = v, k++;
         else if (!strcmp(a, "--memo") && v)
             memo_dir = v, k++;
+        else if (!strcmp(a, "--sandbox-user") && v) {      /* from grade --all, as root */
+            char *end;
+            unsigned long id = strtoul(v, &end, 10);
+            if (*end || id == 0 || id != (unsigned long)(uid_t)id || (uid_t)id == (uid_t)-1)
+                usage();
+            sandbox_set_user((uid_t)id);
+            k++;
+        }
         else if (!strcmp(a, "--classroom") && v)
             classroom_path = *v ? v : NULL, k++;
         else
@@ -559,14 +623,6 @@ int main(int argc, char **argv)
         char wpath[PATH_MAX];
         if (!realpath(weights, wpath))      /* the children run from the same root */
             return fail(NULL, "%s: cannot find the weights file", weights);
-        /* As root every submission's code runs as the same unprivileged
-         * user, so two graded at once could signal each other's tests. */
-        if (!jobs_given && jobs > 1 && sandbox_drops_privileges()) {
-            fprintf(stderr, "grade: one submission at a time: as root, every submission's code runs as "
-                            "the same unprivileged user and could stop another's tests (--jobs N, "
-                            "make grade-all JOBS=N, grades N at once)\n");
-            jobs = 1;
-        }
         return grade_all(self, all, out, wpath, jobs > 0 ? (int)jobs : 1);
     }
     return grade_one(submission, part, results, weights, page, quiet, summary);

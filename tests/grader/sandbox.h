@@ -108,6 +108,14 @@ bool sandbox_watches_memory(void);
 bool sandbox_drops_privileges(void);
 /* Makes path owned by the unprivileged user (when root); 0 on success. */
 int sandbox_give(const char *path);
+/* As root: the children of this process run as the user and group id
+ * instead of "nobody" (grade --all gives each submission graded at once an
+ * id of its own, so that one's code cannot signal another's tests). */
+void sandbox_set_user(uid_t id);
+/* As root: up to n ids, from 65533 down, that no user and no group has
+ * (nor nobody), each checked by a child that takes it; stores them in
+ * ids and returns how many it found. */
+int sandbox_spare_users(uid_t *ids, int n);
 
 /* Seconds on a monotonic clock. */
 double sandbox_now(void);

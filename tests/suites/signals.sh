@@ -1,13 +1,17 @@
 #!/bin/sh
-# Code that signals every process it may, graded as root.  As root every
-# submission's code runs as the same unprivileged user, so grade --all
-# grades one submission at a time unless told otherwise: code that calls
-# kill(-1, SIGKILL) would stop a classmate's tests.  Graded beside the
-# reference, that code must cost the reference nothing.
+# Code that signals every process it may, graded as root beside a
+# classmate's.  As root each submission graded at once runs its code as an
+# unprivileged user of its own (grade --all: nobody, then ids that no user
+# or group has), so code that calls kill(-1, SIGKILL) reaches only its own
+# processes.  Here it does so for 0.6 s, in the first call of its Part 1
+# batch (its answers are right: it passes), while the classmate's Part 1
+# batch sleeps 0.9 s in its own first call: graded two at once, they
+# overlap.  (Given the same user, as they once were, the classmate lost
+# every part: its batches, tests and compiles died.)
 #
-# It would stop any other suite's tests running as that user at the same
-# time too, so tests/run.sh runs this suite alone, after the others.  (Not
-# as another user: there it would stop this suite too.)
+# It would stop any other suite's tests running as nobody at the same time
+# too, so tests/run.sh runs this suite alone, after the others.  (Not as
+# another user: there it would stop this suite too.)
 set -u
 grade=out/build/bin/grade
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtsignals.XXXXXX")
@@ -16,39 +20,53 @@ chmod 755 "$tmp"
 . tests/lib/checks.sh
 
 if [ "$(id -u)" = 0 ]; then
-    mkdir -p "$tmp/killers/a-reference" "$tmp/killers/b-kill-all"
-    cp solutions/part*.c "$tmp/killers/a-reference/"
-    cp solutions/part*.c "$tmp/killers/b-kill-all/"
-    cat >"$tmp/killers/b-kill-all/part1_image_plane.c" <<'EOF'
-#define _POSIX_C_SOURCE 200809L
-#include "raytracer.h"
+    # Each: the reference's Part 1, renamed, behind a first call that
+    # sleeps or signals; the reference's other parts.
+    for who in a-sleeper b-kill-all; do
+        mkdir -p "$tmp/killers/$who"
+        cp solutions/part*.c "$tmp/killers/$who/"
+        sed 's/^void image_plane_size(/static void reference_image_plane_size(/' \
+            solutions/part1_image_plane.c >"$tmp/killers/$who/part1_image_plane.c"
+    done
+    cat >>"$tmp/killers/a-sleeper/part1_image_plane.c" <<'EOF'
+
+#include <time.h>
+
+void image_plane_size(double fov_degrees, double aspect, double d, double *w, double *h)
+{
+    static int calls;
+    if (calls++ == 0)
+        nanosleep(&(struct timespec){ 0, 900000000 }, NULL);
+    reference_image_plane_size(fov_degrees, aspect, d, w, h);
+}
+EOF
+    cat >>"$tmp/killers/b-kill-all/part1_image_plane.c" <<'EOF'
+
 #include <signal.h>
 #include <time.h>
 
 void image_plane_size(double fov_degrees, double aspect, double d, double *w, double *h)
 {
-    (void)fov_degrees, (void)aspect, (void)d;
-    *w = *h = 0;
-    /* Every process of this user, every millisecond for 20 ms, on the
-     * first call in each process: a classmate's tests running meanwhile
-     * would die.  Then wrong answers, rather than looping until the time
-     * limit, which would cost this suite (it runs alone) seconds for each
-     * of the part's tests. */
+    /* Every process of this user, every millisecond for 0.6 s. */
     static int calls;
-    for (int k = 0; k < 20 && calls == 0; k++) {
+    for (int k = 0; k < 600 && calls == 0; k++) {
         kill(-1, SIGKILL);
         nanosleep(&(struct timespec){ 0, 1000000 }, NULL);
     }
     calls++;
+    reference_image_plane_size(fov_degrees, aspect, d, w, h);
 }
 EOF
     chmod -R a+rX "$tmp/killers"
-    $grade --all "$tmp/killers" --out "$tmp/grades-killers" >"$tmp/killers.out" 2>&1
-    check "as root, grade --all says it grades one submission at a time" \
-        grep -q "one submission at a time" "$tmp/killers.out"
-    check "code that signals every process costs the submission beside it nothing" \
-        grep -q "^a-reference,20,20,30,30," "$tmp/grades-killers/gradebook.csv"
-    check "and loses its own Part 1" grep -q "^b-kill-all,0," "$tmp/grades-killers/gradebook.csv"
+    $grade --all "$tmp/killers" --out "$tmp/grades-killers" --jobs 2 >"$tmp/killers.out" 2>&1
+    check "as root, grade --all --jobs 2 runs each submission's code as a user of its own" \
+        grep -q "^graded 2 at a time, as root: each one's code ran as an unprivileged user of its own$" \
+        "$tmp/killers.out"
+    check "code that signals every process costs the submission graded beside it nothing" \
+        grep -q "^a-sleeper,20,20,30,30,.*,full marks$" "$tmp/grades-killers/gradebook.csv"
+    check "and, its answers right, keeps its own marks" \
+        grep -q "^b-kill-all,20,20,30,30,.*,full marks$" "$tmp/grades-killers/gradebook.csv"
+    [ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/killers.out" "$tmp/grades-killers/gradebook.csv"
 else
     echo "   not root: the children run as this user; the check of signalling code was skipped"
 fi
