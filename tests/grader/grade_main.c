@@ -355,9 +355,9 @@ static int job_users(int jobs, char ids[][16])
     for (int k = 0; k < found; k++)
         snprintf(ids[k + 1], sizeof ids[k + 1], "%lu", (unsigned long)spare[k]);
     if (found < jobs - 1)
-        fprintf(stderr, "grade: %d submission%s at a time: this system gave %d unprivileged "
-                        "user%s to run them as, one each\n", found + 1, found ? "s" : "",
-                found + 1, found ? "s" : "");
+        fprintf(stderr, "grade: %d submission%s at a time, not %d: as root each runs its code as "
+                        "an unprivileged user of its own, and this system gives %d\n", found + 1,
+                found ? "s" : "", jobs, found + 1);
     return found + 1;
 }
 
