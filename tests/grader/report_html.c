@@ -42,7 +42,8 @@ static const char *const style =
     "table.scores td,table.scores th{border:1px solid #ccc;padding:.3em .7em;text-align:left}\n"
     "table.scores th{background:#f0f0f0}td.num{text-align:right;font-variant-numeric:tabular-nums}\n"
     ".full{color:#1a7f37;font-weight:bold}.lost{color:#b42318;font-weight:bold}\n"
-    ".diag{border-left:4px solid #d9480f;background:#fff4ec;padding:.5em .9em;margin:.7em 0}\n"
+    ".diag{border-left:4px solid #d9480f;background:#fff4ec;padding:.5em .9em;margin:.7em 0;"
+    "white-space:pre-line}\n"
     ".legend{display:flex;flex-wrap:wrap;gap:.4em 2em;align-items:center;background:#f7f9fc;"
     "border:1px solid #dde3ee;padding:.6em .9em}\n"
     ".legend svg{vertical-align:middle}\n"
@@ -113,7 +114,8 @@ static void scores(Markup *m, const Grade *g, const GradeConfig *cfg)
     for (int p = 0; p < NPARTS; p++) {
         if (!g->graded[p] || !g->diagnosis[p])
             continue;
-        mk_printf(m, "<div class=\"diag\"><strong>Part %s, what probably went wrong:</strong> ",
+        /* Its causes one a line, as the terminal shows them ("- ..."). */
+        mk_printf(m, "<div class=\"diag\"><strong>Part %s, what probably went wrong:</strong>\n",
                   part_label(p));
         mk_text(m, g->diagnosis[p]);
         mk_printf(m, "</div>\n");
@@ -202,9 +204,9 @@ static void no_picture(Markup *m, const char *caption, const char *why)
 /* In place of the heat map of identical pictures, which is all black. */
 static void no_difference(Markup *m)
 {
-    mk_printf(m, "<figure><div class=\"nopic same\"><pre>The two pictures are identical, pixel "
-                 "for pixel:\nthere is no difference to map.</pre></div><figcaption>difference: "
-                 "none</figcaption></figure>\n");
+    mk_printf(m, "<figure><div class=\"nopic same\">The two pictures are identical, pixel for "
+                 "pixel: there is no difference to map.</div><figcaption>difference: none"
+                 "</figcaption></figure>\n");
 }
 
 /* The scene drawn by the submission, by the reference, and their heat map. */

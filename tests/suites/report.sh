@@ -172,6 +172,9 @@ check "a page per submission: the renders are there (3 images and the heat scale
 check "identical pictures: the two renders, and a box in place of the all-black heat map and its scale" \
     sh -c "'$check_html' '$page/reference.html' | grep -qx 'images 2' &&
            grep -q 'identical, pixel for pixel' '$page/reference.html'"
+check "a diagnosis: its causes each on a line of their own, as the terminal shows them" \
+    sh -c "grep -A1 'Part 1, what probably went wrong:</strong>\$' '$page/p1-w-h-swapped.html' |
+           grep -q '^- w and h are swapped'"
 check "a part that does not build: the page shows what the compiler said" \
     grep -q 'Your file did not build' "$page/hostile-compile-error.html"
 check "a part that does not build: no render, and the page says why" \
