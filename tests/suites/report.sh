@@ -219,7 +219,6 @@ for b in chromium chromium-browser google-chrome; do
 done
 if [ -z "$browser" ]; then
     echo "   skipped: no headless browser (chromium) installed, so the page was not rendered"
-    pass
 else
     limited() {     # limited COMMAND...: at most 120 s where timeout(1) exists
         if command -v timeout >/dev/null 2>&1; then timeout 120 "$@"; else "$@"; fi  # portable: guarded
