@@ -88,7 +88,7 @@ void sandbox_set_user(uid_t id)
 {
     user_uid = id;
     user_gid = (gid_t)id;
-    user_known = true;
+    user_known = id != 0;
 }
 
 int sandbox_spare_users(uid_t *ids, int n)

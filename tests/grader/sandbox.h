@@ -110,7 +110,8 @@ bool sandbox_drops_privileges(void);
 int sandbox_give(const char *path);
 /* As root: the children of this process run as the user and group id
  * instead of "nobody" (grade --all gives each submission graded at once an
- * id of its own, so that one's code cannot signal another's tests). */
+ * id of its own, so that one's code cannot signal another's tests); 0: as
+ * "nobody" again. */
 void sandbox_set_user(uid_t id);
 /* As root: up to n ids, from 65533 down, that no user and no group has
  * (nor nobody), each checked by a child that takes it; stores them in

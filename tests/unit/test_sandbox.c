@@ -8,6 +8,7 @@
 #include "check.h"            /* first: it sets the POSIX feature level */
 #include <stdbool.h>
 #include <fcntl.h>
+#include <pwd.h>
 #include <sys/stat.h>
 #include "../grader/sandbox.h"
 
@@ -174,6 +175,54 @@ static void test_no_file_output(void)
     sandbox_result_free(&res);
 }
 
+/* As root, grade --all's spare users: distinct ids that are not nobody's
+ * and that no account has, and a child given one runs as it (the empty
+ * file it makes, which the file-size limit of 0 allows, is that id's). */
+static void test_spare_users(void)
+{
+    if (!sandbox_drops_privileges()) {
+        printf("    skipped: not root, so the children run as this user\n");
+        return;
+    }
+    uid_t ids[3];
+    int n = sandbox_spare_users(ids, 3);
+    CHECK_MSG(n == 3, "%d spare users of 3 (a user namespace that maps few ids gives fewer)", n);
+    struct passwd *nobody = getpwnam("nobody");
+    for (int k = 0; k < n; k++) {
+        CHECK_MSG(getpwuid(ids[k]) == NULL, "id %lu has an account", (unsigned long)ids[k]);
+        CHECK(!nobody || ids[k] != nobody->pw_uid);
+        CHECK(ids[k] != 0);
+        for (int j = 0; j < k; j++)
+            CHECK(ids[j] != ids[k]);
+    }
+    if (n < 1)
+        return;
+    char dir[512], file[600];
+    if (check_temp_dir(dir, sizeof dir, "spare") != 0)
+        return;
+    chmod(dir, 0755);
+    sandbox_set_user(ids[0]);
+    CHECK_EQ_INT(sandbox_give(dir), 0);
+    char *argv[] = { "/bin/sh", "-c", ": >mine; echo made >&3", NULL };
+    SandboxSpec spec = { .argv = argv, .workdir = dir, .timeout = 10, .memory_mb = 48,
+                         .max_procs = 0, .answer_max = 4096, .output_max = 4096 };
+    SandboxResult res;
+    char err[256];
+    if (sandbox_run(&spec, &res, err, sizeof err) == 0) {
+        CHECK_STR_CONTAINS(res.answer, "made");
+        struct stat st;
+        snprintf(file, sizeof file, "%s/mine", dir);
+        CHECK_MSG(stat(file, &st) == 0, "the child made no file");
+        CHECK_MSG(st.st_uid == ids[0] && st.st_gid == (gid_t)ids[0], "made by %lu:%lu, not %lu",
+                  (unsigned long)st.st_uid, (unsigned long)st.st_gid, (unsigned long)ids[0]);
+        sandbox_result_free(&res);
+    } else {
+        CHECK_MSG(0, "sandbox_run: %s", err);
+    }
+    sandbox_set_user(0);
+    check_remove_tree(dir);
+}
+
 /* max_procs 0: the child itself runs (RLIMIT_NPROC is checked at fork, and
  * on Linux at exec only after a setuid that found the user over it, which
  * the limit, set after the setuid, cannot cause), but it cannot fork. */
@@ -258,7 +307,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_memory_watch),     CHECK_TEST(test_memory_stops_hog), CHECK_TEST(test_small_program_runs),
     CHECK_TEST(test_oom_score_adj),    CHECK_TEST(test_killed_reported),  CHECK_TEST(test_cpu_limit),
     CHECK_TEST(test_wall_clock),       CHECK_TEST(test_no_file_output),   CHECK_TEST(test_no_processes),
-    CHECK_TEST(test_descriptors_closed), CHECK_TEST(test_output_stop),
+    CHECK_TEST(test_descriptors_closed), CHECK_TEST(test_output_stop), CHECK_TEST(test_spare_users),
 };
 
 int main(int argc, char **argv)
