@@ -282,6 +282,28 @@ static void flat_evidence(Text *t, const Test *test, const Case *c, const double
         say(t, "    hint:      t = %.17g is a whole number: is t, or a value it comes from, an int?\n", tg);
 }
 
+/* Parts 4 and 5: true when the test's answers missed some hits, and every
+ * hit they missed is at least a thousand times nearer the ray's origin than
+ * every hit they found: *missed is the farthest missed t, *found the
+ * nearest found.  A fact of the answers; what it suggests (an epsilon
+ * against shadow acne, where this lab's rule is tmin = 0) the hint says as
+ * such. */
+static bool flat_near_misses(const Test *test, const Answers *a, double *missed, double *found)
+{
+    *missed = -1;
+    *found = INFINITY;
+    for (int c = 0; c < a->answered; c++) {
+        const Case *cs = &test->cases[c];
+        if (cs->want[0] != 1 || !(cs->want[1] > 0))
+            continue;
+        if (a->ok[c])
+            *found = fmin(*found, cs->want[1]);
+        else if (a->got[c][0] == 0)
+            *missed = fmax(*missed, cs->want[1]);
+    }
+    return *missed > 0 && isfinite(*found) && *missed <= 1e-3 * *found;
+}
+
 void answers_free(Answers *a)
 {
     free(a->got);
@@ -344,11 +366,17 @@ bool check_answers(const Test *test, const char *answers, size_t len, char **out
         for (int k = 0; k < kind_nin(test->kind); k++)
             nan_in = nan_in || isnan(bad->in[k]);
         const char *why = flat_diagnosis(test, (const double (*)[CASE_MAX_OUT])a.got, a.ok, a.answered);
+        double missed, found;
         if (nan_in && a.got[a.first_bad][0] == 1)
             say(&t, "    hint:      NaN input must be a miss: a test written as \"t < 0: miss\" lets "
                     "NaN through (every comparison with NaN is false); write it as !(t > 0)\n");
         else if (why)
             say(&t, "    hint:      %s\n", why);
+        else if (flat_near_misses(test, &a, &missed, &found))
+            say(&t, "    hint:      every hit this test missed (the farthest at t = %.3g) is a thousand "
+                    "times nearer the ray's origin, or more, than every hit it found (the nearest at "
+                    "t = %.3g): are hits below some small t ignored? This lab's rule is tmin = 0: every "
+                    "hit with t > 0 counts\n", missed, found);
         else
             flat_evidence(&t, test, bad, a.got[a.first_bad], a.failed);
     }
