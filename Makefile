@@ -346,7 +346,7 @@ UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
 # student kit builds three of these in every run of its suite.  The object
 # is made again whenever the libraries are, as the program was before.
 # (Not the grader's units nor test_serve: their own rules are below.)
-GRADER_UNITS = sandbox include_scan memo cases
+GRADER_UNITS = sandbox include_scan memo cases check
 UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) $(BUILD)/tests/test_serve,$(UNIT_BIN))
 $(UNIT_PLAIN:$(BUILD)/tests/%=$(BUILD)/tests/obj/%.o): $(BUILD)/tests/obj/%.o: tests/unit/%.c \
                           tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS) | $$(@D)/.
@@ -359,14 +359,17 @@ $(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN)
 # test_hexfloat checks a header of the grader's.
 $(BUILD)/tests/obj/test_hexfloat.o $(ASAN)/tests/test_hexfloat: tests/grader/hexfloat.h
 
-# The unit tests of the grader's sandbox, include scan, memo and test files'
-# reader (cases.c) link the part alone.
+# The unit tests of the grader's sandbox, include scan, memo, test files'
+# reader (cases.c) and judging of answers (check.c) link the part alone,
+# and what it needs of another part (a prerequisite .c below).
 $(GRADER_UNITS:%=$(BUILD)/tests/test_%): $(BUILD)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
                                          tests/grader/%.c $(GRADER_HDR) $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(CC) $(CFLAGS) -Ilabs $< tests/grader/$*.c $(BUILD)/kit/libkit.a -o $@ $(LDLIBS)
+	$(CC) $(CFLAGS) -Ilabs $(filter %.c,$^) $(BUILD)/kit/libkit.a -o $@ $(LDLIBS)
 $(GRADER_UNITS:%=$(ASAN)/tests/test_%): $(ASAN)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
                                         tests/grader/%.c $(GRADER_HDR) $(ASAN)/kit/libkit.a | $$(@D)/.
-	$(CC) $(SAN_LINK) -Ilabs $< tests/grader/$*.c $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
+	$(CC) $(SAN_LINK) -Ilabs $(filter %.c,$^) $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
+# check.c reads the kinds of cases from cases.c.
+$(BUILD)/tests/test_check $(ASAN)/tests/test_check: tests/grader/cases.c
 # The server of tests' unit test links the sandbox and, on Linux, the
 # runner's server side (test_serve is its own server).
 SERVE_SRC = tests/grader/sandbox.c $(if $(LOAD_RUNNERS),tests/grader/harness_serve.c)

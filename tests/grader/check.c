@@ -304,6 +304,30 @@ static bool flat_near_misses(const Test *test, const Answers *a, double *missed,
     return *missed > 0 && isfinite(*found) && *missed <= 1e-3 * *found;
 }
 
+int batch_split(const char *answers, size_t len, int ntests, const char **from, size_t *size)
+{
+    const char *p = answers, *end = answers + len;
+    int got = 0;
+    while (p < end && got < ntests) {
+        const char *line = p, *q = NULL;
+        for (;;) {
+            const char *nl = memchr(line, '\n', (size_t)(end - line));
+            if (!nl)
+                return -1;
+            if (nl - line >= 4 && memcmp(line, "end ", 4) == 0) {
+                q = nl + 1;
+                break;
+            }
+            line = nl + 1;
+        }
+        from[got] = p;
+        size[got] = (size_t)(q - p);
+        got++;
+        p = q;
+    }
+    return got == ntests && p == end ? ntests : -1;
+}
+
 void answers_free(Answers *a)
 {
     free(a->got);

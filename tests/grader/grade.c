@@ -259,32 +259,9 @@ static void run_batch(const GradeOptions *opt, Build *b, const TestList *tests, 
         return;
     }
     /* Split the answers after each "end N" line; all or nothing. */
-    const char *from[MAX_BATCH], *p = res.answer, *end = res.answer + res.answer_len;
+    const char *from[MAX_BATCH];
     size_t size[MAX_BATCH];
-    int got = 0;
-    while (p < end && got < ntests && got < MAX_BATCH) {
-        const char *q = p;
-        const char *line = p;
-        for (;;) {
-            const char *nl = memchr(line, '\n', (size_t)(end - line));
-            if (!nl) {
-                q = NULL;
-                break;
-            }
-            if (strncmp(line, "end ", 4) == 0) {
-                q = nl + 1;
-                break;
-            }
-            line = nl + 1;
-        }
-        if (!q)
-            break;
-        from[got] = p;
-        size[got] = (size_t)(q - p);
-        got++;
-        p = q;
-    }
-    if (got != ntests || p != end) {
+    if (ntests > MAX_BATCH || batch_split(res.answer, res.answer_len, ntests, from, size) != ntests) {
         if (opt->verbose)
             fprintf(stderr, "  Part %s: the %d tests together: answers malformed; each runs alone\n",
                     part_label(part), ntests);

@@ -150,6 +150,12 @@ typedef struct {
  * every case is right; out receives the message for the student, and a,
  * when not NULL, every answer and whether it was right. */
 bool check_answers(const Test *test, const char *answers, size_t len, char **out, Answers *a);
+/* A batch's answers (every test of a part, run in one child), split after
+ * each line that starts "end ": from[k] and size[k] are the k-th test's
+ * answers.  Returns ntests when the answers split into exactly ntests
+ * pieces with nothing after the last, else -1 (then each test runs
+ * alone).  Reads only answers[0 .. len). */
+int batch_split(const char *answers, size_t len, int ntests, const char **from, size_t *size);
 
 /* Is got the right answer to case c of a test of this kind? */
 bool case_is_right(Kind kind, const Case *c, const double *got);
