@@ -59,9 +59,15 @@ void image_plane_size(double fov_degrees, double aspect, double d, double *w, do
 EOF
     chmod -R a+rX "$tmp/killers"
     $grade --all "$tmp/killers" --out "$tmp/grades-killers" --jobs 2 >"$tmp/killers.out" 2>&1
-    check "as root, grade --all --jobs 2 runs each submission's code as a user of its own" \
-        grep -q "^graded 2 at a time, as root: each one's code ran as an unprivileged user of its own$" \
-        "$tmp/killers.out"
+    # A system that gives no spare ids (a user namespace that maps few)
+    # grades one at a time, and says so: the two then cannot overlap.
+    if grep -q "^grade: 1 submission at a time, not 2: " "$tmp/killers.out"; then
+        echo "   this system gives no spare user ids: graded one at a time, so the two did not run at once"
+    else
+        check "as root, grade --all --jobs 2 runs each submission's code as a user of its own" \
+            grep -q "^graded 2 at a time, as root: each one's code ran as an unprivileged user of its own$" \
+            "$tmp/killers.out"
+    fi
     check "code that signals every process costs the submission graded beside it nothing" \
         grep -q "^a-sleeper,20,20,30,30,.*,full marks$" "$tmp/grades-killers/gradebook.csv"
     check "and, its answers right, keeps its own marks" \

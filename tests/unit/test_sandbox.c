@@ -177,7 +177,9 @@ static void test_no_file_output(void)
 
 /* As root, grade --all's spare users: distinct ids that are not nobody's
  * and that no account has, and a child given one runs as it (the empty
- * file it makes, which the file-size limit of 0 allows, is that id's). */
+ * file it makes, which the file-size limit of 0 allows, is that id's).
+ * Where the system gives none (a user namespace that maps few ids), grade
+ * --all grades one at a time, and this says it skipped. */
 static void test_spare_users(void)
 {
     if (!sandbox_drops_privileges()) {
@@ -186,7 +188,10 @@ static void test_spare_users(void)
     }
     uid_t ids[3];
     int n = sandbox_spare_users(ids, 3);
-    CHECK_MSG(n == 3, "%d spare users of 3 (a user namespace that maps few ids gives fewer)", n);
+    if (n == 0) {
+        printf("    skipped: this system gives no spare user ids (a user namespace that maps few)\n");
+        return;
+    }
     struct passwd *nobody = getpwnam("nobody");
     for (int k = 0; k < n; k++) {
         CHECK_MSG(getpwuid(ids[k]) == NULL, "id %lu has an account", (unsigned long)ids[k]);
@@ -195,8 +200,6 @@ static void test_spare_users(void)
         for (int j = 0; j < k; j++)
             CHECK(ids[j] != ids[k]);
     }
-    if (n < 1)
-        return;
     char dir[512], file[600];
     if (check_temp_dir(dir, sizeof dir, "spare") != 0)
         return;
