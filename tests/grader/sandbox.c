@@ -66,6 +66,14 @@ bool sandbox_drops_privileges(void)
     return geteuid() == 0;
 }
 
+/* "nobody"'s ids, from the system's list of users. */
+static void lookup_nobody(uid_t *uid, gid_t *gid)
+{
+    struct passwd *pw = getpwnam("nobody");
+    *uid = pw ? pw->pw_uid : 65534;
+    *gid = pw ? pw->pw_gid : 65534;
+}
+
 /* The user the children run as when the grader is root: "nobody" (looked
  * up once), or the id sandbox_set_user gave, as user and as group. */
 static bool user_known;
@@ -75,9 +83,7 @@ static gid_t user_gid;
 static void nobody_ids(uid_t *uid, gid_t *gid)
 {
     if (!user_known) {
-        struct passwd *pw = getpwnam("nobody");
-        user_uid = pw ? pw->pw_uid : 65534;
-        user_gid = pw ? pw->pw_gid : 65534;
+        lookup_nobody(&user_uid, &user_gid);
         user_known = true;
     }
     *uid = user_uid;
@@ -93,11 +99,12 @@ void sandbox_set_user(uid_t id)
 
 int sandbox_spare_users(uid_t *ids, int n)
 {
-    struct passwd *pw = getpwnam("nobody");
-    uid_t nobody = pw ? pw->pw_uid : 65534;
+    uid_t nobody;
+    gid_t nogroup;
+    lookup_nobody(&nobody, &nogroup);
     int found = 0;
     for (uid_t id = 65533; id >= 1000 && found < n; id--) {
-        if (id == nobody || getpwuid(id) || getgrgid((gid_t)id))
+        if (id == nobody || (gid_t)id == nogroup || getpwuid(id) || getgrgid((gid_t)id))
             continue;
         pid_t pid = fork();
         if (pid < 0)
