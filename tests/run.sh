@@ -8,8 +8,7 @@
 # Suites that build the same thing share a lane (student_kit.sh and
 # classroom.sh both make the student kit), and so do the unit tests.  As
 # many workers as the machine has cores take lanes in a set order (below)
-# until none is left; a suite that could disturb the others runs alone
-# once they have finished.  (Starting all twelve lanes at once on 2 cores took 163 s
+# until none is left.  (Starting all twelve lanes at once on 2 cores took 163 s
 # and 311 CPU-seconds, against 151 s and 284 with two workers.)  Each
 # suite's output is kept apart and shown whole, in a fixed order, once all
 # have finished.
@@ -79,16 +78,12 @@ if [ $# -gt 0 ]; then
 fi
 
 # lane_of NAME: sets lane to the lane a suite runs in (a variable, not
-# output, so that no subshell is started per item); "alone" for the suites
-# that run after all the lanes, by themselves (signals.sh runs code that
-# signals every process of the tests' unprivileged user, other suites'
-# included).  A lane is a file name: characters other than letters,
-# digits, "_" and "." become "_".
+# output, so that no subshell is started per item).  A lane is a file
+# name: characters other than letters, digits, "_" and "." become "_".
 lane_of() {
     case $1 in
     unit*) lane=unit ;;
     student_kit.sh | classroom.sh) lane=kit ;;
-    signals.sh) lane=alone ;;
     *) lane=$1 ;;
     esac
     case $lane in
@@ -130,7 +125,7 @@ for lane in $first; do
 done >"$queue"
 for path in "$dir"/lane.*; do
     lane=${path##*/lane.}
-    case " $first alone " in *" $lane "*) continue ;; esac
+    case " $first " in *" $lane "*) continue ;; esac
     [ -f "$path" ] && echo "$path"
 done >>"$queue"
 workers=${TEST_WORKERS:-$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 2)}
@@ -148,11 +143,6 @@ while [ "$w" -lt "$workers" ]; do
     ) &
 done
 wait
-if [ -f "$dir/lane.alone" ]; then
-    while IFS='|' read -r k name cmd; do
-        run_item "$k" "$name" "$cmd"
-    done <"$dir/lane.alone"
-fi
 
 # One awk shows every item's output in order, with its name and seconds,
 # appends it to the log, collects the failing checks' lines and adds up
@@ -223,8 +213,6 @@ if [ -s "$failures" ]; then
     cat "$failures"
 fi
 lanes=$(wc -l <"$queue" | tr -d ' ')
-alone=0
-[ -f "$dir/lane.alone" ] && alone=$(wc -l <"$dir/lane.alone" | tr -d ' ')
 if [ -n "${CC_MEMO:-}" ] && [ -f "$memo/log" ]; then
     made=$(grep -c '^compiled ' "$memo/log")
     used=$(grep -c -e '^used ' -e '^used-direct ' "$memo/log")
@@ -254,6 +242,6 @@ if [ -n "${GRADE_KEEP_BUILDS:-}" ]; then
     [ "$every_suite" = yes ] && sh tests/tools/ccmemo_keep.sh prune "$gmemo" "$dir/started"
 fi
 plural() { [ "$1" -eq 1 ] && echo "$1 $2" || echo "$1 ${2}s"; }
-echo "took $(($(date +%s) - start)) s ($(plural "$n" suite): $(plural "$lanes" lane) shared by $(plural "$workers" worker), then $alone alone)"
+echo "took $(($(date +%s) - start)) s ($(plural "$n" suite): $(plural "$lanes" lane) shared by $(plural "$workers" worker))"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

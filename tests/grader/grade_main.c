@@ -343,22 +343,36 @@ static void count_memo(const char *memo, int *built, int *stored, int *files)
 }
 
 /* As root, the ids the submissions graded at once run their code as, one
- * each: nobody for the first, spare ids for the others (sandbox.h).  Fewer
- * ids than jobs (a system that gives no spare ids) means fewer jobs; jobs
- * is at most MAX_ROOT_JOBS. */
+ * each: spare ids, held against other graders for the whole run
+ * (sandbox.h), so that one's code cannot signal another's tests, nor any
+ * process of nobody's.  Fewer ids than jobs means fewer jobs; none (a
+ * system that gives no spare ids) means one at a time, as nobody, as a
+ * submission graded alone.  jobs is at most MAX_ROOT_JOBS. */
 #define MAX_ROOT_JOBS 64
 static int job_users(int jobs, char ids[][16])
 {
-    uid_t spare[MAX_ROOT_JOBS - 1];
-    int found = jobs > 1 ? sandbox_spare_users(spare, jobs - 1) : 0;
-    ids[0][0] = '\0';                   /* nobody, as when graded alone */
+    uid_t spare[MAX_ROOT_JOBS];
+    const char *unclaimed = NULL;
+    int found = sandbox_spare_users(spare, jobs, &unclaimed);
     for (int k = 0; k < found; k++)
-        snprintf(ids[k + 1], sizeof ids[k + 1], "%lu", (unsigned long)spare[k]);
-    if (found < jobs - 1)
+        snprintf(ids[k], sizeof ids[k], "%lu", (unsigned long)spare[k]);
+    if (unclaimed && found > 0)
+        fprintf(stderr, "grade: %s, so another grade --all run as root at the same time may "
+                        "be given the same users\n", unclaimed);
+    if (found == 0) {
+        ids[0][0] = '\0';
+        if (jobs > 1)
+            fprintf(stderr, "grade: 1 submission at a time, not %d: as root each runs its code as "
+                            "an unprivileged user of its own, and this system gives none but "
+                            "nobody\n", jobs);
+        return 1;
+    }
+    if (found < jobs)
         fprintf(stderr, "grade: %d submission%s at a time, not %d: as root each runs its code as "
-                        "an unprivileged user of its own, and this system gives %d\n", found + 1,
-                found ? "s" : "", jobs, found + 1);
-    return found + 1;
+                        "an unprivileged user of its own, and %d %s free (the system gives no "
+                        "more, or other graders hold them)\n", found, found > 1 ? "s" : "", jobs,
+                found, found > 1 ? "were" : "was");
+    return found;
 }
 
 static int grade_all(const char *self, const char *dir, const char *out, const char *weights, int jobs)

@@ -97,26 +97,79 @@ void sandbox_set_user(uid_t id)
     user_known = id != 0;
 }
 
-int sandbox_spare_users(uid_t *ids, int n)
+/* The file one byte of which, at the offset of an id, is locked by the
+ * grader that holds that id (sandbox.h).  /var/run is root's alone on
+ * Linux and macOS, so no one else can make or replace the file. */
+#define USERS_LOCK "/var/run/rtgrade-users.lock"
+
+/* The lock file, opened once; -1 with why set when it cannot be used. */
+static int users_lock(const char **why)
+{
+    static int fd = -2;
+    static const char *fault;
+    if (fd == -2) {
+        struct stat st;
+        fd = open(USERS_LOCK, O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0600);
+        if (fd < 0)
+            fault = "cannot open " USERS_LOCK;
+        else if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_uid != geteuid() ||
+                 (st.st_mode & 022)) {
+            fault = USERS_LOCK " is not a file that only root may write";
+            close(fd);
+            fd = -1;
+        }
+    }
+    *why = fault;
+    return fd;
+}
+
+/* Locks id's byte: 1 held now by this process, 0 held by another, -1
+ * the system cannot lock the file. */
+static int claim(int fd, uid_t id, short type)
+{
+    struct flock fl;
+    memset(&fl, 0, sizeof fl);
+    fl.l_type = type;
+    fl.l_whence = SEEK_SET;
+    fl.l_start = (off_t)id;
+    fl.l_len = 1;
+    if (fcntl(fd, F_SETLK, &fl) == 0)
+        return 1;
+    return errno == EACCES || errno == EAGAIN ? 0 : -1;
+}
+
+int sandbox_spare_users(uid_t *ids, int n, const char **unclaimed)
 {
     uid_t nobody;
     gid_t nogroup;
     lookup_nobody(&nobody, &nogroup);
+    int fd = users_lock(unclaimed);
     int found = 0;
     for (uid_t id = 65533; id >= 1000 && found < n; id--) {
         if (id == nobody || (gid_t)id == nogroup || getpwuid(id) || getgrgid((gid_t)id))
             continue;
+        if (fd >= 0) {
+            int held = claim(fd, id, F_WRLCK);
+            if (held == 0)
+                continue;       /* another grader's */
+            if (held < 0) {
+                *unclaimed = "the system cannot lock " USERS_LOCK;
+                fd = -1;
+            }
+        }
         pid_t pid = fork();
-        if (pid < 0)
-            break;
         if (pid == 0)
             _exit(setgroups(0, NULL) == 0 && setgid((gid_t)id) == 0 && setuid(id) == 0 &&
                   setuid(0) != 0 ? 0 : 1);
         int status;
-        if (waitpid(pid, &status, 0) == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0)
+        if (pid > 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status) &&
+            WEXITSTATUS(status) == 0) {
             ids[found++] = id;
-        else
-            break;          /* this system will not give such ids (a user namespace's map) */
+            continue;
+        }
+        if (fd >= 0)
+            claim(fd, id, F_UNLCK);
+        break;              /* this system will not give such ids (a user namespace's map) */
     }
     return found;
 }

@@ -115,8 +115,12 @@ int sandbox_give(const char *path);
 void sandbox_set_user(uid_t id);
 /* As root: up to n ids, from 65533 down, that no user and no group has
  * (nor nobody), each checked by a child that takes it; stores them in
- * ids and returns how many it found. */
-int sandbox_spare_users(uid_t *ids, int n);
+ * ids and returns how many it found.  Each is held until this process
+ * ends, against every other grader that asks for ids at the same time (a
+ * lock on one byte of a file of root's, per id), which then gets others.
+ * *unclaimed is NULL, or says why the ids could not be held so (they are
+ * found all the same, but another grader may be given them too). */
+int sandbox_spare_users(uid_t *ids, int n, const char **unclaimed);
 
 /* Seconds on a monotonic clock. */
 double sandbox_now(void);

@@ -175,6 +175,46 @@ static void test_no_file_output(void)
     sandbox_result_free(&res);
 }
 
+/* The ids another process is given while this one holds n ids: in
+ * out[0 .. 2], and how many it was given; -1 if it could not say. */
+static int others_ids(uid_t out[3])
+{
+    int p[2];
+    if (pipe(p) != 0)
+        return -1;
+    pid_t pid = fork();
+    if (pid == 0) {
+        const char *unclaimed;
+        uid_t ids[3];
+        int n = sandbox_spare_users(ids, 3, &unclaimed);
+        ssize_t w = write(p[1], ids, (size_t)n * sizeof ids[0]);
+        _exit(w == (ssize_t)((size_t)n * sizeof ids[0]) ? 0 : 1);
+    }
+    close(p[1]);
+    ssize_t r = pid > 0 ? read(p[0], out, 3 * sizeof out[0]) : -1;
+    close(p[0]);
+    int status;
+    if (pid < 0 || waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0 ||
+        r < 0)
+        return -1;
+    return (int)((size_t)r / sizeof out[0]);
+}
+
+/* Two graders at once are given different ids; and ids are free again
+ * when the grader that held them has ended. */
+static void check_claims(const uid_t *ids, int n)
+{
+    uid_t first[3], again[3];
+    int m = others_ids(first);
+    CHECK_MSG(m > 0, "another process was given %d ids while this one held %d", m, n);
+    for (int k = 0; k < m; k++)
+        for (int j = 0; j < n; j++)
+            CHECK_MSG(first[k] != ids[j], "id %lu given to two processes at once", (unsigned long)ids[j]);
+    if (m > 0 && others_ids(again) > 0)
+        CHECK_MSG(again[0] == first[0], "ids not freed when their process ended: %lu, then %lu",
+                  (unsigned long)first[0], (unsigned long)again[0]);
+}
+
 /* As root, grade --all's spare users: distinct ids that are not nobody's
  * and that no account has, and a child given one runs as it (the empty
  * file it makes, which the file-size limit of 0 allows, is that id's).
@@ -187,11 +227,16 @@ static void test_spare_users(void)
         return;
     }
     uid_t ids[3];
-    int n = sandbox_spare_users(ids, 3);
+    const char *unclaimed;
+    int n = sandbox_spare_users(ids, 3, &unclaimed);
     if (n == 0) {
         printf("    skipped: this system gives no spare user ids (a user namespace that maps few)\n");
         return;
     }
+    if (unclaimed)
+        printf("    the ids are not held against other graders (%s): that check was skipped\n", unclaimed);
+    else
+        check_claims(ids, n);
     struct passwd *nobody = getpwnam("nobody");
     for (int k = 0; k < n; k++) {
         CHECK_MSG(getpwuid(ids[k]) == NULL, "id %lu has an account", (unsigned long)ids[k]);
