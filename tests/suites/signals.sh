@@ -8,7 +8,8 @@
 # are right: it passes), while the classmate's Part 1 batch sleeps 0.9 s in
 # its own first call: graded two at once, they overlap.  (Given the same
 # user, as they once were, the classmate lost every part: its batches,
-# tests and compiles died.)
+# tests and compiles died.)  At the same time the two are graded again,
+# as two classes of one, by two more runs of grade --all.
 #
 # So it runs beside the other suites, which grade as nobody or as ids they
 # hold themselves.  Where the system gives no spare ids, grade --all grades
@@ -77,8 +78,18 @@ void image_plane_size(double fov_degrees, double aspect, double d, double *w, do
 EOF
     sed "s/NOBODY/$nobody/" "$tmp/killers/b-kill-all/part1_image_plane.c" >"$tmp/kill.c" &&
         mv "$tmp/kill.c" "$tmp/killers/b-kill-all/part1_image_plane.c"
-    chmod -R a+rX "$tmp/killers"
+    # The same two also as two classes of one, graded by two more runs of
+    # grade --all at the same time: each run holds its ids against the
+    # others.
+    for who in a-sleeper b-kill-all; do
+        mkdir "$tmp/class-$who"
+        cp -R "$tmp/killers/$who" "$tmp/class-$who/"
+    done
+    chmod -R a+rX "$tmp/killers" "$tmp"/class-*
+    $grade --all "$tmp/class-b-kill-all" --out "$tmp/grades-b" --jobs 1 >"$tmp/b.out" 2>&1 &
+    $grade --all "$tmp/class-a-sleeper" --out "$tmp/grades-a" --jobs 1 >"$tmp/a.out" 2>&1 &
     $grade --all "$tmp/killers" --out "$tmp/grades-killers" --jobs 2 >"$tmp/killers.out" 2>&1
+    wait
     # A system that gives no spare ids (a user namespace that maps few)
     # grades one at a time as nobody, and says so: the two then cannot
     # overlap, and the code signals nothing.
@@ -93,7 +104,12 @@ EOF
         grep -q "^a-sleeper,20,20,30,30,.*,full marks$" "$tmp/grades-killers/gradebook.csv"
     check "and, its answers right, keeps its own marks" \
         grep -q "^b-kill-all,20,20,30,30,.*,full marks$" "$tmp/grades-killers/gradebook.csv"
-    [ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/killers.out" "$tmp/grades-killers/gradebook.csv"
+    check "code that signals every process costs a class graded by another run at the same time nothing" \
+        grep -q "^a-sleeper,20,20,30,30,.*,full marks$" "$tmp/grades-a/gradebook.csv"
+    check "and, graded by its own run, keeps its own marks" \
+        grep -q "^b-kill-all,20,20,30,30,.*,full marks$" "$tmp/grades-b/gradebook.csv"
+    [ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/killers.out" "$tmp/grades-killers/gradebook.csv" \
+        "$tmp/a.out" "$tmp/grades-a/gradebook.csv" "$tmp/b.out" "$tmp/grades-b/gradebook.csv"
 else
     echo "   not root: the children run as this user; the check of signalling code was skipped"
 fi
