@@ -53,6 +53,12 @@
 #define CHECK_TIMEOUT_SECONDS 120
 #endif
 
+/* A shell script's first lines that write its CPU limit, soft and hard, to
+ * its descriptor 3: "limit N\nhard N\n" (shell builtins alone, for tests
+ * whose children may not start processes: test_sandbox, test_serve). */
+#define CHECK_SAY_CPU_LIMIT \
+    "printf 'limit ' >&3; ulimit -S -t >&3; printf 'hard ' >&3; ulimit -H -t >&3; "
+
 typedef struct {
     const char *name;
     void (*fn)(void);

@@ -35,11 +35,6 @@ static int run_sh(const char *script, SandboxSpec spec, SandboxResult *res)
     return rc;
 }
 
-/* A shell script's first lines that write its CPU limit, soft and hard, to
- * the answers: "limit N\nhard N\n" (shell builtins: the children of these
- * tests may not start processes). */
-#define SAY_CPU_LIMIT "printf 'limit ' >&3; ulimit -S -t >&3; printf 'hard ' >&3; ulimit -H -t >&3; "
-
 /* A shell that doubles a string up to 128 MiB (about three times that in
  * use while it copies), then sleeps: a hog with a ceiling, so that a broken
  * limit fails the test without taking the machine's memory.  The hogs'
@@ -141,7 +136,8 @@ static void test_cpu_limit(void)
 {
     SandboxResult res;
     SandboxSpec spec = { .memory_mb = 48, .max_procs = 0, .cpu_seconds = 1, .timeout = 20 };
-    const char *script = CHECK_SANITIZED ? SAY_CPU_LIMIT "kill -XCPU $$" : SAY_CPU_LIMIT "while :; do :; done";
+    const char *script = CHECK_SANITIZED ? CHECK_SAY_CPU_LIMIT "kill -XCPU $$"
+                                         : CHECK_SAY_CPU_LIMIT "while :; do :; done";
     if (run_sh(script, spec, &res) != 0)
         return;
     CHECK_STR_CONTAINS(res.answer, "limit 1\nhard 1\n");

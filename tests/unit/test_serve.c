@@ -128,8 +128,7 @@ static void test_served_descriptors(void)
  * whole CPU-second (the limit is counted in seconds); test_sandbox's
  * test_cpu_limit spins so once, and a served child's limit is the same
  * system's. */
-#define SPIN "printf 'limit ' >&3; ulimit -S -t >&3; printf 'hard ' >&3; ulimit -H -t >&3; " \
-             "read how; [ \"$how\" != xcpu ] || kill -XCPU $$; while :; do :; done"
+#define SPIN CHECK_SAY_CPU_LIMIT "read how; [ \"$how\" != xcpu ] || kill -XCPU $$; while :; do :; done"
 
 /* Out of time, crashed, over its output, out of CPU: each reported as a
  * runner of its own reports it, and the server serves on. */
