@@ -892,8 +892,10 @@ static long long tar_read_entry(Archive *a, const unsigned char *tar, size_t len
 static int targz_decode(Archive *a, const unsigned char *p, size_t n, char *err, size_t errlen)
 {
     KitBuf tar = {0};
-    if (archive_gunzip(p, n, ARCHIVE_MAX_SIZE, &tar, err, errlen) != 0)
+    if (archive_gunzip(p, n, ARCHIVE_MAX_SIZE, &tar, err, errlen) != 0) {
+        kit_buf_free(&tar);             /* its length restored, but not its memory */
         return -1;
+    }
     size_t at = 0;
     int rc = -1;
     for (;;) {
