@@ -63,7 +63,7 @@ KIT_OBJ    = $(KIT_SRC:labs/kit/%.c=$(BUILD)/kit/%.o)
 KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
 
 .PHONY: all help render compare grade grade-all gradescope student-kit bench \
-        handouts test test-build unit-tests clean grader public-tests fuzz
+        handouts test test-build unit-tests clean grader public-tests fuzz sanitize-grader
 .DELETE_ON_ERROR:
 .SECONDARY:                             # keep the objects a chain of rules makes (the renderer's lto/)
 .SECONDEXPANSION:
@@ -81,7 +81,7 @@ help:
 	@echo "make grade   [SUBMISSION=dir] [PART=1|2|3a|3b|4|5] [RESULTS=file]"
 	@echo "             [FORMAT=gradescope|prairielearn] [CLASSROOM=file]"
 	@echo "make grade-all SUBMISSIONS=dir [OUT=dir] [JOBS=n]"
-	@echo "make gradescope | prairielearn | student-kit | bench | fuzz | handouts | test | clean"
+	@echo "make gradescope | prairielearn | student-kit | bench | fuzz | sanitize-grader | handouts | test | clean"
 
 $(BUILD)/kit/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) $(THREADS) -c $< -o $@
@@ -446,6 +446,34 @@ $(OUT_ROOT)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz.h tests/fuzz/fuzz_p
 fuzz:
 	@if [ -f tests/fuzz/run.sh ]; then FUZZ_OUT=$(OUT_ROOT)/fuzz FUZZ_CC=$(FUZZ_CC) sh tests/fuzz/run.sh $(FUZZ); \
 	 else echo "make fuzz: only the instructor's kit has the fuzz targets (tests/fuzz)"; exit 2; fi
+
+# ---- the grader itself under the sanitizers (`make sanitize-grader`) --------
+# Builds the grader with the address, undefined-behaviour and leak
+# sanitizers and runs the suites that grade with it (GRADE= names it to
+# them): the reference, the skeleton and the self-test's faulty and
+# hostile submissions, their pages, results and gradebooks.  The runners
+# and harnesses it uses are the plain build's (a sanitized test would not
+# fit the tests' memory limit).  Not part of `make test`: about a minute.
+GRADER_ASAN_OBJ = $(GRADER_LIB_SRC:tests/grader/%.c=$(ASAN)/grader/%.o)
+GRADE_EXTRA_ASAN = $(if $(GRADE_DEFS),$(ASAN)/grader/hidden.o $(ASAN)/oracle/liboracle.a)
+$(ASAN)/grader/%.o: tests/grader/%.c $(GRADER_HDR) | $$(@D)/.
+	$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
+$(ASAN)/grader/grade_main.o: tests/grader/grade_main.c $(GRADER_HDR) $(wildcard tests/oracle/*.h) | $$(@D)/.
+	$(CC) $(SANFLAGS) $(GRADE_DEFS) -DGRADER_BUILD='"$(BUILD)"' -Ilabs -c $< -o $@
+$(ASAN)/grader/hidden.o: tests/hidden/hidden.c $(GRADER_HDR) $(wildcard tests/oracle/*.h) | $$(@D)/.
+	$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
+$(ASAN)/bin/grade: $(ASAN)/grader/grade_main.o $(GRADE_EXTRA_ASAN) $(GRADER_ASAN_OBJ) \
+                   $(ASAN)/tools/libtools.a $(ASAN)/kit/libkit.a | grader $$(@D)/.
+	$(CC) $(SAN_LINK) $^ -o $@ $(LDLIBS)
+SANITIZE_SUITES = grader.sh report.sh grade_store.sh limits.sh signals.sh
+ifneq ($(wildcard tests/suites/grader.sh),)
+sanitize-grader: all $(ASAN)/bin/grade
+	@echo "grading with $(ASAN)/bin/grade (address, undefined-behaviour and leak sanitizers)"
+	@GRADE=$(ASAN)/bin/grade sh tests/run.sh $(SANITIZE_SUITES)
+else
+sanitize-grader:
+	@echo "make sanitize-grader: only the instructor's kit has the grader's suites (tests/suites)"; exit 2
+endif
 
 # What the tests need built (`make -j2 test-build` builds it on two cores).
 test-build: all $(BUILD)/ccmemo/cc $(UNIT_ASAN) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)

@@ -14,7 +14,7 @@
 #   GRADE_NO_MEMO=1, or when the grader is not root.
 set -u
 . tests/lib/checks.sh
-grade=out/build/bin/grade
+grade=${GRADE:-out/build/bin/grade}   # make sanitize-grader: the sanitized one
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtgstore.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"

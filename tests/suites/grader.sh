@@ -6,7 +6,7 @@
 # are not graded at all; turned on, they are graded like the others.
 set -u
 root=$(pwd)
-grade=out/build/bin/grade
+grade=${GRADE:-out/build/bin/grade}   # make sanitize-grader: the sanitized one
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtselftest.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"

@@ -8,7 +8,7 @@
 # scan's refusals themselves are unit-tested (tests/unit/test_include_scan.c);
 # tests/selftest/hostile-include-dev-zero is graded by tests/suites/grader.sh.
 set -u
-grade=out/build/bin/grade
+grade=${GRADE:-out/build/bin/grade}   # make sanitize-grader: the sanitized one
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtlimits.XXXXXX") || { echo "no temporary directory"; echo "0 passed, 1 failed"; exit 1; }
 trap 'rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"

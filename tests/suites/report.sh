@@ -15,7 +15,7 @@
 # browser that check says it skipped and counts as passed.
 set -u
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
-grade=out/build/bin/grade
+grade=${GRADE:-out/build/bin/grade}   # make sanitize-grader: the sanitized one
 check_html=out/build/bin/htmlcheck
 compare=out/build/bin/compare
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtreport.XXXXXX")

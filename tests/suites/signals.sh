@@ -17,7 +17,7 @@
 # stop the other suites' tests that run as nobody.  (Not as another user:
 # there it would stop this suite too.)
 set -u
-grade=out/build/bin/grade
+grade=${GRADE:-out/build/bin/grade}   # make sanitize-grader: the sanitized one
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtsignals.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
