@@ -80,7 +80,7 @@ static bool user_known;
 static uid_t user_uid;
 static gid_t user_gid;
 
-static void nobody_ids(uid_t *uid, gid_t *gid)
+static void child_ids(uid_t *uid, gid_t *gid)
 {
     if (!user_known) {
         lookup_nobody(&user_uid, &user_gid);
@@ -180,7 +180,7 @@ int sandbox_give(const char *path)
         return 0;
     uid_t uid;
     gid_t gid;
-    nobody_ids(&uid, &gid);
+    child_ids(&uid, &gid);
     return chown(path, uid, gid);
 }
 
@@ -304,7 +304,7 @@ static void plan_child(ChildPlan *cp, const SandboxSpec *spec, int in_r, int ans
     plan_close(cp, 4);
     cp->drop = sandbox_drops_privileges();
     if (cp->drop)
-        nobody_ids(&cp->uid, &cp->gid);
+        child_ids(&cp->uid, &cp->gid);
     const char *path = spec->inherit_path && getenv("PATH") ? getenv("PATH") : "/usr/bin:/bin";
     snprintf(cp->path_env, sizeof cp->path_env, "PATH=%s", path);
     cp->envp[0] = cp->path_env;
