@@ -16,6 +16,7 @@ typedef struct {
     const char *s;             /* the text after trigraphs and line splices */
     size_t n, i;
     const char *dir;
+    const char *real_dir;      /* dir with its links followed ("" if unknown) */
     char *why;
     size_t whylen;
     int refused;
@@ -33,6 +34,15 @@ static bool system_tree(const char *path)
             return true;
     }
     return false;
+}
+
+/* True for dir itself and anything under it. */
+static bool below(const char *path, const char *dir)
+{
+    size_t m = strlen(dir);
+    while (m > 1 && dir[m - 1] == '/')
+        m--;
+    return m > 0 && strncmp(path, dir, m) == 0 && (path[m] == '/' || path[m] == '\0');
 }
 
 /* path with "//" and "/./" collapsed, into out (at most len bytes). */
@@ -78,9 +88,13 @@ static int check_name(Scan *sc, const char *name, size_t n)
     else
         snprintf(path, sizeof path, "%s/%s", sc->dir, raw);
     tidy(path, clean, sizeof clean);
-    if (system_tree(clean))
+    /* A relative name (with no ".." in it) stays in the compile directory,
+     * and what leads back into it is the grader's own copy: neither is a
+     * system file because of where the directory is (TMPDIR=/dev/shm puts
+     * it under /dev). */
+    if (raw[0] == '/' && system_tree(clean))
         return refuse(sc, name, n, "which is a device or a system file, not a header");
-    if (realpath(clean, real) && system_tree(real))
+    if (realpath(clean, real) && system_tree(real) && !(sc->real_dir[0] && below(real, sc->real_dir)))
         return refuse(sc, name, n, "which leads to a device or a system file, not a header");
     struct stat st;
     if (stat(clean, &st) == 0 && !S_ISREG(st.st_mode))
@@ -206,7 +220,7 @@ static void destringize_pragma(Scan *sc)
             k++;
         text[m++] = sc->s[k];
     }
-    Scan inner = { text, m, 0, sc->dir, sc->why, sc->whylen, sc->refused, sc->judge, sc->ctx };
+    Scan inner = { text, m, 0, sc->dir, sc->real_dir, sc->why, sc->whylen, sc->refused, sc->judge, sc->ctx };
     pragma(&inner);
     sc->refused = inner.refused;
     free(text);
@@ -272,7 +286,10 @@ int include_scan_judged(const char *text, size_t len, const char *dir, IncludeJu
         snprintf(why, whylen, "the grader ran out of memory reading the file");
         return 1;
     }
-    Scan sc = { s, n, 0, dir, why, whylen, 0, judge, ctx };
+    char real_dir[PATH_MAX];
+    if (!realpath(dir, real_dir))
+        real_dir[0] = '\0';
+    Scan sc = { s, n, 0, dir, real_dir, why, whylen, 0, judge, ctx };
     bool line_start = true;
     while (sc.i < sc.n && !sc.refused) {
         char c = s[sc.i];

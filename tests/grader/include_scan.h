@@ -21,10 +21,11 @@
  * __has_include, __has_embed and #pragma GCC dependency (also through
  * _Pragma), after trigraphs, line splices and comments are dealt with as the
  * compiler does.  Returns 0 when every name is acceptable, or 1 with a
- * one-line reason in why: a name with a ".." component, a name under /dev,
- * /proc or /sys, a name that resolves (from dir when relative, following
- * symbolic links) to anything but a regular file, or the assembler's
- * .incbin anywhere in the code. */
+ * one-line reason in why: a name with a ".." component, an absolute name
+ * under /dev, /proc or /sys, a name that resolves (from dir when relative,
+ * following symbolic links) to one of those outside dir or to anything but
+ * a regular file, or the assembler's .incbin anywhere in the code.  dir
+ * itself may be anywhere, /dev/shm too. */
 int include_scan(const char *text, size_t len, const char *dir, char *why, size_t whylen);
 
 /* The same, with one more judgement of each name: judge(name, ctx) returns

@@ -78,6 +78,33 @@ static void test_what_names_lead_to(void)
     teardown();
 }
 
+/* The compile directory is wherever TMPDIR puts it, /dev/shm too (a file
+ * system in memory, where an instructor may grade for speed): a header in
+ * it is the grader's copy, not a system file, and a link in it to a
+ * device, a pipe and a folder are still refused.  (Once, every header
+ * there was refused as "a device or a system file", and every part
+ * scored 0.) */
+static void test_compile_dir_under_dev(void)
+{
+    struct stat st;
+    if (stat("/dev/shm", &st) != 0 || !S_ISDIR(st.st_mode) ||   /* portable: skipped */
+        access("/dev/shm", W_OK | X_OK) != 0) {
+        printf("    skipped: no /dev/shm to write in on this system\n");
+        return;
+    }
+    setenv("TMPDIR", "/dev/shm", 1);     /* this test's own process */
+    setup();
+    CHECK_MSG(strncmp(dir, "/dev/shm/", 9) == 0, "the compile directory is %s", dir);
+    PASSED("#include \"raytracer.h\"\n#include <math.h>\n");
+    PASSED("#include \"./raytracer.h\"\n");
+    REFUSED("#include \"zero\"\n");
+    REFUSED("#include \"fifo\"\n");
+    REFUSED("#include \"sub\"\n");
+    REFUSED("#include \"/dev/zero\"\n");
+    REFUSED("#include \"../raytracer.h\"\n");
+    teardown();
+}
+
 /* Every way of writing the directive that gcc and clang accept. */
 static void test_directive_spellings(void)
 {
@@ -177,6 +204,7 @@ static void test_judge_every_spelling(void)
 static const CheckTest tests[] = {
     CHECK_TEST(test_judge_every_spelling),
     CHECK_TEST(test_devices_by_name), CHECK_TEST(test_what_names_lead_to), CHECK_TEST(test_directive_spellings),
+    CHECK_TEST(test_compile_dir_under_dev),
     CHECK_TEST(test_passes),          CHECK_TEST(test_not_at_line_start),
 };
 
