@@ -9,6 +9,7 @@
  */
 #include <float.h>
 #include <limits.h>
+#include <stdlib.h>
 #include "oracle.h"
 #include "dd.h"
 
@@ -477,24 +478,43 @@ static void hit_interval(const SphereSolution *S, double *lo, double *hi)
  *     largest possible t (two hits that agree to rounding, or a sphere
  *     grazed within rounding of its silhouette in front of the best):
  *     the alternative is the one whose possible t starts lowest.
+ * Each sphere is solved once, and its solution kept for the second look:
+ * in kept[] for a scene of up to CLOSEST_KEPT spheres, else in a malloc'd
+ * array (solved again where there is no memory for one).
  */
+#define CLOSEST_KEPT 16
+
+/* Sphere k's solution: sol[k], or, with no array, solved into *scratch. */
+static const SphereSolution *closest_solution(const Scene *scene, const Ray *ray,
+                                              const SphereSolution *sol, int k,
+                                              SphereSolution *scratch)
+{
+    if (sol)
+        return &sol[k];
+    solve_sphere(&scene->spheres[k], ray, scratch);
+    return scratch;
+}
+
 int oracle_closest(const Scene *scene, const Ray *ray, bool *ambiguous, int *alternative)
 {
+    SphereSolution kept[CLOSEST_KEPT], scratch;
+    int n = scene->nspheres;
+    SphereSolution *sol = n <= CLOSEST_KEPT ? kept : malloc((size_t)n * sizeof *sol);
     int best = -1, next = -1;
     double tbest = INFINITY, tnext = INFINITY;
-    for (int k = 0; k < scene->nspheres; k++) {
-        SphereSolution S;
-        solve_sphere(&scene->spheres[k], ray, &S);
-        if (!S.hit)
+    for (int k = 0; k < n; k++) {
+        SphereSolution *S = sol ? &sol[k] : &scratch;
+        solve_sphere(&scene->spheres[k], ray, S);
+        if (!S->hit)
             continue;
-        if (S.t < tbest) {
+        if (S->t < tbest) {
             next = best;
             tnext = tbest;
             best = k;
-            tbest = S.t;
-        } else if (S.t < tnext) {
+            tbest = S->t;
+        } else if (S->t < tnext) {
             next = k;
-            tnext = S.t;
+            tnext = S->t;
         }
     }
 
@@ -502,31 +522,31 @@ int oracle_closest(const Scene *scene, const Ray *ray, bool *ambiguous, int *alt
     int alt = -1;
     double best_hi = INFINITY;
     if (best >= 0) {
-        SphereSolution S;
-        solve_sphere(&scene->spheres[best], ray, &S);
+        const SphereSolution *S = closest_solution(scene, ray, sol, best, &scratch);
         double lo;
-        hit_interval(&S, &lo, &best_hi);
-        if (S.ambiguous) {
+        hit_interval(S, &lo, &best_hi);
+        if (S->ambiguous) {
             amb = true;
             alt = next;
         }
     }
     double lowest = INFINITY;
-    for (int k = 0; k < scene->nspheres; k++) {
+    for (int k = 0; k < n; k++) {
         if (k == best)
             continue;
-        SphereSolution S;
-        solve_sphere(&scene->spheres[k], ray, &S);
-        if (!S.hit && !S.ambiguous)
+        const SphereSolution *S = closest_solution(scene, ray, sol, k, &scratch);
+        if (!S->hit && !S->ambiguous)
             continue;
         double lo, hi;
-        hit_interval(&S, &lo, &hi);
+        hit_interval(S, &lo, &hi);
         if (lo <= best_hi && lo < lowest) {
             amb = true;
             alt = k;
             lowest = lo;
         }
     }
+    if (sol != kept)
+        free(sol);
     if (ambiguous)
         *ambiguous = amb;
     if (alternative)

@@ -559,6 +559,23 @@ static void test_oracle_closest(void)
     CHECK(amb && alt == 0);
     scene.nspheres = 0;
     CHECK_EQ_INT(oracle_closest(&scene, &r, NULL, NULL), -1);
+
+    /* More spheres than oracle_closest keeps on its stack (16): the same
+     * answers from the solutions it keeps elsewhere.  A row along the ray,
+     * the nearest last. */
+    enum { MANY = 40 };
+    Sphere row[MANY];
+    Scene many = { .spheres = row, .nspheres = MANY };
+    for (int k = 0; k < MANY; k++)
+        row[k] = sphere_at(0, 0, -(4 + 3 * (MANY - 1 - k)), 1);
+    CHECK_EQ_INT(oracle_closest(&many, &r, &amb, &alt), MANY - 1);
+    CHECK(!amb && alt == -1);
+    row[5] = row[MANY - 1];                         /* the nearest twice */
+    CHECK_EQ_INT(oracle_closest(&many, &r, &amb, &alt), 5);
+    CHECK(amb && alt == MANY - 1);
+    row[5] = sphere_at(1, 0, -3, nextafter(1, 2));  /* grazed in front of the rest */
+    CHECK_EQ_INT(oracle_closest(&many, &r, &amb, &alt), 5);
+    CHECK(amb && alt == MANY - 1);
 }
 
 /* ---- the generators ------------------------------------------------------ */
