@@ -564,8 +564,8 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     if (users && jobs > 1)
         printf("graded %d at a time, as root: each one's code ran as an unprivileged user of its "
                "own\n", jobs);
-    printf("graded %d submissions: wrote %s, and one .json and one .html (the report page) each\n",
-           n, csv);
+    printf("graded %d submission%s: wrote %s, and one .json and one .html (the report page) %s\n",
+           n, n == 1 ? "" : "s", csv, n == 1 ? "for it" : "each");
     return worst;
 }
 
