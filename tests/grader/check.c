@@ -6,6 +6,7 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "grader.h"
+#include "hexfloat.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -363,7 +364,7 @@ bool check_answers(const Test *test, const char *answers, size_t len, char **out
         bool have = p < end;
         for (int k = 0; k < nout && have; k++) {
             char *q;
-            got[k] = strtod(p, &q);
+            got[k] = hexfloat_read(p, &q);
             have = q != p && q <= end;
             p = q;
         }

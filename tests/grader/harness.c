@@ -39,8 +39,8 @@
 static FILE *answers;
 
 /* The whole of stdin, read before the first test, and where reading is:
- * the numbers are read with strtod and written with hexfloat_format, as
- * scanf and printf would read and write them, at a fraction of the cost. */
+ * the numbers are read with hexfloat_read and written with hexfloat_format,
+ * as scanf and printf would read and write them, at a fraction of the cost. */
 static char *input;
 static const char *at;
 
@@ -133,7 +133,7 @@ static int get(double *v, int n)
 {
     for (int k = 0; k < n; k++) {
         char *end;
-        v[k] = strtod(at, &end);
+        v[k] = hexfloat_read(at, &end);
         if (end == at)
             return -1;
         at = end;

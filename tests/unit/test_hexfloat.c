@@ -1,9 +1,13 @@
 /* The runner protocol's hex floats (tests/grader/hexfloat.h): the text of
  * values worked out by hand, strtod reading every text back to the same
- * bits, and, with the GNU C library, printf's "%a" text itself. */
+ * bits, and, with the GNU C library, printf's "%a" text itself.  And the
+ * two fast readers, hexfloat_read and the test files' decimal_read
+ * (tests/grader/decimal.h), each against strtod itself: the same bits and
+ * the same end, for every text, theirs and others. */
 #include "check.h"            /* first: it sets the POSIX feature level */
 
 #include "../grader/hexfloat.h"
+#include "../grader/decimal.h"
 
 #include <float.h>
 #include <math.h>
@@ -75,9 +79,120 @@ static void test_random_round_trips(void)
     CHECK_MSG(unlike_printf == 0, "%d texts unlike printf's: the first, %s", unlike_printf, first);
 }
 
+/* reader(text) against strtod(text): the same bits (any NaN for a NaN,
+ * with its sign) and the same end.  1 when they agree. */
+static int same_as_strtod(double (*reader)(const char *, char **), const char *text, char *why,
+                          size_t len)
+{
+    char *end_fast = NULL, *end_libc = NULL;
+    double fast = reader(text, &end_fast), libc = strtod(text, &end_libc);
+    int same = isnan(libc) ? isnan(fast) && signbit(fast) == signbit(libc)
+                           : memcmp(&fast, &libc, sizeof fast) == 0;
+    if (same && end_fast == end_libc)
+        return 1;
+    snprintf(why, len, "\"%s\": read %a ending at %td, strtod %a ending at %td", text, fast,
+             end_fast - text, libc, end_libc - text);
+    return 0;
+}
+
+#define SAME(reader, text)                                                      \
+    do {                                                                        \
+        char why_[300];                                                         \
+        CHECK_MSG(same_as_strtod(reader, text, why_, sizeof why_), "%s", why_); \
+    } while (0)
+
+/* hexfloat_read: every text hexfloat_format writes, and texts it never
+ * writes (left to strtod), each read as strtod reads it. */
+static void test_hexfloat_read(void)
+{
+    static const char *const texts[] = {
+        "0x0p+0", "-0x0p+0", "0x1p+0", "0x1.8p+1", "0x1.999999999999ap-4", "0x1.fffffffffffffp+1023",
+        "-0x1.fffffffffffffp+1023", "0x1p-1022", "0x0.8p-1022", "0x0.0000000000001p-1022",
+        "0x0.fffffffffffffp-1022", "inf", "-inf", "nan", "-nan", "0x1p+0 1", "0x1.8p+1\n",
+        "  0x1p+3", "\t-0x1p+3", "0x1p+0|", "0x1p+0x", "0x1p+0.5",
+        /* not its text: strtod's answer */
+        "0x1.8P+1", "0X1p+0", "0x1.8p1", "0x1.8", "0x1.8p", "0x1.8p+", "0x1.p+0", "0x2p+0",
+        "0x1.00000000000000p+0", "0x1.0000000000000p+0", "0x1p+1024", "0x1p-1023", "0x0.8p-1021",
+        "0x0p+1", "0x0.0p-1022", "0x1p+00001", "0x1p+99999", "0x1.gp+0", "0x1.Ap+0", "+0x1p+0",
+        "\n0x1p+0", "infinity", "-Infinity", "INF", "NAN", "nan(1)", "1.5", "", "-", "x", "0x",
+        "-0x", "0xp+0",
+    };
+    for (size_t k = 0; k < sizeof texts / sizeof texts[0]; k++)
+        SAME(hexfloat_read, texts[k]);
+    /* Random values, each in its own text and in a line of three. */
+    uint64_t s = 0x2545f4914f6cdd1du;
+    int wrong = 0;
+    char first[300] = "";
+    for (long i = 0; i < 200000; i++) {
+        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+        uint64_t bits = i % 3 == 1 ? s & ~(UINT64_C(0x7ff) << 52) : s;
+        double x;
+        memcpy(&x, &bits, sizeof x);
+        char line[3 * HEXFLOAT_MAX + 4];
+        size_t n = hexfloat_format(line, x);
+        line[n++] = ' ';
+        n += hexfloat_format(line + n, -x);
+        line[n++] = ' ';
+        hexfloat_format(line + n, x / 3);
+        char *end = line;
+        for (int j = 0; j < 3; j++) {
+            char why[300];
+            if (!same_as_strtod(hexfloat_read, end, why, sizeof why) && wrong++ == 0)
+                snprintf(first, sizeof first, "%s", why);
+            strtod(end, &end);
+        }
+    }
+    CHECK_MSG(wrong == 0, "%d texts read unlike strtod: the first, %s", wrong, first);
+}
+
+/* decimal_read: the test files' numbers ("%.17g"), short decimals of every
+ * form, and texts it leaves to strtod, each read as strtod reads it. */
+static void test_decimal_read(void)
+{
+    static const char *const texts[] = {
+        "0", "-0", "0.53", "-1", "0.1", "1e22", "-1e22", "1e-22", "1e23", "1e-23", "4e22",
+        "9007199254740992", "9007199254740993", "9007199254740991e-22", "12345678901234567",
+        "123456789012345678", "0.000000000000000000000000001", "00012", "1e-0", "1E5", "1e+5",
+        "  7", "\t-7.5e-3", "+5", ".5", "5.", "-.5e1", "1e", "1e+", "1e-", "1ex", "0x10", "-0x10",
+        "inf", "nan", "", "-", ".", "-.", "+", "1.5e99999", "0e99999", "-0.000", "1.5.5", "1..5",
+        "0.4811252243246881", "-0.6735753140545633", "0.32092845501278366", "2e-09", "1 2",
+        "3|4", "\n5", "5\n", "1e308", "1e-308", "4.9406564584124654e-324", "1.7976931348623157e308",
+        "0.30000000000000004", "100000000000000000000000", "1000000000000000000000",
+    };
+    for (size_t k = 0; k < sizeof texts / sizeof texts[0]; k++)
+        SAME(decimal_read, texts[k]);
+    /* Random numbers in the forms a test file may hold. */
+    static const char *const forms[] = { "%.17g", "%.15g", "%.6g", "%.3f", "%.1e", "%g", "%.0f" };
+    uint64_t s = 0x9e3779b97f4a7c15u;
+    int wrong = 0;
+    char first[300] = "";
+    for (long i = 0; i < 200000; i++) {
+        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+        double x;
+        if (i % 2) {                    /* any finite double */
+            uint64_t bits = s;
+            if (((bits >> 52) & 0x7ff) == 0x7ff)
+                continue;
+            memcpy(&x, &bits, sizeof x);
+        } else {                        /* an ordinary size: a scene's numbers */
+            x = ldexp((double)(s >> 11), -53) * pow(10, (double)((int)(s & 31) - 12));
+            if (s & 32)
+                x = -x;
+        }
+        char text[400];
+        snprintf(text, sizeof text, forms[i % 7], x);
+        char why[300];
+        if (!same_as_strtod(decimal_read, text, why, sizeof why) && wrong++ == 0)
+            snprintf(first, sizeof first, "%s", why);
+    }
+    CHECK_MSG(wrong == 0, "%d texts read unlike strtod: the first, %s", wrong, first);
+}
+
 static const CheckTest tests[] = {
     CHECK_TEST(test_known_values),
     CHECK_TEST(test_random_round_trips),
+    CHECK_TEST(test_hexfloat_read),
+    CHECK_TEST(test_decimal_read),
 };
 
 int main(int argc, char **argv)
