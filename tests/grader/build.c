@@ -174,16 +174,19 @@ static int run_cc(const BuildConfig *cfg, Build *b, char **argv, double *cpu, ch
  * user who cannot read the kit at all. */
 static bool inside_kit(const BuildConfig *cfg, const Build *b, const char *name)
 {
-    char root[PATH_MAX], path[PATH_MAX + 700], real[PATH_MAX];
+    char root[PATH_MAX], path[PATH_MAX + 700], real[PATH_MAX], own[PATH_MAX];
     if (!realpath(cfg->root, root))
         return false;
-    size_t rootlen = strlen(root);
     if (name[0] == '/')
         snprintf(path, sizeof path, "%s", name);
     else
         snprintf(path, sizeof path, "%s/src/%s", b->dir, name);
-    return realpath(path, real) && strncmp(real, root, rootlen) == 0 &&
-           (real[rootlen] == '/' || real[rootlen] == '\0');
+    if (!realpath(path, real) || !path_below(real, root))
+        return false;
+    /* The build's own folder holds copies (its raytracer.h), not files of
+     * the kit, even where TMPDIR puts it inside the kit; another build's
+     * folder there is the kit's. */
+    return !(realpath(b->dir, own) && path_below(real, own));
 }
 
 typedef struct {

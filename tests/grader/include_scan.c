@@ -36,13 +36,12 @@ static bool system_tree(const char *path)
     return false;
 }
 
-/* True for dir itself and anything under it. */
-static bool below(const char *path, const char *dir)
+bool path_below(const char *path, const char *dir)
 {
     size_t m = strlen(dir);
-    while (m > 1 && dir[m - 1] == '/')
-        m--;
-    return m > 0 && strncmp(path, dir, m) == 0 && (path[m] == '/' || path[m] == '\0');
+    while (m > 0 && dir[m - 1] == '/')
+        m--;                            /* "/" itself: every absolute path */
+    return dir[0] && strncmp(path, dir, m) == 0 && (path[m] == '/' || path[m] == '\0');
 }
 
 /* path with "//" and "/./" collapsed, into out (at most len bytes). */
@@ -94,7 +93,7 @@ static int check_name(Scan *sc, const char *name, size_t n)
      * it under /dev). */
     if (raw[0] == '/' && system_tree(clean))
         return refuse(sc, name, n, "which is a device or a system file, not a header");
-    if (realpath(clean, real) && system_tree(real) && !(sc->real_dir[0] && below(real, sc->real_dir)))
+    if (realpath(clean, real) && system_tree(real) && !(sc->real_dir[0] && path_below(real, sc->real_dir)))
         return refuse(sc, name, n, "which leads to a device or a system file, not a header");
     struct stat st;
     if (stat(clean, &st) == 0 && !S_ISREG(st.st_mode))

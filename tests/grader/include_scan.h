@@ -14,6 +14,7 @@
 #ifndef INCLUDE_SCAN_H
 #define INCLUDE_SCAN_H
 
+#include <stdbool.h>
 #include <stddef.h>
 
 /* Scans the C source text[0 .. len-1], which will be compiled in directory
@@ -34,5 +35,9 @@ int include_scan(const char *text, size_t len, const char *dir, char *why, size_
 typedef const char *(*IncludeJudge)(const char *name, void *ctx);
 int include_scan_judged(const char *text, size_t len, const char *dir, IncludeJudge judge, void *ctx,
                         char *why, size_t whylen);
+
+/* True when path is dir or under it, component by component ("/a/bc" is
+ * not under "/a/b"); both as realpath gives them. */
+bool path_below(const char *path, const char *dir);
 
 #endif

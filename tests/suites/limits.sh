@@ -108,4 +108,27 @@ fi
 check "a killed test loses Part 1 alone, and Part 2 is graded after it" \
     grep -q '^summary 0 20 0 0 ' "$tmp/killed-test.out"
 
+# -- wherever TMPDIR puts the compile folders ---------------------------------
+# Each part is compiled in a folder under TMPDIR that holds copies of the
+# kit's headers: they are the build's own wherever that folder is.  Inside
+# the kit, and under /dev (TMPDIR=/dev/shm), both once refused raytracer.h
+# in every part (0 for the reference).  A file of the kit named by its path
+# stays refused.
+submission include-kit part1_image_plane "#include \"$PWD/solutions/part1_image_plane.c\""
+mkdir -p out/tests/tmpdir-in-kit
+for where in "$PWD/out/tests/tmpdir-in-kit" /dev/shm; do
+    if [ ! -d "$where" ] || [ ! -w "$where" ]; then
+        echo "   skipped: no $where to write in"
+        continue
+    fi
+    t=$(mktemp -d "$where/rtlimits.XXXXXX") || { fail "cannot make a folder in $where"; continue; }
+    chmod 755 "$t"
+    TMPDIR=$t $grade --submission solutions --part 1 --summary >"$tmp/where.out" 2>&1
+    check "TMPDIR in $where: the reference keeps Part 1's marks" grep -q '^summary 20 0 0 0 ' "$tmp/where.out"
+    TMPDIR=$t $grade --submission "$tmp/include-kit" --part 1 --summary >"$tmp/where.out" 2>&1
+    check "TMPDIR in $where: a file of the kit named by its path is still refused" \
+        grep -q 'which is part of the grader' "$tmp/where.out"
+    rm -rf "$t"
+done
+
 finish

@@ -105,6 +105,19 @@ static void test_compile_dir_under_dev(void)
     teardown();
 }
 
+/* path_below, which both the scan and the grader's test for a file of the
+ * kit use: component by component. */
+static void test_path_below(void)
+{
+    CHECK(path_below("/a/b", "/a/b"));
+    CHECK(path_below("/a/b/c.h", "/a/b"));
+    CHECK(path_below("/a/b/c.h", "/a/b/"));
+    CHECK(!path_below("/a/bc", "/a/b"));
+    CHECK(!path_below("/a", "/a/b"));
+    CHECK(path_below("/anything", "/"));
+    CHECK(!path_below("/a/b", ""));
+}
+
 /* Every way of writing the directive that gcc and clang accept. */
 static void test_directive_spellings(void)
 {
@@ -204,7 +217,7 @@ static void test_judge_every_spelling(void)
 static const CheckTest tests[] = {
     CHECK_TEST(test_judge_every_spelling),
     CHECK_TEST(test_devices_by_name), CHECK_TEST(test_what_names_lead_to), CHECK_TEST(test_directive_spellings),
-    CHECK_TEST(test_compile_dir_under_dev),
+    CHECK_TEST(test_compile_dir_under_dev), CHECK_TEST(test_path_below),
     CHECK_TEST(test_passes),          CHECK_TEST(test_not_at_line_start),
 };
 
