@@ -12,7 +12,7 @@
 # page that cannot be written changes neither the exit status nor the
 # results file; and, when a headless browser (chromium) is installed, the
 # page renders: its screenshot differs from a blank page's.  Without a
-# browser that check says it skipped and counts as passed.
+# browser that check says it skipped and counts nothing.
 set -u
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 grade=${GRADE:-out/build/bin/grade}   # make sanitize-grader: the sanitized one

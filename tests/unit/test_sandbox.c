@@ -171,7 +171,7 @@ static void test_no_file_output(void)
     sandbox_result_free(&res);
 }
 
-/* The ids another process is given while this one holds n ids: in
+/* The ids another process is given while this one holds its own: in
  * out[0 .. 2], and how many it was given; -1 if it could not say. */
 static int others_ids(uid_t out[3])
 {
