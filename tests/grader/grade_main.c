@@ -303,10 +303,18 @@ static int by_name(const void *a, const void *b)
     return strcmp(*(char *const *)a, *(char *const *)b);
 }
 
+/* One field of the gradebook, quoted when it holds a comma, a quote or a
+ * line break.  A field that starts with =, +, -, @, a tab or a carriage
+ * return is written after an apostrophe, quoted: a spreadsheet would
+ * otherwise take a folder named "=HYPERLINK(...)" for a formula (OWASP's
+ * advice on CSV injection).  The .json and .html keep the name as it is. */
 static void csv_field(FILE *f, const char *s)
 {
-    if (strpbrk(s, ",\"\n\r")) {
+    bool formula = s[0] && strchr("=+-@\t\r", s[0]);
+    if (formula || strpbrk(s, ",\"\n\r")) {
         fputc('"', f);
+        if (formula)
+            fputc('\'', f);
         for (; *s; s++) {
             if (*s == '"')
                 fputc('"', f);
@@ -377,6 +385,18 @@ static int job_users(int jobs, char ids[][16])
     return found;
 }
 
+/* Appends text to the string in buf (size bytes), as much as fits. */
+static void append_text(char *buf, size_t size, const char *text)
+{
+    size_t used = strlen(buf), k = strlen(text);
+    if (used + 1 >= size)
+        return;
+    if (k > size - used - 1)
+        k = size - used - 1;
+    memcpy(buf + used, text, k);
+    buf[used + k] = '\0';
+}
+
 static int grade_all(const char *self, const char *dir, const char *out, const char *weights, int jobs)
 {
     char err[1024];
@@ -388,17 +408,35 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
         return fail(NULL, "%s: cannot open the submissions directory", dir);
     char **names = NULL;
     int n = 0;
+    /* Folders whose names start with "." (.git, .github, a system's own)
+     * are not submissions: they are left out, and the run says which. */
+    char hidden[256] = "";
+    int nhidden = 0;
     struct dirent *e;
     while ((e = readdir(d))) {
         char path[PATH_MAX];
         struct stat st;
-        if (e->d_name[0] == '.')
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
             continue;
         snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-        if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
-            names = realloc(names, (size_t)(n + 1) * sizeof *names);
-            names[n++] = strdup(e->d_name);
+        if (stat(path, &st) != 0 || !S_ISDIR(st.st_mode))
+            continue;
+        if (e->d_name[0] == '.') {
+            if (nhidden > 0 && nhidden <= 8)
+                append_text(hidden, sizeof hidden, nhidden < 8 ? ", " : ", ...");
+            if (nhidden < 8)
+                append_text(hidden, sizeof hidden, e->d_name);
+            nhidden++;
+            continue;
         }
+        char **grown = realloc(names, (size_t)(n + 1) * sizeof *names);
+        char *name = strdup(e->d_name);
+        if (!grown || !name) {
+            closedir(d);
+            return fail(NULL, "%s", "out of memory");
+        }
+        names = grown;
+        names[n++] = name;
     }
     closedir(d);
     qsort(names, (size_t)n, sizeof *names, by_name);
@@ -539,7 +577,11 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
         } else {
             for (int c = 0; c < ncols + 2; c++)
                 fputc(',', f);
-            fprintf(f, ",grader error (see %s.json)\n", j->name);
+            fputc(',', f);
+            char why[sizeof j->name + 32];
+            snprintf(why, sizeof why, "grader error (see %s.json)", j->name);
+            csv_field(f, why);
+            fputc('\n', f);
         }
         if (!ok)
             worst = 2;
@@ -564,6 +606,9 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     if (users && jobs > 1)
         printf("graded %d at a time, as root: each one's code ran as an unprivileged user of its "
                "own\n", jobs);
+    if (nhidden)
+        printf("left out %d folder%s whose name starts with \".\", not taken for a submission: %s\n",
+               nhidden, nhidden == 1 ? "" : "s", hidden);
     printf("graded %d submission%s: wrote %s, and one .json and one .html (the report page) %s\n",
            n, n == 1 ? "" : "s", csv, n == 1 ? "for it" : "each");
     return worst;

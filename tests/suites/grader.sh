@@ -374,4 +374,32 @@ check "forged results: no score of 1000 anywhere" sh -c "! grep -rq '\"score\": 
 check "forged results: nothing written beside the submissions" \
     sh -c "[ \$(ls '$tmp/grades-subs' | wc -l) -eq \$(( 2 * \$(ls '$tmp/subs' | wc -l) + 1 )) ]"
 
+# Folder names a spreadsheet would take for a formula, or that hold a
+# comma, are written so that it reads them as text; folders whose names
+# start with "." are not submissions: left out, and named.
+names=$tmp/names
+for d in '=SUM(A1)' '-rf' '@me' '+1' 'a,b' plain .git .github; do
+    mkdir -p "$names/$d"
+    cp solutions/part1_image_plane.c "$names/$d/"
+done
+chmod -R a+rX "$names"
+sed 's/^parts .*/parts 1/' tests/weights.conf >"$tmp/part1.conf"
+$grade --all "$names" --out "$tmp/grades-names" --weights "$tmp/part1.conf" --jobs 1 >"$tmp/names.out" 2>&1
+for d in '=SUM(A1)' '-rf' '@me' '+1'; do
+    check "a folder named $d is written \"'$d\" in the gradebook, read as text" \
+        grep -qxF "\"'$d\",20,2.5,22.5,full marks" "$tmp/grades-names/gradebook.csv"
+done
+check "a folder named a,b is quoted in the gradebook" \
+    grep -qxF '"a,b",20,2.5,22.5,full marks' "$tmp/grades-names/gradebook.csv"
+check "a plain name is written as it is" grep -qxF 'plain,20,2.5,22.5,full marks' "$tmp/grades-names/gradebook.csv"
+check "the gradebook has a row for each of the 6 submissions and no more" \
+    [ "$(wc -l <"$tmp/grades-names/gradebook.csv")" -eq 7 ]
+check "the results files keep the names as they are" \
+    sh -c "[ -f '$tmp/grades-names/=SUM(A1).json' ] && [ -f '$tmp/grades-names/-rf.html' ]"
+check "folders whose names start with . are left out, and the run names them" \
+    sh -c "grep -q '^left out 2 folders whose name starts with \".\", not taken for a submission: ' '$tmp/names.out' &&
+           grep -q ': .*\.github' '$tmp/names.out' && grep -q ': .*\.git\(,\|\$\)' '$tmp/names.out' &&
+           grep -q '^graded 6 submissions' '$tmp/names.out'"
+[ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/names.out" "$tmp/grades-names/gradebook.csv"
+
 finish
