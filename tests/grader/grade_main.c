@@ -439,6 +439,13 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
         names[n++] = name;
     }
     closedir(d);
+    if (n == 0) {     /* a wrong folder, most likely: nothing is written */
+        snprintf(err, sizeof err, "%s holds no submissions: each submission is a folder of stage files in it%s%s",
+                 dir, nhidden ? " (folders whose names start with \".\" are left out: " : "", hidden);
+        if (nhidden)
+            append_text(err, sizeof err, ")");
+        return fail(NULL, "%s", err);
+    }
     qsort(names, (size_t)n, sizeof *names, by_name);
     if (mkdir(out, 0755) != 0 && errno != EEXIST)
         return fail(NULL, "%s: cannot make the output directory", out);

@@ -401,5 +401,12 @@ check "folders whose names start with . are left out, and the run names them" \
            grep -q ': .*\.github' '$tmp/names.out' && grep -q -e ': .*\.git,' -e ': .*\.git\$' '$tmp/names.out' &&
            grep -q '^graded 6 submissions' '$tmp/names.out'"
 [ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/names.out" "$tmp/grades-names/gradebook.csv"
+# A folder that holds no submission (the wrong one, most likely).
+mkdir -p "$tmp/no-class/.git"
+$grade --all "$tmp/no-class" --out "$tmp/grades-none" >"$tmp/none.out" 2>&1
+status=$?
+check "a folder with no submission in it is refused (exit $status, want 2), and nothing is written" \
+    sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/grades-none' ] &&
+           grep -q 'no-class holds no submissions: .*left out: .git)' '$tmp/none.out'"
 
 finish
