@@ -409,9 +409,10 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     char **names = NULL;
     int n = 0;
     /* Folders whose names start with "." (.git, .github, a system's own)
-     * are not submissions: they are left out, and the run says which. */
-    char hidden[256] = "";
-    int nhidden = 0;
+     * are not submissions: they are left out, and the run names them, in
+     * order, the first eight. */
+    char **dots = NULL;
+    int ndots = 0;
     struct dirent *e;
     while ((e = readdir(d))) {
         char path[PATH_MAX];
@@ -421,28 +422,33 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
         snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
         if (stat(path, &st) != 0 || !S_ISDIR(st.st_mode))
             continue;
-        if (e->d_name[0] == '.') {
-            if (nhidden > 0 && nhidden <= 8)
-                append_text(hidden, sizeof hidden, nhidden < 8 ? ", " : ", ...");
-            if (nhidden < 8)
-                append_text(hidden, sizeof hidden, e->d_name);
-            nhidden++;
-            continue;
-        }
-        char **grown = realloc(names, (size_t)(n + 1) * sizeof *names);
+        char ***list = e->d_name[0] == '.' ? &dots : &names;
+        int *count = e->d_name[0] == '.' ? &ndots : &n;
+        char **grown = realloc(*list, (size_t)(*count + 1) * sizeof **list);
         char *name = strdup(e->d_name);
         if (!grown || !name) {
             closedir(d);
             return fail(NULL, "%s", "out of memory");
         }
-        names = grown;
-        names[n++] = name;
+        *list = grown;
+        grown[(*count)++] = name;
     }
     closedir(d);
+    char hidden[256] = "";
+    if (ndots > 1)
+        qsort(dots, (size_t)ndots, sizeof *dots, by_name);
+    for (int k = 0; k < ndots; k++) {
+        if (k > 0 && k <= 8)
+            append_text(hidden, sizeof hidden, k < 8 ? ", " : ", ...");
+        if (k < 8)
+            append_text(hidden, sizeof hidden, dots[k]);
+        free(dots[k]);
+    }
+    free(dots);
     if (n == 0) {     /* a wrong folder, most likely: nothing is written */
         snprintf(err, sizeof err, "%s holds no submissions: each submission is a folder of stage files in it%s%s",
-                 dir, nhidden ? " (folders whose names start with \".\" are left out: " : "", hidden);
-        if (nhidden)
+                 dir, ndots ? " (folders whose names start with \".\" are left out: " : "", hidden);
+        if (ndots)
             append_text(err, sizeof err, ")");
         return fail(NULL, "%s", err);
     }
@@ -613,9 +619,9 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     if (users && jobs > 1)
         printf("graded %d at a time, as root: each one's code ran as an unprivileged user of its "
                "own\n", jobs);
-    if (nhidden)
+    if (ndots)
         printf("left out %d folder%s whose name starts with \".\", not taken for a submission: %s\n",
-               nhidden, nhidden == 1 ? "" : "s", hidden);
+               ndots, ndots == 1 ? "" : "s", hidden);
     printf("graded %d submission%s: wrote %s, and one .json and one .html (the report page) %s\n",
            n, n == 1 ? "" : "s", csv, n == 1 ? "for it" : "each");
     return worst;
