@@ -467,7 +467,7 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
 
     char (*users)[16] = NULL;
     bool *busy = NULL;
-    jobs = jobs < n ? jobs : n > 0 ? n : 1;
+    jobs = jobs < n ? jobs : n;      /* n > 0: an empty folder was refused above */
     if (sandbox_drops_privileges()) {
         jobs = jobs < MAX_ROOT_JOBS ? jobs : MAX_ROOT_JOBS;
         users = calloc((size_t)jobs, sizeof *users);
@@ -654,8 +654,16 @@ int main(int argc, char **argv)
             page = *v ? v : NULL, k++;
         else if (!strcmp(a, "--weights") && v)
             weights = v, k++;
-        else if (!strcmp(a, "--jobs") && v)
-            jobs = atol(v), k++;
+        else if (!strcmp(a, "--jobs") && v) {
+            char *end;
+            errno = 0;
+            jobs = strtol(v, &end, 10);
+            if (end == v || *end || errno || jobs < 1 || jobs > 1024) {
+                fprintf(stderr, "grade: --jobs %s: want a whole number of submissions at a time, 1 to 1024\n", v);
+                return 2;
+            }
+            k++;
+        }
         else if (!strcmp(a, "--quiet"))
             quiet = true;
         else if (!strcmp(a, "--summary"))

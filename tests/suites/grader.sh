@@ -408,5 +408,11 @@ status=$?
 check "a folder with no submission in it is refused (exit $status, want 2), and nothing is written" \
     sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/grades-none' ] &&
            grep -q 'no-class holds no submissions: .*left out: .git)' '$tmp/none.out'"
+for j in 0 two 3x; do
+    $grade --all "$names" --out "$tmp/grades-jobs" --jobs $j >"$tmp/jobs.out" 2>&1
+    status=$?
+    check "--jobs $j is refused (exit $status, want 2), and nothing is written" \
+        sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/grades-jobs' ] && grep -q -- '--jobs $j: want a whole number' '$tmp/jobs.out'"
+done
 
 finish
