@@ -5,7 +5,7 @@
  * for Part k and, for the parts it may call, the reference (in the
  * instructor's kit) or the submission's own files (in the student kit).
  * It is built in a private temporary directory, by the compiler running in
- * the sandbox (as "nobody" when the grader is root), from copies of the
+ * the sandbox (as an unprivileged user when the grader is root), from copies of the
  * files it needs, so that nothing else of the kit is within its reach.
  */
 #ifndef BUILD_H

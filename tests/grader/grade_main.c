@@ -356,8 +356,8 @@ static void count_memo(const char *memo, int *built, int *stored, int *files)
  * each: spare ids, held against other graders for the whole run
  * (sandbox.h), so that one's code cannot signal another's tests, nor any
  * process of nobody's.  Fewer ids than jobs means fewer jobs; none (a
- * system that gives no spare ids) means one at a time, as nobody, as a
- * submission graded alone.  jobs is at most MAX_ROOT_JOBS. */
+ * system that gives no spare ids) means one at a time, as nobody.  jobs
+ * is at most MAX_ROOT_JOBS. */
 #define MAX_ROOT_JOBS 64
 static int job_users(int jobs, char ids[][16])
 {
@@ -632,7 +632,7 @@ int main(int argc, char **argv)
     const char *submission = "labs", *part = NULL, *results = NULL, *all = NULL, *out = "out/grades";
     const char *weights = "tests/weights.conf", *format = NULL, *page = NULL;
     char page_buf[PATH_MAX];
-    bool quiet = false, summary = false;
+    bool quiet = false, summary = false, user_given = false;
     long jobs = sysconf(_SC_NPROCESSORS_ONLN);
     for (int k = 1; k < argc; k++) {
         const char *a = argv[k];
@@ -682,6 +682,7 @@ int main(int argc, char **argv)
             if (*end || id == 0 || id != (unsigned long)(uid_t)id || (uid_t)id == (uid_t)-1)
                 usage();
             sandbox_set_user((uid_t)id);
+            user_given = true;
             k++;
         }
         else if (!strcmp(a, "--classroom") && v)
@@ -706,6 +707,22 @@ int main(int argc, char **argv)
         if (!realpath(weights, wpath))      /* the children run from the same root */
             return fail(NULL, "%s: cannot find the weights file", weights);
         return grade_all(self, all, out, wpath, jobs > 0 ? (int)jobs : 1);
+    }
+    /* As root, a submission graded alone runs its code as an unprivileged
+     * user of its own too: a spare id, held for the whole grading against
+     * every other grader (sandbox.h), so that its code cannot signal the
+     * tests of another grading run at the same time, nor the system's
+     * processes that run as nobody.  Where the system gives no spare id,
+     * as nobody. */
+    if (!user_given && sandbox_drops_privileges()) {
+        uid_t id;
+        const char *unclaimed = NULL;
+        if (sandbox_spare_users(&id, 1, &unclaimed) == 1) {
+            sandbox_set_user(id);
+            if (unclaimed && !quiet)
+                fprintf(stderr, "grade: %s, so another grading run as root at the same time may "
+                                "run its code as the same user\n", unclaimed);
+        }
     }
     return grade_one(submission, part, results, weights, page, quiet, summary);
 }

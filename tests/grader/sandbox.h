@@ -5,7 +5,8 @@
  * environment, no file descriptors but stdin, stdout/stderr (one pipe) and
  * the answer pipe on fd 3, and resource limits: CPU time, memory, no new
  * processes, no file output, and, if asked, how much it may print.  When
- * the grader runs as root the child runs as the unprivileged user "nobody".
+ * the grader runs as root the child runs as an unprivileged user: "nobody",
+ * or the spare id sandbox_set_user gave (grade_main.c asks for one).
  * The parent enforces the wall-clock and output limits by killing the whole
  * process group -- nothing the child does (alarm, signals, exit, fork,
  * closing descriptors) can stall it or forge a result.
@@ -104,14 +105,15 @@ void sandbox_serve_stop(SandboxServer *s);
  * memory_mb holds even where the kernel ignores RLIMIT_AS. */
 bool sandbox_watches_memory(void);
 
-/* True when the grader runs as root and so drops children to "nobody". */
+/* True when the grader runs as root and so drops children to an
+ * unprivileged user. */
 bool sandbox_drops_privileges(void);
 /* Makes path owned by the unprivileged user (when root); 0 on success. */
 int sandbox_give(const char *path);
 /* As root: the children of this process run as the user and group id
  * instead of "nobody" (grade --all gives each submission graded at once an
- * id of its own, so that one's code cannot signal another's tests); 0: as
- * "nobody" again. */
+ * id of its own, and a submission graded alone takes one, so that one's
+ * code cannot signal another's tests); 0: as "nobody" again. */
 void sandbox_set_user(uid_t id);
 /* As root: up to n ids, from 65533 down, that no user and no group has
  * (nor nobody), each checked by a child that takes it; stores them in

@@ -9,10 +9,12 @@
 # its own first call: graded two at once, they overlap.  (Given the same
 # user, as they once were, the classmate lost every part: its batches,
 # tests and compiles died.)  At the same time the two are graded again,
-# as two classes of one, by two more runs of grade --all.
+# as two classes of one, by two more runs of grade --all, and alone, by
+# two runs of grade --submission, which as root also take an id of their
+# own (given one id for both, the sleeper graded alone lost every part).
 #
-# So it runs beside the other suites, which grade as nobody or as ids they
-# hold themselves.  Where the system gives no spare ids it is skipped, and
+# So it runs beside the other suites, which grade as ids they hold
+# themselves (or as nobody, where the system gives none).  Where the system gives no spare ids it is skipped, and
 # the code never signals as nobody, whose processes may be the other
 # suites' tests.  (Nor as another user: there it would stop this suite
 # too.)
@@ -90,11 +92,38 @@ EOF
         mkdir "$tmp/class-$who"
         cp -R "$tmp/killers/$who" "$tmp/class-$who/"
     done
-    chmod -R a+rX "$tmp/killers" "$tmp"/class-*
+    # A submission graded alone, as root, runs its code as a user of its
+    # own too: this one's Part 1 is right only when its code does not run
+    # as nobody.
+    mkdir -p "$tmp/not-nobody"
+    cp solutions/part*.c "$tmp/not-nobody/"
+    sed 's/^void image_plane_size(/static void reference_image_plane_size(/' \
+        solutions/part1_image_plane.c >"$tmp/not-nobody/part1_image_plane.c"
+    cat >>"$tmp/not-nobody/part1_image_plane.c" <<EOF
+
+#include <unistd.h>
+
+void image_plane_size(double fov_degrees, double aspect, double d, double *w, double *h)
+{
+    reference_image_plane_size(fov_degrees, aspect, d, w, h);
+    if (getuid() == $nobody)
+        *w = *h = 0;
+}
+EOF
+    chmod -R a+rX "$tmp/killers" "$tmp"/class-* "$tmp/not-nobody"
     $grade --all "$tmp/class-b-kill-all" --out "$tmp/grades-b" --jobs 1 >"$tmp/b.out" 2>&1 &
     $grade --all "$tmp/class-a-sleeper" --out "$tmp/grades-a" --jobs 1 >"$tmp/a.out" 2>&1 &
+    # And the two graded alone, by two more gradings at the same time.
+    $grade --submission "$tmp/killers/b-kill-all" --quiet --summary >"$tmp/b-alone.out" 2>&1 &
+    $grade --submission "$tmp/killers/a-sleeper" --quiet --summary >"$tmp/a-alone.out" 2>&1 &
     $grade --all "$tmp/killers" --out "$tmp/grades-killers" --jobs 2 >"$tmp/killers.out" 2>&1
     wait
+    $grade --submission "$tmp/not-nobody" --part 1 --quiet --summary >"$tmp/not-nobody.out" 2>&1
+    check "as root, a submission graded alone runs its code as a user of its own, not nobody" \
+        grep -q "^summary 20 " "$tmp/not-nobody.out"
+    check "code that signals every process costs a submission graded alone at the same time nothing" \
+        grep -q "^summary 20 20 30 30 " "$tmp/a-alone.out"
+    check "and, graded alone, keeps its own marks" grep -q "^summary 20 20 30 30 " "$tmp/b-alone.out"
     check "as root, grade --all --jobs 2 runs each submission's code as a user of its own" \
         grep -q "^graded 2 at a time, as root: each one's code ran as an unprivileged user of its own$" \
         "$tmp/killers.out"
@@ -107,7 +136,8 @@ EOF
     check "and, graded by its own run, keeps its own marks" \
         grep -q "^b-kill-all,20,20,30,30,.*,full marks$" "$tmp/grades-b/gradebook.csv"
     [ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/killers.out" "$tmp/grades-killers/gradebook.csv" \
-        "$tmp/a.out" "$tmp/grades-a/gradebook.csv" "$tmp/b.out" "$tmp/grades-b/gradebook.csv"
+        "$tmp/a.out" "$tmp/grades-a/gradebook.csv" "$tmp/b.out" "$tmp/grades-b/gradebook.csv" \
+        "$tmp/a-alone.out" "$tmp/b-alone.out" "$tmp/not-nobody.out"
 fi
 
 finish
