@@ -201,6 +201,9 @@ mkdir -p out/port
 # shellcheck disable=SC2086
 if [ -z "${PORT_FULL:-}" ] && [ -f "$lint_stamp" ] && [ -z "$(find $scripts -newer "$lint_stamp")" ]; then
     echo "   checkbashisms, shellcheck: no script changed since they last passed"
+    # Counted as they counted then, so that the count is the same either way.
+    have checkbashisms && pass
+    have shellcheck && pass
 else
     lint_ok=1
     if have checkbashisms; then
