@@ -272,7 +272,15 @@ void tg_hard(TestList *l, uint64_t seed, int first_round, int rounds, bool hidde
         double e[3] = { c4[k].eye.x, c4[k].eye.y, c4[k].eye.z };
         double p[3] = { c4[k].pixel.x, c4[k].pixel.y, c4[k].pixel.z };
         tg_camera(&l->tests[cam], e, p);
-        Test *t = tg_hard_test(l, PART3B, KIND_COLOR, c4[k].family, hidden);
+        /* A family drawn in more than one round gets a scene per round:
+         * numbered, so that no two tests share a name. */
+        char family[sizeof c4[k].family + 32];
+        int round = k / HARD_PART3B_FAMILIES - first_round;
+        if (rounds > 1)
+            snprintf(family, sizeof family, "%s (scene %d of %d)", c4[k].family, round + 1, rounds);
+        else
+            snprintf(family, sizeof family, "%s", c4[k].family);
+        Test *t = tg_hard_test(l, PART3B, KIND_COLOR, family, hidden);
         t->weight = 1.0 / rounds;
         t->background[0] = c4[k].background.x;
         t->background[1] = c4[k].background.y;

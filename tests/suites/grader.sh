@@ -33,6 +33,10 @@ check "the reference's summary, every part" \
     grep -q "^summary $max1 $max2 $max3a $max3b $max4 $max5 " "$tmp/ref-all.out"
 check "Parts 4 and 5 in results.json when turned on" \
     sh -c "grep -q '\"Part 4: ' '$tmp/ref-all.json' && grep -q '\"Part 5: ' '$tmp/ref-all.json'"
+# A name is how a student, Gradescope and the report page tell tests apart.
+grep '"name": ' "$tmp/ref-all.json" | sort | uniq -d >"$tmp/same-names"
+check "no two tests share a name, every part, public and hidden: $(tr -s ' \n' ' ' <"$tmp/same-names")" \
+    test ! -s "$tmp/same-names"
 [ "$status" -eq 0 ] || tail -n 30 "$tmp/ref-all.out"
 for p in 4 5; do
     $grade --submission solutions --part $p >"$tmp/ref-$p.out" 2>&1
