@@ -257,7 +257,9 @@ void ray_figure(Markup *m, const RayFig *f)
                    && fabs(tc->b - tc->R) * s < 4) {
             what = "where the ray grazes the sphere";
             used_graze = true;
-            double g = fmax(fabs(tc->b - tc->R), 1e-300 * tc->R);
+            /* the gap between the ray and the edge, as wide again on each
+             * side; an exact tangent has none: close enough to see it touch */
+            double g = tc->b != tc->R ? fabs(tc->b - tc->R) : 0.02 * tc->R;
             box_add(&zb, tc->a - 8 * g, -5 * g);
             box_add(&zb, tc->a + 8 * g, 5 * g);
         } else if (both && !used_close && fabs(aw - ag) * s < 10) {
@@ -357,10 +359,14 @@ void ray_figure(Markup *m, const RayFig *f)
             snprintf(note, sizeof note, "this window is %s wide", fig_num(buf2, sizeof buf2, v->pw / v->s, 2));
             if (both && fabs(aw - ag) * v->s < 3 && k == nwin - 1)
                 snprintf(note, sizeof note, "the two hits are %s apart", fig_num(buf, sizeof buf, fabs(aw - ag), 2));
-            if (strcmp(why[k], "where the ray grazes the sphere") == 0 && tc)
-                snprintf(note, sizeof note, "the ray passes %s %s the edge",
-                         fig_num(buf, sizeof buf, fabs(tc->b - tc->R), 2),
-                         tc->b < tc->R ? "inside" : tc->b > tc->R ? "outside" : "exactly on");
+            if (strcmp(why[k], "where the ray grazes the sphere") == 0 && tc) {
+                if (tc->b == tc->R)
+                    snprintf(note, sizeof note, "the ray touches the edge: it passes exactly on it");
+                else
+                    snprintf(note, sizeof note, "the ray passes %s %s the edge",
+                             fig_num(buf, sizeof buf, fabs(tc->b - tc->R), 2),
+                             tc->b < tc->R ? "inside" : "outside");
+            }
             svg_text(m, v->px0 + 6, v->py0 + v->ph - 8, "start", 11, COL_NOTE, false, "%s", note);
         }
     }

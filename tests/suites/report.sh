@@ -82,8 +82,8 @@ EOF2
 only45=$tmp/parts45.conf
 sed 's/^parts .*/parts 4 5/' tests/weights.conf >"$only45"
 mkdir "$tmp/subs" "$tmp/subs45"
-core="p1-w-h-swapped p2-y-not-flipped p3a-far-root p3b-first-hit textbook hostile-compile-error
-      hostile-missing-file hostile-segfault"
+core="p1-w-h-swapped p2-y-not-flipped p3a-far-root p3a-tangent-miss p3b-first-hit textbook
+      hostile-compile-error hostile-missing-file hostile-segfault"
 flat="p4-hits-behind p5-strict-edges"
 for name in $core $flat; do
     dir=tests/selftest/$name
@@ -184,6 +184,15 @@ check "a missing file: the page says the file is missing" \
 check "a render that crashes: the page says so" grep -q 'crashed (signal' "$page/hostile-segfault.html"
 check "a hard-case failure: a zoomed-in window where the scale demands it" \
     grep -q 'zoomed in' "$page/textbook.html"
+# An exact tangent has no gap to show: its window zooms in far enough to
+# see the ray touch the circle (it once zoomed in 2.9e+299 times, and said
+# "the ray passes 0 exactly on the edge").
+check "a tangent ray: the zoomed-in window says the ray touches the edge" \
+    grep -q 'the ray touches the edge: it passes exactly on it' "$page/p3a-tangent-miss.html"
+grep -B2 'the ray touches the edge' "$page/p3a-tangent-miss.html" |
+    sed -n 's/.*>zoomed in \([^ ]*\) times:<.*/\1/p' >"$tmp/tangent-zoom"
+check "a tangent ray: zoomed in a readable number of times ($(cat "$tmp/tangent-zoom"))" \
+    awk 'NR == 1 { ok = $1 + 0 >= 4 && $1 + 0 <= 1000 } END { exit !ok }' "$tmp/tangent-zoom"
 check "Part 3b's image tests: the two renders with the pixel marked" \
     grep -q 'Your picture and the reference' "$page/p3b-first-hit.html"
 check "Part 5's mesh tests: the mesh seen along the ray" grep -q 'The mesh seen along the ray' \
