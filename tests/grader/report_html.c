@@ -2,7 +2,7 @@
  * report_html.c - the report page: one self-contained HTML file that a
  * student opens in any browser, with no network and no JavaScript.
  *
- *   the score of each part, and what probably went wrong (the diagnosis);
+ *   the score of each part, and what went wrong (the diagnosis);
  *   the default scene drawn by the submission, by the reference, and the
  *   heat map of their difference (the same as `make compare`);
  *   how to read the pictures (the colours);
@@ -115,7 +115,8 @@ static void scores(Markup *m, const Grade *g, const GradeConfig *cfg)
         if (!g->graded[p] || !g->diagnosis[p])
             continue;
         /* Its causes one a line, as the terminal shows them ("- ..."). */
-        mk_printf(m, "<div class=\"diag\"><strong>Part %s, what probably went wrong:</strong>\n",
+        mk_printf(m, "<div class=\"diag\"><strong>Part %s, what went wrong (probes run on your code "
+                     "confirmed it):</strong>\n",
                   part_label(p));
         mk_text(m, g->diagnosis[p]);
         mk_printf(m, "</div>\n");

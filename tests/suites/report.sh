@@ -173,7 +173,7 @@ check "identical pictures: the two renders, and a box in place of the all-black 
     sh -c "'$check_html' '$page/reference.html' | grep -qx 'images 2' &&
            grep -q 'identical, pixel for pixel' '$page/reference.html'"
 check "a diagnosis: its causes each on a line of their own, as the terminal shows them" \
-    sh -c "grep -A1 'Part 1, what probably went wrong:</strong>\$' '$page/p1-w-h-swapped.html' |
+    sh -c "grep -A1 'Part 1, what went wrong (probes run on your code confirmed it):</strong>\$' '$page/p1-w-h-swapped.html' |
            grep -q '^- w and h are swapped'"
 check "a part that does not build: the page shows what the compiler said" \
     grep -q 'Your file did not build' "$page/hostile-compile-error.html"
