@@ -153,9 +153,11 @@ static void draw_content(Markup *m, const FigView *v, const RayFig *f, double aw
             double px = fig_px(v, t * f->rlen);
             svg_line(m, px, y0 - 4, px, y0 + 4, "#222222", 1, NULL);
             bool crowded = (want_in && fabs(px - fig_px(v, aw)) < 30) || (got_in && fabs(px - fig_px(v, ag)) < 30);
-            if (!crowded)
-                svg_text(m, px, y0 + 16, "middle", 11, COL_NOTE, false, "t = %s",
-                         fig_num(buf, sizeof buf, t, 4));
+            fig_num(buf, sizeof buf, t, 4);
+            double half = 3.0 * (double)(strlen(buf) + 4);    /* "t = " and the number, at 11 px */
+            bool cut = px - half < v->px0 + 2 || px + half > v->px0 + v->pw - 2;   /* by the frame */
+            if (!crowded && !cut)
+                svg_text(m, px, y0 + 16, "middle", 11, COL_NOTE, false, "t = %s", buf);
             if (t / step > 40)
                 break;
         }
