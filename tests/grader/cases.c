@@ -55,6 +55,24 @@ static const char *titles[NPARTS] = {
 const char *part_label(int part) { return labels[part]; }
 const char *part_title(int part) { return titles[part]; }
 
+PointsText points_text(double points)
+{
+    PointsText p;
+    if (!(fabs(points) < 1e15)) {           /* not a count of points: as it is */
+        snprintf(p.s, sizeof p.s, "%g", points);
+        return p;
+    }
+    snprintf(p.s, sizeof p.s, "%.2f", points);
+    size_t n = strlen(p.s);                 /* "%.2f" always writes a point */
+    while (p.s[n - 1] == '0')
+        p.s[--n] = '\0';
+    if (p.s[n - 1] == '.')
+        p.s[--n] = '\0';
+    if (strcmp(p.s, "-0") == 0)
+        snprintf(p.s, sizeof p.s, "0");
+    return p;
+}
+
 int part_from_label(const char *label)
 {
     for (int p = 0; p < NPARTS; p++)

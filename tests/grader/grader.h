@@ -108,6 +108,12 @@ int kind_nout(Kind kind);
 const char *part_label(int part);        /* "1", "2", "3a", "3b", "4", "5" */
 const char *part_title(int part);        /* "Part 1: image plane size"   */
 int part_from_label(const char *label);  /* -1 if unknown                */
+/* A number of points as people read them: rounded to two decimals, with no
+ * trailing zeros ("22.94", "20", "2.5").  The table, the page and the
+ * results' text show points so; the results' scores and the gradebook keep
+ * the numbers as they are.  Use the .s of the value returned. */
+typedef struct { char s[32]; } PointsText;
+PointsText points_text(double points);
 
 Test *testlist_add(TestList *list, int part, Kind kind, const char *name);
 Case *test_add_case(Test *test);

@@ -100,16 +100,17 @@ static void scores(Markup *m, const Grade *g, const GradeConfig *cfg)
         if (failed)
             mk_printf(m, "<a href=\"#part-%s\">", part_label(p));
         mk_text(m, part_title(p));
-        mk_printf(m, "%s</td><td class=\"num\">%g / %g</td><td class=\"num\">", failed ? "</a>" : "",
-                  g->core[p], g->core_max[p]);
+        mk_printf(m, "%s</td><td class=\"num\">%s / %s</td><td class=\"num\">", failed ? "</a>" : "",
+                  points_text(g->core[p]).s, points_text(g->core_max[p]).s);
         if (g->hard_max[p] > 0)
-            mk_printf(m, "%g / %g", g->hard[p], g->hard_max[p]);
+            mk_printf(m, "%s / %s", points_text(g->hard[p]).s, points_text(g->hard_max[p]).s);
         mk_printf(m, "</td><td class=\"num\">%d of %d</td><td class=\"%s\">%s</td></tr>\n", failed,
                   total, full ? "full" : "lost", full ? "full marks" : "points lost");
     }
-    mk_printf(m, "</table>\n<p><strong>Score: %g / %g</strong>", g->total, g->total_max);
+    mk_printf(m, "</table>\n<p><strong>Score: %s / %s</strong>", points_text(g->total).s,
+              points_text(g->total_max).s);
     if (g->bonus_max > 0)
-        mk_printf(m, " &nbsp; hard-case bonus: %g / %g", g->bonus, g->bonus_max);
+        mk_printf(m, " &nbsp; hard-case bonus: %s / %s", points_text(g->bonus).s, points_text(g->bonus_max).s);
     mk_printf(m, " &nbsp; (graded in %.1f s)</p>\n", g->seconds);
     for (int p = 0; p < NPARTS; p++) {
         if (!g->graded[p] || !g->diagnosis[p])
@@ -348,7 +349,7 @@ static void failures(Markup *m, const Grade *g)
             continue;
         mk_printf(m, "<h3 id=\"part-%s\">", part_label(p));
         mk_text(m, part_title(p));
-        mk_printf(m, ": %g / %g</h3>\n", g->core[p], g->core_max[p]);
+        mk_printf(m, ": %s / %s</h3>\n", points_text(g->core[p]).s, points_text(g->core_max[p]).s);
         bool built = true;
         for (int k = 0; k < g->tests->n; k++)
             if (g->tests->tests[k].part == p && !g->results[k].ran && g->build_messages[p]

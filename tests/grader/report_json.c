@@ -49,15 +49,16 @@ int report_json(const char *path, const Grade *g, const GradeConfig *cfg,
     json_key(&j, "execution_time");
     json_number(&j, g->seconds);
     char summary[16384];
-    int n = snprintf(summary, sizeof summary, "Graded %s: %g / %g", submission, g->total, g->total_max);
+    int n = snprintf(summary, sizeof summary, "Graded %s: %s / %s", submission, points_text(g->total).s,
+                     points_text(g->total_max).s);
     if (g->bonus_max > 0)
-        n += snprintf(summary + n, sizeof summary - (size_t)n, ", hard-case bonus %g / %g%s",
-                      g->bonus, g->bonus_max, cfg->hard_is_bonus ? "" : "");
+        n += snprintf(summary + n, sizeof summary - (size_t)n, ", hard-case bonus %s / %s%s",
+                      points_text(g->bonus).s, points_text(g->bonus_max).s, cfg->hard_is_bonus ? "" : "");
     for (int p = 0; p < NPARTS; p++) {
         if (!g->graded[p] || (size_t)n >= sizeof summary)
             continue;
-        n += snprintf(summary + n, sizeof summary - (size_t)n, "\nPart %s: %g / %g", part_label(p),
-                      g->core[p], g->core_max[p]);
+        n += snprintf(summary + n, sizeof summary - (size_t)n, "\nPart %s: %s / %s", part_label(p),
+                      points_text(g->core[p]).s, points_text(g->core_max[p]).s);
     }
     for (int p = 0; p < NPARTS; p++) {
         if (!g->diagnosis[p] || (size_t)n >= sizeof summary)

@@ -107,18 +107,20 @@ static void write_results(JsonWriter *j, const Grade *g, size_t output_max)
 
     char *message = NULL, *output = NULL, *format_errors = NULL;
     if (gradable) {
-        append(&message, "Core points: %g / %g.", core, core_max);
+        append(&message, "Core points: %s / %s.", points_text(core).s, points_text(core_max).s);
         if (hard_max > 0)
-            append(&message, " Hard cases: %g / %g (extra credit, not counted here).", hard, hard_max);
+            append(&message, " Hard cases: %s / %s (extra credit, not counted here).", points_text(hard).s,
+                   points_text(hard_max).s);
     } else {
         append(&message, "Nothing could be graded: no file of the graded parts could be built.");
     }
     for (int p = 0; p < NPARTS; p++) {
         if (!g->graded[p])
             continue;
-        append(&output, "%s%s: %g / %g", output ? "\n" : "", part_title(p), g->core[p], g->core_max[p]);
+        append(&output, "%s%s: %s / %s", output ? "\n" : "", part_title(p), points_text(g->core[p]).s,
+               points_text(g->core_max[p]).s);
         if (g->hard_max[p] > 0)
-            append(&output, "   (hard cases: %g / %g)", g->hard[p], g->hard_max[p]);
+            append(&output, "   (hard cases: %s / %s)", points_text(g->hard[p]).s, points_text(g->hard_max[p]).s);
         append(&output, "\n");
         if (g->build_messages[p] && g->build_messages[p][0]) {
             append(&output, "%s", g->build_messages[p]);
@@ -128,7 +130,7 @@ static void write_results(JsonWriter *j, const Grade *g, size_t output_max)
         if (g->diagnosis[p])
             append(&output, "What went wrong (probes run on your code confirmed it):\n%s\n", g->diagnosis[p]);
     }
-    append(&output, "\nCore points: %g / %g\n", core, core_max);
+    append(&output, "\nCore points: %s / %s\n", points_text(core).s, points_text(core_max).s);
 
     json_begin_object(j);
     json_key(j, "gradable");

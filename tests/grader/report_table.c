@@ -25,9 +25,9 @@ void report_table(FILE *f, const Grade *g, const GradeConfig *cfg, const char *s
     for (int p = 0; p < NPARTS; p++) {
         if (!g->graded[p])
             continue;
-        fprintf(f, "\n%s   %g / %g", part_title(p), g->core[p], g->core_max[p]);
+        fprintf(f, "\n%s   %s / %s", part_title(p), points_text(g->core[p]).s, points_text(g->core_max[p]).s);
         if (g->hard_max[p] > 0)
-            fprintf(f, "   (hard cases: %g / %g%s)", g->hard[p], g->hard_max[p],
+            fprintf(f, "   (hard cases: %s / %s%s)", points_text(g->hard[p]).s, points_text(g->hard_max[p]).s,
                     cfg->hard_is_bonus ? " bonus" : "");
         fprintf(f, "\n");
         if (g->diagnosis[p]) {
@@ -46,8 +46,8 @@ void report_table(FILE *f, const Grade *g, const GradeConfig *cfg, const char *s
                     print_indented(f, r->output);
             }
     }
-    fprintf(f, "\nScore: %g / %g", g->total, g->total_max);
+    fprintf(f, "\nScore: %s / %s", points_text(g->total).s, points_text(g->total_max).s);
     if (g->bonus_max > 0)
-        fprintf(f, "   hard-case bonus: %g / %g", g->bonus, g->bonus_max);
+        fprintf(f, "   hard-case bonus: %s / %s", points_text(g->bonus).s, points_text(g->bonus_max).s);
     fprintf(f, "   (%.1f s)\n", g->seconds);
 }

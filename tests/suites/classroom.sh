@@ -88,8 +88,11 @@ njs=0
 
 # value NAME FILE: the number after NAME in the checker's output
 value() { sed -n "s/^$1 //p" "$2"; }
-# g NUMBER: the number as the kit prints its scores (%g)
-g() { awk -v x="$1" 'BEGIN { printf "%g", x + 0 }'; }
+# The kit prints points rounded to two decimals, without trailing zeros
+# (points_text, tests/grader/cases.c): pts in awk, g in the shell.
+pts='function pts(x,   s) { s = sprintf("%.2f", x); sub(/0+$/, "", s); sub(/[.]$/, "", s)
+                          return s == "-0" ? "0" : s }'
+g() { awk -v x="$1" "$pts"' BEGIN { printf "%s", pts(x + 0) }'; }
 
 # totals LABEL KIT_OUTPUT RUNNERS ENVFILE WANT_WORKFLOW: runs the checker and
 # compares both totals with the kit's score and each part's points.
@@ -119,8 +122,8 @@ totals() {
     for p in 1 2 3a 3b 4 5; do
         line=$(sed -n "s/^Part $p: .*   \([^ ]*\) \/ \([^ ]*\).*/\1 \2/p" "$kitout" | head -n 1)
         [ -n "$line" ] || continue
-        got=$(awk -v p="$p" '$1 == "runner" && $2 ~ ("^part" p "test") { s += $12; m += $10 }
-                             END { printf "%g %g", s, m }' "$tmp/totals.out")
+        got=$(awk -v p="$p" "$pts"' $1 == "runner" && $2 ~ ("^part" p "test") { s += $12; m += $10 }
+                             END { printf "%s %s", pts(s), pts(m) }' "$tmp/totals.out")
         check "$label: Part $p's runners add up to the kit's $line (got $got)" [ "$got" = "$line" ]
     done
     hard=$(awk '$1 == "runner" && $2 == "hard" { print $10, $12, $14 }' "$tmp/totals.out")

@@ -103,7 +103,10 @@ run partial
 out/build/bin/grade --submission "$tmp/partial" >"$tmp/partial.kit" 2>&1
 core=$(sed -n 's/^Score: \([^ ]*\) \/ \([^ ]*\).*/\1 \2/p' "$tmp/partial.kit")
 score=$(field score "$tmp/partial.check")
-got=$(awk -v s="$score" -v c="$core" 'BEGIN { split(c, a, " "); printf "%g %g", s * a[2], a[2] }')
+# The kit prints points rounded to two decimals, without trailing zeros.
+got=$(awk -v s="$score" -v c="$core" 'function pts(x,   t) { t = sprintf("%.2f", x); sub(/0+$/, "", t)
+                                          sub(/[.]$/, "", t); return t }
+                                      BEGIN { split(c, a, " "); printf "%s %s", pts(s * a[2]), pts(a[2]) }')
 check "partial: gradable" [ "$(field gradable "$tmp/partial.check")" = true ]
 check "partial: score $score is the kit's core score over the core total ($core)" [ "$got" = "$core" ]
 check "partial: partial credit" sh -c "[ '$score' != 0 ] && [ '$score' != 1 ]"

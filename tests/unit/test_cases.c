@@ -4,7 +4,8 @@
  * refused with the file, its line and what was wrong, and never read as
  * something else (a negative or fractional flag, a weight that is not a
  * finite positive number, an image width that is not a whole number in
- * range: found by fuzzing the reader, which once took them all).
+ * range: found by fuzzing the reader, which once took them all).  And
+ * points as people read them (points_text): two decimals at most.
  */
 #include "check.h"            /* first: it sets the POSIX feature level */
 #include "../grader/grader.h"
@@ -47,6 +48,25 @@ static int read_with(const char *line, TestList *list, char *err, size_t errlen)
     memset(list, 0, sizeof *list);
     err[0] = '\0';
     return tests_read(list, path, false, err, errlen);
+}
+
+/* Rounded to two decimals, trailing zeros dropped: the want column is the
+ * decimal rounding of each number, worked out by hand. */
+static void test_points_text(void)
+{
+    static const struct { double points; const char *want; } cases[] = {
+        { 20, "20" },           { 100, "100" },        { 0, "0" },
+        { -0.0, "0" },          { 2.5, "2.5" },        { 12.5, "12.5" },
+        { 120.0 / 7, "17.14" }, { 22.9412, "22.94" },  { 80.084, "80.08" },
+        { 9.19643, "9.2" },     { 0.004, "0" },        { 0.996, "1" },
+        { 100.0 / 3, "33.33" }, { 200.0 / 3, "66.67" }, { 0.5 / 16, "0.03" },
+        { -1.25, "-1.25" },     { 1e300, "1e+300" },
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        PointsText got = points_text(cases[k].points);
+        CHECK_MSG(strcmp(got.s, cases[k].want) == 0, "points_text(%.17g) is \"%s\", want \"%s\"",
+                  cases[k].points, got.s, cases[k].want);
+    }
 }
 
 static void setup(void)
@@ -179,6 +199,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_good_file),
     CHECK_TEST(test_round_trip),
     CHECK_TEST(test_bad_lines),
+    CHECK_TEST(test_points_text),
 };
 
 int main(int argc, char **argv)
