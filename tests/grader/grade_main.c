@@ -172,6 +172,18 @@ static const char *store_dir(void)
     return dir;
 }
 
+/* Whether dir holds a stage file of any part. */
+static bool holds_stage_file(const char *dir)
+{
+    for (int p = 0; p < NPARTS; p++) {
+        char path[PATH_MAX];
+        if ((size_t)snprintf(path, sizeof path, "%s/%s.c", dir, stage_names[p]) < sizeof path &&
+            access(path, F_OK) == 0)
+            return true;
+    }
+    return false;
+}
+
 static int grade_one(const char *submission, const char *part, const char *results,
                      const char *weights, const char *page, bool quiet, bool summary)
 {
@@ -182,6 +194,13 @@ static int grade_one(const char *submission, const char *part, const char *resul
     struct stat st;
     if (stat(submission, &st) != 0 || !S_ISDIR(st.st_mode))
         return fail(results, "%s is not a directory", submission);
+    /* A repository made from the student kit (GitHub Classroom's, cloned
+     * for grade --all) keeps the stage files in its labs folder: graded
+     * there when the folder itself holds none of them. */
+    char labs[PATH_MAX];
+    if (!holds_stage_file(submission) && (size_t)snprintf(labs, sizeof labs, "%s/labs", submission) < sizeof labs &&
+        holds_stage_file(labs))
+        submission = labs;
 
     char root[PATH_MAX];
     if (!getcwd(root, sizeof root))

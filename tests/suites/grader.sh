@@ -405,6 +405,21 @@ check "folders whose names start with . are left out, and the run names them, in
            grep -q ': \.git, \.github\$' '$tmp/names.out' &&
            grep -q '^graded 6 submissions' '$tmp/names.out'"
 [ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/names.out" "$tmp/grades-names/gradebook.csv"
+# A class of repositories made from the student kit (GitHub Classroom's,
+# cloned): each keeps its stage files in labs/, where they are graded; a
+# folder with stage files of its own is graded there, whatever its labs/.
+repos=$tmp/repos
+mkdir -p "$repos/kit-layout/labs" "$repos/both/labs"
+cp solutions/part1_image_plane.c "$repos/kit-layout/labs/"
+cp labs/part1_image_plane.c "$repos/both/"
+cp solutions/part1_image_plane.c "$repos/both/labs/"
+chmod -R a+rX "$repos"
+$grade --all "$repos" --out "$tmp/grades-repos" --weights "$tmp/part1.conf" --jobs 1 >"$tmp/repos.out" 2>&1
+check "a repository made from the student kit is graded in its labs folder" \
+    grep -qxF 'kit-layout,20,2.5,22.5,full marks' "$tmp/grades-repos/gradebook.csv"
+check "a folder with stage files of its own is graded there, not in its labs folder" \
+    grep -q '^both,0,0,0,points lost$' "$tmp/grades-repos/gradebook.csv"
+[ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/repos.out" "$tmp/grades-repos/gradebook.csv"
 # A folder that holds no submission (the wrong one, most likely).
 mkdir -p "$tmp/no-class/.git"
 $grade --all "$tmp/no-class" --out "$tmp/grades-none" >"$tmp/none.out" 2>&1
