@@ -47,6 +47,22 @@ check "Parts 4 and 5 graded when turned on" \
 check "every test passed with Parts 4 and 5" sh -c "! grep -q '\"status\": \"failed\"' '$ag/results/results.json'"
 cp "$tmp/weights.default" "$ag/source/tests/weights.conf"
 
+# A repository made from the student kit, uploaded whole: its labs/ holds
+# the work, and a stale copy elsewhere (first by name) is not taken; a
+# file at the top is taken before either; a link is never followed.
+rm -rf "$ag/submission"/* "$ag/results/results.json"
+mkdir -p "$ag/submission/backup" "$ag/submission/labs"
+cp labs/part*.c "$ag/submission/backup/"
+cp solutions/part*.c "$ag/submission/labs/"
+cp labs/part2_pixel_coordinates.c "$ag/submission/"
+ln -s "$PWD/solutions/part1_image_plane.c" "$ag/submission/part1_image_plane.c"
+AUTOGRADER_ROOT="$ag" "$ag/run_autograder" >"$tmp/run-repo.log" 2>&1
+check "a repository uploaded whole: labs/ is graded, not a stale copy elsewhere" \
+    grep -q '^found: labs/part1_image_plane.c part2_pixel_coordinates.c labs/part3a' "$tmp/run-repo.log"
+check "... with its scores (Part 1 from labs/, Part 2 the skeleton's at the top)" \
+    sh -c "grep -q 'Part 1: 20 / 20' '$ag/results/results.json' && grep -q 'Part 2: 0 / 20' '$ag/results/results.json'"
+[ "$failed" -eq 0 ] || cat "$tmp/run-repo.log"
+
 # An empty submission: every part missing, score 0, still a valid file.
 rm -rf "$ag/submission"/* "$ag/results/results.json"
 AUTOGRADER_ROOT="$ag" "$ag/run_autograder" >"$tmp/run2.log" 2>&1
