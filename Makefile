@@ -95,10 +95,14 @@ $(ASAN)/kit/libkit.a: $(KIT_ASAN)
 # ---- renderer and compare, per submission ----------------------------------
 # A submission's build lives in out/build/sub/<name>: labs and solutions by
 # name, any other directory by its absolute path with / turned into _.
-# Stage files the submission lacks come from labs/ (the skeletons).
+# Stage files the submission lacks come from labs/ (the skeletons).  A
+# folder with no stage file of its own but some in its labs/ (a repository
+# made from the student kit) is rendered from there, as the grader grades it.
 sub_name   = $(if $(filter labs solutions,$(1)),$(1),$(subst /,_,$(abspath $(1))))
 stage_src  = $(firstword $(wildcard $(2)/$(1).c) labs/$(1).c)
-SUB_NAME  := $(call sub_name,$(SUBMISSION))
+stage_dir  = $(if $(wildcard $(STAGES:%=$(1)/%.c)),$(1),$(if $(wildcard $(STAGES:%=$(1)/labs/%.c)),$(1)/labs,$(1)))
+SUB_DIR   := $(call stage_dir,$(SUBMISSION))
+SUB_NAME  := $(call sub_name,$(SUB_DIR))
 SUB_BUILD  = $(BUILD)/sub/$(SUB_NAME)
 
 # The renderer's own objects (lto/) are built with link-time optimisation,
@@ -112,7 +116,7 @@ $(BUILD)/sub/labs/lto/%.o: labs/%.c $(KIT_HDR) | $$(@D)/.
 $(BUILD)/sub/solutions/lto/%.o: solutions/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@
 ifeq ($(filter labs solutions,$(SUB_NAME)),)
-$(SUB_BUILD)/lto/%.o: $$(call stage_src,$$*,$(SUBMISSION)) $(KIT_HDR) | $$(@D)/.
+$(SUB_BUILD)/lto/%.o: $$(call stage_src,$$*,$(SUB_DIR)) $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@
 endif
 $(BUILD)/kit/lto/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.

@@ -393,6 +393,19 @@ if [ -d solutions ] && [ -d tests/selftest/independent ] && [ -d tests/selftest/
     done
 fi
 
+# A repository made from the student kit: its stage files are in labs/,
+# and make compare renders them from there, as the grader grades them (it
+# once rendered the kit's own skeletons instead, without a word).
+if [ -d solutions ]; then
+    repo=$PWD/out/tests/repo-layout
+    rm -rf "$repo"
+    mkdir -p "$repo/labs"
+    cp solutions/*.c "$repo/labs/"
+    run ${MAKE:-make} --no-print-directory compare SUBMISSION="$repo"
+    check "make compare SUBMISSION=<a student kit's repository> renders its labs/ (exit $status)" \
+        sh -c "[ $status -eq 0 ] && grep -q '^identical' '$tmp/stdout'"
+fi
+
 # images of different sizes: a clear message, exit 1
 run "$RENDER" labs/scenes/default.scene --size 60x90 --quiet -o "$tmp/small.png"
 run "$COMPARE" "$tmp/small.png" "$tmp/ref.png"
