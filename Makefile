@@ -63,7 +63,8 @@ KIT_OBJ    = $(KIT_SRC:labs/kit/%.c=$(BUILD)/kit/%.o)
 KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
 
 .PHONY: all help render compare grade grade-all gradescope student-kit bench \
-        handouts test test-build unit-tests clean grader public-tests fuzz sanitize-grader
+        handouts test test-build unit-tests clean grader public-tests fuzz sanitize-grader \
+        submission-dir
 .DELETE_ON_ERROR:
 .SECONDARY:                             # keep the objects a chain of rules makes (the renderer's lto/)
 .SECONDEXPANSION:
@@ -132,13 +133,20 @@ $(BUILD)/bin/compare: $(BUILD)/kit/compare_main.o $(BUILD)/kit/libkit.a | $$(@D)
 SCENE_NAME = $(basename $(notdir $(SCENE)))
 OUT_RENDER = $(if $(OUT),$(OUT),out/$(SCENE_NAME).png)
 
-render: $(SUB_BUILD)/render
+# SUBMISSION must be a folder: a mistyped one is refused, not drawn with the
+# skeletons (the stage files a submission lacks) over out/default.png.
+submission-dir:
+	@test -d "$(SUBMISSION)" || { echo "make: SUBMISSION=$(SUBMISSION) is not a directory"; exit 2; }
+	@test -n "$(wildcard $(STAGES:%=$(SUB_DIR)/%.c))" || \
+	    echo "note: $(SUBMISSION) holds no stage file (nor does its labs folder): the skeletons are drawn"
+
+render: submission-dir $(SUB_BUILD)/render
 	$(SUB_BUILD)/render "$(SCENE)" $(if $(SIZE),--size $(SIZE)) -o "$(OUT_RENDER)"
 
 # In the kit's own repository the reference image is rendered with
 # solutions/; in the student kit it is the stored render under labs/reference.
 REF_IMAGE = $(if $(HAVE_SOLUTIONS),out/compare/$(SCENE_NAME)-reference.png,labs/reference/$(SCENE_NAME).png)
-compare: $(SUB_BUILD)/render $(BUILD)/bin/compare $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render)
+compare: submission-dir $(SUB_BUILD)/render $(BUILD)/bin/compare $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render)
 	@mkdir -p out/compare
 	$(SUB_BUILD)/render "$(SCENE)" -o out/compare/$(SCENE_NAME)-submission.png
 	$(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render "$(SCENE)" --quiet -o $(REF_IMAGE))

@@ -406,6 +406,13 @@ if [ -d solutions ]; then
         sh -c "[ $status -eq 0 ] && grep -q '^identical' '$tmp/stdout'"
 fi
 
+# A mistyped SUBMISSION is refused, and nothing is drawn (it once drew the
+# skeletons over the picture).
+run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/no-such-folder" OUT="$tmp/typo.png"
+check "make render SUBMISSION=<no such folder> is refused (exit $status), and draws nothing" \
+    sh -c "[ $status -eq 2 ] && grep -q 'SUBMISSION=$tmp/no-such-folder is not a directory' '$tmp/stdout' &&
+           [ ! -e '$tmp/typo.png' ]"
+
 # images of different sizes: a clear message, exit 1
 run "$RENDER" labs/scenes/default.scene --size 60x90 --quiet -o "$tmp/small.png"
 run "$COMPARE" "$tmp/small.png" "$tmp/ref.png"
