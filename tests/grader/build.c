@@ -78,6 +78,25 @@ void build_rmtree(const char *path)
     }
 }
 
+int build_open_stage(const char *path)
+{
+    int fd = open(path, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        if (errno == EMLINK)        /* what FreeBSD says of a link */
+            errno = ELOOP;
+        return -1;
+    }
+    struct stat st;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        close(fd);
+        errno = EINVAL;
+        return -1;
+    }
+    return fd;
+}
+
+static int copy_fd(int in, const char *src, const char *dst, size_t max, char *err, size_t errlen);
+
 /* Copies src to dst (at most max bytes; larger is an error), mode 0644. */
 static int copy_file(const char *src, const char *dst, size_t max, char *err, size_t errlen)
 {
@@ -86,6 +105,12 @@ static int copy_file(const char *src, const char *dst, size_t max, char *err, si
         snprintf(err, errlen, "%s: %s", src, strerror(errno));
         return -1;
     }
+    return copy_fd(in, src, dst, max, err, errlen);
+}
+
+/* copy_file from the open descriptor in, which it closes. */
+static int copy_fd(int in, const char *src, const char *dst, size_t max, char *err, size_t errlen)
+{
     struct stat st;
     if (fstat(in, &st) != 0 || !S_ISREG(st.st_mode) || (size_t)st.st_size > max) {
         snprintf(err, errlen, "%s: not a regular file of at most %zu bytes", src, max);
@@ -508,11 +533,17 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
         }
         snprintf(path, sizeof path, "%s/%s.c", submission, stage);
         snprintf(to, sizeof to, "%s/%s.c", src, stage);
-        if (access(path, F_OK) != 0) {
+        int in = build_open_stage(path);
+        if (in < 0 && errno == ENOENT) {
             build_say(b, "missing: the submission has no ", cfile);
             return 0;
         }
-        if (copy_file(path, to, SOURCE_MAX, cerr, sizeof cerr)) {
+        if (in < 0) {
+            build_say(b, errno == ELOOP ? "refused: a symbolic link, not a file (hand in the file itself): "
+                                        : "refused: not a regular file: ", cfile);
+            return 0;
+        }
+        if (copy_fd(in, path, to, SOURCE_MAX, cerr, sizeof cerr)) {
             build_say(b, cerr, "");
             return 0;
         }

@@ -79,20 +79,26 @@ static int fail(const char *results, const char *fmt, const char *what)
  * seed of its random cases, so a regrade of the same files draws the same
  * cases.  Parts 1-3b and Parts 4-5 are hashed apart, so that the optional
  * stages' files (an untouched skeleton, say) change nothing of the others'
- * cases. */
+ * cases.  Only what the build will take is read: regular files, not
+ * through a link, their first 2 MiB (the build refuses one over 1 MiB). */
 static uint64_t submission_hash(const char *dir, int first, int last)
 {
     uint64_t h = 0xcbf29ce484222325u;
     for (int p = first; p < last; p++) {
         char path[PATH_MAX];
         snprintf(path, sizeof path, "%s/%s.c", dir, stage_names[p]);
-        FILE *f = fopen(path, "rb");
-        int ch;
-        if (!f)
+        int fd = build_open_stage(path);
+        if (fd < 0)
             continue;
-        while ((ch = getc(f)) != EOF)
-            h = (h ^ (uint64_t)ch) * 0x100000001b3u;
-        fclose(f);
+        unsigned char buf[65536];
+        ssize_t n;
+        size_t total = 0;
+        while (total < (2u << 20) && (n = read(fd, buf, sizeof buf)) > 0) {
+            for (ssize_t k = 0; k < n; k++)
+                h = (h ^ buf[k]) * 0x100000001b3u;
+            total += (size_t)n;
+        }
+        close(fd);
     }
     return h;
 }
@@ -198,8 +204,9 @@ static int grade_one(const char *submission, const char *part, const char *resul
      * for grade --all) keeps the stage files in its labs folder: graded
      * there when the folder itself holds none of them. */
     char labs[PATH_MAX];
+    struct stat lst;
     if (!holds_stage_file(submission) && (size_t)snprintf(labs, sizeof labs, "%s/labs", submission) < sizeof labs &&
-        holds_stage_file(labs))
+        lstat(labs, &lst) == 0 && S_ISDIR(lst.st_mode) && holds_stage_file(labs))   /* not a link */
         submission = labs;
 
     char root[PATH_MAX];

@@ -420,6 +420,34 @@ check "a repository made from the student kit is graded in its labs folder" \
 check "a folder with stage files of its own is graded there, not in its labs folder" \
     grep -q '^both,0,0,0,points lost$' "$tmp/grades-repos/gradebook.csv"
 [ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/repos.out" "$tmp/grades-repos/gradebook.csv"
+# Stage files that are not files: a link to the reference (as root it once
+# gave full marks), a link to a file only root may read (its first line
+# once came back in the compiler's message), a pipe (reading it waits
+# forever); and a repository whose labs folder is a link to the reference.
+# Each is refused, scores 0 and shows nothing of what it points at.
+links=$tmp/links
+mkdir -p "$links/stage-links" "$links/labs-link" out/tests/private
+chmod 700 out/tests/private
+printf 'SECRET-MARKER-27182\n' >out/tests/private/marker.c
+ln -s "$root/solutions/part1_image_plane.c" "$links/stage-links/part1_image_plane.c"
+ln -s "$root/out/tests/private/marker.c" "$links/stage-links/part2_pixel_coordinates.c"
+mkfifo "$links/stage-links/part3a_sphere_intersect.c"
+ln -s "$root/solutions" "$links/labs-link/labs"
+chmod -R a+rX "$links" 2>/dev/null
+sed 's/^parts .*/parts 1 2 3a/' "$core" >"$tmp/parts123a.conf"
+$grade --all "$links" --out "$tmp/grades-links" --weights "$tmp/parts123a.conf" --jobs 1 >"$tmp/links.out" 2>&1
+check "a stage file that is a link to the reference is refused: 0 points" \
+    grep -q '^stage-links,0,0,0,0,0,points lost$' "$tmp/grades-links/gradebook.csv"
+check "... with a message that says why" \
+    grep -q 'refused: a symbolic link, not a file (hand in the file itself): part1_image_plane.c' \
+    "$tmp/grades-links/stage-links.json"
+check "... a pipe is refused too, and the grading ends" \
+    grep -q 'refused: not a regular file: part3a_sphere_intersect.c' "$tmp/grades-links/stage-links.json"
+check "a link to a file only root may read shows nothing of it" \
+    sh -c "! grep -rq 'SECRET-MARKER' '$tmp/grades-links'"
+check "a labs folder that is a link (to the reference) is not graded: 0 points" \
+    grep -q '^labs-link,0,0,0,0,0,points lost$' "$tmp/grades-links/gradebook.csv"
+[ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/links.out" "$tmp/grades-links/gradebook.csv"
 # A folder that holds no submission (the wrong one, most likely).
 mkdir -p "$tmp/no-class/.git"
 $grade --all "$tmp/no-class" --out "$tmp/grades-none" >"$tmp/none.out" 2>&1

@@ -63,6 +63,14 @@ check "... with its scores (Part 1 from labs/, Part 2 the skeleton's at the top)
     sh -c "grep -q 'Part 1: 20 / 20' '$ag/results/results.json' && grep -q 'Part 2: 0 / 20' '$ag/results/results.json'"
 [ "$failed" -eq 0 ] || cat "$tmp/run-repo.log"
 
+# An upload whose labs is a link to the kit's reference gets nothing from it.
+rm -rf "$ag/submission"/* "$ag/results/results.json"
+ln -s "$ag/source/solutions" "$ag/submission/labs"
+AUTOGRADER_ROOT="$ag" "$ag/run_autograder" >"$tmp/run-link.log" 2>&1
+check "an upload whose labs is a link to the reference: nothing taken from it" \
+    sh -c "grep -q '^found: none of the stage files' '$tmp/run-link.log' && grep -q '\"score\": 0' '$ag/results/results.json'"
+rm -f "$ag/submission/labs"
+
 # An empty submission: every part missing, score 0, still a valid file.
 rm -rf "$ag/submission"/* "$ag/results/results.json"
 AUTOGRADER_ROOT="$ag" "$ag/run_autograder" >"$tmp/run2.log" 2>&1
