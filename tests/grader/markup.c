@@ -71,9 +71,7 @@ void mk_printf(Markup *m, const char *fmt, ...)
     va_end(ap);
 }
 
-/* The length (2 to 4) of the valid UTF-8 sequence at s[0 .. n-1], whose
- * first byte is 0x80 or more, or 0 when it is not valid. */
-static int utf8_length(const unsigned char *s, size_t n)
+int utf8_length(const unsigned char *s, size_t n)
 {
     unsigned char c = s[0], lo = 0x80, hi = 0xBF;
     int need;

@@ -24,6 +24,10 @@ void mk_init(Markup *m);
 void mk_free(Markup *m);
 bool mk_ok(const Markup *m);
 
+/* The length (2 to 4) of the valid UTF-8 sequence at s[0 .. n-1], whose
+ * first byte is 0x80 or more, or 0 when it is not valid. */
+int utf8_length(const unsigned char *s, size_t n);
+
 /* Appends text formatted as by printf (written as is: no escaping). */
 void mk_printf(Markup *m, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 /* Appends raw bytes. */

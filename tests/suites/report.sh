@@ -107,6 +107,7 @@ cat >"$tmp/subs/markup-printer/part1_image_plane.c" <<'EOF2'
 void image_plane_size(double fov_degrees, double aspect, double d, double *w, double *h)
 {
     printf("<script>alert(1)</script> <b id=\"scores\"> & &amp \xff\xfe \x01 ]]> <!--\n");
+    printf("\033]0;title\a \033]52;c;Y2xpcA==\a \033[2J \xc2\x9b" "31m \x7f \xc3\xa9\n");
     *h = 2 * d * tan(fov_degrees * M_PI / 360);
     *w = aspect * *h + 1;
 }
@@ -162,6 +163,14 @@ done
 page=$tmp/grades
 check "a submission that prints markup: the page shows it as text" \
     grep -q '&lt;script&gt;alert(1)&lt;/script&gt;' "$page/markup-printer.html"
+# The table, on a terminal: what the code printed, its escape sequences
+# (a window title, the clipboard, clearing the screen, a C1 control) shown,
+# not obeyed.
+$grade --submission "$tmp/subs/markup-printer" --part 1 >"$tmp/table.out" 2>&1
+check "the table shows no control character the code printed (but newline and tab)" \
+    sh -c "[ \$(LC_ALL=C tr -d '\n\t\040-\176\200-\377' <'$tmp/table.out' | wc -c) -eq 0 ]"
+check "... it shows them as ^X, and a C1 control as ?: ^[]52;c;Y2xpcA==^G ... ^[[2J ?31m ^? and UTF-8 as it is" \
+    grep -q '\^\[\]52;c;Y2xpcA==\^G \^\[\[2J ?31m \^? '"$(printf '\303\251')" "$tmp/table.out"
 check "a submission that prints bytes that are not UTF-8: they become U+FFFD" \
     grep -q "$(printf '\357\277\275\357\277\275')" "$page/markup-printer.html"
 check "the reference's page: nothing failed" grep -q 'Nothing: every test passed' "$page/reference.html"
