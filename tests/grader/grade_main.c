@@ -439,6 +439,7 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
      * order, the first eight. */
     char **dots = NULL;
     int ndots = 0;
+    int loose = 0;      /* files named like stage files, at the top */
     struct dirent *e;
     while ((e = readdir(d))) {
         char path[PATH_MAX];
@@ -446,8 +447,17 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
         if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
             continue;
         snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-        if (stat(path, &st) != 0 || !S_ISDIR(st.st_mode))
+        if (stat(path, &st) != 0)
             continue;
+        if (!S_ISDIR(st.st_mode)) {
+            for (int p = 0; p < NPARTS; p++) {
+                size_t ln = strlen(e->d_name), ls = strlen(stage_names[p]);
+                if (ln >= ls + 2 && strcmp(e->d_name + ln - 2, ".c") == 0 &&
+                    strncmp(e->d_name + ln - 2 - ls, stage_names[p], ls) == 0)
+                    loose++;
+            }
+            continue;
+        }
         char ***list = e->d_name[0] == '.' ? &dots : &names;
         int *count = e->d_name[0] == '.' ? &ndots : &n;
         char **grown = realloc(*list, (size_t)(*count + 1) * sizeof **list);
@@ -476,6 +486,12 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
                  dir, ndots ? " (folders whose names start with \".\" are left out: " : "", hidden);
         if (ndots)
             append_text(err, sizeof err, ")");
+        if (loose) {      /* one folder of every student's files, as some downloads give */
+            char more[160];
+            snprintf(more, sizeof more, "; it holds %d stage file%s of its own: put each submission's files "
+                     "in a folder of its own, named after it", loose, loose == 1 ? "" : "s");
+            append_text(err, sizeof err, more);
+        }
         return fail(NULL, "%s", err);
     }
     qsort(names, (size_t)n, sizeof *names, by_name);
@@ -648,6 +664,9 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     if (ndots)
         printf("left out %d folder%s whose name starts with \".\", not taken for a submission: %s\n",
                ndots, ndots == 1 ? "" : "s", hidden);
+    if (loose)
+        printf("left out %d stage file%s lying in %s itself: a submission is a folder of its own\n", loose,
+               loose == 1 ? "" : "s", dir);
     printf("graded %d submission%s: wrote %s, and one .json and one .html (the report page) %s\n",
            n, n == 1 ? "" : "s", csv, n == 1 ? "for it" : "each");
     return worst;

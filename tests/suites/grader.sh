@@ -413,12 +413,25 @@ mkdir -p "$repos/kit-layout/labs" "$repos/both/labs"
 cp solutions/part1_image_plane.c "$repos/kit-layout/labs/"
 cp labs/part1_image_plane.c "$repos/both/"
 cp solutions/part1_image_plane.c "$repos/both/labs/"
+cp solutions/part1_image_plane.c "$repos/smith_1234_part1_image_plane.c"   # a loose file
 chmod -R a+rX "$repos"
 $grade --all "$repos" --out "$tmp/grades-repos" --weights "$tmp/part1.conf" --jobs 1 >"$tmp/repos.out" 2>&1
 check "a repository made from the student kit is graded in its labs folder" \
     grep -qxF 'kit-layout,20,2.5,22.5,full marks' "$tmp/grades-repos/gradebook.csv"
 check "a folder with stage files of its own is graded there, not in its labs folder" \
     grep -q '^both,0,0,0,points lost$' "$tmp/grades-repos/gradebook.csv"
+check "a stage file lying in the class folder itself is left out, and named" \
+    grep -q "^left out 1 stage file lying in $repos itself: a submission is a folder of its own\$" "$tmp/repos.out"
+# Every student's files in one folder (as some downloads give them): refused,
+# and the message says what to do.
+mkdir "$tmp/flat"
+cp solutions/part1_image_plane.c "$tmp/flat/doe_123_part1_image_plane.c"
+cp solutions/part2_pixel_coordinates.c "$tmp/flat/roe_456_part2_pixel_coordinates.c"
+$grade --all "$tmp/flat" --out "$tmp/grades-flat" >"$tmp/flat.out" 2>&1
+status=$?
+check "one folder of every student's files is refused (exit $status), and the message says what to do" \
+    sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/grades-flat' ] &&
+           grep -q 'it holds 2 stage files of its own: put each submission.s files in a folder of its own' '$tmp/flat.out'"
 [ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/repos.out" "$tmp/grades-repos/gradebook.csv"
 # Stage files that are not files: a link to the reference (as root it once
 # gave full marks), a link to a file only root may read (its first line
