@@ -420,7 +420,7 @@ check "a repository made from the student kit is graded in its labs folder" \
     grep -qxF 'kit-layout,20,2.5,22.5,full marks' "$tmp/grades-repos/gradebook.csv"
 check "a folder with stage files of its own is graded there, not in its labs folder" \
     grep -q '^both,0,0,0,points lost$' "$tmp/grades-repos/gradebook.csv"
-check "a stage file lying in the class folder itself is left out, and named" \
+check "a stage file lying in the class folder itself is left out, and counted" \
     grep -q "^left out 1 stage file lying in $repos itself: a submission is a folder of its own\$" "$tmp/repos.out"
 # Every student's files in one folder (as some downloads give them): refused,
 # and the message says what to do.
