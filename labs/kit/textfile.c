@@ -169,6 +169,9 @@ int text_next_line(const char **pos, char *buf, TextLine *ln, char *err, size_t 
     if (!*p)
         return 0;
     ln->line++;
+    if (ln->line == 1 && (unsigned char)p[0] == 0xEF && (unsigned char)p[1] == 0xBB &&
+        (unsigned char)p[2] == 0xBF)
+        p += 3;         /* a byte-order mark, as some Windows editors write first: not text */
     size_t len = strcspn(p, "\n");
     if (len > TEXT_MAX_LINE) {
         text_error(err, errlen, ln->name, ln->line, "line is longer than %d characters", TEXT_MAX_LINE);

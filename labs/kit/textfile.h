@@ -52,7 +52,8 @@ int text_read_file(const char *path, char **text, char *err, size_t errlen);
 /* Walks text line by line: *pos is where the next line starts (set it to
  * text first).  Copies the line, cut at '#' and split, into buf (at least
  * TEXT_MAX_LINE + 1 bytes) and ln.  Returns 1 for a line, 0 at the end, -1
- * with a message for a line longer than TEXT_MAX_LINE. */
+ * with a message for a line longer than TEXT_MAX_LINE.  A byte-order mark
+ * (EF BB BF) before the first line is skipped. */
 int text_next_line(const char **pos, char *buf, TextLine *ln, char *err, size_t errlen);
 
 #endif

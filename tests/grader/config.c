@@ -66,6 +66,8 @@ int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
                 return -1;
             }
         }
+        if (lineno == 1 && strncmp(line, "\xEF\xBB\xBF", 3) == 0)
+            memmove(line, line + 3, strlen(line + 3) + 1);  /* a byte-order mark: not text */
         line[strcspn(line, "#")] = '\0';
         char word[32], label[8], mode[16];
         double core = 0, hard = 0;

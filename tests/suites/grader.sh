@@ -96,6 +96,14 @@ status=$?
 check "a weights line 600 characters long is refused, naming the file and line 2 (exit $status)" \
     sh -c "[ $status -eq 2 ] && grep -q 'long.conf:2: the line is longer than 510 characters' '$tmp/long.out'"
 
+# A weights file saved with a byte-order mark first (as some Windows
+# editors save UTF-8) reads as without it.
+printf '\357\273\277part 1 core 25 hard 2.5\r\n' >"$tmp/bom.conf"
+$grade --submission solutions --part 1 --weights "$tmp/bom.conf" --quiet --summary >"$tmp/bom.out" 2>&1
+status=$?
+check "a weights file that starts with a byte-order mark is read (exit $status)" \
+    sh -c "[ $status -eq 0 ] && grep -q '^summary 25 ' '$tmp/bom.out'"
+
 # -- faulty and hostile submissions, graded as two classes -------------------
 # Those of Parts 1-3b with the default points (Parts 1-3b), those of the
 # optional parts alone (files part4_* or part5_* only) with Parts 4 and 5.  Every

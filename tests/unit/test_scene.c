@@ -196,7 +196,8 @@ static void test_good_scene_values(void)
 }
 
 /* Only image and fov are required: distance 1, a black background and no
- * spheres by default; CRLF line ends and a last line without a newline. */
+ * spheres by default; CRLF line ends, a last line without a newline, and a
+ * byte-order mark before the first line. */
 static void test_defaults_crlf_and_edges(void)
 {
     Scene scene;
@@ -221,6 +222,18 @@ static void test_defaults_crlf_and_edges(void)
     CHECK_EQ_DOUBLE(scene.fov_degrees, 1e-5);
     CHECK_EQ_INT(scene.nspheres, 1);
     scene_free(&scene);
+
+    /* a byte-order mark first, as some Windows editors save UTF-8: skipped
+     * (it was read as a keyword, '???'); anywhere else it is not text */
+    CHECK_EQ_INT(scene_parse(&scene, "\xEF\xBB\xBF# a comment\r\nimage 2 3\r\nfov 60\r\n", "bom.scene", err,
+                             sizeof err), 0);
+    CHECK_EQ_INT(scene.nx, 2);
+    scene_free(&scene);
+    CHECK_EQ_INT(scene_parse(&scene, "\xEF\xBB\xBFimage 2 3\nfov 60\n", "bom.scene", err, sizeof err), 0);
+    CHECK_EQ_INT(scene.ny, 3);
+    scene_free(&scene);
+    CHECK_EQ_INT(scene_parse(&scene, "image 2 3\n\xEF\xBB\xBF" "fov 60\n", "bom.scene", err, sizeof err), -1);
+    CHECK_STR_CONTAINS(err, "bom.scene:2: unknown keyword");
 }
 
 /* A line of 4096 characters is fine; one of 4097 is refused with its number. */
