@@ -661,6 +661,10 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     if (users && jobs > 1)
         printf("graded %d at a time, as root: each one's code ran as an unprivileged user of its "
                "own\n", jobs);
+    if (!sandbox_drops_privileges())
+        printf("graded as yourself, not as root: each submission's code ran as you, and could read and "
+               "change your files and stop your processes; grade code you do not trust as root "
+               "(README, \"Grading a class\")\n");
     if (ndots)
         printf("left out %d folder%s whose name starts with \".\", not taken for a submission: %s\n",
                ndots, ndots == 1 ? "" : "s", hidden);

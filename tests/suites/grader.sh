@@ -469,6 +469,22 @@ check "a link to a file only root may read shows nothing of it" \
 check "a labs folder that is a link (to the reference) is not graded: 0 points" \
     grep -q '^labs-link,0,0,0,0,0,points lost$' "$tmp/grades-links/gradebook.csv"
 [ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/links.out" "$tmp/grades-links/gradebook.csv"
+# Graded as another user than root, grade --all says what that means.
+if [ "$(id -u)" != 0 ]; then
+    $grade --all "$names" --out "$tmp/grades-self" --weights "$tmp/part1.conf" --jobs 1 >"$tmp/self.out" 2>&1
+elif command -v setpriv >/dev/null 2>&1 && id nobody >/dev/null 2>&1; then
+    # as nobody, with an output folder nobody may write in  # portable: guarded
+    mkdir -m 777 "$tmp/self"
+    setpriv --reuid=nobody --regid="$(id -g nobody)" --clear-groups \
+        $grade --all "$names" --out "$tmp/self/grades" --weights "$tmp/part1.conf" --jobs 1 >"$tmp/self.out" 2>&1
+else
+    echo "   skipped: no setpriv here, so grade --all was not run as another user than root"
+    : >"$tmp/self.out"
+fi
+if [ -s "$tmp/self.out" ]; then
+    check "graded as another user than root, grade --all says each one's code ran as that user" \
+        grep -q '^graded as yourself, not as root: each submission.s code ran as you' "$tmp/self.out"
+fi
 # A folder that holds no submission (the wrong one, most likely).
 mkdir -p "$tmp/no-class/.git"
 $grade --all "$tmp/no-class" --out "$tmp/grades-none" >"$tmp/none.out" 2>&1
