@@ -310,8 +310,8 @@ static void failing_test(Markup *m, const Test *t, const TestResult *r, int inde
         mk_printf(m, "</figcaption>\n");
     } else {
         mk_printf(m, "<div class=\"nopic\">No picture: %s</div>\n",
-                  !show_output ? "your file did not build, so this test could not run (what the "
-                                 "compiler said is above)."
+                  !show_output ? "your file did not build, so this test could not run (why is "
+                                 "said above)."
                   : !r->ran ? "this test did not run, so there is no answer to draw (see below)."
                             : "every answer was right, but the program did not finish normally "
                               "(see below).");
@@ -356,8 +356,12 @@ static void failures(Markup *m, const Grade *g)
                 && g->build_messages[p][0])
                 built = false;
         if (!built) {
-            mk_printf(m, "<p>Your file did not build, so no test of this part could run. "
-                         "What the compiler said:</p>\n<pre>");
+            /* The grader's own words when it did not hand the file to the
+             * compiler (missing, a link, a kit file included...). */
+            const char *msg = g->build_messages[p];
+            bool ours = strncmp(msg, "missing: ", 9) == 0 || strncmp(msg, "refused: ", 9) == 0;
+            mk_printf(m, "<p>Your file did not build, so no test of this part could run. %s</p>\n<pre>",
+                      ours ? "The grader did not compile it:" : "What the compiler said:");
             mk_text(m, g->build_messages[p]);
             mk_printf(m, "</pre>\n");
         }

@@ -185,7 +185,11 @@ check "a diagnosis: its causes each on a line of their own, as the terminal show
     sh -c "grep -A1 'Part 1, what went wrong (probes run on your code confirmed it):</strong>\$' '$page/p1-w-h-swapped.html' |
            grep -q '^- w and h are swapped'"
 check "a part that does not build: the page shows what the compiler said" \
-    grep -q 'Your file did not build' "$page/hostile-compile-error.html"
+    grep -q 'Your file did not build, so no test of this part could run. What the compiler said:' \
+    "$page/hostile-compile-error.html"
+check "a file the grader did not hand to the compiler: the page says so, not 'what the compiler said'" \
+    grep -q 'Your file did not build, so no test of this part could run. The grader did not compile it:' \
+    "$page/hostile-missing-file.html"
 check "a part that does not build: no render, and the page says why" \
     grep -q 'could not be built into the renderer' "$page/hostile-compile-error.html"
 check "a missing file: the page says the file is missing" \
