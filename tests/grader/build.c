@@ -538,9 +538,14 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
             build_say(b, "missing: the submission has no ", cfile);
             return 0;
         }
-        if (in < 0) {
+        if (in < 0 && (errno == ELOOP || errno == EINVAL)) {
             build_say(b, errno == ELOOP ? "refused: a symbolic link, not a file (hand in the file itself): "
                                         : "refused: not a regular file: ", cfile);
+            return 0;
+        }
+        if (in < 0) {           /* unreadable, say: as the system puts it */
+            snprintf(cerr, sizeof cerr, "%s: %s", cfile, strerror(errno));
+            build_say(b, "cannot read ", cerr);
             return 0;
         }
         if (copy_fd(in, path, to, SOURCE_MAX, cerr, sizeof cerr)) {
