@@ -156,6 +156,14 @@ static void build_say(Build *b, const char *what, const char *name)
     say(b, "\n");
 }
 
+/* The file was not handed to the compiler: says why, and returns 0. */
+static int not_compiled(Build *b, const char *what, const char *name)
+{
+    build_say(b, what, name);
+    b->refused = true;
+    return 0;
+}
+
 /* Runs the compiler in the sandbox in b->dir/src; 0 if it succeeded, 1 if
  * not (its messages, and why it was stopped, in b->messages), -1 when the
  * sandbox itself failed. */
@@ -534,26 +542,21 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
         snprintf(path, sizeof path, "%s/%s.c", submission, stage);
         snprintf(to, sizeof to, "%s/%s.c", src, stage);
         int in = build_open_stage(path);
-        if (in < 0 && errno == ENOENT) {
-            build_say(b, "missing: the submission has no ", cfile);
-            return 0;
-        }
-        if (in < 0 && (errno == ELOOP || errno == EINVAL)) {
-            build_say(b, errno == ELOOP ? "refused: a symbolic link, not a file (hand in the file itself): "
-                                        : "refused: not a regular file: ", cfile);
-            return 0;
-        }
+        if (in < 0 && errno == ENOENT)
+            return not_compiled(b, "missing: the submission has no ", cfile);
+        if (in < 0 && (errno == ELOOP || errno == EINVAL))
+            return not_compiled(b, errno == ELOOP ? "refused: a symbolic link, not a file (hand in the file "
+                                                    "itself): " : "refused: not a regular file: ", cfile);
         if (in < 0) {           /* unreadable, say: as the system puts it */
             snprintf(cerr, sizeof cerr, "%s: %s", cfile, strerror(errno));
-            build_say(b, "cannot read ", cerr);
+            return not_compiled(b, "cannot read ", cerr);
+        }
+        if (copy_fd(in, path, to, SOURCE_MAX, cerr, sizeof cerr))
+            return not_compiled(b, cerr, "");
+        if (scan_includes(cfg, b, to, src)) {
+            b->refused = true;          /* scan_includes said why */
             return 0;
         }
-        if (copy_fd(in, path, to, SOURCE_MAX, cerr, sizeof cerr)) {
-            build_say(b, cerr, "");
-            return 0;
-        }
-        if (scan_includes(cfg, b, to, src))
-            return 0;
         int rc = compile_stage(cfg, b, stage, load, &memo, &stored, err, errlen);
         if (rc != 0)
             return rc < 0 ? -1 : 0;

@@ -41,6 +41,9 @@ typedef struct {
                                   known until the runner has loaded it once
                                   (build_link_verdict, build_check)         */
     char *messages;            /* the compiler's output (malloc'd, may be "")   */
+    bool refused;              /* a file was not handed to the compiler (missing,
+                                  unreadable, a link, a kit file included):
+                                  messages are the grader's words           */
     double cpu_compile;        /* CPU seconds of the compiler's runs, compiling */
     double cpu_link;           /* and linking                                   */
 } Build;

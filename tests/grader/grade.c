@@ -383,6 +383,7 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
             }
         }
         g->build_messages[p] = b.messages;
+        g->build_refused[p] = b.refused;
         b.messages = NULL;
         g->cpu_compile += b.cpu_compile;
         g->cpu_link += b.cpu_link;

@@ -27,6 +27,7 @@ typedef struct {
     TestResult *results;       /* one per test; max_score 0 where not graded  */
     bool graded[NPARTS];
     char *build_messages[NPARTS];
+    bool build_refused[NPARTS];  /* its file never reached the compiler (Build) */
     /* Per part, when it lost points: the causes its probes confirmed, as
      * text for the student (malloc'd, NULL when none was confirmed), and
      * their keys, space-separated (tests/selftest/README.md lists them). */

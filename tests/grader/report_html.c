@@ -358,11 +358,8 @@ static void failures(Markup *m, const Grade *g)
         if (!built) {
             /* The grader's own words when it did not hand the file to the
              * compiler (missing, unreadable, a link, a kit file included...). */
-            const char *msg = g->build_messages[p];
-            bool ours = strncmp(msg, "missing: ", 9) == 0 || strncmp(msg, "refused: ", 9) == 0 ||
-                        strncmp(msg, "cannot read ", 12) == 0;
             mk_printf(m, "<p>Your file did not build, so no test of this part could run. %s</p>\n<pre>",
-                      ours ? "The grader did not compile it:" : "What the compiler said:");
+                      g->build_refused[p] ? "The grader did not compile it:" : "What the compiler said:");
             mk_text(m, g->build_messages[p]);
             mk_printf(m, "</pre>\n");
         }
