@@ -44,6 +44,29 @@ static char *xasprintf(const char *fmt, ...)
     return s;
 }
 
+/* The first n bytes of s (up to a NUL) with pad before each line, so that
+ * what a student's code printed sits under its heading, not beside it. */
+static char *indented(const char *s, size_t n, const char *pad)
+{
+    size_t lines = 1, np = strlen(pad);
+    for (size_t k = 0; k < n && s[k]; k++)
+        lines += s[k] == '\n';
+    char *out = malloc(n + lines * np + 1), *o = out;
+    if (!out)
+        return NULL;
+    bool line_start = true;
+    for (size_t k = 0; k < n && s[k]; k++) {
+        if (line_start) {
+            memcpy(o, pad, np);
+            o += np;
+        }
+        *o++ = s[k];
+        line_start = s[k] == '\n';
+    }
+    *o = '\0';
+    return out;
+}
+
 /* What the child reads on stdin for a test. */
 static char *test_input(const Test *t, size_t *len)
 {
@@ -174,15 +197,14 @@ static void run_test(const GradeOptions *opt, const Build *b, SandboxServer *srv
     r->passed = ok;
     r->score = ok ? r->max_score : 0;
 
-    char shown[OUTPUT_SHOWN + 1];
     size_t ns = res.output_len < OUTPUT_SHOWN ? res.output_len : OUTPUT_SHOWN;
-    memcpy(shown, res.output, ns);
-    shown[ns] = '\0';
+    char *shown = ns && !ok ? indented(res.output, ns, "    ") : NULL;
     r->output = xasprintf("%s%s%s%s%s%s%s", ok ? "" : t->note[0] ? "  about: " : "",
                           ok ? "" : t->note, ok || !t->note[0] ? "" : "\n",
                           ok ? "" : why, ok ? "" : verdict,
                           ns && !ok ? "  your code printed:\n" : "",
-                          ns && !ok ? shown : "");
+                          shown ? shown : "");
+    free(shown);
     if (ns && !ok && (res.output_truncated || res.output_len > OUTPUT_SHOWN)) {
         char *more = xasprintf("%s\n  [... more output cut]\n", r->output);
         free(r->output);

@@ -171,6 +171,10 @@ check "the table shows no control character the code printed (but newline and ta
     sh -c "[ \$(LC_ALL=C tr -d '\n\t\040-\176\200-\377' <'$tmp/table.out' | wc -c) -eq 0 ]"
 check "... it shows them as ^X, and a C1 control as ?: ^[]52;c;Y2xpcA==^G ... ^[[2J ?31m ^? and UTF-8 as it is" \
     grep -q '\^\[\]52;c;Y2xpcA==\^G \^\[\[2J ?31m \^? '"$(printf '\303\251')" "$tmp/table.out"
+check "what the code printed is indented under 'your code printed:'" \
+    awk '/your code printed:$/ { want = index($0, "y") + 1; n = 1; next }
+         n > 0 { n--; if (match($0, /[^ ]/) < want) bad = 1; seen++ }
+         END { exit !(seen > 0 && !bad) }' "$tmp/table.out"
 check "a submission that prints bytes that are not UTF-8: they become U+FFFD" \
     grep -q "$(printf '\357\277\275\357\277\275')" "$page/markup-printer.html"
 check "the reference's page: nothing failed" grep -q 'Nothing: every test passed' "$page/reference.html"
