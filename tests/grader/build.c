@@ -21,6 +21,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+/* How long a grading waits for one beside it to compile the same file: more
+ * than the compiler may take (CC_SECONDS). */
+#define MEMO_WAIT_SECONDS (CC_SECONDS + 10)
+
 #define SOURCE_MAX (1 << 20)        /* a stage file larger than 1 MiB is refused */
 
 /* The compiler's limits, per run (tests/grader/README in the kit's README,
@@ -418,30 +422,18 @@ static bool served(Build *b, MemoEntry *e, const char *opath, const char *dpath)
     return true;
 }
 
-/* Compiles the stage file copied into the build (b->dir/src/<stage>.c) to
- * <stage>.o beside it, or takes the object the same bytes built before: in
- * this grade --all run (cfg->memo), or, in the kit's own tests, in an
- * earlier run (cfg->store: the compiler's dependency list is kept too and
- * checked again, since the kit may lie elsewhere now).  Returns 0 when
- * there is an object, 1 when the student's file did not build (b->messages
- * says why), -1 when the sandbox failed (err). */
-static int compile_stage(const BuildConfig *cfg, Build *b, const char *stage, bool load,
-                         MemoEntry *memo, MemoEntry *stored, char *err, size_t errlen)
+/* compile_stage's compile, when this run has not built the same bytes
+ * (memo, or NULL when none is kept). */
+static int compile_afresh(const BuildConfig *cfg, Build *b, const char *stage, bool load,
+                          MemoEntry *memo, MemoEntry *stored, char *err, size_t errlen)
 {
     const char *kind = load ? "pic" : "o";
-    char cfile[80], ofile[80], dfile[80], cpath[PATH_MAX + 700], opath[PATH_MAX + 700],
-         dpath[PATH_MAX + 700];
+    char cfile[80], ofile[80], dfile[80], opath[PATH_MAX + 700], dpath[PATH_MAX + 700];
     snprintf(cfile, sizeof cfile, "%s.c", stage);
     snprintf(ofile, sizeof ofile, "%s.o", stage);
     snprintf(dfile, sizeof dfile, "%s.d", stage);
-    snprintf(cpath, sizeof cpath, "%s/src/%s", b->dir, cfile);
     snprintf(opath, sizeof opath, "%s/src/%s", b->dir, ofile);
     snprintf(dpath, sizeof dpath, "%s/src/%s", b->dir, dfile);
-    /* The same bytes built before in this grade --all run: what they
-     * built, and what the compiler said of them, again. */
-    bool memo_on = memo_find(cfg->memo, stage, kind, cpath, memo);
-    if (memo_on && served(b, memo, opath, NULL))
-        return 0;
     size_t before = strlen(b->messages);
     char *argv[] = { (char *)cfg->cc, "-std=c11", "-O1", "-ffp-contract=off", "-Wall", "-Wextra",
                      "-I.", "-MD", "-MF", dfile, "-c", cfile, "-o", ofile,
@@ -463,11 +455,39 @@ static int compile_stage(const BuildConfig *cfg, Build *b, const char *stage, bo
         memo_use(stored);
     /* An object from the store is marked so, for grade --all's count of
      * what it compiled. */
-    if (memo_on && memo_keep_text(memo, "messages", said) == 0 &&
+    if (memo && memo_keep_text(memo, "messages", said) == 0 &&
         (compiled || memo_keep_text(memo, "from-store", "") == 0) &&
         memo_keep(memo, "object.o", opath) == 0)
         memo_use(memo);
     return 0;
+}
+
+/* Compiles the stage file copied into the build (b->dir/src/<stage>.c) to
+ * <stage>.o beside it, or takes the object the same bytes built before: in
+ * this grade --all run (cfg->memo), or, in the kit's own tests, in an
+ * earlier run (cfg->store: the compiler's dependency list is kept too and
+ * checked again, since the kit may lie elsewhere now).  Returns 0 when
+ * there is an object, 1 when the student's file did not build (b->messages
+ * says why), -1 when the sandbox failed (err). */
+static int compile_stage(const BuildConfig *cfg, Build *b, const char *stage, bool load,
+                         MemoEntry *memo, MemoEntry *stored, char *err, size_t errlen)
+{
+    const char *kind = load ? "pic" : "o";
+    char cpath[PATH_MAX + 700], opath[PATH_MAX + 700];
+    snprintf(cpath, sizeof cpath, "%s/src/%s.c", b->dir, stage);
+    snprintf(opath, sizeof opath, "%s/src/%s.o", b->dir, stage);
+    /* The same bytes built before in this grade --all run, or being built
+     * by a grading beside this one: what they built, and what the compiler
+     * said of them, again.  Else this grading compiles them, and says when
+     * it is done, whatever came of it. */
+    bool memo_on = memo_find(cfg->memo, stage, kind, cpath, memo);
+    if (memo_on && memo->found && memo_wait(memo, MEMO_WAIT_SECONDS) &&
+        served(b, memo, opath, NULL))
+        return 0;
+    int rc = compile_afresh(cfg, b, stage, load, memo_on ? memo : NULL, stored, err, errlen);
+    if (memo_on && !memo->found)
+        memo_keep_text(memo, "done", "");
+    return rc;
 }
 
 /* Builds b->dir/src/runner from the prebuilt harness object harness (a file

@@ -3,6 +3,9 @@
  * MEMO/<stage>-<kind>-<FNV-1a of the bytes>-<k>, holding the file's bytes
  * ("source") and what was kept of its build; k counts files whose bytes
  * differ but share the hash, which only the whole comparison tells apart.
+ * The grading that made an entry compiles its file; one that finds it
+ * waits for that (memo_wait), so a file is compiled once even when two
+ * gradings reach it at the same time.
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too */
@@ -16,6 +19,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
 
 #define MEMO_SOURCE_MAX (1 << 20)   /* as a stage file may be (build.c)       */
 #define MEMO_FILE_MAX (64 << 20)    /* an object or a shared object           */
@@ -27,6 +32,15 @@ static int put(const char *dir, const char *name, const char *bytes, size_t len)
     char path[1200], err[64];
     snprintf(path, sizeof path, "%s/%s", dir, name);
     return kit_save_file(path, bytes, len, err, sizeof err);
+}
+
+/* Removes a new entry that was not taken: its bytes, then itself. */
+static void discard(const char *fresh)
+{
+    char path[1200];
+    snprintf(path, sizeof path, "%s/source", fresh);
+    unlink(path);
+    rmdir(fresh);
 }
 
 bool memo_find(const char *memo, const char *stage, const char *kind, const char *src, MemoEntry *e)
@@ -44,15 +58,24 @@ bool memo_find(const char *memo, const char *stage, const char *kind, const char
         h ^= (unsigned char)bytes[i];
         h *= 1099511628211u;
     }
+    /* A new entry is made under a name of its own, its bytes written, and
+     * only then renamed into place: so an entry another grading beside this
+     * one finds always has its bytes to compare, and two gradings of the
+     * same file at the same time share one entry. */
+    char fresh[1100];
+    snprintf(fresh, sizeof fresh, "%s/.new-XXXXXX", memo);
+    if (!mkdtemp(fresh) || put(fresh, "source", bytes, len) != 0) {
+        discard(fresh);
+        free(bytes);
+        return false;
+    }
     for (int k = 0; k < MEMO_CHAIN; k++) {
         snprintf(e->dir, sizeof e->dir, "%s/%s-%s-%016llx-%d", memo, stage, kind, (unsigned long long)h, k);
-        if (mkdir(e->dir, 0700) == 0) {
-            if (put(e->dir, "source", bytes, len) != 0)
-                break;
+        if (rename(fresh, e->dir) == 0) {
             free(bytes);
             return true;                /* a new entry, empty but for the bytes */
         }
-        if (errno != EEXIST)
+        if (errno != EEXIST && errno != ENOTEMPTY)
             break;
         char path[1200];
         size_t kept_len = 0;
@@ -62,14 +85,35 @@ bool memo_find(const char *memo, const char *stage, const char *kind, const char
         free(kept);
         if (same) {
             e->found = true;
+            discard(fresh);
             free(bytes);
             return true;
         }
-        /* Another file with the same hash, or one being written by a
-         * grading beside this one: try the next. */
+        /* Another file with the same hash: try the next. */
     }
+    discard(fresh);
     free(bytes);
     e->dir[0] = '\0';
+    return false;
+}
+
+bool memo_wait(const MemoEntry *e, double seconds)
+{
+    char object[1200], done[1200];
+    memo_path(e, "object.o", object, sizeof object);
+    memo_path(e, "done", done, sizeof done);
+    long pause_ns = 1000000, waited_ns = 0;
+    while (e->dir[0]) {
+        if (access(object, F_OK) == 0)
+            return true;
+        if (access(done, F_OK) == 0 || waited_ns >= (long)(seconds * 1e9))
+            return false;
+        struct timespec pause = { 0, pause_ns };
+        nanosleep(&pause, NULL);
+        waited_ns += pause_ns;
+        if (pause_ns < 16000000)
+            pause_ns *= 2;
+    }
     return false;
 }
 

@@ -33,6 +33,13 @@ typedef struct {
 bool memo_find(const char *memo, const char *stage, const char *kind, const char *src,
                MemoEntry *e);
 
+/* For an entry that was found (e->found): waits until the grading that
+ * made it has finished compiling its file, at most seconds; true when the
+ * object is there to use, false when that compile did not keep one (the
+ * file did not build, or it was not done in time): then compile it again.
+ * The maker marks the end with memo_keep_text(e, "done", ""). */
+bool memo_wait(const MemoEntry *e, double seconds);
+
 /* The path of name in the entry (object.o, messages, student.so). */
 void memo_path(const MemoEntry *e, const char *name, char *path, size_t len);
 

@@ -206,6 +206,34 @@ for class in subs subs45; do
     echo "   graded $(ls "$tmp/$class" | wc -l | tr -d ' ') submissions in ${elapsed} s ($conf)"
 done
 
+# Two gradings at once reaching the same file compile it once: the one that
+# finds the other's entry waits for its object.  A compiler made slow (each
+# compile logged, then a pause) makes sure they meet; the builds kept from
+# run to run are left out, so that each distinct file is compiled here.
+if [ "$(id -u)" = 0 ]; then
+    same=$tmp/same-files
+    for s in a b c d; do
+        mkdir -p "$same/$s"
+        cp solutions/part1_image_plane.c solutions/part2_pixel_coordinates.c \
+            solutions/part3a_sphere_intersect.c solutions/part3b_ray_color.c "$same/$s/"
+    done
+    : >"$tmp/cc-log"
+    chmod 666 "$tmp/cc-log"
+    chmod -R a+rX "$same"
+    cat >"$tmp/slow-cc" <<EOF2
+#!/bin/sh
+case " \$* " in *" -c "*) echo compile >>"$tmp/cc-log"; sleep 0.3 2>/dev/null || sleep 1 ;; esac
+exec cc "\$@"
+EOF2
+    chmod 755 "$tmp/slow-cc"
+    CC=$tmp/slow-cc GRADE_KEEP_BUILDS='' $grade --all "$same" --out "$tmp/grades-same" \
+        --weights "$core" --jobs 2 >"$tmp/same.out" 2>&1
+    check "four identical submissions graded two at a time: each of the 4 files compiled once ($(wc -l <"$tmp/cc-log" | tr -d ' ') compiles; $(head -n 1 "$tmp/same.out"))" \
+        sh -c "[ \$(wc -l <'$tmp/cc-log') -eq 4 ] && grep -qx 'compiled 4 distinct stage files once each, for 16 files in all' '$tmp/same.out'"
+    check "... and each got full marks" \
+        sh -c "[ \$(grep -c ',full marks\$' '$tmp/grades-same/gradebook.csv') -eq 4 ]"
+fi
+
 hard_failed() {   # hard_failed JSON PART: a test of the part tagged hard has failed
     awk -v p="\"Part $2: " '/"name": /   { name = $0; failed = 0 }
         /"status": "failed"/          { failed = 1 }
