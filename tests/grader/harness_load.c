@@ -25,15 +25,16 @@ double (*volatile harness_keep_libm)(double) = tan;
 static const struct {
     const char *name;
     int part;                       /* HARNESS_PART's numbering */
+    const char *file;               /* the stage file that defines it */
     void *slot;
 } functions[] = {
-    { "image_plane_size", 1, &load_image_plane_size },
-    { "pixel_coordinates", 2, &load_pixel_coordinates },
-    { "sphere_intersect", 3, &load_sphere_intersect },
-    { "camera_ray", 4, &load_camera_ray },
-    { "ray_color", 4, &load_ray_color },
-    { "plane_intersect", 5, &load_plane_intersect },
-    { "triangle_intersect", 6, &load_triangle_intersect },
+    { "image_plane_size", 1, "part1_image_plane.c", &load_image_plane_size },
+    { "pixel_coordinates", 2, "part2_pixel_coordinates.c", &load_pixel_coordinates },
+    { "sphere_intersect", 3, "part3a_sphere_intersect.c", &load_sphere_intersect },
+    { "camera_ray", 4, "part3b_ray_color.c", &load_camera_ray },
+    { "ray_color", 4, "part3b_ray_color.c", &load_ray_color },
+    { "plane_intersect", 5, "part4_plane_intersect.c", &load_plane_intersect },
+    { "triangle_intersect", 6, "part5_triangle_intersect.c", &load_triangle_intersect },
 };
 
 /* dlerror's text without the object's path, which names a temporary
@@ -72,8 +73,9 @@ int harness_load(int part, bool refs, const char *path, char *why, size_t whylen
             }
             memcpy(functions[k].slot, &f, sizeof f);
         } else if (f && refs) {
-            snprintf(why, whylen, "multiple definition of `%s' (the reference of its part has it)",
-                     functions[k].name);
+            snprintf(why, whylen, "multiple definition of `%s': it belongs in %s, which this "
+                     "part is graded with; define it only there", functions[k].name,
+                     functions[k].file);
             return -1;
         }
     }
