@@ -256,7 +256,21 @@ typedef struct {
     bool have_model;
     P1Model model;
     bool tan90;
+    double factor;  /* a degrees-to-radians factor other than pi / 180 that
+                       every ordinary answer implies, or 0 */
+    bool float_digits;  /* every ordinary answer right to float's precision
+                           only, not every one a float */
 } P1Found;
+
+/* The answers of a right formula whose degrees-to-radians factor is k. */
+static void p1_with_factor(double k, const double *in, double *out)
+{
+    out[1] = 2 * in[2] * tan(in[0] / 2 * k);
+    out[0] = in[1] * out[1];
+}
+
+/* Right to a few roundings of float (24 bits): within 2^-19 of itself. */
+#define FLOAT_DIGITS 0x1p-19
 
 /* tan(alpha/2) from its complement: 180 - alpha is exact near 180. */
 static double p1_h_near_180(double fov, double d)
@@ -265,11 +279,13 @@ static double p1_h_near_180(double fov, double d)
 }
 
 /* Does got look like a correct formula whose angle was rounded: is the
- * angle it implies within a few roundings of alpha pi / 360? */
+ * angle it implies within a few roundings of alpha pi / 360?  (Rounded past
+ * 90 degrees, the angle gives a negative h: atan(2 d / h) is still
+ * 90 degrees less that angle.) */
 static bool p1_angle_rounding(const double *in, const double *got, double units)
 {
     double fov = in[0], d = in[2];
-    if (!(got[1] > 0) || fov < 90)
+    if (!(fabs(got[1]) > 0) || !isfinite(got[1]) || fov < 90)
         return false;
     double eps = (180 - fov) * (M_PI / 360);            /* pi/2 - theta, to a few u */
     double implied = atan(2 * d / got[1]);              /* pi/2 - the theta got used */
@@ -283,6 +299,22 @@ static bool p1_explains(const void *ctx, int tag, const Test *t, const Case *c, 
     (void)t;
     if (p->have_model && p1_matches(p->model, c->in, got))
         return true;
+    if (p->factor > 0) {
+        double v[2];
+        p1_with_factor(p->factor, c->in, v);
+        return same(got[0], v[0], fabs(v[0])) && same(got[1], v[1], fabs(v[1]));
+    }
+    if (p->float_digits) {
+        double v[2];
+        p1_with_factor(M_PI / 180, c->in, v);
+        if (fabs(got[0] - v[0]) <= FLOAT_DIGITS * fabs(v[0]) &&
+            fabs(got[1] - v[1]) <= FLOAT_DIGITS * fabs(v[1]))
+            return true;
+        /* Near 180 degrees tan magnifies the angle's rounding: there the
+         * angle the answer implies is right to a few roundings of float. */
+        return p1_angle_rounding(c->in, got, 0x1p32) &&
+               fabs(got[0] - c->in[1] * got[1]) <= FLOAT_DIGITS * fabs(got[0]);
+    }
     return p->tan90 && p1_angle_rounding(c->in, got, 8) && fabs(got[0] - c->in[1] * got[1]) <= 1e-12 * got[0];
 }
 
@@ -336,6 +368,60 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
 
     const P1Model m = out->model;
     const double *g = ab.answered ? ab.got[1] : NULL;     /* alpha = 90, aspect 0.5, d = 3 */
+
+    /* A right formula with a wrong constant: the factor from degrees to
+     * radians each answer implies, k = 2 atan(h / 2 d) / alpha, is the same
+     * in every case (to double's roundings) but is not pi / 180, as with
+     * pi written 3.14159 or the factor 0.0174533. */
+    if (ab.answered == NB) {
+        double kmin = INFINITY, kmax = -INFINITY;
+        bool shaped = true;
+        for (int c = 0; c < NB; c++) {
+            const double *in = basic[c], *got = ab.got[c];
+            double k = 2 * atan(got[1] / (2 * in[2])) / in[0];
+            shaped = shaped && got[1] > 0 && fabs(got[0] - in[1] * got[1]) <= 1e-12 * fabs(got[0]);
+            kmin = fmin(kmin, k);
+            kmax = fmax(kmax, k);
+        }
+        double k = (kmin + kmax) / 2, off = k / (M_PI / 180) - 1;
+        if (shaped && kmax - kmin <= 1e-12 * k && fabs(off) > 1e-10 && fabs(off) < 1e-2) {
+            out->factor = k;
+            name_cause(f, "pi-approximate", TAG_ALL, "the factor from degrees to radians is %s by %.2g "
+                       "of itself: every answer is that of the right formula with %.10g in place of "
+                       "pi / 180 = 0.017453292519943295, as if pi were %.9g. Use M_PI (raytracer.h "
+                       "defines it), not a value of pi or of pi / 180 written out.", off > 0 ? "too large" : "too small",
+                       fabs(off), k, k * 180);
+        }
+    }
+    /* Right to float's digits only, but not every answer a float: float
+     * somewhere inside (a float variable, tanf, a constant written 180.0f). */
+    if (ab.answered == NB && !in_float && out->factor == 0) {
+        double worst = 0;
+        int worst_c = 0, worst_k = 0;
+        bool close = true;
+        for (int c = 0; c < NB && close; c++) {
+            double v[2];
+            p1_with_factor(M_PI / 180, basic[c], v);
+            for (int k = 0; k < 2; k++) {
+                double rel = fabs(ab.got[c][k] - v[k]) / fabs(v[k]);
+                close = close && rel <= FLOAT_DIGITS;
+                if (rel > worst)
+                    worst = rel, worst_c = c, worst_k = k;
+            }
+        }
+        if (close && worst > 1e-9) {
+            double v[2];
+            p1_with_factor(M_PI / 180, basic[worst_c], v);
+            out->float_digits = true;
+            name_cause(f, "float", TAG_ALL, "your answers agree with the right ones to about 7 digits, "
+                       "float's precision, and no further: for alpha = %g, aspect = %g, d = %g your "
+                       "%s = %.17g, the right one %.17g (off by %.2g of itself). Some of the computation is "
+                       "in float (a float variable, tanf, a constant written 180.0f): use double "
+                       "throughout.", basic[worst_c][0], basic[worst_c][1], basic[worst_c][2],
+                       worst_k ? "h" : "w", ab.got[worst_c][worst_k], v[worst_k], worst);
+        }
+    }
+
     if (out->have_model && p1_mistakes(m) > 0) {
         if (m.angle == 1 || m.angle == 3)
             name_cause(f, "degrees-as-radians", TAG_ALL, "tan was given the angle in degrees: for alpha = 90, "
