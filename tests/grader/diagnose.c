@@ -639,9 +639,26 @@ static void diagnose_part2(ProbeSet *ps, Found *f, P2Found *out)
     if (out->z == Z_ONE)
         name_cause(f, "d-ignored", TAG_ALL, "z is -1 whatever d: the plane is at z = -d (tutorials "
                    "such as Scratchapixel put it at distance 1; this lab's is at d).");
-    if (x == X_RIGHT && y == Y_RIGHT && all_float(&a, 2, (const double (*)[CASE_MAX_OUT])model, N))
+    if (x == X_RIGHT && y == Y_RIGHT && all_float(&a, 2, (const double (*)[CASE_MAX_OUT])model, N)) {
         name_cause(f, "float", TAG_ALL, "computed in float: every coordinate is a float (24 bits, about 7 "
                    "digits), e.g. x = %.17g. Use double throughout.", g[0]);
+    } else if (x == X_RIGHT && y == Y_RIGHT && out->z == Z_RIGHT) {
+        /* Right to float's digits only: float somewhere inside. */
+        double worst = 0;
+        int wc = 0, wk = 0;
+        for (int c = 0; c < N; c++)
+            for (int k = 0; k < 3; k++) {
+                double err = fabs(a.got[c][k] - model[c][k]) / p2_scale(cases[c]);
+                if (err > worst)
+                    worst = err, wc = c, wk = k;
+            }
+        if (worst > 1e-10 && worst <= FLOAT_DIGITS)
+            name_cause(f, "float", TAG_ALL, "your coordinates agree with the right ones to about 7 "
+                       "digits, float's precision, and no further: for pixel (%g, %g) of a %g x %g image "
+                       "your %c = %.17g, the right one %.17g. Some of the computation is in float (a float "
+                       "variable, a constant written 0.5f): use double throughout.", cases[wc][0],
+                       cases[wc][1], cases[wc][2], cases[wc][3], "xyz"[wk], a.got[wc][wk], model[wc][wk]);
+    }
     answers_free(&a);
 }
 
@@ -789,6 +806,7 @@ typedef struct {
     double tmin;                   /* the epsilon M_TMIN confirmed   */
     bool cancellation;
     double rel;                    /* "right" to this relative error */
+    bool float_digits;             /* M_FLOAT: t right to 5-7 digits, not floats */
 } P3Found;
 
 static bool p3_explains(const void *ctx, int tag, const Test *t, const Case *c, const double *got)
@@ -798,6 +816,8 @@ static bool p3_explains(const void *ctx, int tag, const Test *t, const Case *c, 
         return t->hard;
     if (tag == M_NAN)
         return got[0] == 1 && isnan(got[1]);
+    if (tag == M_FLOAT && p->float_digits)   /* a t right to float's digits, not further */
+        return got[0] == 1 && c->want[0] == 1 && fabs(got[1] - c->want[1]) <= 1e-5 * fabs(c->want[1]);
     if (tag == M_FLOAT)                  /* a t rounded to float, right or not */
         return got[0] == 1 && is_float(got[1]) && !(c->want[0] == 1 && is_float(c->want[1]));
     double v[2];
@@ -926,27 +946,44 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
     const Answers *pf[] = { ab, as, ai, at };
     const double (*pin[])[CASE_MAX_IN] = { basic, (const double (*)[CASE_MAX_IN])scaled, inside, tangent };
     const int pn[] = { NB, NS, NI, NT };
-    int float_t = 0, double_t = 0;
+    /* Or float inside: t not floats, but most right to float's digits and
+     * no further (a double formula gets these to 1e-15; now and then one
+     * comes out a float, or right, by chance). */
+    int float_t = 0, near_t = 0, exact_t = 0, wk = 0, wc = 0;
+    double worst = 0;
     for (int k = 0; k < 4; k++)
         for (int c = 0; c < pf[k]->answered && c < pn[k]; c++) {
             double right[2];
             p3_eval(M_RIGHT, pin[k][c], 0, right);
             if (pf[k]->got[c][0] != 1 || right[0] != 1 || is_float(right[1]))
                 continue;
-            if (!(fabs(pf[k]->got[c][1] - right[1]) <= 1e-5 * right[1]))
+            double err = fabs(pf[k]->got[c][1] - right[1]) / right[1];
+            if (!(err <= 1e-5))
                 continue;                   /* wrong for another cause: no evidence */
             if (is_float(pf[k]->got[c][1]))
                 float_t++;
+            else if (err > 1e-10)
+                near_t++;
             else
-                double_t++;
+                exact_t++;
+            if (err > worst)
+                worst = err, wk = k, wc = c;
         }
     double rel = 1e-9;
-    if (float_t >= 3 && double_t == 0) {
+    if (float_t >= 3 && near_t + exact_t == 0) {
         out->model[M_FLOAT] = true;
         rel = 1e-5;
         name_cause(f, "float", M_FLOAT, "computed in float: every t is a float (24 bits, about 7 digits): "
                    "e.g. t = %.17g where the hit is at %.17g. Use double throughout (double, sqrt, not "
                    "float, sqrtf).", ab->got[0][1], quad(basic[0]).t0);
+    } else if (near_t >= 3 && near_t > 2 * (exact_t + float_t)) {
+        out->model[M_FLOAT] = true;
+        out->float_digits = true;
+        rel = 1e-5;
+        name_cause(f, "float", M_FLOAT, "your t agree with the right ones to 5 to 7 digits, about "
+                   "float's precision, and no further: e.g. t = %.17g where the hit is at %.17g. Some of "
+                   "the computation is in float (a float variable, sqrtf): use double throughout.",
+                   pf[wk]->got[wc][1], quad(pin[wk][wc]).t0);
     }
     out->rel = rel;
 
@@ -1270,7 +1307,7 @@ void diagnose_part(int part, const TestList *tests, const TestResult *results, c
     ProbeSet ps = { probes, { 0 } };
     P1Found p1 = { 0 };
     P2Found p2 = { -1, -1, -1 };
-    P3Found p3 = { { false }, 0, false, 1e-9 };
+    P3Found p3 = { { false }, 0, false, 1e-9, false };
     PBFound pb = { -1, -1 };
     switch (part) {
     case PART1:
