@@ -571,6 +571,13 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
             snprintf(cerr, sizeof cerr, "%s: %s", cfile, strerror(errno));
             return not_compiled(b, "cannot read ", cerr);
         }
+        struct stat st;
+        if (fstat(in, &st) == 0 && st.st_size > SOURCE_MAX) {
+            close(in);
+            snprintf(cerr, sizeof cerr, "%s is %lld bytes; a stage file may be at most %d (1 MiB)",
+                     cfile, (long long)st.st_size, SOURCE_MAX);
+            return not_compiled(b, "refused: too large: ", cerr);
+        }
         if (copy_fd(in, path, to, SOURCE_MAX, cerr, sizeof cerr))
             return not_compiled(b, cerr, "");
         if (scan_includes(cfg, b, to, src)) {

@@ -482,6 +482,10 @@ ln -s "$root/solutions/part1_image_plane.c" "$links/stage-links/part1_image_plan
 ln -s "$root/out/tests/private/marker.c" "$links/stage-links/part2_pixel_coordinates.c"
 mkfifo "$links/stage-links/part3a_sphere_intersect.c"
 ln -s "$root/solutions" "$links/labs-link/labs"
+mkdir -p "$links/too-large"
+cp solutions/part2_pixel_coordinates.c solutions/part3a_sphere_intersect.c "$links/too-large/"
+{ cat solutions/part1_image_plane.c; awk 'BEGIN { while (n++ < 20000) print "/* padding padding padding padding padding padding */" }'; } \
+    >"$links/too-large/part1_image_plane.c"
 chmod -R a+rX "$links" 2>/dev/null
 sed 's/^parts .*/parts 1 2 3a/' "$core" >"$tmp/parts123a.conf"
 $grade --all "$links" --out "$tmp/grades-links" --weights "$tmp/parts123a.conf" --jobs 1 >"$tmp/links.out" 2>&1
@@ -494,6 +498,10 @@ check "... a pipe is refused too, and the grading ends" \
     grep -q 'refused: not a regular file: part3a_sphere_intersect.c' "$tmp/grades-links/stage-links.json"
 check "a link to a file only root may read shows nothing of it" \
     sh -c "! grep -rq 'SECRET-MARKER' '$tmp/grades-links'"
+check "a stage file over 1 MiB is refused as too large, by its own name" \
+    grep -q 'refused: too large: part1_image_plane.c is [0-9]* bytes; a stage file may be at most 1048576 (1 MiB)' \
+    "$tmp/grades-links/too-large.json"
+check "... and costs that part alone" grep -q '^too-large,0,20,30,' "$tmp/grades-links/gradebook.csv"
 check "a labs folder that is a link (to the reference) is not graded: 0 points" \
     grep -q '^labs-link,0,0,0,0,0,points lost$' "$tmp/grades-links/gradebook.csv"
 [ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/links.out" "$tmp/grades-links/gradebook.csv"
