@@ -41,6 +41,22 @@ typedef struct {
     int running;                 /* worker threads not yet finished           */
 } RenderJob;
 
+/* What this thread is drawing (render_crash_rows): rows crash_j0 ..
+ * crash_j1 - 1, or Part 1 (crash_j0 = -2), or nothing (-1).  Set once per
+ * chunk of rows, never per pixel. */
+static _Thread_local volatile int crash_j0 = -1, crash_j1 = -1;
+
+int render_crash_rows(int *j0, int *j1)
+{
+    if (crash_j0 == -2)
+        return 0;
+    if (crash_j0 < 0)
+        return -1;
+    *j0 = crash_j0;
+    *j1 = crash_j1;
+    return 1;
+}
+
 /* Writes a one-line reason, formatted as by printf, into err (if any).
  * Never fails. */
 static void render_error(char *err, size_t errlen, const char *fmt, ...)
@@ -129,6 +145,8 @@ static void *render_worker(void *arg)
         if (j0 >= ny)
             break;
         int j1 = ny - j0 < job->rows_per_chunk ? ny : j0 + job->rows_per_chunk;
+        crash_j1 = j1;
+        crash_j0 = j0;
         if (closest)
             closest_rows(job->scene, job->img, job->w, job->h, j0, j1);
         else
@@ -199,7 +217,9 @@ int render_scene(const Scene *scene, Image *img, const RenderOptions *opt,
     RenderJob job;
     job.scene = scene;
     job.img = img;
+    crash_j0 = -2;
     image_plane_size(scene->fov_degrees, (double)nx / ny, scene->d, &job.w, &job.h);
+    crash_j0 = -1;
     job.rows_per_chunk = nx >= RENDER_CHUNK_PIXELS ? 1 : RENDER_CHUNK_PIXELS / nx;
     atomic_init(&job.next_row, 0);
     atomic_init(&job.rows_done, 0);

@@ -30,6 +30,12 @@ typedef struct {
     int threads;             /* threads actually used                        */
 } RenderStats;
 
+/* What the calling thread was drawing, for a message when the student's
+ * code crashes: sets *j0 and *j1 to the rows (j0 .. j1 - 1) and returns 1,
+ * or returns 0 while sizing the image plane (Part 1), or -1 outside a
+ * render.  Reads only the thread's own variables: safe in a signal handler. */
+int render_crash_rows(int *j0, int *j1);
+
 /* Renders scene into img, which must be scene->nx x scene->ny.
  * Returns 0, or -1 with a reason in err (e.g. threads could not start). */
 int render_scene(const Scene *scene, Image *img, const RenderOptions *opt,

@@ -413,6 +413,38 @@ check "make render SUBMISSION=<no such folder> is refused (exit $status), and dr
     sh -c "[ $status -eq 2 ] && grep -q 'SUBMISSION=$tmp/no-such-folder is not a directory' '$tmp/stdout' &&
            [ ! -e '$tmp/typo.png' ]"
 
+# Code of the parts that crashes while drawing: the renderer says where
+# and what, and still ends by the signal (make reports it); nothing is
+# written.  It once ended with the shell's "Segmentation fault" alone.
+if [ -d solutions ]; then
+    mkdir -p "$tmp/crashes"
+    cp solutions/*.c "$tmp/crashes/"
+    cat >"$tmp/crashes/part3b_ray_color.c" <<'EOF2'
+#include <stddef.h>
+#include "raytracer.h"
+
+Ray camera_ray(Vec3 eye, Vec3 pixel)
+{
+    Ray ray = { eye, vec3_normalize(vec3_sub(pixel, eye)) };
+    return ray;
+}
+
+/* Through a NULL pointer, for the pixels right of the centre. */
+Vec3 ray_color(const Scene *scene, const Ray *ray)
+{
+    volatile int *nowhere = NULL;
+    if (ray->direction.x > 0)
+        *nowhere = 1;
+    return scene->background;
+}
+EOF2
+    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/crashes" SIZE=40x30 OUT="$tmp/crashes.png"
+    check "code that crashes while drawing: the renderer says where and what (exit $status)" \
+        sh -c "[ $status -ne 0 ] &&
+               grep -q 'render: the code of the parts crashed while drawing rows* [0-9]*.*: a segmentation fault (SIGSEGV)' '$tmp/stderr'"
+    check "... and writes no picture" [ ! -e "$tmp/crashes.png" ]
+fi
+
 # images of different sizes: a clear message, exit 1
 run "$RENDER" labs/scenes/default.scene --size 60x90 --quiet -o "$tmp/small.png"
 run "$COMPARE" "$tmp/small.png" "$tmp/ref.png"
