@@ -406,6 +406,7 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         }
         g->build_messages[p] = b.messages;
         g->build_refused[p] = b.refused;
+        g->built[p] = b.ok;
         b.messages = NULL;
         g->cpu_compile += b.cpu_compile;
         g->cpu_link += b.cpu_link;
@@ -499,4 +500,9 @@ void grade_free(Grade *g)
         free(g->causes[p]);
     }
     memset(g, 0, sizeof *g);
+}
+
+bool grade_warned(const Grade *g, int p)
+{
+    return g->graded[p] && g->built[p] && g->build_messages[p] && g->build_messages[p][0];
 }

@@ -28,6 +28,7 @@ typedef struct {
     bool graded[NPARTS];
     char *build_messages[NPARTS];
     bool build_refused[NPARTS];  /* its file never reached the compiler (Build) */
+    bool built[NPARTS];        /* it built: build_messages are warnings, if any */
     /* Per part, when it lost points: the causes its probes confirmed, as
      * text for the student (malloc'd, NULL when none was confirmed), and
      * their keys, space-separated (tests/selftest/README.md lists them). */
@@ -50,5 +51,9 @@ typedef struct {
 int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
                      char *err, size_t errlen);
 void grade_free(Grade *g);
+
+/* Whether part p built with something said by the compiler or linker
+ * (warnings: build_messages[p]), for the reports. */
+bool grade_warned(const Grade *g, int p);
 
 #endif

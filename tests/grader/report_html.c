@@ -122,6 +122,14 @@ static void scores(Markup *m, const Grade *g, const GradeConfig *cfg)
         mk_text(m, g->diagnosis[p]);
         mk_printf(m, "</div>\n");
     }
+    for (int p = 0; p < NPARTS; p++) {
+        if (!grade_warned(g, p))
+            continue;
+        mk_printf(m, "<div class=\"diag\"><strong>Part %s, the compiler warned (a warning often points "
+                     "at a mistake):</strong>\n<pre>", part_label(p));
+        mk_text(m, g->build_messages[p]);
+        mk_printf(m, "</pre></div>\n");
+    }
 }
 
 /* What the figures' colours and windows mean. */

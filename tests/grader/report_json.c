@@ -67,6 +67,13 @@ int report_json(const char *path, const Grade *g, const GradeConfig *cfg,
                       "\n\nPart %s, what went wrong (probes run on your code confirmed it):\n%s",
                       part_label(p), g->diagnosis[p]);
     }
+    for (int p = 0; p < NPARTS; p++) {
+        if (!grade_warned(g, p) || (size_t)n >= sizeof summary)
+            continue;
+        n += snprintf(summary + n, sizeof summary - (size_t)n,
+                      "\n\nPart %s, the compiler warned (a warning often points at a mistake):\n%s",
+                      part_label(p), g->build_messages[p]);
+    }
     json_key(&j, "output");
     json_string(&j, summary);
     /* The causes' keys (tests/selftest/README.md), for instructors' tools. */

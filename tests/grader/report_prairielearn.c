@@ -123,6 +123,8 @@ static void write_results(JsonWriter *j, const Grade *g, size_t output_max)
             append(&output, "   (hard cases: %s / %s)", points_text(g->hard[p]).s, points_text(g->hard_max[p]).s);
         append(&output, "\n");
         if (g->build_messages[p] && g->build_messages[p][0]) {
+            if (grade_warned(g, p))
+                append(&output, "The compiler warned (a warning often points at a mistake):\n");
             append(&output, "%s", g->build_messages[p]);
             if (!gradable)
                 append(&format_errors, "Part %s: %s", part_label(p), g->build_messages[p]);

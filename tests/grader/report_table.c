@@ -73,6 +73,10 @@ void report_table(FILE *f, const Grade *g, const GradeConfig *cfg, const char *s
             fprintf(f, "  What went wrong (probes run on your code confirmed it):\n");
             print_indented(f, g->diagnosis[p]);
         }
+        if (grade_warned(g, p)) {
+            fprintf(f, "  The compiler warned (a warning often points at a mistake):\n");
+            print_indented(f, g->build_messages[p]);
+        }
         for (int group = 0; group < 2; group++)
             for (int k = 0; k < g->tests->n; k++) {
                 const Test *t = &g->tests->tests[k];

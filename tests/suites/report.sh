@@ -83,7 +83,7 @@ only45=$tmp/parts45.conf
 sed 's/^parts .*/parts 4 5/' tests/weights.conf >"$only45"
 mkdir "$tmp/subs" "$tmp/subs45"
 core="p1-w-h-swapped p2-y-not-flipped p3a-far-root p3a-tangent-miss p3b-first-hit textbook
-      hostile-compile-error hostile-missing-file hostile-segfault"
+      hostile-compile-error hostile-missing-file hostile-segfault warn-unused"
 flat="p4-hits-behind p5-strict-edges"
 for name in $core $flat; do
     dir=tests/selftest/$name
@@ -188,6 +188,13 @@ check "identical pictures: the two renders, and a box in place of the all-black 
 check "a diagnosis: its causes each on a line of their own, as the terminal shows them" \
     sh -c "grep -A1 'Part 1, what went wrong (probes run on your code confirmed it):</strong>\$' '$page/p1-w-h-swapped.html' |
            grep -q '^- w and h are swapped'"
+check "a part that built with a warning: the page shows the warning with the part" \
+    sh -c "grep -q 'Part 1, the compiler warned (a warning often points at a mistake):' '$page/warn-unused.html' &&
+           grep -q 'unused variable' '$page/warn-unused.html'"
+$grade --submission "$tmp/subs/warn-unused" --part 1 >"$tmp/warn-table.out" 2>&1
+check "... and so does the table, under the part's heading" \
+    sh -c "grep -A2 'The compiler warned (a warning often points at a mistake):' '$tmp/warn-table.out' |
+           grep -q '^    part1_image_plane.c:[0-9]*:[0-9]*: warning: unused variable'"
 check "a part that does not build: the page shows what the compiler said" \
     grep -q 'Your file did not build, so no test of this part could run. What the compiler said:' \
     "$page/hostile-compile-error.html"
