@@ -61,7 +61,9 @@ int harness_load(int part, bool refs, const char *path, char *why, size_t whylen
         return -1;
     }
     if (dlsym(h, "main")) {
-        snprintf(why, whylen, "multiple definition of `main' (the grader's harness has it)");
+        snprintf(why, whylen, "multiple definition of `main': the program this part is graded with "
+                              "has its own (so has make render's); remove yours, and test your code "
+                              "in a file of its own");
         return -1;
     }
     for (size_t k = 0; k < sizeof functions / sizeof functions[0]; k++) {
