@@ -314,6 +314,7 @@ student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 	mkdir -p $(KIT_DIR)/.github/workflows
 	sh tests/classroom/workflow.sh >$(KIT_DIR)/.github/workflows/classroom.yml
 	cp -R tests/grader tests/public tests/tools tests/weights.conf tests/run.sh $(KIT_DIR)/tests/
+	mkdir -p $(KIT_DIR)/tests/grader/shipped && cp labs/raytracer.h labs/vec3.h $(KIT_DIR)/tests/grader/shipped/
 	cp tests/unit/check.h tests/unit/test_vec3.c tests/unit/test_png.c tests/unit/test_scene.c \
 	   $(KIT_DIR)/tests/unit/
 	for s in $(SCENES); do \

@@ -239,6 +239,8 @@ for p in 1 2 3a 3b; do
     fi
 done
 check "make grade on the skeleton: Score: 0 / 100" grep -q '^Score: 0 / 100' "$tmp/out"
+check "make grade on the untouched kit says nothing of its headers" \
+    sh -c "! grep -q 'is not the one the kit came with' '$tmp/out'"
 
 # ---- the report page: out/report/index.html, with the stored reference ----
 page=$kit/out/report/index.html
@@ -286,6 +288,17 @@ while IFS= read -r command; do
         pass
     fi
 done <"$tmp/unique"
+
+# A student who puts a macro in labs/raytracer.h is told that the
+# instructor grades with the kit's own (their stage file would not build
+# there), and which file that is.
+cp "$kit/labs/raytracer.h" "$tmp/raytracer.h"
+printf '#define EPSILON 1e-9\n' >>"$kit/labs/raytracer.h"
+(cd "$kit" && out/build/bin/grade --submission labs --part 1 --quiet) >"$tmp/out" 2>&1 </dev/null
+check "a changed labs/raytracer.h: make grade warns that the instructor grades with the kit's own" \
+    sh -c "grep -q 'grade: labs/raytracer.h is not the one the kit came with' '$tmp/out' &&
+           grep -q 'tests/grader/shipped/raytracer.h' '$tmp/out' && cmp -s labs/raytracer.h '$kit/tests/grader/shipped/raytracer.h'"
+cp "$tmp/raytracer.h" "$kit/labs/raytracer.h"
 
 # ---- the reference stage files in labs/: full marks, identical renders ----
 cp solutions/*.c "$kit/labs/"
