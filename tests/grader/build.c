@@ -168,6 +168,47 @@ static int not_compiled(Build *b, const char *what, const char *name)
     return 0;
 }
 
+/* name's letters and digits, lower case, into out (at most n - 1 of them). */
+static void name_key(const char *name, char *out, size_t n)
+{
+    size_t k = 0;
+    for (; *name && k + 1 < n; name++) {
+        unsigned char c = (unsigned char)*name;
+        if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9'))
+            out[k++] = (char)c;
+        else if (c >= 'A' && c <= 'Z')
+            out[k++] = (char)(c - 'A' + 'a');
+    }
+    out[k] = '\0';
+}
+
+/* The stage file is missing: says so, naming the files of the submission
+ * that look like it under another name ("part1_image_plane (1).c", as a
+ * browser names a second download; "Part1_Image_Plane.c"; a ".c.txt"). */
+static int missing_stage(Build *b, const char *submission, const char *stage, const char *cfile)
+{
+    char want[80], key[300], seen[600] = "";
+    int nseen = 0;
+    name_key(stage, want, sizeof want);
+    DIR *d = opendir(submission);
+    struct dirent *e;
+    while (d && (e = readdir(d)) && nseen < 3) {
+        name_key(e->d_name, key, sizeof key);
+        if (!strstr(key, want) || strcmp(e->d_name, cfile) == 0)
+            continue;
+        size_t len = strlen(seen);
+        snprintf(seen + len, sizeof seen - len, "%s%s", nseen ? ", " : "", e->d_name);
+        nseen++;
+    }
+    if (d)
+        closedir(d);
+    if (nseen == 0)
+        return not_compiled(b, "missing: the submission has no ", cfile);
+    char text[900];
+    snprintf(text, sizeof text, "%s; it has %s: hand it in as %s", cfile, seen, cfile);
+    return not_compiled(b, "missing: the submission has no ", text);
+}
+
 /* Runs the compiler in the sandbox in b->dir/src; 0 if it succeeded, 1 if
  * not (its messages, and why it was stopped, in b->messages), -1 when the
  * sandbox itself failed. */
@@ -563,7 +604,7 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
         snprintf(to, sizeof to, "%s/%s.c", src, stage);
         int in = build_open_stage(path);
         if (in < 0 && errno == ENOENT)
-            return not_compiled(b, "missing: the submission has no ", cfile);
+            return missing_stage(b, submission, stage, cfile);
         if (in < 0 && (errno == ELOOP || errno == EINVAL))
             return not_compiled(b, errno == ELOOP ? "refused: a symbolic link, not a file (hand in the file "
                                                     "itself): " : "refused: not a regular file: ", cfile);

@@ -71,6 +71,20 @@ check "an upload whose labs is a link to the reference: nothing taken from it" \
     sh -c "grep -q '^found: none of the stage files' '$tmp/run-link.log' && grep -q '\"score\": 0' '$ag/results/results.json'"
 rm -f "$ag/submission/labs"
 
+# Files under another name, as a browser names a second download and as
+# editors capitalise: 0 for those parts, and the message names the files.
+rm -rf "$ag/submission"/* "$ag/results/results.json"
+mkdir -p "$ag/submission/work"
+cp solutions/part1_image_plane.c "$ag/submission/part1_image_plane (1).c"
+cp solutions/part2_pixel_coordinates.c "$ag/submission/work/Part2_Pixel_Coordinates.c"
+AUTOGRADER_ROOT="$ag" "$ag/run_autograder" >"$tmp/run-names.log" 2>&1
+check "a stage file under another name is named in the message: 'it has part1_image_plane (1).c'" \
+    grep -q 'the submission has no part1_image_plane.c; it has part1_image_plane (1).c: hand it in as part1_image_plane.c' \
+    "$ag/results/results.json"
+check "... from a folder too, whatever its letters' case" \
+    grep -q 'it has Part2_Pixel_Coordinates.c: hand it in as part2_pixel_coordinates.c' "$ag/results/results.json"
+check "... and such files are not graded" grep -q '"score": 0' "$ag/results/results.json"
+
 # An empty submission: every part missing, score 0, still a valid file.
 rm -rf "$ag/submission"/* "$ag/results/results.json"
 AUTOGRADER_ROOT="$ag" "$ag/run_autograder" >"$tmp/run2.log" 2>&1
