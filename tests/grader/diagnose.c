@@ -1157,12 +1157,12 @@ static void p3b_camera(int m, const double *in, double *out)
     }
 }
 
-enum { K_RIGHT, K_FIRST, K_FARTHEST, K_BLACK, NK_MODELS };
+enum { K_RIGHT, K_FIRST, K_FARTHEST, K_LAST, K_BLACK, NK_MODELS };
 
 /* The colour model m gives a ray in test t's scene. */
 static void p3b_colour(int m, const Test *t, const double *in, double *out)
 {
-    int best = -1, first = -1;
+    int best = -1, first = -1, last = -1;
     double tbest = INFINITY, tfar = -INFINITY;
     int far = -1;
     for (int s = 0; s < t->nspheres; s++) {
@@ -1175,12 +1175,13 @@ static void p3b_colour(int m, const Test *t, const double *in, double *out)
             continue;
         if (first < 0)
             first = s;
+        last = s;
         if (h[1] < tbest)
             tbest = h[1], best = s;
         if (h[1] > tfar)
             tfar = h[1], far = s;
     }
-    int k = m == K_FIRST ? first : m == K_FARTHEST ? far : best;
+    int k = m == K_FIRST ? first : m == K_FARTHEST ? far : m == K_LAST ? last : best;
     for (int q = 0; q < 3; q++)
         out[q] = k >= 0 ? t->spheres[k].color[q] : m == K_BLACK ? 0 : t->background[q];
 }
@@ -1231,8 +1232,11 @@ static void diagnose_part3b(ProbeSet *ps, Found *f, PBFound *out)
     test_add_sphere(tk, (const double[3]){ 0, 0, -10 }, 2, (const double[3]){ 0, 1, 0 });
     test_add_sphere(tk, (const double[3]){ 0, 0, -20 }, 5, (const double[3]){ 0, 0, 1 });
     test_add_sphere(tk, (const double[3]){ 0.5, 0, -5 }, 1, (const double[3]){ 1, 0, 0 });
+    /* The last ray misses the red sphere and meets the other two: there the
+     * last sphere hit in the list is the farthest, not the closest. */
     static const double rays[][6] = {
         { 0, 0, 0, 0, 0, -1 }, { 0, 0, 0, 0.05, 0.02, -1 }, { 0, 0, 0, 0, 0.6, -0.8 }, { 0, 0, 0, 0.1, 0.2, -1 },
+        { 0, 0, 0, -0.15, 0, -1 },
     };
     enum { NR = sizeof rays / sizeof *rays };
     for (int k = 0; k < NR; k++)
@@ -1285,6 +1289,11 @@ static void diagnose_part3b(ProbeSet *ps, Found *f, PBFound *out)
     if (out->colour == K_FARTHEST)
         name_cause(f, "farthest-hit", TAG_ALL, "ray_color returns the farthest sphere hit: keep the SMALLEST t "
                    "(start tmin at infinity and keep a hit only when its t is smaller).");
+    if (out->colour == K_LAST)
+        name_cause(f, "last-hit", TAG_ALL, "ray_color returns the last sphere hit in the list, not the "
+                   "closest: each hit replaces the colour whatever its t, so a ray through two spheres "
+                   "got the colour of the one listed later, behind the nearer one. Keep a hit only when "
+                   "its t is smaller than the smallest so far (start that at infinity).");
     if (out->colour == K_BLACK)
         name_cause(f, "background-ignored", TAG_ALL, "a ray that hits nothing came back black: it has the "
                    "scene's background colour, scene->background.");
