@@ -1157,7 +1157,7 @@ static void p3b_camera(int m, const double *in, double *out)
     }
 }
 
-enum { K_RIGHT, K_FIRST, K_FARTHEST, K_LAST, K_BLACK, NK_MODELS };
+enum { K_RIGHT, K_FIRST, K_FARTHEST, K_LAST, K_BLACK, K_NONE, NK_MODELS };
 
 /* The colour model m gives a ray in test t's scene. */
 static void p3b_colour(int m, const Test *t, const double *in, double *out)
@@ -1181,7 +1181,7 @@ static void p3b_colour(int m, const Test *t, const double *in, double *out)
         if (h[1] > tfar)
             tfar = h[1], far = s;
     }
-    int k = m == K_FIRST ? first : m == K_FARTHEST ? far : m == K_LAST ? last : best;
+    int k = m == K_FIRST ? first : m == K_FARTHEST ? far : m == K_LAST ? last : m == K_NONE ? -1 : best;
     for (int q = 0; q < 3; q++)
         out[q] = k >= 0 ? t->spheres[k].color[q] : m == K_BLACK ? 0 : t->background[q];
 }
@@ -1294,6 +1294,11 @@ static void diagnose_part3b(ProbeSet *ps, Found *f, PBFound *out)
                    "closest: each hit replaces the colour whatever its t, so a ray through two spheres "
                    "got the colour of the one listed later, behind the nearer one. Keep a hit only when "
                    "its t is smaller than the smallest so far (start that at infinity).");
+    if (out->colour == K_NONE)
+        name_cause(f, "no-hit-kept", TAG_ALL, "ray_color returns the background for every ray, even "
+                   "through a sphere's middle: no sphere's colour is ever kept. It must test every "
+                   "sphere with sphere_intersect and keep the colour of the smallest t; if that "
+                   "smallest t starts at 0, no t > 0 is ever smaller: start it at infinity.");
     if (out->colour == K_BLACK)
         name_cause(f, "background-ignored", TAG_ALL, "a ray that hits nothing came back black: it has the "
                    "scene's background colour, scene->background.");
