@@ -58,43 +58,45 @@ bool memo_find(const char *memo, const char *stage, const char *kind, const char
         h ^= (unsigned char)bytes[i];
         h *= 1099511628211u;
     }
-    /* A new entry is made under a name of its own, its bytes written, and
-     * only then renamed into place: so an entry another grading beside this
-     * one finds always has its bytes to compare, and two gradings of the
-     * same file at the same time share one entry. */
-    char fresh[1100];
-    snprintf(fresh, sizeof fresh, "%s/.new-XXXXXX", memo);
-    if (!mkdtemp(fresh) || put(fresh, "source", bytes, len) != 0) {
-        discard(fresh);
-        free(bytes);
-        return false;
-    }
-    for (int k = 0; k < MEMO_CHAIN; k++) {
+    /* An entry that is there has its bytes: a new one is made under a name
+     * of its own, its bytes written, and only then renamed into place, so
+     * two gradings of the same file at the same time share one entry. */
+    char fresh[1100] = "";
+    bool taken = false, again = false;
+    for (int k = 0; k < MEMO_CHAIN && !taken; k++) {
         snprintf(e->dir, sizeof e->dir, "%s/%s-%s-%016llx-%d", memo, stage, kind, (unsigned long long)h, k);
-        if (rename(fresh, e->dir) == 0) {
-            free(bytes);
-            return true;                /* a new entry, empty but for the bytes */
-        }
-        if (errno != EEXIST && errno != ENOTEMPTY)
-            break;
         char path[1200];
         size_t kept_len = 0;
         snprintf(path, sizeof path, "%s/source", e->dir);
         char *kept = kit_load_file(path, MEMO_SOURCE_MAX, &kept_len);
-        bool same = kept && kept_len == len && memcmp(kept, bytes, len) == 0;
-        free(kept);
-        if (same) {
-            e->found = true;
-            discard(fresh);
-            free(bytes);
-            return true;
+        if (kept) {
+            again = false;
+            e->found = kept_len == len && memcmp(kept, bytes, len) == 0;
+            free(kept);
+            if (e->found)
+                break;
+            continue;                   /* another file with the same hash */
         }
-        /* Another file with the same hash: try the next. */
+        if (!fresh[0]) {
+            snprintf(fresh, sizeof fresh, "%s/.new-XXXXXX", memo);
+            if (!mkdtemp(fresh) || put(fresh, "source", bytes, len) != 0)
+                break;
+        }
+        if (rename(fresh, e->dir) == 0)
+            taken = true;               /* a new entry, empty but for the bytes */
+        else if ((errno == EEXIST || errno == ENOTEMPTY) && !again)
+            k--, again = true;          /* made just now beside this one: compare */
+        else if (errno != EEXIST && errno != ENOTEMPTY)
+            break;
+        else
+            again = false;              /* there, but not readable: the next one */
     }
-    discard(fresh);
+    if (fresh[0] && !taken)
+        discard(fresh);
     free(bytes);
-    e->dir[0] = '\0';
-    return false;
+    if (!taken && !e->found)
+        e->dir[0] = '\0';
+    return taken || e->found;
 }
 
 bool memo_wait(const MemoEntry *e, double seconds)

@@ -6,6 +6,8 @@
 #include "check.h"            /* first: it sets the POSIX feature level */
 #include <dirent.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
 #include "../grader/memo.h"
 
 static char dir[64];          /* the memo */
@@ -142,8 +144,80 @@ static void test_no_memo(void)
     cleanup();
 }
 
+/* Entries beginning with '.': the new entries' names before they are
+ * renamed into place, which must not be left behind. */
+static int dot_entries(void)
+{
+    int n = 0;
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    while (d && (e = readdir(d)))
+        n += e->d_name[0] == '.' && strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0;
+    if (d)
+        closedir(d);
+    return n;
+}
+
+/* A grading that finds an entry another is still compiling waits for its
+ * object (memo_wait); it stops waiting when the other says it is done
+ * without one, or when the time is up. */
+static void test_wait(void)
+{
+    setup();
+    char a[128], obj[128];
+    snprintf(a, sizeof a, "%s/a.c", work);
+    snprintf(obj, sizeof obj, "%s/a.o", work);
+    write_file(a, "int w(void) { return 5; }\n");
+    write_file(obj, "OBJECT\n");
+    MemoEntry maker, finder;
+    CHECK(memo_find(dir, "part1_image_plane", "o", a, &maker) && !maker.found);
+    CHECK(memo_find(dir, "part1_image_plane", "o", a, &finder) && finder.found);
+    CHECK_EQ_INT(dot_entries(), 0);
+
+    /* Nothing yet, nothing coming: false once the time is up. */
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    CHECK(!memo_wait(&finder, 0.05));
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    double waited = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    CHECK_MSG(waited >= 0.04 && waited < 2, "waited %g s for 0.05", waited);
+
+    /* The object kept by another process a little later: true. */
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid == 0) {
+        struct timespec pause = { 0, 60000000 };
+        nanosleep(&pause, NULL);
+        _exit(memo_keep(&maker, "object.o", obj) == 0 ? 0 : 1);
+    }
+    CHECK(pid > 0);
+    CHECK(memo_wait(&finder, 10));
+    int status = 1;
+    if (pid > 0)
+        waitpid(pid, &status, 0);
+    CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    CHECK(memo_wait(&finder, 0));            /* there now: at once */
+
+    /* Done without an object (the file did not build): false at once. */
+    char b[128];
+    snprintf(b, sizeof b, "%s/b.c", work);
+    write_file(b, "int w(void) { return; }\n");
+    MemoEntry failed, later;
+    CHECK(memo_find(dir, "part1_image_plane", "o", b, &failed) && !failed.found);
+    CHECK_EQ_INT(memo_keep_text(&failed, "done", ""), 0);
+    CHECK(memo_find(dir, "part1_image_plane", "o", b, &later) && later.found);
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    CHECK(!memo_wait(&later, 10));
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    waited = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    CHECK_MSG(waited < 1, "waited %g s for a file that did not build", waited);
+    CHECK_EQ_INT(dot_entries(), 0);
+    cleanup();
+}
+
 static const CheckTest tests[] = {
     CHECK_TEST(test_same_bytes_found), CHECK_TEST(test_same_hash_other_bytes), CHECK_TEST(test_no_memo),
+    CHECK_TEST(test_wait),
 };
 
 int main(int argc, char **argv)
