@@ -389,8 +389,8 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
             name_cause(f, "pi-approximate", TAG_ALL, "the factor from degrees to radians is %s by %.2g "
                        "of itself: every answer is that of the right formula with %.10g in place of "
                        "pi / 180 = 0.017453292519943295, as if pi were %.9g. Use M_PI (raytracer.h "
-                       "defines it), not a value of pi or of pi / 180 written out.", off > 0 ? "too large" : "too small",
-                       fabs(off), k, k * 180);
+                       "defines it), not a value of pi or of pi / 180 written out.",
+                       off > 0 ? "too large" : "too small", fabs(off), k, k * 180);
         }
     }
     /* Right to float's digits only, but not every answer a float: float
