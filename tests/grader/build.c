@@ -10,6 +10,7 @@
 #include "sandbox.h"
 #include "kit/savefile.h"
 
+#include <ctype.h>
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -158,6 +159,87 @@ static void build_say(Build *b, const char *what, const char *name)
     say(b, what);
     say(b, name);
     say(b, "\n");
+}
+
+/* Whether text defines a function name: the name, as a whole word, then
+ * its parameters in parentheses, then a body's "{". */
+static bool defines_function(const char *text, const char *name)
+{
+    size_t n = strlen(name);
+    for (const char *p = strstr(text, name); p && n; p = strstr(p + 1, name)) {
+        bool word = (p == text || !(isalnum((unsigned char)p[-1]) || p[-1] == '_')) &&
+                    !(isalnum((unsigned char)p[n]) || p[n] == '_');
+        const char *q = p + n;
+        while (isspace((unsigned char)*q))
+            q++;
+        if (!word || *q != '(')
+            continue;
+        int depth = 0;
+        for (; *q; q++) {
+            depth += (*q == '(') - (*q == ')');
+            if (depth == 0)
+                break;
+        }
+        if (!*q)
+            continue;
+        for (q++; isspace((unsigned char)*q); q++)
+            ;
+        if (*q == '{')
+            return true;
+    }
+    return false;
+}
+
+void build_explain_undefined(Build *b, const char *submission, int part)
+{
+    static const char mark[] = "undefined reference to `";
+    const char *at = b->messages ? strstr(b->messages, mark) : NULL;
+    char names[3][128];
+    int nnames = 0;
+    for (; at && nnames < 3; at = strstr(at + 1, mark)) {
+        const char *from = at + sizeof mark - 1, *end = strchr(from, '\'');
+        size_t n = end ? (size_t)(end - from) : 0;
+        if (n == 0 || n >= sizeof names[0])
+            continue;
+        bool seen = false;
+        for (int k = 0; k < nnames; k++)
+            seen = seen || (strncmp(names[k], from, n) == 0 && names[k][n] == '\0');
+        if (!seen) {
+            memcpy(names[nnames], from, n);
+            names[nnames++][n] = '\0';
+        }
+    }
+    for (int k = 0; k < nnames; k++)
+        for (int p = 0; p < NPARTS; p++) {
+            char path[PATH_MAX + 100];
+            if (p == part || (size_t)snprintf(path, sizeof path, "%s/%s.c", submission, stage_names[p]) >= sizeof path)
+                continue;
+            int fd = build_open_stage(path);
+            FILE *f = fd >= 0 ? fdopen(fd, "rb") : NULL;
+            if (!f) {
+                if (fd >= 0)
+                    close(fd);
+                continue;
+            }
+            char *text = malloc(SOURCE_MAX + 1);
+            size_t len = text ? fread(text, 1, SOURCE_MAX, f) : 0;
+            fclose(f);
+            bool found = false;
+            if (text) {
+                text[len] = '\0';
+                found = defines_function(text, names[k]);
+            }
+            free(text);
+            if (!found)
+                continue;
+            char line[900];
+            snprintf(line, sizeof line, "`%s' is defined in your %s.c, but each part is graded with "
+                     "the reference's other parts, not with your other files: define %s in %s.c too "
+                     "(static, so that the two do not clash in make render)\n", names[k],
+                     stage_names[p], names[k], stage_names[part]);
+            say(b, line);
+            break;
+        }
 }
 
 /* The file was not handed to the compiler: says why, and returns 0. */

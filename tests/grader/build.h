@@ -60,6 +60,12 @@ int build_part(const BuildConfig *cfg, int part, const char *submission, Build *
                char *err, size_t errlen);
 void build_remove(Build *b);
 
+/* After a build of part that did not link: for each function the linker
+ * found undefined (up to three) that another stage file of the submission
+ * defines, adds to b->messages that each part is graded with the
+ * reference's other parts, so the helper belongs in this part's file too. */
+void build_explain_undefined(Build *b, const char *submission, int part);
+
 /* An unchecked build's first run (res) tells whether its object links:
  * when the runner says it does not, b->ok becomes false with the linker's
  * message added, and 1 is returned; when the run ended cleanly, the object

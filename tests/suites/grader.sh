@@ -386,7 +386,7 @@ if [ -x out/build/grader/runner_1 ]; then
     parity 1 link-defines-main link-libm hostile-exit
     parity 2 link-defines-other-part p2-no-half
     parity 3a link-undefined hostile-constructor hostile-segfault rw-rtiow-v1
-    parity 3b p3b-reversed
+    parity 3b p3b-reversed link-helper-elsewhere
     GRADE_NO_LOAD=1 $grade --submission solutions --weights "$all" --summary \
         >"$tmp/ref-whole.out" 2>&1
     check "the reference linked whole scores full marks on every part" \
