@@ -1281,27 +1281,27 @@ static void diagnose_part3b(ProbeSet *ps, Found *f, PBFound *out)
                    "the eye; the ray goes from the eye e TOWARDS the pixel s, (s - e) / |s - e|.");
     if (out->camera == C_AT_PIXEL || out->camera == C_AT_PIXEL_REVERSED)
         name_cause(f, "origin-at-pixel", TAG_ALL, "camera_ray starts at the pixel: the ray's origin is the eye e.");
-    if (out->colour == K_FIRST)
-        name_cause(f, "first-hit", TAG_ALL, "ray_color returns the first sphere hit in the list, not the "
-                   "closest: with the spheres listed in another order than by distance, the ray "
-                   "through the middle got the colour of a sphere behind the nearest one. Keep the "
-                   "smallest t over ALL spheres.");
-    if (out->colour == K_FARTHEST)
-        name_cause(f, "farthest-hit", TAG_ALL, "ray_color returns the farthest sphere hit: keep the SMALLEST t "
-                   "(start tmin at infinity and keep a hit only when its t is smaller).");
-    if (out->colour == K_LAST)
-        name_cause(f, "last-hit", TAG_ALL, "ray_color returns the last sphere hit in the list, not the "
-                   "closest: each hit replaces the colour whatever its t, so a ray through two spheres "
-                   "got the colour of the one listed later, behind the nearer one. Keep a hit only when "
-                   "its t is smaller than the smallest so far (start that at infinity).");
-    if (out->colour == K_NONE)
-        name_cause(f, "no-hit-kept", TAG_ALL, "ray_color returns the background for every ray, even "
-                   "through a sphere's middle: no sphere's colour is ever kept. It must test every "
-                   "sphere with sphere_intersect and keep the colour of the smallest t; if that "
-                   "smallest t starts at 0, no t > 0 is ever smaller: start it at infinity.");
-    if (out->colour == K_BLACK)
-        name_cause(f, "background-ignored", TAG_ALL, "a ray that hits nothing came back black: it has the "
-                   "scene's background colour, scene->background.");
+    /* The colour models' causes: each confirmed by every probe ray. */
+    static const struct { int model; const char *key, *text; } colour_causes[] = {
+        { K_FIRST, "first-hit", "ray_color returns the first sphere hit in the list, not the closest: "
+          "with the spheres listed in another order than by distance, the ray through the middle got "
+          "the colour of a sphere behind the nearest one. Keep the smallest t over ALL spheres." },
+        { K_FARTHEST, "farthest-hit", "ray_color returns the farthest sphere hit: keep the SMALLEST t "
+          "(start tmin at infinity and keep a hit only when its t is smaller)." },
+        { K_LAST, "last-hit", "ray_color returns the last sphere hit in the list, not the closest: each "
+          "hit replaces the colour whatever its t, so a ray through two spheres got the colour of the "
+          "one listed later, behind the nearer one. Keep a hit only when its t is smaller than the "
+          "smallest so far (start that at infinity)." },
+        { K_NONE, "no-hit-kept", "ray_color returns the background for every ray, even through a "
+          "sphere's middle: no sphere's colour is ever kept. It must test every sphere with "
+          "sphere_intersect and keep the colour of the smallest t; if that smallest t starts at 0, "
+          "no t > 0 is ever smaller: start it at infinity." },
+        { K_BLACK, "background-ignored", "a ray that hits nothing came back black: it has the scene's "
+          "background colour, scene->background." },
+    };
+    for (size_t k = 0; k < sizeof colour_causes / sizeof colour_causes[0]; k++)
+        if (out->colour == colour_causes[k].model)
+            name_cause(f, colour_causes[k].key, TAG_ALL, "%s", colour_causes[k].text);
     answers_free(&ac);
     answers_free(&ak);
 }
