@@ -284,6 +284,21 @@ static void render_main_on_crash(void)
         sigaction(sigs[k], &sa, NULL);
 }
 
+/* A scene named without its folder or ending ("wide", "wide.scene"):
+ * names the shipped scene it most likely means, when there is one. */
+static void render_main_suggest_scene(const char *path)
+{
+    struct stat st;
+    if (strchr(path, '/') || stat(path, &st) == 0)
+        return;
+    char guess[512];
+    size_t n = strlen(path);
+    bool ends = n > 6 && strcmp(path + n - 6, ".scene") == 0;
+    snprintf(guess, sizeof guess, "labs/scenes/%s%s", path, ends ? "" : ".scene");
+    if (stat(guess, &st) == 0 && S_ISREG(st.st_mode))
+        fprintf(stderr, "render: the kit's scenes are in labs/scenes: SCENE=%s\n", guess);
+}
+
 int main(int argc, char **argv)
 {
     RenderArgs args;
@@ -295,6 +310,7 @@ int main(int argc, char **argv)
     Scene scene;
     if (scene_load(&scene, args.scene_path, err, sizeof err) < 0) {
         fprintf(stderr, "render: %s\n", err);
+        render_main_suggest_scene(args.scene_path);
         return 1;
     }
     if (args.nx > 0) {

@@ -445,6 +445,11 @@ EOF2
     check "... and writes no picture" [ ! -e "$tmp/crashes.png" ]
 fi
 
+# A shipped scene named without its folder: the message says where it is.
+run "$RENDER" wide --quiet -o "$tmp/wide-typo.png"
+check "a scene named 'wide': exit $status, and the message names labs/scenes/wide.scene" \
+    sh -c "[ $status -eq 1 ] && grep -q 'SCENE=labs/scenes/wide.scene' '$tmp/stderr' && [ ! -e '$tmp/wide-typo.png' ]"
+
 # images of different sizes: a clear message, exit 1
 run "$RENDER" labs/scenes/default.scene --size 60x90 --quiet -o "$tmp/small.png"
 run "$COMPARE" "$tmp/small.png" "$tmp/ref.png"
