@@ -242,6 +242,24 @@ void build_explain_undefined(Build *b, const char *submission, int part)
         }
 }
 
+/* Whether the file at path is UTF-16 text (what some Windows editors save
+ * as "Unicode"): a byte-order mark FF FE or FE FF, or, without one, every
+ * other byte of its start 0 as in ASCII text so saved. */
+static bool utf16_text(const char *path)
+{
+    unsigned char buf[512];
+    FILE *f = fopen(path, "rb");
+    size_t n = f ? fread(buf, 1, sizeof buf, f) : 0;
+    if (f)
+        fclose(f);
+    if (n >= 2 && ((buf[0] == 0xff && buf[1] == 0xfe) || (buf[0] == 0xfe && buf[1] == 0xff)))
+        return true;
+    size_t zeros[2] = { 0, 0 };
+    for (size_t k = 0; k < n; k++)
+        zeros[k % 2] += buf[k] == 0;
+    return n >= 16 && (zeros[0] == n / 2 || zeros[1] == n / 2);
+}
+
 /* The file was not handed to the compiler: says why, and returns 0. */
 static int not_compiled(Build *b, const char *what, const char *name)
 {
@@ -703,6 +721,11 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
         }
         if (copy_fd(in, path, to, SOURCE_MAX, cerr, sizeof cerr))
             return not_compiled(b, cerr, "");
+        if (utf16_text(to)) {
+            snprintf(cerr, sizeof cerr, "%s is saved as UTF-16 (what some Windows editors call "
+                     "\"Unicode\"), which C compilers do not read: save it as UTF-8", cfile);
+            return not_compiled(b, "refused: ", cerr);
+        }
         if (scan_includes(cfg, b, to, src)) {
             b->refused = true;          /* scan_includes said why */
             return 0;

@@ -482,6 +482,9 @@ ln -s "$root/solutions/part1_image_plane.c" "$links/stage-links/part1_image_plan
 ln -s "$root/out/tests/private/marker.c" "$links/stage-links/part2_pixel_coordinates.c"
 mkfifo "$links/stage-links/part3a_sphere_intersect.c"
 ln -s "$root/solutions" "$links/labs-link/labs"
+mkdir -p "$links/utf16"
+cp solutions/part2_pixel_coordinates.c solutions/part3a_sphere_intersect.c "$links/utf16/"
+printf '\377\376i\000n\000t\000 \000x\000;\000\n\000' >"$links/utf16/part1_image_plane.c"
 mkdir -p "$links/too-large"
 cp solutions/part2_pixel_coordinates.c solutions/part3a_sphere_intersect.c "$links/too-large/"
 { cat solutions/part1_image_plane.c; awk 'BEGIN { while (n++ < 20000) print "/* padding padding padding padding padding padding */" }'; } \
@@ -502,6 +505,9 @@ check "a stage file over 1 MiB is refused as too large, by its own name" \
     grep -q 'refused: too large: part1_image_plane.c is [0-9]* bytes; a stage file may be at most 1048576 (1 MiB)' \
     "$tmp/grades-links/too-large.json"
 check "... and costs that part alone" grep -q '^too-large,0,20,30,' "$tmp/grades-links/gradebook.csv"
+check "a stage file saved as UTF-16 is refused with what to do, not the compiler's stray bytes" \
+    sh -c "grep -q 'refused: part1_image_plane.c is saved as UTF-16 (what some Windows editors call ..Unicode..), which C compilers do not read: save it as UTF-8' '$tmp/grades-links/utf16.json' &&
+           grep -q '^utf16,0,20,30,' '$tmp/grades-links/gradebook.csv'"
 check "a labs folder that is a link (to the reference) is not graded: 0 points" \
     grep -q '^labs-link,0,0,0,0,0,points lost$' "$tmp/grades-links/gradebook.csv"
 [ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/links.out" "$tmp/grades-links/gradebook.csv"
