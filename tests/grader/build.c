@@ -7,6 +7,7 @@
 #include "memo.h"
 #include "grader.h"
 #include "include_scan.h"
+#include "linkmsg.h"
 #include "sandbox.h"
 #include "kit/savefile.h"
 
@@ -192,23 +193,8 @@ static bool defines_function(const char *text, const char *name)
 
 void build_explain_undefined(Build *b, const char *submission, int part)
 {
-    static const char mark[] = "undefined reference to `";
-    const char *at = b->messages ? strstr(b->messages, mark) : NULL;
-    char names[3][128];
-    int nnames = 0;
-    for (; at && nnames < 3; at = strstr(at + 1, mark)) {
-        const char *from = at + sizeof mark - 1, *end = strchr(from, '\'');
-        size_t n = end ? (size_t)(end - from) : 0;
-        if (n == 0 || n >= sizeof names[0])
-            continue;
-        bool seen = false;
-        for (int k = 0; k < nnames; k++)
-            seen = seen || (strncmp(names[k], from, n) == 0 && names[k][n] == '\0');
-        if (!seen) {
-            memcpy(names[nnames], from, n);
-            names[nnames++][n] = '\0';
-        }
-    }
+    char names[3][LINKMSG_NAME_MAX];
+    int nnames = b->messages ? linkmsg_undefined(b->messages, names, 3) : 0;
     for (int k = 0; k < nnames; k++)
         for (int p = 0; p < NPARTS; p++) {
             char path[PATH_MAX + 100];
