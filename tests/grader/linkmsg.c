@@ -39,8 +39,9 @@ int linkmsg_undefined(const char *text, char names[][LINKMSG_NAME_MAX], int max)
         size_t n = len < sizeof copy - 1 ? len : sizeof copy - 1;
         memcpy(copy, line, n);
         copy[n] = '\0';
-        if ((at = strstr(copy, "undefined reference to `"))) {             /* GNU ld, gold */
-            at += strlen("undefined reference to `");
+        if ((at = strstr(copy, "undefined reference to ")) &&               /* GNU ld, gold */
+            (at[strlen("undefined reference to ")] == '`' || at[strlen("undefined reference to ")] == '\'')) {
+            at += strlen("undefined reference to ") + 1;
             const char *q = strchr(at, '\'');
             if (q && identifier(at) == (size_t)(q - at))
                 add(names, &count, max, at, (size_t)(q - at));

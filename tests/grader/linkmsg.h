@@ -1,7 +1,8 @@
 /*
  * linkmsg.h - the functions a linker's message says are undefined, in the
- * words of the linkers students' machines have: GNU ld and gold
- * ("undefined reference to `NAME'"), LLVM's lld ("undefined symbol: NAME")
+ * words of the linkers students' machines have: GNU ld ("undefined
+ * reference to `NAME'") and gold (the same with 'NAME'), LLVM's lld
+ * ("undefined symbol: NAME")
  * and Apple's ld ("\"_NAME\", referenced from:", C names with their
  * leading underscore).
  */
