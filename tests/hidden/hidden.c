@@ -2,8 +2,9 @@
  * hidden.c - the hidden tests (visibility "after_published"): a few fixed
  * cases and cases drawn from a seed at grading time, with expected values
  * from the oracle.  The instructor's kit only: never in the student kit.
- * The seed comes from tests/weights.conf and the submission's own files, so
- * a regrade of the same files draws the same cases.
+ * The seed comes from tests/weights.conf alone: every submission meets the
+ * same cases, so a regrade draws them again and a resubmission that changes
+ * only a comment draws no others.
  */
 #include "../oracle/testgen.h"
 #include "../oracle/oracle.h"

@@ -56,6 +56,23 @@ for seed in 1 2 3 4 5 30 31; do
         grep -q "^summary 0 0 $max3a 0 0 0 5 " "$tmp/seed.out"
 done
 
+# The hidden cases are the same for every submission: a file that differs
+# only by a comment meets the same inputs (drawn from the files too, it met
+# others, and a resubmission could fish for easier ones).
+if [ -d tests/hidden ]; then
+    mkdir -p "$tmp/hidden-a" "$tmp/hidden-b"
+    cp labs/part3a_sphere_intersect.c "$tmp/hidden-a/"
+    { cat labs/part3a_sphere_intersect.c; echo '/* handed in again */'; } >"$tmp/hidden-b/part3a_sphere_intersect.c"
+    chmod -R a+rX "$tmp/hidden-a" "$tmp/hidden-b"
+    for s in a b; do
+        $grade --submission "$tmp/hidden-$s" --part 3a --results "$tmp/hidden-$s.json" --quiet >/dev/null 2>&1
+        grep -o 'input: [^\\]*' "$tmp/hidden-$s.json" >"$tmp/hidden-$s.inputs"
+    done
+    check "a resubmission that changes only a comment meets the same hidden cases ($(wc -l <"$tmp/hidden-a.inputs" | tr -d ' ') inputs)" \
+        sh -c "[ -s '$tmp/hidden-a.inputs' ] && cmp -s '$tmp/hidden-a.inputs' '$tmp/hidden-b.inputs' &&
+               grep -q 'hidden' '$tmp/hidden-a.json'"
+fi
+
 $grade --submission labs --weights "$all" --summary >"$tmp/labs.out" 2>&1
 status=$?
 check "the skeleton loses points (exit $status, want 1)" [ "$status" -eq 1 ]
