@@ -17,6 +17,7 @@
 #include <stdarg.h>
 #include <stdatomic.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
@@ -26,6 +27,8 @@
 #define RENDER_RUN           16     /* pixels whose rays are made before their colours */
 #define RENDER_PROGRESS_AFTER 1.0   /* seconds before the progress line appears */
 #define RENDER_PROGRESS_EVERY 0.25  /* seconds between its updates */
+#define RENDER_STALLED       10.0   /* seconds with no row drawn before a word on endless loops
+                                       (RENDER_STALLED_SECONDS sets it, for the kit's tests) */
 
 
 /* What the threads share: the inputs, and the counters of rows taken and drawn. */
@@ -165,8 +168,12 @@ static void *render_worker(void *arg)
  * run for more than a second, and clears the line at the end.  Never fails. */
 static void render_wait(RenderJob *job, bool show, double start)
 {
-    bool shown = false;
-    double last = 0;
+    bool shown = false, stall_told = false;
+    double last = 0, last_row_at = start, stalled = RENDER_STALLED;
+    int rows_seen = 0;
+    const char *env = getenv("RENDER_STALLED_SECONDS");
+    if (env && atof(env) > 0)
+        stalled = atof(env);
     pthread_mutex_lock(&job->lock);
     while (job->running > 0) {
         if (!show) {
@@ -185,6 +192,15 @@ static void render_wait(RenderJob *job, bool show, double start)
         }
         pthread_cond_timedwait(&job->finished, &job->lock, &until);
         double now = render_now();
+        int rows = atomic_load(&job->rows_done);
+        if (rows != rows_seen)
+            rows_seen = rows, last_row_at = now;
+        if (job->running > 0 && !stall_told && now - last_row_at > stalled) {
+            fprintf(stderr, "\r  no row finished in the last %.0f s: if the code loops forever, stop it "
+                            "with Ctrl-C (make grade stops each test after a few seconds, and names "
+                            "the ones that do not finish)\n", stalled);
+            stall_told = true;
+        }
         if (job->running > 0 && now - start > RENDER_PROGRESS_AFTER
             && now - last >= RENDER_PROGRESS_EVERY * 0.9) {
             int percent = (int)(100.0 * atomic_load(&job->rows_done) / job->scene->ny);

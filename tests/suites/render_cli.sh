@@ -445,6 +445,41 @@ EOF2
     check "... and writes no picture" [ ! -e "$tmp/crashes.png" ]
 fi
 
+# Code that loops forever: on a terminal, once no row has been finished for
+# a while (RENDER_STALLED_SECONDS here, 10 s by default), a line says how to
+# stop it.  Run through util-linux's script, which gives it a terminal,
+# where there is one.
+if [ -d solutions ] && script --version 2>/dev/null | grep -q util-linux; then
+    mkdir -p "$tmp/loops"
+    cp solutions/*.c "$tmp/loops/"
+    cat >"$tmp/loops/part3b_ray_color.c" <<'EOF2'
+#include "raytracer.h"
+
+Ray camera_ray(Vec3 eye, Vec3 pixel)
+{
+    Ray ray = { eye, vec3_normalize(vec3_sub(pixel, eye)) };
+    return ray;
+}
+
+/* Forever, for the pixels right of the centre. */
+Vec3 ray_color(const Scene *scene, const Ray *ray)
+{
+    volatile int forever = 1;
+    while (ray->direction.x > 0 && forever)
+        ;
+    return scene->background;
+}
+EOF2
+    loops_bin=out/build/sub/$(printf '%s' "$tmp/loops" | tr / _)/render
+    run ${MAKE:-make} --no-print-directory "$loops_bin" SUBMISSION="$tmp/loops"
+    RENDER_STALLED_SECONDS=1 script -qec "timeout 3 $loops_bin labs/scenes/default.scene --size 40x30 -o $tmp/loops.png" \
+        /dev/null </dev/null >"$tmp/loops.out" 2>&1
+    check "code that loops forever: on a terminal, a line says how to stop it" \
+        grep -q 'no row finished in the last 1 s: if the code loops forever, stop it with Ctrl-C' "$tmp/loops.out"
+else
+    echo "   skipped: the endless-loop line (util-linux's script, which gives a terminal, is not here)"
+fi
+
 # A shipped scene named without its folder: the message says where it is.
 run "$RENDER" wide --quiet -o "$tmp/wide-typo.png"
 check "a scene named 'wide': exit $status, and the message names labs/scenes/wide.scene" \
