@@ -214,8 +214,24 @@ static void test_judge_every_spelling(void)
     }
 }
 
+/* A kit header named by a path from the student's folders is refused with
+ * the way to name it. */
+static void test_header_by_path(void)
+{
+    setup();
+    char why[400] = "";
+    const char *text = "#include \"../labs/raytracer.h\"\n";
+    CHECK(include_scan(text, strlen(text), dir, why, sizeof why) == 1);
+    CHECK_MSG(strstr(why, "write #include \"raytracer.h\", as the skeleton does") != NULL, "%s", why);
+    text = "#include \"../secret.h\"\n";
+    why[0] = '\0';
+    CHECK(include_scan(text, strlen(text), dir, why, sizeof why) == 1);
+    CHECK_MSG(strstr(why, "climbs out") && !strstr(why, "skeleton"), "%s", why);
+    teardown();
+}
+
 static const CheckTest tests[] = {
-    CHECK_TEST(test_judge_every_spelling),
+    CHECK_TEST(test_judge_every_spelling), CHECK_TEST(test_header_by_path),
     CHECK_TEST(test_devices_by_name), CHECK_TEST(test_what_names_lead_to), CHECK_TEST(test_directive_spellings),
     CHECK_TEST(test_compile_dir_under_dev), CHECK_TEST(test_path_below),
     CHECK_TEST(test_passes),          CHECK_TEST(test_not_at_line_start),
