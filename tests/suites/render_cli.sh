@@ -472,8 +472,8 @@ Vec3 ray_color(const Scene *scene, const Ray *ray)
 EOF2
     loops_bin=out/build/sub/$(printf '%s' "$tmp/loops" | tr / _)/render
     run ${MAKE:-make} --no-print-directory "$loops_bin" SUBMISSION="$tmp/loops"
-    RENDER_STALLED_SECONDS=1 script -qec "timeout 3 $loops_bin labs/scenes/default.scene --size 40x30 -o $tmp/loops.png" \
-        /dev/null </dev/null >"$tmp/loops.out" 2>&1
+    loops_cmd="timeout 3 $loops_bin labs/scenes/default.scene --size 40x30 -o $tmp/loops.png"  # portable: util-linux only
+    RENDER_STALLED_SECONDS=1 script -qec "$loops_cmd" /dev/null </dev/null >"$tmp/loops.out" 2>&1  # portable: util-linux only
     check "code that loops forever: on a terminal, a line says how to stop it" \
         grep -q 'no row finished in the last 1 s: if the code loops forever, stop it with Ctrl-C' "$tmp/loops.out"
 else
