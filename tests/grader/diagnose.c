@@ -491,9 +491,9 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
 
 /* Models of each coordinate, one at a time: x depends on i, nx, w; y on
  * j, ny, h; z on d. */
-enum { X_RIGHT, X_CORNER, X_FAR_CORNER, X_NOT_CENTRED, X_SWAPPED, X_INT, X_NM1, X_SQUARE, NX_MODELS };
+enum { X_RIGHT, X_CORNER, X_FAR_CORNER, X_NOT_CENTRED, X_SWAPPED, X_INT, X_NM1, X_SQUARE, X_FROM_J, NX_MODELS };
 enum { Y_RIGHT, Y_BOTTOM, Y_CORNER, Y_FAR_CORNER, Y_BOTTOM_CORNER, Y_NX, Y_NOT_CENTRED, Y_SWAPPED,
-       Y_INT, Y_NM1, Y_BOTTOM_NM1, NY_MODELS };
+       Y_INT, Y_NM1, Y_BOTTOM_NM1, Y_FROM_I, NY_MODELS };
 enum { Z_RIGHT, Z_PLUS, Z_ONE, NZ_MODELS };
 
 static double p2_x(int m, const double *in)
@@ -507,6 +507,7 @@ static double p2_x(int m, const double *in)
     case X_SWAPPED:     return -h / 2 + h * (i + 0.5) / nx;
     case X_NM1:         return -w / 2 + w * i / (nx - 1);         /* nx - 1 steps: edge to edge */
     case X_SQUARE:      return h * (i + 0.5 - nx / 2) / in[3];    /* in units of h / ny */
+    case X_FROM_J:      return -w / 2 + w * (in[1] + 0.5) / nx;   /* i and j swapped */
     default:            return -w / 2;
     }
 }
@@ -525,6 +526,7 @@ static double p2_y(int m, const double *in)
     case Y_SWAPPED:       return w / 2 - w * (j + 0.5) / ny;
     case Y_NM1:           return h / 2 - h * j / (ny - 1);
     case Y_BOTTOM_NM1:    return -h / 2 + h * j / (ny - 1);
+    case Y_FROM_I:        return h / 2 - h * (in[0] + 0.5) / ny;  /* i and j swapped */
     default:              return -h / 2;
     }
 }
@@ -630,6 +632,10 @@ static void diagnose_part2(ProbeSet *ps, Found *f, P2Found *out)
     if (x == X_NOT_CENTRED || y == Y_NOT_CENTRED)
         name_cause(f, "not-centred", TAG_ALL, "the plane is not centred on the axis: x runs from -w/2 to w/2 "
                    "(and y from -h/2 to h/2), not from 0.");
+    if (x == X_FROM_J && y == Y_FROM_I)
+        name_cause(f, "i-j-swapped", TAG_ALL, "i and j are swapped: i is the column, counted from the "
+                   "left, and gives x; j is the row, counted from the top, and gives y (pixel (i, j) "
+                   "as (x, y), not as (row, column)).");
     if (x == X_SWAPPED || y == Y_SWAPPED)
         name_cause(f, "w-h-swapped", TAG_ALL, "w and h are swapped: x spans the width w (with nx columns), "
                    "y the height h (with ny rows).");
