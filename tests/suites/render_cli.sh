@@ -413,13 +413,12 @@ check "make render SUBMISSION=<no such folder> is refused (exit $status), and dr
     sh -c "[ $status -eq 2 ] && grep -q 'SUBMISSION=$tmp/no-such-folder is not a directory' '$tmp/stdout' &&
            [ ! -e '$tmp/typo.png' ]"
 
-# Code of the parts that crashes while drawing: the renderer says where
-# and what, and still ends by the signal (make reports it); nothing is
-# written.  It once ended with the shell's "Segmentation fault" alone.
-if [ -d solutions ]; then
-    mkdir -p "$tmp/crashes"
-    cp solutions/*.c "$tmp/crashes/"
-    cat >"$tmp/crashes/part3b_ray_color.c" <<'EOF2'
+# misbehaving DIR STATEMENT: a submission in DIR, the reference's but for a
+# Part 3b whose ray_color runs STATEMENT for the pixels right of the centre.
+misbehaving() {
+    mkdir -p "$1"
+    cp solutions/*.c "$1/"
+    cat >"$1/part3b_ray_color.c" <<EOF2
 #include <stddef.h>
 #include "raytracer.h"
 
@@ -429,15 +428,21 @@ Ray camera_ray(Vec3 eye, Vec3 pixel)
     return ray;
 }
 
-/* Through a NULL pointer, for the pixels right of the centre. */
 Vec3 ray_color(const Scene *scene, const Ray *ray)
 {
-    volatile int *nowhere = NULL;
-    if (ray->direction.x > 0)
-        *nowhere = 1;
+    if (ray->direction.x > 0) {
+        $2
+    }
     return scene->background;
 }
 EOF2
+}
+
+# Code of the parts that crashes while drawing: the renderer says where
+# and what, and still ends by the signal (make reports it); nothing is
+# written.  It once ended with the shell's "Segmentation fault" alone.
+if [ -d solutions ]; then
+    misbehaving "$tmp/crashes" '*(volatile int *)NULL = 1;'
     run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/crashes" SIZE=40x30 OUT="$tmp/crashes.png"
     check "code that crashes while drawing: the renderer says where and what (exit $status)" \
         sh -c "[ $status -ne 0 ] &&
@@ -450,26 +455,7 @@ fi
 # stop it.  Run through util-linux's script, which gives it a terminal,
 # where there is one.
 if [ -d solutions ] && script --version 2>/dev/null | grep -q util-linux; then
-    mkdir -p "$tmp/loops"
-    cp solutions/*.c "$tmp/loops/"
-    cat >"$tmp/loops/part3b_ray_color.c" <<'EOF2'
-#include "raytracer.h"
-
-Ray camera_ray(Vec3 eye, Vec3 pixel)
-{
-    Ray ray = { eye, vec3_normalize(vec3_sub(pixel, eye)) };
-    return ray;
-}
-
-/* Forever, for the pixels right of the centre. */
-Vec3 ray_color(const Scene *scene, const Ray *ray)
-{
-    volatile int forever = 1;
-    while (ray->direction.x > 0 && forever)
-        ;
-    return scene->background;
-}
-EOF2
+    misbehaving "$tmp/loops" 'for (volatile int forever = 1; forever;) ;'
     loops_bin=out/build/sub/$(printf '%s' "$tmp/loops" | tr / _)/render
     run ${MAKE:-make} --no-print-directory "$loops_bin" SUBMISSION="$tmp/loops"
     loops_cmd="timeout 3 $loops_bin labs/scenes/default.scene --size 40x30 -o $tmp/loops.png"  # portable: util-linux only
