@@ -58,6 +58,7 @@ static const char *const style =
     "break-inside:avoid;page-break-inside:avoid}\n"
     "figure.case{margin:.3em 0}\n"
     "svg.fig{max-width:100%;height:auto;border:1px solid #e4e4e4}\n"
+    "svg.fig text[font-weight=bold]{paint-order:stroke;stroke:#fff;stroke-width:3px;stroke-linejoin:round}\n"
     ".tag{display:inline-block;font-size:.78em;background:#eee;border-radius:3px;padding:0 .4em;"
     "margin-left:.4em;color:#444;font-weight:normal}\n"
     ".failword{color:#b42318}\n"
