@@ -80,8 +80,11 @@ int kit_save_file(const char *path, const void *data, size_t n, char *err, size_
 char *kit_load_file(const char *path, size_t max, size_t *len)
 {
     FILE *f = fopen(path, "rb");
-    if (!f)
-        return NULL;
+    return f ? kit_load_stream(f, max, len) : NULL;
+}
+
+char *kit_load_stream(FILE *f, size_t max, size_t *len)
+{
     struct stat st;
     char *buf = NULL;
     size_t n = 0;

@@ -6,6 +6,7 @@
 #define KIT_SAVEFILE_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 /* Writes n bytes of data to a temporary file beside path, gives it the mode
  * a new file would get (0666 less the umask), closes it and renames it over
@@ -18,5 +19,9 @@ int kit_save_file(const char *path, const void *data, size_t n, char *err, size_
  * opened, is not a regular file, holds more than max bytes, changed while
  * it was read, or memory runs out.  (Text to parse: text_read_file.) */
 char *kit_load_file(const char *path, size_t max, size_t *len);
+
+/* The same from a stream already open (one opened with care, say: no
+ * links), which it closes. */
+char *kit_load_stream(FILE *f, size_t max, size_t *len);
 
 #endif

@@ -202,19 +202,11 @@ void build_explain_undefined(Build *b, const char *submission, int part)
                 continue;
             int fd = build_open_stage(path);
             FILE *f = fd >= 0 ? fdopen(fd, "rb") : NULL;
-            if (!f) {
-                if (fd >= 0)
-                    close(fd);
-                continue;
-            }
-            char *text = malloc(SOURCE_MAX + 1);
-            size_t len = text ? fread(text, 1, SOURCE_MAX, f) : 0;
-            fclose(f);
-            bool found = false;
-            if (text) {
-                text[len] = '\0';
-                found = defines_function(text, names[k]);
-            }
+            if (!f && fd >= 0)
+                close(fd);
+            size_t len = 0;
+            char *text = f ? kit_load_stream(f, SOURCE_MAX, &len) : NULL;
+            bool found = text && defines_function(text, names[k]);
             free(text);
             if (!found)
                 continue;
@@ -228,22 +220,18 @@ void build_explain_undefined(Build *b, const char *submission, int part)
         }
 }
 
-/* Whether the file at path is UTF-16 text (what some Windows editors save
+/* Whether the n bytes of text are UTF-16 (what some Windows editors save
  * as "Unicode"): a byte-order mark FF FE or FE FF, or, without one, every
- * other byte of its start 0 as in ASCII text so saved. */
-static bool utf16_text(const char *path)
+ * other byte of the first 512 a 0, as in ASCII text so saved. */
+static bool utf16_text(const char *text, size_t n)
 {
-    unsigned char buf[512];
-    FILE *f = fopen(path, "rb");
-    size_t n = f ? fread(buf, 1, sizeof buf, f) : 0;
-    if (f)
-        fclose(f);
-    if (n >= 2 && ((buf[0] == 0xff && buf[1] == 0xfe) || (buf[0] == 0xfe && buf[1] == 0xff)))
+    const unsigned char *u = (const unsigned char *)text;
+    if (n >= 2 && ((u[0] == 0xff && u[1] == 0xfe) || (u[0] == 0xfe && u[1] == 0xff)))
         return true;
-    size_t zeros[2] = { 0, 0 };
-    for (size_t k = 0; k < n; k++)
-        zeros[k % 2] += buf[k] == 0;
-    return n >= 16 && (zeros[0] == n / 2 || zeros[1] == n / 2);
+    size_t zeros[2] = { 0, 0 }, m = n < 512 ? n : 512;
+    for (size_t k = 0; k < m; k++)
+        zeros[k % 2] += u[k] == 0;
+    return m >= 16 && (zeros[0] == m / 2 || zeros[1] == m / 2);
 }
 
 /* The file was not handed to the compiler: says why, and returns 0. */
@@ -364,20 +352,14 @@ static const char *judge_kit_file(const char *name, void *ctx)
     return inside_kit(k->cfg, k->b, name) ? "which is part of the grader" : NULL;
 }
 
-/* Before compiling: refuses a stage file (copied to path) that names to
- * the preprocessor a file of the kit, a device, a pipe or a system file
- * (include_scan.h); 1 with a message, or 0. */
-static int scan_includes(const BuildConfig *cfg, Build *b, const char *path, const char *dir)
+/* Before compiling: refuses a stage file (its n bytes of text, copied into
+ * dir) that names to the preprocessor a file of the kit, a device, a pipe
+ * or a system file (include_scan.h); 1 with a message, or 0. */
+static int scan_includes(const BuildConfig *cfg, Build *b, const char *text, size_t n, const char *dir)
 {
-    FILE *f = fopen(path, "rb");
-    char *text = malloc(SOURCE_MAX + 1);
-    size_t n = f && text ? fread(text, 1, SOURCE_MAX, f) : 0;
-    if (f)
-        fclose(f);
     char why[400], line[460];
     KitJudge kit = { cfg, b };
-    int refused = text ? include_scan_judged(text, n, dir, judge_kit_file, &kit, why, sizeof why) : 0;
-    free(text);
+    int refused = include_scan_judged(text, n, dir, judge_kit_file, &kit, why, sizeof why);
     if (refused) {
         snprintf(line, sizeof line, "refused: %s\n", why);
         say(b, line);
@@ -707,12 +689,21 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
         }
         if (copy_fd(in, path, to, SOURCE_MAX, cerr, sizeof cerr))
             return not_compiled(b, cerr, "");
-        if (utf16_text(to)) {
+        /* The copy, read once for what must not reach the compiler. */
+        size_t n = 0;
+        char *text = kit_load_file(to, SOURCE_MAX, &n);
+        if (!text) {
+            snprintf(cerr, sizeof cerr, "%s: its copy cannot be read back", cfile);
+            return not_compiled(b, "cannot read ", cerr);
+        }
+        bool utf16 = utf16_text(text, n), refused = !utf16 && scan_includes(cfg, b, text, n, src);
+        free(text);
+        if (utf16) {
             snprintf(cerr, sizeof cerr, "%s is saved as UTF-16 (what some Windows editors call "
                      "\"Unicode\"), which C compilers do not read: save it as UTF-8", cfile);
             return not_compiled(b, "refused: ", cerr);
         }
-        if (scan_includes(cfg, b, to, src)) {
+        if (refused) {
             b->refused = true;          /* scan_includes said why */
             return 0;
         }

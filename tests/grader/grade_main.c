@@ -159,7 +159,6 @@ static const char *store_dir(void)
     return dir;
 }
 
-/* Whether dir holds a stage file of any part. */
 /* In the student kit, whose tests/grader/shipped holds the headers as the
  * kit shipped them: says on stderr which of labs/raytracer.h and
  * labs/vec3.h a student has changed.  Instructors grade the stage files
@@ -186,6 +185,7 @@ static void warn_changed_headers(const char *root)
     }
 }
 
+/* Whether dir holds a stage file of any part. */
 static bool holds_stage_file(const char *dir)
 {
     for (int p = 0; p < NPARTS; p++) {

@@ -359,11 +359,7 @@ static void failures(Markup *m, const Grade *g)
         mk_printf(m, "<h3 id=\"part-%s\">", part_label(p));
         mk_text(m, part_title(p));
         mk_printf(m, ": %s / %s</h3>\n", points_text(g->core[p]).s, points_text(g->core_max[p]).s);
-        bool built = true;
-        for (int k = 0; k < g->tests->n; k++)
-            if (g->tests->tests[k].part == p && !g->results[k].ran && g->build_messages[p]
-                && g->build_messages[p][0])
-                built = false;
+        bool built = g->built[p];
         if (!built) {
             /* The grader's own words when it did not hand the file to the
              * compiler (missing, unreadable, a link, a kit file included...). */
