@@ -265,6 +265,18 @@ static char *rest_of_line(char *s)
     return s;
 }
 
+/* Copies the rest of the line s into dst, of size n; false when it does
+ * not fit (a name or hint cut short would mislead). */
+static bool take_text(char *dst, size_t n, char *s)
+{
+    const char *text = rest_of_line(s);
+    size_t len = strlen(text);
+    if (len >= n)
+        return false;
+    memcpy(dst, text, len + 1);
+    return true;
+}
+
 int tests_read(TestList *list, const char *path, bool hidden, char *err, size_t errlen)
 {
     FILE *f = fopen(path, "r");
@@ -309,9 +321,11 @@ int tests_read(TestList *list, const char *path, bool hidden, char *err, size_t 
         if (!t)
             BAD("expected 'test'");
         if (strncmp(p, "name ", 5) == 0) {
-            snprintf(t->name, sizeof t->name, "%s", rest_of_line(p + 5));
+            if (!take_text(t->name, sizeof t->name, p + 5))
+                BAD("name longer than 127 bytes");
         } else if (strncmp(p, "note ", 5) == 0) {
-            snprintf(t->note, sizeof t->note, "%s", rest_of_line(p + 5));
+            if (!take_text(t->note, sizeof t->note, p + 5))
+                BAD("note longer than 159 bytes");
         } else if (strncmp(p, "background", 10) == 0) {
             p += 10;
             if (get_numbers(&p, t->background, 3))
@@ -356,7 +370,8 @@ int tests_read(TestList *list, const char *path, bool hidden, char *err, size_t 
             p += 4;
             if (get_numbers(&p, h->out, kind_out[t->kind]))
                 BAD("hint needs the mistake's outputs, then | and its text");
-            snprintf(h->text, sizeof h->text, "%s", rest_of_line(p));
+            if (!take_text(h->text, sizeof h->text, p))
+                BAD("hint text longer than 159 bytes");
         } else if (strncmp(p, "end", 3) == 0) {
             if (t->ncases == 0)
                 BAD("a test without cases");

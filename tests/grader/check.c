@@ -211,28 +211,55 @@ static void describe_case(Text *t, const Test *test, int index, const Case *c, c
     say(t, "\n");
 }
 
+/* Whether a test the same code passed (one of passed[0 .. npassed-1])
+ * rules out the mistake of this hint text: a case of it has the hint, so
+ * there the mistake answers wrongly, and the code answered right. */
+static bool ruled_out(const char *text, const Test *const *passed, int npassed)
+{
+    for (int k = 0; k < npassed; k++)
+        for (int c = 0; c < passed[k]->ncases; c++)
+            for (int h = 0; h < passed[k]->cases[c].nhints; h++)
+                if (strcmp(passed[k]->cases[c].hints[h].text, text) == 0)
+                    return true;
+    return false;
+}
+
+/* Whether one of the tests passed has a case whose certain answer is a
+ * hit: code that passed it is not code that misses every ray. */
+static bool hits_right(const Test *const *passed, int npassed)
+{
+    for (int k = 0; k < npassed; k++)
+        for (int c = 0; c < passed[k]->ncases; c++)
+            if (kind_is_hit(passed[k]->kind) && passed[k]->cases[c].want[0] == 1 &&
+                !(passed[k]->cases[c].flags & CASE_EITHER_HIT))
+                return true;
+    return false;
+}
+
 /* Parts 4 and 5: the known mistake that explains every answer of the test.
  * A mistake explains a case when the answer there is the mistake's output
  * (a hint of that text on the case) or, where the mistake gives the right
  * answer (no hint of that text), the right answer; it must explain every
  * case answered, and be wrong somewhere.  That mistake when it is the only
- * one, or NULL: when none or several fit, none is confirmed, and none is
- * named. */
-static const char *flat_diagnosis(const Test *test, const double (*got)[CASE_MAX_OUT],
-                                  const bool *ok, int answered)
+ * one.  When several fit, the tests of the part that the code passed may
+ * tell them apart: a mistake that would have failed one of them is dropped,
+ * and the one left, if one is, is named.  (Only then: a mistake is a model
+ * of many ways to write it, the student's way may differ from it elsewhere,
+ * and a test it alone explains names it whatever the other tests say.)
+ * NULL when none is confirmed. */
+static const char *flat_mistake(const Test *test, const double (*got)[CASE_MAX_OUT],
+                                const bool *ok, int answered, const Test *const *passed, int npassed)
 {
-    /* First a fact rather than a mistake: every answer the same miss (a
-     * skeleton's, or a sign that puts every hit behind the ray). */
-    bool all_miss = answered > 0;
-    for (int c = 0; c < answered; c++)
-        all_miss = all_miss && got[c][0] == 0;
-    if (all_miss)
-        return "every case of this test was answered as a miss, also where the ray plainly hits";
-    const char *found = NULL;
+    enum { MAX_FIT = 16 };
+    const char *fit[MAX_FIT];
+    int nfit = 0;
     for (int c0 = 0; c0 < answered; c0++) {
         for (int h0 = 0; h0 < test->cases[c0].nhints; h0++) {
             const char *text = test->cases[c0].hints[h0].text;
-            if (found && strcmp(found, text) == 0)
+            bool seen = false;
+            for (int k = 0; k < nfit && !seen; k++)
+                seen = strcmp(fit[k], text) == 0;
+            if (seen)
                 continue;
             bool explains = true, wrong_somewhere = false;
             for (int c = 0; c < answered && explains; c++) {
@@ -249,13 +276,43 @@ static const char *flat_diagnosis(const Test *test, const double (*got)[CASE_MAX
                 }
             }
             if (explains && wrong_somewhere) {
-                if (found)
-                    return NULL;        /* two mistakes fit: name neither */
-                found = text;
+                if (nfit == MAX_FIT)
+                    return NULL;
+                fit[nfit++] = text;
             }
         }
     }
-    return found;
+    if (nfit == 1)
+        return fit[0];
+    const char *left = NULL;
+    for (int k = 0; k < nfit; k++) {
+        if (ruled_out(fit[k], passed, npassed))
+            continue;
+        if (left)
+            return NULL;                /* two mistakes fit: name neither */
+        left = fit[k];
+    }
+    return left;
+}
+
+/* Parts 4 and 5: what explains the test's answers.  When every answer is
+ * a miss, a fact rather than a mistake: the skeleton answers so, as does a
+ * sign that puts every hit behind the ray, and such answers fit every
+ * mistake that misses this test's hits.  Only when the code passed a test
+ * of its part with a hit in it is it not the skeleton; then the mistake
+ * flat_mistake confirms, if it confirms one, is named. */
+static const char *flat_diagnosis(const Test *test, const double (*got)[CASE_MAX_OUT],
+                                  const bool *ok, int answered, const Test *const *passed, int npassed)
+{
+    static const char all_miss_fact[] =
+        "every case of this test was answered as a miss, also where the ray plainly hits";
+    bool all_miss = answered > 0;
+    for (int c = 0; c < answered; c++)
+        all_miss = all_miss && got[c][0] == 0;
+    if (all_miss && !hits_right(passed, npassed))
+        return all_miss_fact;
+    const char *mistake = flat_mistake(test, got, ok, answered, passed, npassed);
+    return mistake ? mistake : all_miss ? all_miss_fact : NULL;
 }
 
 /* Parts 4 and 5: causes that an answer shows by itself, whatever the
@@ -343,6 +400,12 @@ bool case_is_right(Kind kind, const Case *c, const double *got)
 
 bool check_answers(const Test *test, const char *answers, size_t len, char **out, Answers *keep)
 {
+    return check_answers_in_part(test, answers, len, NULL, 0, out, keep);
+}
+
+bool check_answers_in_part(const Test *test, const char *answers, size_t len,
+                           const Test *const *passed, int npassed, char **out, Answers *keep)
+{
     Text t = { 0 };
     int nout = kind_nout(test->kind);
     const char *p = answers, *end = answers + len;
@@ -390,7 +453,8 @@ bool check_answers(const Test *test, const char *answers, size_t len, char **out
         bool nan_in = false;
         for (int k = 0; k < kind_nin(test->kind); k++)
             nan_in = nan_in || isnan(bad->in[k]);
-        const char *why = flat_diagnosis(test, (const double (*)[CASE_MAX_OUT])a.got, a.ok, a.answered);
+        const char *why = flat_diagnosis(test, (const double (*)[CASE_MAX_OUT])a.got, a.ok, a.answered,
+                                         passed, npassed);
         double missed, found;
         if (nan_in && a.got[a.first_bad][0] == 1)
             say(&t, "    hint:      NaN input must be a miss: a test written as \"t < 0: miss\" lets "

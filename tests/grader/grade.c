@@ -162,9 +162,10 @@ static int run_child(const GradeOptions *opt, const Build *b, SandboxServer *srv
     return status;
 }
 
-/* Runs one test in the sandbox and judges it. */
+/* Runs one test in the sandbox and judges it, beside the tests of its part
+ * that the same code passed (check_answers_in_part). */
 static void run_test(const GradeOptions *opt, const Build *b, SandboxServer *srv, const Test *t,
-                     TestResult *r)
+                     const Test *const *passed, int npassed, TestResult *r)
 {
     SandboxResult res;
     char err[256];
@@ -175,7 +176,8 @@ static void run_test(const GradeOptions *opt, const Build *b, SandboxServer *srv
     r->seconds = res.seconds;
 
     char *verdict = NULL;
-    bool ok = check_answers(t, res.answer, res.answer_len, &verdict, &r->answers);
+    bool ok = check_answers_in_part(t, res.answer, res.answer_len, passed, npassed, &verdict,
+                                    &r->answers);
     r->ran = true;
     const char *why = "";
     char whybuf[200] = "";
@@ -384,7 +386,10 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         int timeouts = 0;
         bool first = true;
         bool *done = calloc((size_t)tests->n + 1, sizeof *done);
-        if (!done) {
+        const Test **passed = calloc((size_t)tests->n + 1, sizeof *passed);
+        if (!done || !passed) {
+            free(done);
+            free(passed);
             build_remove(&b);
             snprintf(err, errlen, "out of memory");
             return -1;
@@ -400,6 +405,7 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
             children += sandbox_cpu(false) - before;
             if (rc != 0) {
                 free(done);
+                free(passed);
                 build_remove(&b);
                 return -1;
             }
@@ -433,13 +439,18 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
             } else {
                 if (opt->verbose)
                     fprintf(stderr, "  %s\n", t->name);
-                run_test(opt, &b, &srv, t, r);
+                int npassed = 0;
+                for (int j = 0; j < tests->n; j++)
+                    if (tests->tests[j].part == p && g->results[j].passed)
+                        passed[npassed++] = &tests->tests[j];
+                run_test(opt, &b, &srv, t, passed, npassed, r);
                 if (!r->passed && r->seconds >= cfg->timeout)
                     timeouts++;
             }
             first = false;
         }
         free(done);
+        free(passed);
         sandbox_serve_stop(&srv);
         g->cpu_tests += sandbox_cpu(false) - children;
         children = sandbox_cpu(false);

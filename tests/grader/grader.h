@@ -47,7 +47,7 @@ typedef enum {
                                   of want, or t >= alt[1] (parallel rays)     */
 
 typedef struct {
-    char text[96];                 /* the known mistake, as told to the student */
+    char text[160];                /* the known mistake, as told to the student */
     double out[CASE_MAX_OUT];      /* what that mistake produces                */
 } Hint;
 
@@ -156,6 +156,11 @@ typedef struct {
  * every case is right; out receives the message for the student, and a,
  * when not NULL, every answer and whether it was right. */
 bool check_answers(const Test *test, const char *answers, size_t len, char **out, Answers *a);
+/* The same, for a test judged beside the tests of its part that the same
+ * code passed (passed[0 .. npassed-1]): a known mistake those tests rule
+ * out is not named (Parts 4 and 5, check.c). */
+bool check_answers_in_part(const Test *test, const char *answers, size_t len,
+                           const Test *const *passed, int npassed, char **out, Answers *a);
 /* A batch's answers (every test of a part, run in one child), split after
  * each line that starts "end ": from[k] and size[k] are the k-th test's
  * answers.  Returns ntests when the answers split into exactly ntests

@@ -39,6 +39,10 @@ void tg_add_hint_as(Case *c, const char *text, const double *out, int n, bool un
     if (same)
         return;
     Hint *h = case_add_hint(c);
+    if (strlen(text) >= sizeof h->text) {      /* a hint cut short would mislead */
+        fprintf(stderr, "testgen: a hint longer than %zu bytes: %s\n", sizeof h->text - 1, text);
+        abort();
+    }
     snprintf(h->text, sizeof h->text, "%s", text);
     memcpy(h->out, out, (size_t)n * sizeof *out);
 }

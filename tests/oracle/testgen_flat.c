@@ -186,7 +186,7 @@ static void triangle_hints(Case *c, const double a[3], const double b[3], const 
     } mistakes[] = {
         { MT_TMIN, "hits at small t count: is there a tmin such as 0.001? In this lab tmin = 0" },
         { MT_STRICT, "edges and vertices belong to the triangle: beta >= 0, gamma >= 0, beta + gamma <= 1" },
-        { MT_EPS, "a small or far triangle was missed: no epsilon on det (such as 1e-8), compare it with 0" },
+        { MT_EPS, "a hit was missed where det is small (a small or far triangle, or a ray nearly along its plane): no epsilon on det (such as 1e-8), compare it with 0" },
         { MT_NO_T, "a hit behind the eye: only t > 0 is ahead of the ray" },
         { MT_NO_SUM, "beta + gamma <= 1 is missing: the ray passed outside the edge bc and still hit" },
         { MT_NO_DET, "det = 0 (parallel to the triangle, or in its plane) is a miss: check it first" },

@@ -365,6 +365,23 @@ while read -r class sname g1 g2 g3a g3b g4 g5; do
         check "$sname: some Part $hardpart hard cases fail" hard_failed "$json" "$hardpart"
     fi
 done <"$tmp/points"
+# Parts 4 and 5 name a mistake only where it explains every answer of the
+# test and the tests the code passed do not rule it out.  An epsilon on det
+# answers every case of the far tiny triangles with a miss, as the skeleton
+# does, and so would two wrong signs; but those signs fail the worked
+# example, which this code passes: the epsilon is named there too.  The
+# skeleton, which passes no test with a hit in it, is told the fact alone.
+tiny="Part 5: hard: tiny triangle far away"
+awk -v name="\"name\": \"$tiny" 'index($0, name) { p = 1 } p && /"output":/ { print; exit }' \
+    "$tmp/grades-subs45/p5-det-epsilon.json" >"$tmp/tiny-epsilon"
+check "p5-det-epsilon: the far tiny triangles' misses are put down to the epsilon on det" \
+    grep -q "hint: *a hit was missed where det is small.*no epsilon on det" "$tmp/tiny-epsilon"
+awk -v name="FAIL  $tiny" 'index($0, name) { p = 1; next } p && /^  (PASS|FAIL)/ { exit } p' \
+    "$tmp/labs.out" >"$tmp/tiny-skeleton"
+check "the skeleton's far tiny triangles: every case answered as a miss, no mistake named" \
+    sh -c "grep -q 'hint: *every case of this test was answered as a miss' '$tmp/tiny-skeleton' &&
+           ! grep -q 'epsilon' '$tmp/tiny-skeleton'"
+
 # On Linux a part with one student file is built as a shared object that a
 # prebuilt runner loads; GRADE_NO_LOAD=1 links the whole program as
 # elsewhere.  Both ways must give the same grades, link errors included.

@@ -41,7 +41,7 @@ static const char good[] =
 /* Reads good with LINE replaced by line: 0, or -1 with the message in err. */
 static int read_with(const char *line, TestList *list, char *err, size_t errlen)
 {
-    char text[sizeof good + 200], path[128];
+    char text[sizeof good + 400], path[128];
     const char *at = strstr(good, "LINE");
     snprintf(text, sizeof text, "%.*s%s%s", (int)(at - good), good, line, at + 4);
     write_file("one.tests", text, path, sizeof path);
@@ -161,6 +161,11 @@ static void test_bad_lines(void)
         { "case 0 0 1 | 1 0 0 | 0 0 0 | 0 0 0 | 4294967297", "case flags must be 0, or 1" },
         { "case 0 0 1 | 1 0 0 | 0 0 0 | 0 0 0", "case needs: inputs" },
         { "whatever 1 2 3", "unknown line" },
+        { "name Part 3b: a name of 128 bytes, one more than a test's name may have, "
+          "which the grader would otherwise cut short, so it refuses it", "name longer than 127 bytes" },
+        { "note a note of 160 bytes, one more than a test's note may have: the grader "
+          "shows it as it is, so a note it cut would tell the student something else, so it's refused",
+          "note longer than 159 bytes" },
     };
     for (int k = 0; k < CHECK_COUNT(bad); k++) {
         TestList list;
@@ -184,6 +189,24 @@ static void test_bad_lines(void)
         CHECK_MSG(r != 0, "weight %s was read", weights[k]);
         CHECK_MSG(r == 0 || (strstr(err, "weight.tests:2: ") && strstr(err, "weight")),
                   "weight %s: the message is '%s'", weights[k], err);
+        testlist_free(&list);
+    }
+    /* A hint's text: 159 bytes are read whole, 160 refused (line 5). */
+    for (int len = 159; len <= 160; len++) {
+        char text[600], path[128], err[300] = "", hint[200];
+        memset(hint, 'x', (size_t)len);
+        hint[len] = '\0';
+        snprintf(text, sizeof text, "# line 1\ntest 1 plane core 1\nname x\n"
+                 "case 90 2 1 | 4 2 | 0 0 | 0 0 | 0\nhint 1 1 | %s\nend\n", hint);
+        write_file("hint.tests", text, path, sizeof path);
+        TestList list = { 0 };
+        int r = tests_read(&list, path, false, err, sizeof err);
+        if (len == 159)
+            CHECK_MSG(r == 0 && strlen(list.tests[0].cases[0].hints[0].text) == 159,
+                      "a hint of 159 bytes was not read whole: %s", err);
+        else
+            CHECK_MSG(r != 0 && strstr(err, "hint.tests:5: hint text longer than 159 bytes"),
+                      "a hint of 160 bytes: the message is '%s'", err);
         testlist_free(&list);
     }
     /* At the limits, they are read. */
