@@ -66,7 +66,7 @@ static void hint_hit(Case *c, const char *text, bool hit, double t)
 /* ---- Part 4 ----------------------------------------------------------------- */
 /* The hints of a case are every known mistake whose answer differs from the
  * right one; check.c names the mistake that explains all the cases of a
- * test, the first in the order written here when several do. */
+ * test when it is the only one (flat_mistake). */
 
 /* A hit answer of a formula that checks t > 0 and nothing else. */
 static bool positive(double t)
@@ -94,6 +94,12 @@ static void plane_hints(Case *c, const double p[3], const double n[3], const dou
         hint_hit(c, "r.n = 0 (parallel to the plane, or in it) is a miss: check it before dividing", true, t);
     if (right && rn > 0)
         hint_hit(c, "the plane has two sides: a ray that meets it from behind (r.n > 0) hits too", false, 0);
+    /* Scratchapixel's test, denom > 1e-6, made two-sided: short or grazing
+     * rays and normals lost (the same for 1e-4 or 1e-8 where r.n is far
+     * smaller than any of them, as in the hard case of tiny lengths). */
+    if (right && fabs(rn) < 1e-6)
+        hint_hit(c, "a hit was missed where r.n is small (short r or n, or a grazing ray): no epsilon on "
+                    "r.n (such as 1e-6), compare it with 0", false, 0);
     double ts = dot3(ep, n) / rn;
     hint_hit(c, "the sign: t = (p - e).n / (r.n), so that e + t r is on the plane", positive(ts), ts);
     double tw = dot3(ne, p) / dot3(r, p);

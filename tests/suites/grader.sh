@@ -382,6 +382,12 @@ check "the skeleton's far tiny triangles: every case answered as a miss, no mist
     sh -c "grep -q 'hint: *every case of this test was answered as a miss' '$tmp/tiny-skeleton' &&
            ! grep -q 'epsilon' '$tmp/tiny-skeleton'"
 
+# A two-sided plane test with an epsilon on r.n misses the tiny normals'
+# hit as one-sided code would, but passes every test of both sides: the
+# epsilon is named, never the sides (named before the epsilon had a hint).
+check "p4-epsilon: no hint says the plane has two sides" \
+    sh -c "! grep -q 'two sides' '$tmp/grades-subs45/p4-epsilon.json'"
+
 # On Linux a part with one student file is built as a shared object that a
 # prebuilt runner loads; GRADE_NO_LOAD=1 links the whole program as
 # elsewhere.  Both ways must give the same grades, link errors included.
