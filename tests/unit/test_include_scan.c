@@ -136,6 +136,10 @@ static void test_directive_spellings(void)
     REFUSED("/* c */ # /* c */ include /* c */ \"/dev/zero\"\n");
     REFUSED("/* a comment\n   over lines */ #include \"/dev/zero\"\n");
     REFUSED("int x;\n#include \"/dev/zero\"\r\n");
+    /* A UTF-8 byte order mark, as some Windows editors save it: the
+     * compiler skips it, so the first line is a directive. */
+    REFUSED("\xEF\xBB\xBF#include \"/dev/zero\"\n");
+    REFUSED("\xEF\xBB\xBF  #include \"/dev/zero\"\n");
     REFUSED("#if __has_include(\"fifo\")\n#endif\n");
     REFUSED("#if defined(X) || __has_include ( <fifo> )\n#endif\n");
     REFUSED("#pragma GCC dependency \"fifo\"\n");
