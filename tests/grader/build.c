@@ -8,6 +8,7 @@
 #include "grader.h"
 #include "include_scan.h"
 #include "linkmsg.h"
+#include "lookalike.h"
 #include "sandbox.h"
 #include "kit/savefile.h"
 
@@ -235,6 +236,18 @@ static bool utf16_text(const char *text, size_t n)
 }
 
 /* The file was not handed to the compiler: says why, and returns 0. */
+/* After a stage file did not compile: the characters in it that look like
+ * C's but are not, which the compiler calls "stray" or "unexpected". */
+static void explain_lookalikes(Build *b, const char *text, size_t n, const char *cfile)
+{
+    char lines[1200];
+    if (lookalike_explain(text, n, cfile, lines, sizeof lines) == 0)
+        return;
+    say(b, "The file has characters that look like C's but are not (code copied from a web "
+           "page, a PDF or a word processor brings them):\n");
+    say(b, lines);
+}
+
 static int not_compiled(Build *b, const char *what, const char *name)
 {
     build_say(b, what, name);
@@ -697,17 +710,21 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
             return not_compiled(b, "cannot read ", cerr);
         }
         bool utf16 = utf16_text(text, n), refused = !utf16 && scan_includes(cfg, b, text, n, src);
-        free(text);
         if (utf16) {
+            free(text);
             snprintf(cerr, sizeof cerr, "%s is saved as UTF-16 (what some Windows editors call "
                      "\"Unicode\"), which C compilers do not read: save it as UTF-8", cfile);
             return not_compiled(b, "refused: ", cerr);
         }
         if (refused) {
+            free(text);
             b->refused = true;          /* scan_includes said why */
             return 0;
         }
         int rc = compile_stage(cfg, b, stage, load, &memo, &stored, err, errlen);
+        if (rc > 0)
+            explain_lookalikes(b, text, n, cfile);
+        free(text);
         if (rc != 0)
             return rc < 0 ? -1 : 0;
         snprintf(names[nlink], sizeof names[nlink], "%s", ofile);
