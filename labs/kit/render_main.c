@@ -183,9 +183,18 @@ static int render_main_default_out(const char *scene_path, char *buf, size_t len
     return 0;
 }
 
-/* Renders as the command line says.  Returns the exit status: 0 done,
- * 1 bad scene or output, 2 bad usage. */
 /* ---- when the student's code crashes ------------------------------------ */
+
+/* Not under a sanitizer, whose own report of a crash says more. */
+#if defined(__SANITIZE_ADDRESS__)
+#define RENDER_MAIN_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define RENDER_MAIN_SANITIZED 1
+#endif
+#endif
+
+#ifndef RENDER_MAIN_SANITIZED
 
 /* Appends text to buf at *len (within size); for the signal handler, which
  * may call neither printf nor malloc. */
@@ -260,20 +269,9 @@ static void render_main_crashed(int sig)
     raise(sig);
 }
 
-/* Not under a sanitizer, whose own report of a crash says more. */
-#if defined(__SANITIZE_ADDRESS__)
-#define RENDER_MAIN_SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define RENDER_MAIN_SANITIZED 1
-#endif
-#endif
-
+/* render_main_crashed for each signal a crash raises. */
 static void render_main_on_crash(void)
 {
-#ifdef RENDER_MAIN_SANITIZED
-    return;
-#endif
     static const int sigs[] = { SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT };
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
@@ -283,6 +281,11 @@ static void render_main_on_crash(void)
     for (size_t k = 0; k < sizeof sigs / sizeof sigs[0]; k++)
         sigaction(sigs[k], &sa, NULL);
 }
+#else
+static void render_main_on_crash(void)   /* the sanitizer reports the crash */
+{
+}
+#endif
 
 /* A scene named without its folder or ending ("wide", "wide.scene"):
  * names the shipped scene it most likely means, when there is one. */
@@ -299,6 +302,8 @@ static void render_main_suggest_scene(const char *path)
         fprintf(stderr, "render: the kit's scenes are in labs/scenes: SCENE=%s\n", guess);
 }
 
+/* Renders as the command line says.  Returns the exit status: 0 done,
+ * 1 bad scene or output, 2 bad usage. */
 int main(int argc, char **argv)
 {
     RenderArgs args;

@@ -235,7 +235,6 @@ static bool utf16_text(const char *text, size_t n)
     return m >= 16 && (zeros[0] == m / 2 || zeros[1] == m / 2);
 }
 
-/* The file was not handed to the compiler: says why, and returns 0. */
 /* After a stage file did not compile: the characters in it that look like
  * C's but are not, which the compiler calls "stray" or "unexpected". */
 static void explain_lookalikes(Build *b, const char *text, size_t n, const char *cfile)
@@ -248,6 +247,7 @@ static void explain_lookalikes(Build *b, const char *text, size_t n, const char 
     say(b, lines);
 }
 
+/* The file was not handed to the compiler: says why, and returns 0. */
 static int not_compiled(Build *b, const char *what, const char *name)
 {
     build_say(b, what, name);

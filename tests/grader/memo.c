@@ -104,15 +104,16 @@ bool memo_wait(const MemoEntry *e, double seconds)
     char object[1200], done[1200];
     memo_path(e, "object.o", object, sizeof object);
     memo_path(e, "done", done, sizeof done);
-    long pause_ns = 1000000, waited_ns = 0;
+    long pause_ns = 1000000;            /* a long holds 16 ms, not the whole wait */
+    double waited = 0;
     while (e->dir[0]) {
         if (access(object, F_OK) == 0)
             return true;
-        if (access(done, F_OK) == 0 || waited_ns >= (long)(seconds * 1e9))
+        if (access(done, F_OK) == 0 || waited >= seconds)
             return false;
         struct timespec pause = { 0, pause_ns };
         nanosleep(&pause, NULL);
-        waited_ns += pause_ns;
+        waited += pause_ns * 1e-9;
         if (pause_ns < 16000000)
             pause_ns *= 2;
     }

@@ -18,8 +18,7 @@
 void report_table(FILE *f, const Grade *g, const GradeConfig *cfg, const char *submission);
 
 /* Writes results.json through a temporary file and rename; 0 or -1. */
-int report_json(const char *path, const Grade *g, const GradeConfig *cfg,
-                const char *submission, char *err, size_t errlen);
+int report_json(const char *path, const Grade *g, const char *submission, char *err, size_t errlen);
 
 /* A results.json for a submission the grader could not grade at all. */
 int report_json_error(const char *path, const char *message, char *err, size_t errlen);

@@ -38,8 +38,7 @@ static void test_entry(JsonWriter *j, const Test *t, const TestResult *r)
     json_end_object(j);
 }
 
-int report_json(const char *path, const Grade *g, const GradeConfig *cfg,
-                const char *submission, char *err, size_t errlen)
+int report_json(const char *path, const Grade *g, const char *submission, char *err, size_t errlen)
 {
     JsonWriter j;
     json_init(&j, 2);
@@ -52,8 +51,8 @@ int report_json(const char *path, const Grade *g, const GradeConfig *cfg,
     int n = snprintf(summary, sizeof summary, "Graded %s: %s / %s", submission, points_text(g->total).s,
                      points_text(g->total_max).s);
     if (g->bonus_max > 0)
-        n += snprintf(summary + n, sizeof summary - (size_t)n, ", hard-case bonus %s / %s%s",
-                      points_text(g->bonus).s, points_text(g->bonus_max).s, cfg->hard_is_bonus ? "" : "");
+        n += snprintf(summary + n, sizeof summary - (size_t)n, ", hard-case bonus %s / %s",
+                      points_text(g->bonus).s, points_text(g->bonus_max).s);
     for (int p = 0; p < NPARTS; p++) {
         if (!g->graded[p] || (size_t)n >= sizeof summary)
             continue;
