@@ -163,15 +163,19 @@ int text_read_file(const char *path, char **text, char *err, size_t errlen)
     return status;
 }
 
+size_t text_bom_length(const char *s, size_t n)
+{
+    return n >= 3 && memcmp(s, "\xEF\xBB\xBF", 3) == 0 ? 3 : 0;
+}
+
 int text_next_line(const char **pos, char *buf, TextLine *ln, char *err, size_t errlen)
 {
     const char *p = *pos;
     if (!*p)
         return 0;
     ln->line++;
-    if (ln->line == 1 && (unsigned char)p[0] == 0xEF && (unsigned char)p[1] == 0xBB &&
-        (unsigned char)p[2] == 0xBF)
-        p += 3;         /* a byte-order mark, as some Windows editors write first: not text */
+    if (ln->line == 1)
+        p += text_bom_length(p, strnlen(p, 3));   /* not text */
     size_t len = strcspn(p, "\n");
     if (len > TEXT_MAX_LINE) {
         text_error(err, errlen, ln->name, ln->line, "line is longer than %d characters", TEXT_MAX_LINE);

@@ -22,6 +22,11 @@ typedef struct {
     int nwords;                    /* all of them, the keyword too  */
 } TextLine;
 
+/* The length of the UTF-8 byte-order mark (EF BB BF) that some Windows
+ * editors write first in a file, when s[0 .. n-1] begins with one: 3, or
+ * 0.  Compilers skip it, and so does every reader of the kit. */
+size_t text_bom_length(const char *s, size_t n);
+
 /* Writes "name:line: message" (or "name: message" when line is 0) into err.
  * Never fails; a NULL err or errlen 0 writes nothing. */
 void text_error(char *err, size_t errlen, const char *name, int line, const char *fmt, ...)

@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "config.h"
+#include "kit/textfile.h"
 
 #include <errno.h>
 #include <math.h>
@@ -66,8 +67,9 @@ int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
                 return -1;
             }
         }
-        if (lineno == 1 && strncmp(line, "\xEF\xBB\xBF", 3) == 0)
-            memmove(line, line + 3, strlen(line + 3) + 1);  /* a byte-order mark: not text */
+        size_t bom = lineno == 1 ? text_bom_length(line, strlen(line)) : 0;
+        if (bom)
+            memmove(line, line + bom, strlen(line + bom) + 1);      /* not text */
         line[strcspn(line, "#")] = '\0';
         char word[32], label[8], mode[16];
         double core = 0, hard = 0;

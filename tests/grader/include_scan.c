@@ -4,6 +4,7 @@
 #define _XOPEN_SOURCE 700        /* realpath */
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "include_scan.h"
+#include "kit/textfile.h"
 
 #include <limits.h>
 #include <stdbool.h>
@@ -300,10 +301,9 @@ int include_scan_judged(const char *text, size_t len, const char *dir, IncludeJu
     if (!realpath(dir, real_dir))
         real_dir[0] = '\0';
     Scan sc = { s, n, 0, dir, real_dir, why, whylen, 0, judge, ctx };
-    /* A UTF-8 byte order mark (Windows editors' "UTF-8 with BOM") is
-     * skipped, as gcc and clang skip it: what follows starts the line. */
-    if (n >= 3 && memcmp(s, "\xEF\xBB\xBF", 3) == 0)
-        sc.i = 3;
+    /* A byte-order mark is skipped, as gcc and clang skip it: what
+     * follows starts the line. */
+    sc.i = text_bom_length(s, n);
     bool line_start = true;
     while (sc.i < sc.n && !sc.refused) {
         char c = s[sc.i];

@@ -2,6 +2,7 @@
  * lookalike.c - characters that look like C's but are not (lookalike.h).
  */
 #include "lookalike.h"
+#include "kit/textfile.h"
 
 #include <stdbool.h>
 #include <stdio.h>
@@ -35,7 +36,8 @@ static const struct {
 };
 
 /* The code point of the UTF-8 sequence at s (n bytes left) and its length
- * in *used; 0 when it is not a sequence of two or three bytes. */
+ * in *used; 0 when it is not a sequence of two or three bytes.  (Every
+ * code point listed above is below U+10000.) */
 static unsigned long utf8_at(const unsigned char *s, size_t n, size_t *used)
 {
     *used = 1;
@@ -84,7 +86,8 @@ int lookalike_explain(const char *text, size_t len, const char *file, char *out,
     int nfound = 0, more = 0, total = 0, line = 1;
     if (outlen)
         out[0] = '\0';
-    for (size_t i = 0; i < len; i++) {
+    /* From after a byte-order mark, which the compiler skips. */
+    for (size_t i = text_bom_length(text, len); i < len; i++) {
         unsigned char c = s[i];
         if (c == '\n')
             line++;
@@ -120,8 +123,6 @@ int lookalike_explain(const char *text, size_t len, const char *file, char *out,
         } else if (c >= 0x80) {
             size_t used;
             unsigned long cp = utf8_at(s + i, len - i, &used);
-            if (i == 0 && cp == 0xFEFF)         /* the compiler skips a leading one */
-                cp = 0;
             for (int k = 0; cp && k < (int)(sizeof known / sizeof known[0]); k++) {
                 if (known[k].cp != cp)
                     continue;
