@@ -112,13 +112,17 @@ $(BUILD)/sub/labs/%.o: labs/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/sub/solutions/%.o: solutions/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/sub/labs/lto/%.o: labs/%.c $(KIT_HDR) | $$(@D)/.
-	$(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@
+# A stage file the student edits that does not compile: bin/lookalike then
+# names what in it only looks like C (a non-breaking space, curly quotes...),
+# as the grader does (tests/grader/lookalike.h).
+STAGE_CC = $(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@ || { $(BUILD)/bin/lookalike $<; exit 1; }
+$(BUILD)/sub/labs/lto/%.o: labs/%.c $(KIT_HDR) | $$(@D)/. $(BUILD)/bin/lookalike
+	$(STAGE_CC)
 $(BUILD)/sub/solutions/lto/%.o: solutions/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@
 ifeq ($(filter labs solutions,$(SUB_NAME)),)
-$(SUB_BUILD)/lto/%.o: $$(call stage_src,$$*,$(SUB_DIR)) $(KIT_HDR) | $$(@D)/.
-	$(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@
+$(SUB_BUILD)/lto/%.o: $$(call stage_src,$$*,$(SUB_DIR)) $(KIT_HDR) | $$(@D)/. $(BUILD)/bin/lookalike
+	$(STAGE_CC)
 endif
 $(BUILD)/kit/lto/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) -c $< -o $@
@@ -254,6 +258,9 @@ $(BUILD)/grader/grade_main.o: tests/grader/grade_main.c $(GRADER_HDR) $(wildcard
 	$(CC) $(CFLAGS) $(GRADE_DEFS) -DGRADER_BUILD='"$(BUILD)"' -Ilabs -c $< -o $@
 $(BUILD)/bin/grade: $(BUILD)/grader/grade_main.o $(GRADE_EXTRA) $(BUILD)/grader/libgrader.a \
                     $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $(HARNESS) $(GRADER_REF) $(RUNNERS) $$(@D)/.
+	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+$(BUILD)/bin/lookalike: $(BUILD)/grader/lookalike_main.o $(BUILD)/grader/lookalike.o \
+                        $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/gentests: $(BUILD)/oracle/gentests_main.o $(BUILD)/oracle/liboracle.a \
                        $(BUILD)/grader/libgrader.a $(BUILD)/kit/libkit.a | $$(@D)/.

@@ -221,20 +221,6 @@ void build_explain_undefined(Build *b, const char *submission, int part)
         }
 }
 
-/* Whether the n bytes of text are UTF-16 (what some Windows editors save
- * as "Unicode"): a byte-order mark FF FE or FE FF, or, without one, every
- * other byte of the first 512 a 0, as in ASCII text so saved. */
-static bool utf16_text(const char *text, size_t n)
-{
-    const unsigned char *u = (const unsigned char *)text;
-    if (n >= 2 && ((u[0] == 0xff && u[1] == 0xfe) || (u[0] == 0xfe && u[1] == 0xff)))
-        return true;
-    size_t zeros[2] = { 0, 0 }, m = n < 512 ? n : 512;
-    for (size_t k = 0; k < m; k++)
-        zeros[k % 2] += u[k] == 0;
-    return m >= 16 && (zeros[0] == m / 2 || zeros[1] == m / 2);
-}
-
 /* After a stage file did not compile: the characters in it that look like
  * C's but are not, which the compiler calls "stray" or "unexpected". */
 static void explain_lookalikes(Build *b, const char *text, size_t n, const char *cfile)
@@ -242,8 +228,7 @@ static void explain_lookalikes(Build *b, const char *text, size_t n, const char 
     char lines[1200];
     if (lookalike_explain(text, n, cfile, lines, sizeof lines) == 0)
         return;
-    say(b, "The file has characters that look like C's but are not (code copied from a web "
-           "page, a PDF or a word processor brings them):\n");
+    say(b, LOOKALIKE_INTRO "\n");
     say(b, lines);
 }
 
@@ -709,11 +694,10 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
             snprintf(cerr, sizeof cerr, "%s: its copy cannot be read back", cfile);
             return not_compiled(b, "cannot read ", cerr);
         }
-        bool utf16 = utf16_text(text, n), refused = !utf16 && scan_includes(cfg, b, text, n, src);
+        bool utf16 = lookalike_utf16(text, n), refused = !utf16 && scan_includes(cfg, b, text, n, src);
         if (utf16) {
             free(text);
-            snprintf(cerr, sizeof cerr, "%s is saved as UTF-16 (what some Windows editors call "
-                     "\"Unicode\"), which C compilers do not read: save it as UTF-8", cfile);
+            snprintf(cerr, sizeof cerr, "%s " LOOKALIKE_UTF16, cfile);
             return not_compiled(b, "refused: ", cerr);
         }
         if (refused) {

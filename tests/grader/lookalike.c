@@ -142,3 +142,14 @@ int lookalike_explain(const char *text, size_t len, const char *file, char *out,
     write_found(f, nfound, more, file, out, outlen);
     return total;
 }
+
+bool lookalike_utf16(const char *text, size_t n)
+{
+    const unsigned char *u = (const unsigned char *)text;
+    if (n >= 2 && ((u[0] == 0xff && u[1] == 0xfe) || (u[0] == 0xfe && u[1] == 0xff)))
+        return true;
+    size_t zeros[2] = { 0, 0 }, m = n < 512 ? n : 512;
+    for (size_t k = 0; k < m; k++)
+        zeros[k % 2] += u[k] == 0;
+    return m >= 16 && (zeros[0] == m / 2 || zeros[1] == m / 2);
+}

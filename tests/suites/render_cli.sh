@@ -413,6 +413,28 @@ check "make render SUBMISSION=<no such folder> is refused (exit $status), and dr
     sh -c "[ $status -eq 2 ] && grep -q 'SUBMISSION=$tmp/no-such-folder is not a directory' '$tmp/stdout' &&
            [ ! -e '$tmp/typo.png' ]"
 
+# A stage file with characters that only look like C's (a non-breaking
+# space and a curly quote, as pasted from a web page): make render names
+# them with their line, as the grader does; it once showed only the
+# compiler's "stray '\342' in program".  One saved as UTF-16 is named so.
+if [ -d solutions ]; then
+    mkdir -p "$tmp/pasted" "$tmp/utf16"
+    nbsp=$(printf '\302\240')
+    sed "/^ *double tan_half = /s/ = / $nbsp= /" solutions/part1_image_plane.c >"$tmp/pasted/part1_image_plane.c"
+    printf 'static const char *where = \342\200\234here\342\200\235;\n' >>"$tmp/pasted/part1_image_plane.c"
+    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/pasted" OUT="$tmp/pasted.png"
+    at=$(grep -n 'double tan_half' "$tmp/pasted/part1_image_plane.c" | sed -n 1s/:.*//p)
+    check "make render names a pasted non-breaking space and curly quotes, with their lines (exit $status)" \
+        sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/pasted.png' ] &&
+               grep -q 'characters that look like C.s but are not' '$tmp/stderr' &&
+               grep -q 'part1_image_plane.c:$at: a non-breaking space (U+00A0): type an ordinary space' '$tmp/stderr' &&
+               grep -q 'part1_image_plane.c:[0-9]*: a curly opening double quote (U+201C): type a straight \"' '$tmp/stderr'"
+    printf '\377\376i\000n\000t\000 \000x\000;\000\n\000' >"$tmp/utf16/part1_image_plane.c"
+    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/utf16" OUT="$tmp/utf16.png"
+    check "make render says a stage file saved as UTF-16 is, and to save it as UTF-8 (exit $status)" \
+        sh -c "[ $status -eq 2 ] && grep -q 'part1_image_plane.c is saved as UTF-16 .*save it as UTF-8' '$tmp/stderr'"
+fi
+
 # misbehaving DIR STATEMENT: a submission in DIR, the reference's but for a
 # Part 3b whose ray_color runs STATEMENT for the pixels right of the centre.
 misbehaving() {

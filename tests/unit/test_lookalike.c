@@ -65,9 +65,28 @@ static void test_edges(void)
     CHECK(lookalike_explain("int a\xE2\x88", 7, "f.c", small, sizeof small) == 0);
 }
 
+/* UTF-16 is told by its byte-order mark, or without one by every other
+ * byte of ASCII text being 0; UTF-8 text, with or without its own mark,
+ * and a text too short to tell are not UTF-16. */
+static void test_utf16(void)
+{
+    static const char le[] = "\xFF\xFEi\0n\0t\0", be[] = "\xFE\xFF\0i\0n\0t";
+    static const char bare[] = "i\0n\0t\0 \0x\0 \0=\0 \0" "1\0;\0\n\0";
+    static const char bare_be[] = "\0i\0n\0t\0 \0x\0 \0=\0 \0" "1\0;\0\n";
+    const char *utf8 = "\xEF\xBB\xBFint x = 1; /* \xC3\x97 */\n";
+    CHECK(lookalike_utf16(le, sizeof le - 1));
+    CHECK(lookalike_utf16(be, sizeof be - 1));
+    CHECK(lookalike_utf16(bare, sizeof bare - 1));
+    CHECK(lookalike_utf16(bare_be, sizeof bare_be - 1));
+    CHECK(!lookalike_utf16(utf8, strlen(utf8)));
+    CHECK(!lookalike_utf16("int x = 1;\n", 11));
+    CHECK(!lookalike_utf16("i\0n\0t\0", 6));                /* too short to tell */
+}
+
 static const CheckTest tests[] = {
     CHECK_TEST(test_cases),
     CHECK_TEST(test_edges),
+    CHECK_TEST(test_utf16),
 };
 
 int main(int argc, char **argv)
