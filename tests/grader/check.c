@@ -7,6 +7,7 @@
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "grader.h"
 #include "hexfloat.h"
+#include "shortest.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -148,14 +149,16 @@ static bool case_ok(Kind kind, const Case *c, const double *want, const double *
 
 static void describe_numbers(Text *t, const char *const *names, const double *v, int n)
 {
+    char b[SHORTEST_LEN];
     for (int k = 0; k < n; k++)
-        say(t, "%s%s = %.17g", k ? ", " : "", names[k], v[k]);
+        say(t, "%s%s = %s", k ? ", " : "", names[k], shortest(v[k], b));
 }
 
 static void describe_case(Text *t, const Test *test, int index, const Case *c, const double *got, bool have)
 {
     Kind kind = test->kind;
     int nin = kind_nin(kind), nout = kind_nout(kind);
+    char b0[SHORTEST_LEN], b1[SHORTEST_LEN];
     say(t, "  case %d of %d", index + 1, test->ncases);
     if (kind == KIND_IMAGE && test->image_nx > 0)
         say(t, " (pixel i = %d, j = %d)", index % test->image_nx, index / test->image_nx);
@@ -169,13 +172,13 @@ static void describe_case(Text *t, const Test *test, int index, const Case *c, c
     say(t, "\n    expected:  ");
     if (kind_is_hit(kind)) {
         if (c->want[0] != 0)
-            say(t, "hit at t = %.17g (within %.3g)", c->want[1], c->tol[1]);
+            say(t, "hit at t = %s (within %.3g)", shortest(c->want[1], b0), c->tol[1]);
         else
             say(t, "miss");
         if ((c->flags & CASE_EITHER_HIT) && kind == KIND_SPHERE && c->alt[0] < c->alt[1])
-            say(t, " -- or a hit at t from %.17g to %.17g: the ray starts within rounding of "
+            say(t, " -- or a hit at t from %s to %s: the ray starts within rounding of "
                    "the surface, so a miss, a hit just ahead and the far side are all accepted",
-                c->alt[0], c->alt[1]);
+                shortest(c->alt[0], b0), shortest(c->alt[1], b1));
         else if ((c->flags & CASE_EITHER_HIT) && kind == KIND_SPHERE)
             say(t, " -- the ray grazes the sphere within rounding: hit or miss both accepted");
         else if (c->flags & CASE_EITHER_HIT)
@@ -200,7 +203,7 @@ static void describe_case(Text *t, const Test *test, int index, const Case *c, c
     }
     if (kind_is_hit(kind)) {
         if (got[0] == 1)
-            say(t, "hit at t = %.17g", got[1]);
+            say(t, "hit at t = %s", shortest(got[1], b0));
         else if (got[0] == 0)
             say(t, "miss");
         else

@@ -3,11 +3,13 @@
  * bits, and, with the GNU C library, printf's "%a" text itself.  And the
  * two fast readers, hexfloat_read and the test files' decimal_read
  * (tests/grader/decimal.h), each against strtod itself: the same bits and
- * the same end, for every text, theirs and others. */
+ * the same end, for every text, theirs and others.  And the numbers as the
+ * grader shows them to students (tests/grader/shortest.h). */
 #include "check.h"            /* first: it sets the POSIX feature level */
 
 #include "../grader/hexfloat.h"
 #include "../grader/decimal.h"
+#include "../grader/shortest.h"
 
 #include <float.h>
 #include <math.h>
@@ -188,11 +190,69 @@ static void test_decimal_read(void)
     CHECK_MSG(wrong == 0, "%d texts read unlike strtod: the first, %s", wrong, first);
 }
 
+/* The grader's numbers as students read them (tests/grader/shortest.h):
+ * values whose text is known, then random doubles, short decimals among
+ * them: each text reads back as the same double, and, for a normal double,
+ * no %g of fewer digits does (every precision from 1 up is tried here,
+ * where shortest tries only 15 to 17). */
+static void test_shortest(void)
+{
+    static const struct {
+        double x;
+        const char *text;
+    } known[] = {
+        { 0.48, "0.48" }, { 0.6, "0.6" }, { -0.64, "-0.64" }, { 3.0, "3" }, { 0.0, "0" },
+        { -0.0, "-0" }, { 0.1 + 0.2, "0.30000000000000004" }, { 1.0 / 3, "0.3333333333333333" },
+        { 1e300, "1e+300" }, { DBL_MAX, "1.7976931348623157e+308" }, { 5e-324, "4.94065645841247e-324" },
+        { INFINITY, "inf" }, { -INFINITY, "-inf" }, { NAN, "nan" },
+    };
+    char b[SHORTEST_LEN];
+    for (size_t k = 0; k < sizeof known / sizeof known[0]; k++)
+        CHECK_MSG(strcmp(shortest(known[k].x, b), known[k].text) == 0, "%a: \"%s\", not \"%s\"",
+                  known[k].x, b, known[k].text);
+    uint64_t s = 0x2545f4914f6cdd1du;
+    int wrong = 0, longer = 0;
+    char first[600] = "";
+    for (long i = 0; i < 200000; i++) {
+        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+        double x;
+        if (i % 2) {                                   /* a decimal of 1 to 12 digits */
+            snprintf(b, sizeof b, "%.*e", (int)(s % 12), ldexp((double)(s >> 11), -53) * 10);
+            x = strtod(b, NULL) * pow(10, (double)((int)((s >> 5) % 40) - 20));
+        } else {
+            uint64_t bits = s;
+            memcpy(&x, &bits, sizeof x);
+            if (!isfinite(x) || fpclassify(x) == FP_SUBNORMAL)
+                continue;
+        }
+        shortest(x, b);
+        if (strtod(b, NULL) != x && wrong++ == 0)
+            snprintf(first, sizeof first, "%a written \"%s\"", x, b);
+        char sig[SHORTEST_LEN];                        /* its digits, the zeros around them off */
+        int digits = 0;
+        for (const char *c = b; *c && *c != 'e'; c++)
+            if ((*c >= '1' && *c <= '9') || (*c == '0' && digits > 0))
+                sig[digits++] = *c;
+        while (digits > 0 && sig[digits - 1] == '0')
+            digits--;
+        char fewer[400];
+        for (int p = 1; p < digits; p++) {
+            snprintf(fewer, sizeof fewer, "%.*g", p, x);
+            if (strtod(fewer, NULL) == x && longer++ == 0)
+                snprintf(first, sizeof first, "%a written \"%s\", but \"%s\" reads back too", x, b,
+                         fewer);
+        }
+    }
+    CHECK_MSG(wrong == 0 && longer == 0, "%d not read back, %d longer than needed; the first: %s", wrong,
+              longer, first);
+}
+
 static const CheckTest tests[] = {
     CHECK_TEST(test_known_values),
     CHECK_TEST(test_random_round_trips),
     CHECK_TEST(test_hexfloat_read),
     CHECK_TEST(test_decimal_read),
+    CHECK_TEST(test_shortest),
 };
 
 int main(int argc, char **argv)
