@@ -92,6 +92,53 @@ static void line_foot(const RayFig *f, double *fa, double *fb)
     *fb = B * C;
 }
 
+/* The normal's arrow, drawn from (px, py): 38 pixels along the normal,
+ * (ux, uy) in pixels (y down), to (*tx, *ty); its label "normal n" past
+ * the tip, on the side the arrow points to, from *lx0 to *lx1 with its
+ * baseline at *ly. */
+enum { NORMAL_LABEL_W = 56 };
+static void normal_arrow(double px, double py, double ux, double uy, double *tx, double *ty, double *lx0,
+                         double *lx1, double *ly)
+{
+    *tx = px + 38 * ux;
+    *ty = py + 38 * uy;
+    double qx = px + 44 * ux;
+    *lx0 = ux >= 0 ? qx + 4 : qx - 4 - NORMAL_LABEL_W;
+    *lx1 = *lx0 + NORMAL_LABEL_W;
+    *ly = py + 44 * uy + 4;
+}
+
+/* Where on the plane's line (foot (fa, fb), direction (da, db)) the normal
+ * is drawn: a point whose arrow and label fit inside the window v, at
+ * least 50 pixels off the ray's line (y0) where the line allows, and of
+ * those the nearest the foot.  (At the foot itself the arrow may leave the
+ * window, or lie along the ray, hidden under it, when the normal is the
+ * ray's direction.)  False when no point fits. */
+static bool normal_anchor(const FigView *v, const RayFig *f, double fa, double fb, double da, double db,
+                          double y0, double *ax, double *ay)
+{
+    double n = hypot(f->line_A, f->line_B), ux = f->line_A / n, uy = -f->line_B / n;
+    double S = hypot(v->pw, v->ph) / v->s;
+    double sc = (v->cx - fa) * da + (v->cy - fb) * db;      /* nearest the window's centre */
+    double x0 = v->px0 + 6, x1 = v->px0 + v->pw - 6, y0w = v->py0 + 6, y1w = v->py0 + v->ph - 6;
+    double best = -INFINITY;
+    for (int k = 0; k <= 32; k++) {
+        double sk = sc + S * (k / 32.0 - 0.5), a = fa + sk * da, b = fb + sk * db;
+        double px = fig_px(v, a), py = fig_py(v, b), tx, ty, lx0, lx1, ly;
+        normal_arrow(px, py, ux, uy, &tx, &ty, &lx0, &lx1, &ly);
+        bool fits = px > x0 && px < x1 && py > y0w && py < y1w && tx > x0 && tx < x1 && ty > y0w &&
+                    ty < y1w && lx0 > x0 && lx1 < x1 && ly - 10 > y0w && ly < y1w;
+        double off = fmin(fmin(fabs(py - y0), fabs(ty - y0)), 50);
+        double score = off * 1000 - fabs(sk) * v->s;
+        if (fits && score > best) {
+            best = score;
+            *ax = a;
+            *ay = b;
+        }
+    }
+    return best > -INFINITY;
+}
+
 /* ---- drawing ------------------------------------------------------------------ */
 
 /* Draws what the window v shows: the circles or the line, the ray (marked
@@ -122,11 +169,12 @@ static void draw_content(Markup *m, const FigView *v, const RayFig *f, double aw
         double da = f->line_B / n, db = -f->line_A / n, far = 4 * (right - left) + fabs(fa - v->cx)
                                                               + fabs(fb - v->cy);
         fig_segment(m, v, fa - far * da, fb - far * db, fa + far * da, fb + far * db, "#333333", 3, NULL);
-        if (main && fig_inside(v, fa, fb)) {
-            double px = fig_px(v, fa), py = fig_py(v, fb);
-            svg_arrow(m, px, py, px + 38 * f->line_A / n, py - 38 * f->line_B / n, "#333333", 1.4, NULL);
-            svg_text(m, px + 44 * f->line_A / n + 4, py - 44 * f->line_B / n + 4, "start", 12,
-                     COL_TEXT, false, "normal n");
+        double na = fa, nb = fb;
+        if (main && (normal_anchor(v, f, fa, fb, da, db, fig_py(v, 0), &na, &nb) || fig_inside(v, fa, fb))) {
+            double px = fig_px(v, na), py = fig_py(v, nb), tx, ty, lx0, lx1, ly;
+            normal_arrow(px, py, f->line_A / n, -f->line_B / n, &tx, &ty, &lx0, &lx1, &ly);
+            svg_arrow(m, px, py, tx, ty, "#333333", 1.4, NULL);
+            svg_text(m, lx0, ly, "start", 12, COL_TEXT, false, "normal n");
         }
     }
     /* the ray: behind e dashed, ahead solid, an arrowhead at the edge */
@@ -219,8 +267,13 @@ void ray_figure(Markup *m, const RayFig *f)
             }
         }
     }
-    if (f->has_line)
+    if (f->has_line) {
         box_add(&bx, fa, fb);
+        /* and room for the normal's arrow and label on the side it points
+         * to (past the window's edge, a normal along the ray is not seen) */
+        double n = hypot(f->line_A, f->line_B), room = 0.2 * fmax(bx.x1 - bx.x0, bx.y1 - bx.y0);
+        box_add(&bx, fa + room * f->line_A / n, fb + room * f->line_B / n);
+    }
     /* keep some of the ray ahead of e in view, and a little room above
      * and below the axis */
     if (bx.x1 < 0.25 * (bx.x1 - bx.x0))

@@ -84,7 +84,7 @@ sed 's/^parts .*/parts 4 5/' tests/weights.conf >"$only45"
 mkdir "$tmp/subs" "$tmp/subs45"
 core="p1-w-h-swapped p2-y-not-flipped p3a-far-root p3a-tangent-miss p3b-first-hit textbook
       hostile-compile-error hostile-missing-file hostile-segfault warn-unused"
-flat="p4-hits-behind p5-strict-edges"
+flat="p4-hits-behind p4-one-sided p5-strict-edges"
 for name in $core $flat; do
     dir=tests/selftest/$name
     case " $flat " in *" $name "*) to=$tmp/subs45/$name ;; *) to=$tmp/subs/$name ;; esac
@@ -224,6 +224,33 @@ check "Part 5's mesh tests: the mesh seen along the ray" grep -q 'The mesh seen 
 check "Part 1's figure: the frustum from the side" grep -q 'From the side' "$page/p1-w-h-swapped.html"
 check "Part 2's figure: the pixel grid" grep -q "pixels around pixel" "$page/p2-y-not-flipped.html"
 check "Part 4's figure: the plane edge on" grep -q 'plane seen edge on' "$page/p4-hits-behind.html"
+# normal_shown PAGE TEST: in the plane figure of Part 4's TEST on PAGE, the
+# label "normal n" lies inside the main window and the normal's arrow
+# starts 20 pixels or more off the ray's line: where the normal points
+# along the ray, it was once drawn under the ray, its label past the frame.
+normal_shown() {
+    awk -v head="Part 4: $2</h4>" '
+    function attr(s, name) {
+        if (!match(s, " " name "=\"[^\"]*\"")) return ""
+        return substr(s, RSTART + length(name) + 3, RLENGTH - length(name) - 4) + 0
+    }
+    index($0, head) { on = 1; next }
+    !on { next }
+    /<svg x=/ && !seen { seen = inwin = 1; wx = attr($0, "x"); wy = attr($0, "y"); ww = attr($0, "width"); wh = attr($0, "height"); next }
+    inwin && /^<\/svg>/ { inwin = 0 }
+    inwin && /stroke-width="1.6"/ && attr($0, "y1") == attr($0, "y2") { axis = attr($0, "y1") }
+    inwin && /stroke-width="1.4"/ { by = attr($0, "y1") }
+    inwin && />normal n</ { tx = attr($0, "x"); ty = attr($0, "y"); label = 1 }
+    /<\/figure>/ { exit }
+    END {
+        off = by - axis; if (off < 0) off = -off
+        exit !(label && tx >= wx && tx + 56 <= wx + ww && ty - 10 >= wy && ty <= wy + wh && off >= 20)
+    }' "$1"
+}
+check "Part 4's figure, the normal along the ray: it is drawn in the window, off the ray" \
+    normal_shown "$page/p4-one-sided.html" "both sides of the plane count"
+check "Part 4's figure, the plane's nearest point at the window's top: the normal is drawn in the window" \
+    normal_shown "$page/p4-one-sided.html" "hits and misses"
 check "the scores are at the top" sh -c "grep -n 'id=\"scores\"' '$page/p3a-far-root.html' | \
     awk -F: '{ exit !(\$1 < 80) }'"
 
