@@ -32,19 +32,23 @@ static bool unit3(const double *v, double *u)
     return true;
 }
 
-/* Two unit vectors p, q square to the unit vector u and to each other. */
+/* Two unit vectors p, q square to the unit vector u and to each other,
+ * the way an eye looking along u sees them: p to its right, q up (p x q =
+ * -u, so a picture drawn with p right and q up is not a mirror image),
+ * and q as near the world's +y as u allows (the lab's camera looks down
+ * -z with +y up, so a camera ray's picture is upright as in the render). */
 static void square_to(const double *u, double *p, double *q)
 {
-    int axis = fabs(u[0]) <= fabs(u[1]) && fabs(u[0]) <= fabs(u[2]) ? 0 : fabs(u[1]) <= fabs(u[2]) ? 1 : 2;
-    double a[3] = { 0, 0, 0 }, c[3];
-    a[axis] = 1;
-    c[0] = u[1] * a[2] - u[2] * a[1];
-    c[1] = u[2] * a[0] - u[0] * a[2];
-    c[2] = u[0] * a[1] - u[1] * a[0];
-    unit3(c, p);
-    q[0] = u[1] * p[2] - u[2] * p[1];
-    q[1] = u[2] * p[0] - u[0] * p[2];
-    q[2] = u[0] * p[1] - u[1] * p[0];
+    double up[3] = { 0, 1, 0 };
+    if (fabs(u[1]) > 0.9)               /* looking up (down), the head tilted back (forward) */
+        up[1] = 0, up[2] = u[1] > 0 ? 1 : -1;
+    double along = dot3(up, u);
+    for (int k = 0; k < 3; k++)
+        q[k] = up[k] - along * u[k];
+    unit3(q, q);
+    p[0] = u[1] * q[2] - u[2] * q[1];   /* p = u x q */
+    p[1] = u[2] * q[0] - u[0] * q[2];
+    p[2] = u[0] * q[1] - u[1] * q[0];
 }
 
 /* A figure with no drawing: the input itself makes the answer a miss. */
@@ -311,8 +315,19 @@ void fig_triangle(Markup *m, const Test *t, const Case *c, const double *got)
                  fig_num(b1, sizeof b1, tp, 10), tp < 0 ? " (behind e: t < 0)" : "",
                  fl[0].crossed ? "inside or on the edge of" : "outside");
     }
-    svg_text(m, 12, y + 18, "start", 11, COL_NOTE, false, "Seen along the ray, every triangle the ray "
-             "goes through covers the cross; a ray through a shared edge lies on that edge.");
+    if (mesh) {
+        svg_text(m, 12, y + 18, "start", 11, COL_NOTE, false, "Seen along the ray, every triangle the ray "
+                 "goes through covers the cross; a ray through a shared edge lies on that edge.");
+    } else {
+        /* the side the ray comes from: the winding of a, b, c as drawn
+         * (as the eye sees them), whose sign is det's */
+        const Flat *f = &fl[0];
+        double turn = (f->x[1] - f->x[0]) * (f->y[2] - f->y[0]) - (f->y[1] - f->y[0]) * (f->x[2] - f->x[0]);
+        svg_text(m, 12, y + 18, "start", 11, COL_NOTE, false, "Drawn as seen looking along the ray, %s",
+                 turn > 0 ? "a, b, c run counterclockwise: the ray comes at the triangle's front (det > 0)."
+                 : turn < 0 ? "a, b, c run clockwise: the ray comes at the triangle from behind (det < 0)."
+                 : "the triangle is edge on (det = 0).");
+    }
     char wt[120], gt[120];
     if (c->want[0] != 0)
         snprintf(wt, sizeof wt, "expected: a hit at t = %s%s", fig_num(b1, sizeof b1, c->want[1], 10),

@@ -84,7 +84,7 @@ sed 's/^parts .*/parts 4 5/' tests/weights.conf >"$only45"
 mkdir "$tmp/subs" "$tmp/subs45"
 core="p1-w-h-swapped p2-y-not-flipped p3a-far-root p3a-tangent-miss p3b-first-hit textbook
       hostile-compile-error hostile-missing-file hostile-segfault warn-unused"
-flat="p4-hits-behind p4-one-sided p5-strict-edges"
+flat="p4-hits-behind p4-one-sided p5-one-sided p5-strict-edges"
 for name in $core $flat; do
     dir=tests/selftest/$name
     case " $flat " in *" $name "*) to=$tmp/subs45/$name ;; *) to=$tmp/subs/$name ;; esac
@@ -247,6 +247,51 @@ normal_shown() {
         exit !(label && tx >= wx && tx + 56 <= wx + ww && ty - 10 >= wy && ty <= wy + wh && off >= 20)
     }' "$1"
 }
+# Part 5's figure of one triangle is drawn as the eye sees it looking along
+# the ray (it was once a mirror image): for p5-one-sided's triangle
+# a (-1, -1), b (0, 1), c (1, -1) at z = -4, seen down -z as the lab's
+# camera looks, a is drawn left of c and b above both.  And its note on
+# the winding of a, b, c, in every such figure of two pages, gives the
+# sign of det = (b - a).(r x (c - a)), worked out here from the case's
+# input (at least one of each sign).
+awk '
+    function attr(s, name) {
+        if (!match(s, " " name "=\"[^\"]*\"")) return ""
+        return substr(s, RSTART + length(name) + 3, RLENGTH - length(name) - 4) + 0
+    }
+    index($0, "Part 5: both sides count</h4>") { on = 1 }
+    on && />[abc]<\/text>/ { v = substr($0, index($0, "</text>") - 1, 1); x[v] = attr($0, "x"); y[v] = attr($0, "y"); n++ }
+    on && /<\/figure>/ { exit }
+    END { exit !(n == 3 && x["a"] < x["c"] && y["b"] < y["a"] && y["b"] < y["c"]) }' \
+    "$page/p5-one-sided.html" >/dev/null
+upright=$?
+check "Part 5's figure is the eye's view along the ray, not its mirror image: a left of c, b above" \
+    [ "$upright" -eq 0 ]
+awk '
+    /Drawn as seen looking along the ray/ {
+        said = /det &gt; 0/ ? 1 : /det &lt; 0/ ? -1 : /det = 0/ ? 0 : "?"
+    }
+    said != "" && /input: *a\.x = / {
+        line = $0
+        sub(/.*input: */, "", line)
+        k = split(line, part, ", ")
+        for (i = 1; i <= k; i++) { split(part[i], nv, " = "); val[nv[1]] = nv[2] + 0 }
+        e1x = val["b.x"] - val["a.x"]; e1y = val["b.y"] - val["a.y"]; e1z = val["b.z"] - val["a.z"]
+        e2x = val["c.x"] - val["a.x"]; e2y = val["c.y"] - val["a.y"]; e2z = val["c.z"] - val["a.z"]
+        px = val["r.y"] * e2z - val["r.z"] * e2y
+        py = val["r.z"] * e2x - val["r.x"] * e2z
+        pz = val["r.x"] * e2y - val["r.y"] * e2x
+        det = e1x * px + e1y * py + e1z * pz
+        sign = det > 0 ? 1 : det < 0 ? -1 : 0
+        if (sign != said) wrong++
+        seen[sign]++
+        said = ""
+    }
+    END { printf "%d %d %d\n", wrong, seen[1], seen[-1]; exit !(wrong == 0 && seen[1] > 0 && seen[-1] > 0) }' \
+    "$page/p5-one-sided.html" "$page/p5-strict-edges.html" >"$tmp/winding"
+winding=$?
+check "Part 5's note on a, b, c's winding gives det's sign, worked out from each case (wrong, det > 0, det < 0: $(cat "$tmp/winding"))" \
+    [ "$winding" -eq 0 ]
 check "Part 4's figure, the normal along the ray: it is drawn in the window, off the ray" \
     normal_shown "$page/p4-one-sided.html" "both sides of the plane count"
 check "Part 4's figure, the plane's nearest point at the window's top: the normal is drawn in the window" \
