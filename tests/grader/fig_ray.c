@@ -360,7 +360,7 @@ void ray_figure(Markup *m, const RayFig *f)
     }
     main = win[0];
 
-    fig_begin(m, FW, FH, f->title ? f->title : "the ray");
+    fig_begin(m, FW, FH + (f->note ? 16 : 0), f->title ? f->title : "the ray");
     svg_text(m, 10, 19, "start", 14, COL_TEXT, true, "%s", f->title ? f->title : "");
     /* enough digits that the expected and the returned t read apart */
     int digits = 6;
@@ -455,5 +455,7 @@ void ray_figure(Markup *m, const RayFig *f)
     svg_text(m, 12, TOP + WH + 44, "start", 11, COL_NOTE, false,
              "e: where the ray starts (t = 0); the arrow: the ray e + t r, marked in t; "
              "dashed: t < 0, behind e");
+    if (f->note)
+        svg_text(m, 12, TOP + WH + 60, "start", 11, COL_NOTE, false, "%s", f->note);
     fig_end(m);
 }

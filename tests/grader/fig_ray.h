@@ -40,6 +40,7 @@ typedef struct {
     double got_t;
     const char *want_text;     /* the legend's words (NULL: "expected hit ...")   */
     const char *got_text;
+    const char *note;          /* a line under the legend, or NULL                */
 } RayFig;
 
 /* Fills the frame of a sphere (centre c, radius R) seen from the ray

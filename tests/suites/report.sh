@@ -292,6 +292,29 @@ awk '
 winding=$?
 check "Part 5's note on a, b, c's winding gives det's sign, worked out from each case (wrong, det > 0, det < 0: $(cat "$tmp/winding"))" \
     [ "$winding" -eq 0 ]
+# Part 4's figure says which side the ray comes from: its note's sign of
+# r.n, in every plane figure of two pages, against r.n worked out here from
+# the case's input (at least one of each sign).
+awk '
+    /The ray comes at the plane from|The ray is parallel to the plane/ {
+        said = /r\.n &lt; 0/ ? -1 : /r\.n &gt; 0/ ? 1 : /r\.n = 0/ ? 0 : "?"
+    }
+    said != "" && /input: *p\.x = / {
+        line = $0
+        sub(/.*input: */, "", line)
+        k = split(line, part, ", ")
+        for (i = 1; i <= k; i++) { split(part[i], nv, " = "); val[nv[1]] = nv[2] + 0 }
+        rn = val["r.x"] * val["n.x"] + val["r.y"] * val["n.y"] + val["r.z"] * val["n.z"]
+        sign = rn > 0 ? 1 : rn < 0 ? -1 : 0
+        if (sign != said) wrong++
+        seen[sign]++
+        said = ""
+    }
+    END { printf "%d %d %d\n", wrong, seen[1], seen[-1]; exit !(wrong == 0 && seen[1] > 0 && seen[-1] > 0) }' \
+    "$page/p4-one-sided.html" "$page/p4-hits-behind.html" >"$tmp/sides"
+sides=$?
+check "Part 4's note on the side the ray comes from gives r.n's sign, worked out from each case (wrong, r.n > 0, r.n < 0: $(cat "$tmp/sides"))" \
+    [ "$sides" -eq 0 ]
 check "Part 4's figure, the normal along the ray: it is drawn in the window, off the ray" \
     normal_shown "$page/p4-one-sided.html" "both sides of the plane count"
 check "Part 4's figure, the plane's nearest point at the window's top: the normal is drawn in the window" \
