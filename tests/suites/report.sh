@@ -267,27 +267,37 @@ awk '
 upright=$?
 check "Part 5's figure is the eye's view along the ray, not its mirror image: a left of c, b above" \
     [ "$upright" -eq 0 ]
-awk '
-    /Drawn as seen looking along the ray/ {
-        said = /det &gt; 0/ ? 1 : /det &lt; 0/ ? -1 : /det = 0/ ? 0 : "?"
-    }
-    said != "" && /input: *a\.x = / {
-        line = $0
-        sub(/.*input: */, "", line)
-        k = split(line, part, ", ")
-        for (i = 1; i <= k; i++) { split(part[i], nv, " = "); val[nv[1]] = nv[2] + 0 }
-        e1x = val["b.x"] - val["a.x"]; e1y = val["b.y"] - val["a.y"]; e1z = val["b.z"] - val["a.z"]
-        e2x = val["c.x"] - val["a.x"]; e2y = val["c.y"] - val["a.y"]; e2z = val["c.z"] - val["a.z"]
-        px = val["r.y"] * e2z - val["r.z"] * e2y
-        py = val["r.z"] * e2x - val["r.x"] * e2z
-        pz = val["r.x"] * e2y - val["r.y"] * e2x
-        det = e1x * px + e1y * py + e1z * pz
-        sign = det > 0 ? 1 : det < 0 ? -1 : 0
-        if (sign != said) wrong++
-        seen[sign]++
-        said = ""
-    }
-    END { printf "%d %d %d\n", wrong, seen[1], seen[-1]; exit !(wrong == 0 && seen[1] > 0 && seen[-1] > 0) }' \
+# sign_notes NOTE INPUT BODY PAGE...: each figure note on the pages (a line
+# matching the ERE NOTE, saying "&gt; 0", "&lt; 0" or "= 0") against the
+# sign of a number worked out from the case's input that follows it (a
+# line matching INPUT): the awk function body BODY returns it from
+# val["a.x"] and the like.  Prints how many disagree, then how many were
+# positive and how many negative; true when none disagrees and both signs
+# were seen.
+sign_notes() {
+    note=$1 input=$2 body=$3
+    shift 3
+    awk -v note="$note" -v input="$input" '
+        function value(val,   e1x, e1y, e1z, e2x, e2y, e2z, det) { '"$body"' }
+        $0 ~ note { said = /&gt; 0/ ? 1 : /&lt; 0/ ? -1 : /= 0/ ? 0 : "?" }
+        said != "" && $0 ~ input {
+            line = $0
+            sub(/.*input: */, "", line)
+            k = split(line, part, ", ")
+            for (i = 1; i <= k; i++) { split(part[i], nv, " = "); val[nv[1]] = nv[2] + 0 }
+            x = value(val)
+            sign = x > 0 ? 1 : x < 0 ? -1 : 0
+            if (sign != said) wrong++
+            seen[sign]++
+            said = ""
+        }
+        END { printf "%d %d %d\n", wrong, seen[1], seen[-1]; exit !(wrong == 0 && seen[1] > 0 && seen[-1] > 0) }' "$@"
+}
+sign_notes 'Drawn as seen looking along the ray' 'input: *a[.]x = ' '
+    e1x = val["b.x"] - val["a.x"]; e1y = val["b.y"] - val["a.y"]; e1z = val["b.z"] - val["a.z"]
+    e2x = val["c.x"] - val["a.x"]; e2y = val["c.y"] - val["a.y"]; e2z = val["c.z"] - val["a.z"]
+    det = e1x * (val["r.y"] * e2z - val["r.z"] * e2y) + e1y * (val["r.z"] * e2x - val["r.x"] * e2z)
+    return det + e1z * (val["r.x"] * e2y - val["r.y"] * e2x)' \
     "$page/p5-one-sided.html" "$page/p5-strict-edges.html" >"$tmp/winding"
 winding=$?
 check "Part 5's note on a, b, c's winding gives det's sign, worked out from each case (wrong, det > 0, det < 0: $(cat "$tmp/winding"))" \
@@ -295,22 +305,8 @@ check "Part 5's note on a, b, c's winding gives det's sign, worked out from each
 # Part 4's figure says which side the ray comes from: its note's sign of
 # r.n, in every plane figure of two pages, against r.n worked out here from
 # the case's input (at least one of each sign).
-awk '
-    /The ray comes at the plane from|The ray is parallel to the plane/ {
-        said = /r\.n &lt; 0/ ? -1 : /r\.n &gt; 0/ ? 1 : /r\.n = 0/ ? 0 : "?"
-    }
-    said != "" && /input: *p\.x = / {
-        line = $0
-        sub(/.*input: */, "", line)
-        k = split(line, part, ", ")
-        for (i = 1; i <= k; i++) { split(part[i], nv, " = "); val[nv[1]] = nv[2] + 0 }
-        rn = val["r.x"] * val["n.x"] + val["r.y"] * val["n.y"] + val["r.z"] * val["n.z"]
-        sign = rn > 0 ? 1 : rn < 0 ? -1 : 0
-        if (sign != said) wrong++
-        seen[sign]++
-        said = ""
-    }
-    END { printf "%d %d %d\n", wrong, seen[1], seen[-1]; exit !(wrong == 0 && seen[1] > 0 && seen[-1] > 0) }' \
+sign_notes 'The ray comes at the plane from|The ray is parallel to the plane' 'input: *p[.]x = ' '
+    return val["r.x"] * val["n.x"] + val["r.y"] * val["n.y"] + val["r.z"] * val["n.z"]' \
     "$page/p4-one-sided.html" "$page/p4-hits-behind.html" >"$tmp/sides"
 sides=$?
 check "Part 4's note on the side the ray comes from gives r.n's sign, worked out from each case (wrong, r.n > 0, r.n < 0: $(cat "$tmp/sides"))" \
