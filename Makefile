@@ -376,9 +376,8 @@ $(UNIT_PLAIN): $(BUILD)/tests/%: $(BUILD)/tests/obj/%.o $(REF_OBJ) $(UNIT_LIBS) 
 $(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN) | $$(@D)/.
 	$(CC) $(SAN_LINK) $(THREADS) -Ilabs $< $(REF_ASAN) $(UNIT_LIBS_ASAN) -o $@ $(LDLIBS)
 
-# test_hexfloat checks three headers of the grader's.
-$(BUILD)/tests/obj/test_hexfloat.o $(ASAN)/tests/test_hexfloat: tests/grader/hexfloat.h tests/grader/decimal.h \
-                                                              tests/grader/shortest.h
+# test_hexfloat checks two headers of the grader's.
+$(BUILD)/tests/obj/test_hexfloat.o $(ASAN)/tests/test_hexfloat: tests/grader/hexfloat.h tests/grader/decimal.h
 
 # The unit tests of the grader's sandbox, include scan, memo, test files'
 # reader (cases.c) and judging of answers (check.c) link the part alone,

@@ -7,7 +7,7 @@
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "grader.h"
 #include "hexfloat.h"
-#include "shortest.h"
+#include "kit/numtext.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -149,16 +149,16 @@ static bool case_ok(Kind kind, const Case *c, const double *want, const double *
 
 static void describe_numbers(Text *t, const char *const *names, const double *v, int n)
 {
-    char b[SHORTEST_LEN];
+    char b[40];
     for (int k = 0; k < n; k++)
-        say(t, "%s%s = %s", k ? ", " : "", names[k], shortest(v[k], b));
+        say(t, "%s%s = %s", k ? ", " : "", names[k], kit_shortest_double(b, sizeof b, v[k]));
 }
 
 static void describe_case(Text *t, const Test *test, int index, const Case *c, const double *got, bool have)
 {
     Kind kind = test->kind;
     int nin = kind_nin(kind), nout = kind_nout(kind);
-    char b0[SHORTEST_LEN], b1[SHORTEST_LEN];
+    char b0[40], b1[40];
     say(t, "  case %d of %d", index + 1, test->ncases);
     if (kind == KIND_IMAGE && test->image_nx > 0)
         say(t, " (pixel i = %d, j = %d)", index % test->image_nx, index / test->image_nx);
@@ -172,13 +172,15 @@ static void describe_case(Text *t, const Test *test, int index, const Case *c, c
     say(t, "\n    expected:  ");
     if (kind_is_hit(kind)) {
         if (c->want[0] != 0)
-            say(t, "hit at t = %s (within %.3g)", shortest(c->want[1], b0), c->tol[1]);
+            say(t, "hit at t = %s (within %.3g)", kit_shortest_double(b0, sizeof b0, c->want[1]),
+                c->tol[1]);
         else
             say(t, "miss");
         if ((c->flags & CASE_EITHER_HIT) && kind == KIND_SPHERE && c->alt[0] < c->alt[1])
             say(t, " -- or a hit at t from %s to %s: the ray starts within rounding of "
                    "the surface, so a miss, a hit just ahead and the far side are all accepted",
-                shortest(c->alt[0], b0), shortest(c->alt[1], b1));
+                kit_shortest_double(b0, sizeof b0, c->alt[0]),
+                kit_shortest_double(b1, sizeof b1, c->alt[1]));
         else if ((c->flags & CASE_EITHER_HIT) && kind == KIND_SPHERE)
             say(t, " -- the ray grazes the sphere within rounding: hit or miss both accepted");
         else if (c->flags & CASE_EITHER_HIT)
@@ -203,7 +205,7 @@ static void describe_case(Text *t, const Test *test, int index, const Case *c, c
     }
     if (kind_is_hit(kind)) {
         if (got[0] == 1)
-            say(t, "hit at t = %s", shortest(got[1], b0));
+            say(t, "hit at t = %s", kit_shortest_double(b0, sizeof b0, got[1]));
         else if (got[0] == 0)
             say(t, "miss");
         else

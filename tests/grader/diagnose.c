@@ -6,7 +6,7 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "diagnose.h"
-#include "shortest.h"
+#include "kit/numtext.h"
 #include "../../labs/raytracer.h"
 
 #include <math.h>
@@ -412,7 +412,7 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
         }
         if (close && worst > 1e-9) {
             double v[2];
-            char b0[SHORTEST_LEN], b1[SHORTEST_LEN];
+            char b0[40], b1[40];
             p1_with_factor(M_PI / 180, basic[worst_c], v);
             out->float_digits = true;
             name_cause(f, "float", TAG_ALL, "your answers agree with the right ones to about 7 digits, "
@@ -420,8 +420,9 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
                        "%s = %s, the right one %s (off by %.2g of itself). Some of the computation is "
                        "in float (a float variable, tanf, a constant written 180.0f): use double "
                        "throughout.", basic[worst_c][0], basic[worst_c][1], basic[worst_c][2],
-                       worst_k ? "h" : "w", shortest(ab.got[worst_c][worst_k], b0),
-                       shortest(v[worst_k], b1), worst);
+                       worst_k ? "h" : "w",
+                       kit_shortest_double(b0, sizeof b0, ab.got[worst_c][worst_k]),
+                       kit_shortest_double(b1, sizeof b1, v[worst_k]), worst);
         }
     }
 
@@ -458,10 +459,10 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
                        "h = 2 d tan(alpha / 2) and w = aspect h.");
     }
     if (in_float && (!out->have_model || m.angle == 0)) {
-        char b[SHORTEST_LEN];
+        char b[40];
         name_cause(f, "float", TAG_ALL, "computed in float: every answer is a float (24 bits, about 7 digits), "
                    "e.g. h = %s for alpha = 90, aspect = 0.5, d = 3. Use double throughout "
-                   "(tan, not tanf; 180.0, not 180.0f).", shortest(g ? g[1] : 0, b));
+                   "(tan, not tanf; 180.0, not 180.0f).", kit_shortest_double(b, sizeof b, g ? g[1] : 0));
     }
 
     /* Near 180: a right formula whose rounded angle tan amplifies. */
@@ -651,9 +652,10 @@ static void diagnose_part2(ProbeSet *ps, Found *f, P2Found *out)
         name_cause(f, "d-ignored", TAG_ALL, "z is -1 whatever d: the plane is at z = -d (tutorials "
                    "such as Scratchapixel put it at distance 1; this lab's is at d).");
     if (x == X_RIGHT && y == Y_RIGHT && all_float(&a, 2, (const double (*)[CASE_MAX_OUT])model, N)) {
-        char b[SHORTEST_LEN];
+        char b[40];
         name_cause(f, "float", TAG_ALL, "computed in float: every coordinate is a float (24 bits, about 7 "
-                   "digits), e.g. x = %s. Use double throughout.", shortest(g[0], b));
+                   "digits), e.g. x = %s. Use double throughout.",
+                   kit_shortest_double(b, sizeof b, g[0]));
     } else if (x == X_RIGHT && y == Y_RIGHT && out->z == Z_RIGHT) {
         /* Right to float's digits only: float somewhere inside. */
         double worst = 0;
@@ -664,14 +666,15 @@ static void diagnose_part2(ProbeSet *ps, Found *f, P2Found *out)
                 if (err > worst)
                     worst = err, wc = c, wk = k;
             }
-        char b0[SHORTEST_LEN], b1[SHORTEST_LEN];
+        char b0[40], b1[40];
         if (worst > 1e-10 && worst <= FLOAT_DIGITS)
             name_cause(f, "float", TAG_ALL, "your coordinates agree with the right ones to about 7 "
                        "digits, float's precision, and no further: for pixel (%g, %g) of a %g x %g image "
                        "your %c = %s, the right one %s. Some of the computation is in float (a float "
                        "variable, a constant written 0.5f): use double throughout.", cases[wc][0],
-                       cases[wc][1], cases[wc][2], cases[wc][3], "xyz"[wk], shortest(a.got[wc][wk], b0),
-                       shortest(model[wc][wk], b1));
+                       cases[wc][1], cases[wc][2], cases[wc][3], "xyz"[wk],
+                       kit_shortest_double(b0, sizeof b0, a.got[wc][wk]),
+                       kit_shortest_double(b1, sizeof b1, model[wc][wk]));
     }
     answers_free(&a);
 }
@@ -984,13 +987,14 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
                 worst = err, wk = k, wc = c;
         }
     double rel = 1e-9;
-    char b0[SHORTEST_LEN], b1[SHORTEST_LEN];
+    char b0[40], b1[40];
     if (float_t >= 3 && near_t + exact_t == 0) {
         out->model[M_FLOAT] = true;
         rel = 1e-5;
         name_cause(f, "float", M_FLOAT, "computed in float: every t is a float (24 bits, about 7 digits): "
                    "e.g. t = %s where the hit is at %s. Use double throughout (double, sqrt, not "
-                   "float, sqrtf).", shortest(ab->got[0][1], b0), shortest(quad(basic[0]).t0, b1));
+                   "float, sqrtf).", kit_shortest_double(b0, sizeof b0, ab->got[0][1]),
+                   kit_shortest_double(b1, sizeof b1, quad(basic[0]).t0));
     } else if (near_t >= 3 && near_t > 2 * (exact_t + float_t)) {
         out->model[M_FLOAT] = true;
         out->float_digits = true;
@@ -998,7 +1002,8 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
         name_cause(f, "float", M_FLOAT, "your t agree with the right ones to 5 to 7 digits, about "
                    "float's precision, and no further: e.g. t = %s where the hit is at %s. Some of "
                    "the computation is in float (a float variable, sqrtf): use double throughout.",
-                   shortest(pf[wk]->got[wc][1], b0), shortest(quad(pin[wk][wc]).t0, b1));
+                   kit_shortest_double(b0, sizeof b0, pf[wk]->got[wc][1]),
+                   kit_shortest_double(b1, sizeof b1, quad(pin[wk][wc]).t0));
     }
     out->rel = rel;
 

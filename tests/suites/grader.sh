@@ -389,7 +389,7 @@ check "p4-epsilon: no hint says the plane has two sides" \
     sh -c "! grep -q 'two sides' '$tmp/grades-subs45/p4-epsilon.json'"
 
 # A case's numbers are shown in the fewest digits that read back as the
-# same double (tests/grader/shortest.h): the test's normal (0.48, 0.6,
+# same double (kit_shortest_double, labs/kit/numtext.c): the test's normal (0.48, 0.6,
 # 0.64) as written, not as %.17g's 0.47999999999999998.
 check "a failing case's input reads n.x = 0.48, n.y = 0.6, n.z = 0.64, not 17 digits" \
     sh -c "grep -q 'n.x = 0.48, n.y = 0.6, n.z = 0.64' '$tmp/grades-subs45/p4-one-sided.json' &&
