@@ -28,7 +28,6 @@
  * than the compiler may take (CC_SECONDS). */
 #define MEMO_WAIT_SECONDS (CC_SECONDS + 10)
 
-#define SOURCE_MAX (1 << 20)        /* a stage file larger than 1 MiB is refused */
 
 /* The compiler's limits, per run (tests/grader/README in the kit's README,
  * "Limits").  Compiling a stage file takes gcc 0.2 s and 30 MiB resident
@@ -206,7 +205,7 @@ void build_explain_undefined(Build *b, const char *submission, int part)
             if (!f && fd >= 0)
                 close(fd);
             size_t len = 0;
-            char *text = f ? kit_load_stream(f, SOURCE_MAX, &len) : NULL;
+            char *text = f ? kit_load_stream(f, BUILD_SOURCE_MAX, &len) : NULL;
             bool found = text && defines_function(text, names[k]);
             free(text);
             if (!found)
@@ -635,7 +634,7 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
         char from[PATH_MAX], to[PATH_MAX + 700];
         snprintf(from, sizeof from, "%s/labs/%s", cfg->root, headers[k]);
         snprintf(to, sizeof to, "%s/%s", src, headers[k]);
-        if (copy_file(from, to, SOURCE_MAX, err, errlen))
+        if (copy_file(from, to, BUILD_SOURCE_MAX, err, errlen))
             return -1;
     }
     char to[PATH_MAX + 700];
@@ -679,17 +678,17 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
             return not_compiled(b, "cannot read ", cerr);
         }
         struct stat st;
-        if (fstat(in, &st) == 0 && st.st_size > SOURCE_MAX) {
+        if (fstat(in, &st) == 0 && st.st_size > BUILD_SOURCE_MAX) {
             close(in);
             snprintf(cerr, sizeof cerr, "%s is %lld bytes; a stage file may be at most %d (1 MiB)",
-                     cfile, (long long)st.st_size, SOURCE_MAX);
+                     cfile, (long long)st.st_size, BUILD_SOURCE_MAX);
             return not_compiled(b, "refused: too large: ", cerr);
         }
-        if (copy_fd(in, path, to, SOURCE_MAX, cerr, sizeof cerr))
+        if (copy_fd(in, path, to, BUILD_SOURCE_MAX, cerr, sizeof cerr))
             return not_compiled(b, cerr, "");
         /* The copy, read once for what must not reach the compiler. */
         size_t n = 0;
-        char *text = kit_load_file(to, SOURCE_MAX, &n);
+        char *text = kit_load_file(to, BUILD_SOURCE_MAX, &n);
         if (!text) {
             snprintf(cerr, sizeof cerr, "%s: its copy cannot be read back", cfile);
             return not_compiled(b, "cannot read ", cerr);

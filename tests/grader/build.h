@@ -14,6 +14,11 @@
 #include <stdbool.h>
 #include <stddef.h>
 
+/* A stage file larger than this (1 MiB) is refused; the memo of builds
+ * (memo.c) and make render's lookalike scan (lookalike_main.c) read no
+ * more either. */
+#define BUILD_SOURCE_MAX (1 << 20)
+
 typedef struct {
     const char *root;          /* the kit's root directory (absolute)          */
     const char *cc;            /* the compiler                                  */

@@ -4,13 +4,12 @@
  * (lookalike.h), or says that it is saved as UTF-16.  It only advises: its
  * exit status is 0 unless it was called wrongly (2).
  */
+#include "build.h"
 #include "lookalike.h"
 #include "kit/savefile.h"
 
 #include <stdio.h>
 #include <stdlib.h>
-
-enum { SOURCE_MAX = 1 << 20 };   /* the grader's own limit on a stage file */
 
 int main(int argc, char **argv)
 {
@@ -20,7 +19,7 @@ int main(int argc, char **argv)
     }
     for (int k = 1; k < argc; k++) {
         size_t n = 0;
-        char *text = kit_load_file(argv[k], SOURCE_MAX, &n);
+        char *text = kit_load_file(argv[k], BUILD_SOURCE_MAX, &n);
         if (!text)
             continue;                   /* the compiler has said why */
         char lines[1200];

@@ -10,6 +10,7 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too */
 #include "memo.h"
+#include "build.h"
 #include "kit/savefile.h"
 
 #include <errno.h>
@@ -22,7 +23,6 @@
 #include <time.h>
 #include <unistd.h>
 
-#define MEMO_SOURCE_MAX (1 << 20)   /* as a stage file may be (build.c)       */
 #define MEMO_FILE_MAX (64 << 20)    /* an object or a shared object           */
 #define MEMO_CHAIN 64               /* files of one stage sharing a hash      */
 
@@ -50,7 +50,7 @@ bool memo_find(const char *memo, const char *stage, const char *kind, const char
     if (!memo || !*memo)
         return false;
     size_t len = 0;
-    char *bytes = kit_load_file(src, MEMO_SOURCE_MAX, &len);
+    char *bytes = kit_load_file(src, BUILD_SOURCE_MAX, &len);
     if (!bytes)
         return false;
     uint64_t h = 14695981039346656037u;
@@ -68,7 +68,7 @@ bool memo_find(const char *memo, const char *stage, const char *kind, const char
         char path[1200];
         size_t kept_len = 0;
         snprintf(path, sizeof path, "%s/source", e->dir);
-        char *kept = kit_load_file(path, MEMO_SOURCE_MAX, &kept_len);
+        char *kept = kit_load_file(path, BUILD_SOURCE_MAX, &kept_len);
         if (kept) {
             again = false;
             e->found = kept_len == len && memcmp(kept, bytes, len) == 0;
