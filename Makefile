@@ -112,16 +112,20 @@ $(BUILD)/sub/labs/%.o: labs/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/sub/solutions/%.o: solutions/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-# A stage file the student edits that does not compile: bin/lookalike then
-# names what in it only looks like C (a non-breaking space, curly quotes...),
-# as the grader does (tests/grader/lookalike.h).
-STAGE_CC = $(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@ || { $(BUILD)/bin/lookalike $<; exit 1; }
-$(BUILD)/sub/labs/lto/%.o: labs/%.c $(KIT_HDR) | $$(@D)/. $(BUILD)/bin/lookalike
+# A stage file the student edits: bin/stagecheck first refuses one the
+# grader would not build (a header of the student's own: it compiles each
+# stage file alone; tests/grader/own_headers.h).  One that does not compile:
+# bin/lookalike then names what in it only looks like C (a non-breaking
+# space, curly quotes...), as the grader does (tests/grader/lookalike.h).
+STAGE_CC = $(BUILD)/bin/stagecheck $< && \
+           { $(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@ || { $(BUILD)/bin/lookalike $<; exit 1; }; }
+STAGE_TOOLS = $(BUILD)/bin/stagecheck $(BUILD)/bin/lookalike
+$(BUILD)/sub/labs/lto/%.o: labs/%.c $(KIT_HDR) | $$(@D)/. $(STAGE_TOOLS)
 	$(STAGE_CC)
 $(BUILD)/sub/solutions/lto/%.o: solutions/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@
 ifeq ($(filter labs solutions,$(SUB_NAME)),)
-$(SUB_BUILD)/lto/%.o: $$(call stage_src,$$*,$(SUB_DIR)) $(KIT_HDR) | $$(@D)/. $(BUILD)/bin/lookalike
+$(SUB_BUILD)/lto/%.o: $$(call stage_src,$$*,$(SUB_DIR)) $(KIT_HDR) | $$(@D)/. $(STAGE_TOOLS)
 	$(STAGE_CC)
 endif
 $(BUILD)/kit/lto/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
@@ -198,7 +202,8 @@ $(BUILD)/ccmemo/cc: $(BUILD)/tools/ccmemo_main.o $(BUILD)/tools/libtools.a $(BUI
 HAVE_ORACLE := $(wildcard tests/oracle/oracle.h)
 HAVE_HIDDEN := $(wildcard tests/hidden/hidden.c)
 GRADER_LIB_SRC = tests/grader/cases.c tests/grader/check.c tests/grader/sandbox.c \
-                 tests/grader/build.c tests/grader/memo.c tests/grader/include_scan.c tests/grader/linkmsg.c tests/grader/lookalike.c tests/grader/config.c tests/grader/grade.c \
+                 tests/grader/build.c tests/grader/memo.c tests/grader/include_scan.c tests/grader/linkmsg.c tests/grader/lookalike.c \
+                 tests/grader/own_headers.c tests/grader/config.c tests/grader/grade.c \
                  tests/grader/report_table.c tests/grader/report_json.c \
                  tests/grader/diagnose.c \
                  tests/grader/report_render.c tests/grader/report_html.c tests/grader/markup.c \
@@ -261,6 +266,10 @@ $(BUILD)/bin/grade: $(BUILD)/grader/grade_main.o $(GRADE_EXTRA) $(BUILD)/grader/
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/lookalike: $(BUILD)/grader/lookalike_main.o $(BUILD)/grader/lookalike.o \
                         $(BUILD)/kit/libkit.a | $$(@D)/.
+	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+$(BUILD)/bin/stagecheck: $(BUILD)/grader/stagecheck_main.o $(BUILD)/grader/include_scan.o \
+                         $(BUILD)/grader/own_headers.o $(BUILD)/grader/lookalike.o \
+                         $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/gentests: $(BUILD)/oracle/gentests_main.o $(BUILD)/oracle/liboracle.a \
                        $(BUILD)/grader/libgrader.a $(BUILD)/kit/libkit.a | $$(@D)/.
@@ -366,7 +375,7 @@ UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
 # student kit builds three of these in every run of its suite.  The object
 # is made again whenever the libraries are, as the program was before.
 # (Not the grader's units nor test_serve: their own rules are below.)
-GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike
+GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers
 UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) $(BUILD)/tests/test_serve,$(UNIT_BIN))
 $(UNIT_PLAIN:$(BUILD)/tests/%=$(BUILD)/tests/obj/%.o): $(BUILD)/tests/obj/%.o: tests/unit/%.c \
                           tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS) | $$(@D)/.
@@ -390,6 +399,8 @@ $(GRADER_UNITS:%=$(ASAN)/tests/test_%): $(ASAN)/tests/test_%: tests/unit/test_%.
 	$(CC) $(SAN_LINK) -Ilabs $(filter %.c,$^) $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
 # check.c reads the kinds of cases from cases.c.
 $(BUILD)/tests/test_check $(ASAN)/tests/test_check: tests/grader/cases.c
+# own_headers.c reads the names with include_scan.c.
+$(BUILD)/tests/test_own_headers $(ASAN)/tests/test_own_headers: tests/grader/include_scan.c
 # The server of tests' unit test links the sandbox and, on Linux, the
 # runner's server side (test_serve is its own server).
 SERVE_SRC = tests/grader/sandbox.c $(if $(LOAD_RUNNERS),tests/grader/harness_serve.c)

@@ -9,6 +9,7 @@
 #include "include_scan.h"
 #include "linkmsg.h"
 #include "lookalike.h"
+#include "own_headers.h"
 #include "sandbox.h"
 #include "kit/savefile.h"
 
@@ -229,6 +230,17 @@ static void explain_lookalikes(Build *b, const char *text, size_t n, const char 
         return;
     say(b, LOOKALIKE_INTRO "\n");
     say(b, lines);
+}
+
+/* After a failed compile: the headers the file includes from its own
+ * folder in the submission, which its build here does not have. */
+static void explain_own_headers(Build *b, const char *text, size_t n, const char *submission,
+                                const char *cfile)
+{
+    char lines[1400];
+    const char *dirs[] = { submission };
+    if (own_headers_explain(text, n, dirs, 1, cfile, lines, sizeof lines) > 0)
+        say(b, lines);
 }
 
 /* The file was not handed to the compiler: says why, and returns 0. */
@@ -705,8 +717,10 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
             return 0;
         }
         int rc = compile_stage(cfg, b, stage, load, &memo, &stored, err, errlen);
-        if (rc > 0)
+        if (rc > 0) {
             explain_lookalikes(b, text, n, cfile);
+            explain_own_headers(b, text, n, submission, cfile);
+        }
         free(text);
         if (rc != 0)
             return rc < 0 ? -1 : 0;

@@ -164,6 +164,8 @@ for dir in tests/selftest/*/; do
     cp -R "$tmp/reference" "$sub"
     set -- "$dir"part*.c
     [ -f "$1" ] && cp "$@" "$sub/"
+    set -- "$dir"*.h                    # a student's own headers (build-own-header)
+    [ -f "$1" ] && cp "$@" "$sub/"
     [ -f "$dir/MISSING" ] && rm -f "$sub/$(cat "$dir/MISSING")"
 done
 # A file that includes the reference by its absolute path must be refused.

@@ -435,6 +435,47 @@ if [ -d solutions ]; then
         sh -c "[ $status -eq 2 ] && grep -q 'part1_image_plane.c is saved as UTF-16 .*save it as UTF-8' '$tmp/stderr'"
 fi
 
+# A stage file that includes a header of the student's own, beside it:
+# make render found it (the file is compiled where it lies), the grader
+# does not (it builds each stage file alone), so the render worked and the
+# grade was 0.  make render now refuses it, saying why, as the grader does;
+# with the header's function moved into the file it renders.
+if [ -d solutions ]; then
+    mkdir -p "$tmp/ownhdr"
+    cp solutions/*.c "$tmp/ownhdr/"
+    printf 'static double my_dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }\n' \
+        >"$tmp/ownhdr/myvec.h"
+    { sed -n '1,/#include "raytracer.h"/p' solutions/part3a_sphere_intersect.c
+      echo '#include "myvec.h"'
+      echo 'double twice_dot(Vec3 a) { return 2 * my_dot(a, a); }'
+      sed '1,/#include "raytracer.h"/d' solutions/part3a_sphere_intersect.c; } >"$tmp/ownhdr/part3a.c"
+    mv "$tmp/ownhdr/part3a.c" "$tmp/ownhdr/part3a_sphere_intersect.c"
+    at=$(grep -n '#include "myvec.h"' "$tmp/ownhdr/part3a_sphere_intersect.c" | sed 's/:.*//')
+    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/ownhdr" OUT="$tmp/ownhdr.png"
+    check "make render refuses a stage file that includes a header of its own, naming it and its line (exit $status)" \
+        sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/ownhdr.png' ] &&
+               grep -q 'part3a_sphere_intersect.c:$at: #include \"myvec.h\": the grader will not have myvec.h' '$tmp/stderr' &&
+               grep -q 'put what myvec.h holds into .*part3a_sphere_intersect.c itself' '$tmp/stderr'"
+    { sed -n '1,/#include "raytracer.h"/p' solutions/part3a_sphere_intersect.c
+      cat "$tmp/ownhdr/myvec.h"
+      echo 'double twice_dot(Vec3 a) { return 2 * my_dot(a, a); }'
+      sed '1,/#include "raytracer.h"/d' solutions/part3a_sphere_intersect.c; } >"$tmp/ownhdr/part3a.c"
+    mv "$tmp/ownhdr/part3a.c" "$tmp/ownhdr/part3a_sphere_intersect.c"
+    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/ownhdr" OUT="$tmp/ownhdr.png"
+    check "... and renders it once the header's function is in the file (exit $status)" \
+        sh -c "[ $status -eq 0 ] && [ -s '$tmp/ownhdr.png' ]"
+    # What the grader refuses outright, make render refuses with its words
+    # (a kit header by a path with .., which the compiler would find).
+    mkdir -p "$tmp/dotdot"
+    cp solutions/*.c "$tmp/dotdot/"
+    sed "s|#include \"raytracer.h\"|#include \"../../labs/raytracer.h\"|" solutions/part2_pixel_coordinates.c \
+        >"$tmp/dotdot/part2_pixel_coordinates.c"
+    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/dotdot" OUT="$tmp/dotdot.png"
+    check "make render refuses an include the grader refuses, in the grader's words (exit $status)" \
+        sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/dotdot.png' ] &&
+               grep -q 'part2_pixel_coordinates.c: refused, as the grader refuses it: .*write #include \"raytracer.h\"' '$tmp/stderr'"
+fi
+
 # misbehaving DIR STATEMENT: a submission in DIR, the reference's but for a
 # Part 3b whose ray_color runs STATEMENT for the pixels right of the centre.
 misbehaving() {
