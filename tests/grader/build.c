@@ -221,6 +221,35 @@ void build_explain_undefined(Build *b, const char *submission, int part)
         }
 }
 
+bool build_header_changed(const char *root, const char *name)
+{
+    char shipped[PATH_MAX], mine[PATH_MAX];
+    snprintf(shipped, sizeof shipped, "%s/tests/grader/shipped/%s", root, name);
+    snprintf(mine, sizeof mine, "%s/labs/%s", root, name);
+    size_t n1 = 0, n2 = 0;
+    char *a = kit_load_file(shipped, BUILD_SOURCE_MAX, &n1);
+    char *c = a ? kit_load_file(mine, BUILD_SOURCE_MAX, &n2) : NULL;
+    bool changed = a && (!c || n1 != n2 || memcmp(a, c, n1) != 0);
+    free(a);
+    free(c);
+    return changed;
+}
+
+void build_explain_headers(const BuildConfig *cfg, Build *b, int part)
+{
+    static const char *names[] = { "raytracer.h", "vec3.h" };
+    for (int k = 0; k < 2; k++)
+        if (build_header_changed(cfg->root, names[k])) {
+            char line[600];
+            snprintf(line, sizeof line,
+                     "labs/%s is not the one the kit came with: %s.c was built with the kit's own, as "
+                     "your instructor's grader builds it. If it uses something you added to labs/%s "
+                     "(a macro, a prototype), move that into %s.c.\n",
+                     names[k], stage_names[part], names[k], stage_names[part]);
+            say(b, line);
+        }
+}
+
 /* After a stage file did not compile: the characters in it that look like
  * C's but are not, which the compiler calls "stray" or "unexpected". */
 static void explain_lookalikes(Build *b, const char *text, size_t n, const char *cfile)
@@ -640,11 +669,16 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
         return -1;
     }
 
-    /* The headers the students see, and the harness. */
+    /* The headers the students see, and the harness.  In the student kit,
+     * as the kit shipped them (tests/grader/shipped): what a student adds
+     * to labs/raytracer.h, the instructor's grader will not have, so this
+     * one does not either (grade_main.c warns of the change). */
     static const char *headers[] = { "raytracer.h", "vec3.h" };
     for (int k = 0; k < 2; k++) {
         char from[PATH_MAX], to[PATH_MAX + 700];
-        snprintf(from, sizeof from, "%s/labs/%s", cfg->root, headers[k]);
+        snprintf(from, sizeof from, "%s/tests/grader/shipped/%s", cfg->root, headers[k]);
+        if (access(from, R_OK) != 0)
+            snprintf(from, sizeof from, "%s/labs/%s", cfg->root, headers[k]);
         snprintf(to, sizeof to, "%s/%s", src, headers[k]);
         if (copy_file(from, to, BUILD_SOURCE_MAX, err, errlen))
             return -1;

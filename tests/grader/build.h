@@ -71,6 +71,19 @@ void build_remove(Build *b);
  * reference's other parts, so the helper belongs in this part's file too. */
 void build_explain_undefined(Build *b, const char *submission, int part);
 
+/* After a build of part that did not compile or link, in the student kit
+ * (whose tests/grader/shipped holds the kit's headers as shipped, which
+ * the stage files are built with, as the instructor's grader builds them):
+ * adds to b->messages which of labs/raytracer.h and labs/vec3.h the
+ * student has changed, and that what the file uses from a change belongs
+ * in the file. */
+void build_explain_headers(const BuildConfig *cfg, Build *b, int part);
+
+/* Whether the student kit at root (with tests/grader/shipped) has a labs/name
+ * (raytracer.h or vec3.h) that is not as the kit shipped it; false in a
+ * kit without tests/grader/shipped. */
+bool build_header_changed(const char *root, const char *name);
+
 /* An unchecked build's first run (res) tells whether its object links:
  * when the runner says it does not, b->ok becomes false with the linker's
  * message added, and 1 is returned; when the run ended cleanly, the object

@@ -410,8 +410,10 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
                 return -1;
             }
         }
-        if (!b.ok && !b.refused)
+        if (!b.ok && !b.refused) {
             build_explain_undefined(&b, opt->submission, p);
+            build_explain_headers(opt->build, &b, p);
+        }
         g->build_messages[p] = b.messages;
         g->build_refused[p] = b.refused;
         g->built[p] = b.ok;

@@ -162,27 +162,20 @@ static const char *store_dir(void)
 /* In the student kit, whose tests/grader/shipped holds the headers as the
  * kit shipped them: says on stderr which of labs/raytracer.h and
  * labs/vec3.h a student has changed.  Instructors grade the stage files
- * alone with the kit's own headers, so a stage file that needs a change
- * made there builds here and not there. */
+ * alone with the kit's own headers, so the grader here builds them with
+ * the shipped ones too (build.c): a stage file that needs a change made
+ * in labs/ builds in make render and not in make grade, and this says why. */
 static void warn_changed_headers(const char *root)
 {
     static const char *names[] = { "raytracer.h", "vec3.h" };
-    for (size_t k = 0; k < sizeof names / sizeof names[0]; k++) {
-        char shipped[PATH_MAX + 64], mine[PATH_MAX + 64];
-        snprintf(shipped, sizeof shipped, "%s/tests/grader/shipped/%s", root, names[k]);
-        snprintf(mine, sizeof mine, "%s/labs/%s", root, names[k]);
-        size_t n1 = 0, n2 = 0;
-        char *a = kit_load_file(shipped, 1 << 20, &n1);
-        char *b = a ? kit_load_file(mine, 1 << 20, &n2) : NULL;
-        if (a && (!b || n1 != n2 || memcmp(a, b, n1) != 0))
+    for (size_t k = 0; k < sizeof names / sizeof names[0]; k++)
+        if (build_header_changed(root, names[k]))
             fprintf(stderr, "grade: labs/%s is not the one the kit came with. Your instructor grades "
                             "your part*.c files with the kit's own %s, so whatever they use from your "
                             "change (a macro, a prototype, a field) will be missing there, and they "
-                            "will not build. Keep such things in your part*.c files (the kit's own: "
-                            "tests/grader/shipped/%s).\n", names[k], names[k], names[k]);
-        free(a);
-        free(b);
-    }
+                            "will not build; make grade builds them with the kit's own too "
+                            "(tests/grader/shipped/%s). Keep such things in your part*.c files.\n",
+                            names[k], names[k], names[k]);
 }
 
 /* Whether dir holds a stage file of any part. */

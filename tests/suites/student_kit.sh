@@ -298,7 +298,24 @@ printf '#define EPSILON 1e-9\n' >>"$kit/labs/raytracer.h"
 check "a changed labs/raytracer.h: make grade warns that the instructor grades with the kit's own" \
     sh -c "grep -q 'grade: labs/raytracer.h is not the one the kit came with' '$tmp/out' &&
            grep -q 'tests/grader/shipped/raytracer.h' '$tmp/out' && cmp -s labs/raytracer.h '$kit/tests/grader/shipped/raytracer.h'"
+# A stage file that uses the macro: it built here, with the changed header,
+# and got full marks, where the instructor's grader (the kit's own header)
+# gives 0. make grade here builds it with the kit's own too, and says so
+# below the compiler's message.
+cp "$kit/labs/part1_image_plane.c" "$tmp/part1_image_plane.c"
+sed 's/\*h = 2 \* d \* tan_half;/*h = 2 * d * tan_half * (1 + EPSILON);/' solutions/part1_image_plane.c \
+    >"$kit/labs/part1_image_plane.c"
+(cd "$kit" && out/build/bin/grade --submission labs --part 1) >"$tmp/out" 2>&1 </dev/null
+status=$?
+check "a stage file that uses a macro added to labs/raytracer.h does not build in make grade either (exit $status)" \
+    sh -c "[ $status -eq 1 ] && grep -q 'EPSILON' '$tmp/out' && grep -q '^Part 1: .*  0 / 20' '$tmp/out' &&
+           grep -q 'labs/raytracer.h is not the one the kit came with: part1_image_plane.c was built with the kit.s own' '$tmp/out'"
 cp "$tmp/raytracer.h" "$kit/labs/raytracer.h"
+(cd "$kit" && out/build/bin/grade --submission labs --part 1) >"$tmp/out" 2>&1 </dev/null
+status=$?
+check "... and, with the header as shipped, neither it nor the warning is there (exit $status)" \
+    sh -c "[ $status -eq 1 ] && grep -q 'EPSILON' '$tmp/out' && ! grep -q 'is not the one the kit came with' '$tmp/out'"
+cp "$tmp/part1_image_plane.c" "$kit/labs/part1_image_plane.c"
 
 # ---- the reference stage files in labs/: full marks, identical renders ----
 cp solutions/*.c "$kit/labs/"
