@@ -132,9 +132,18 @@ $(BUILD)/kit/lto/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) -c $< -o $@
 RENDER_OBJ = $(BUILD)/kit/lto/render_main.o $(BUILD)/kit/lto/render.o $(BUILD)/kit/lto/image.o \
              $(BUILD)/kit/lto/closest.o
+# A link that fails: bin/linkcheck then says what the linker's message
+# means for the stage files (tests/grader/linkcheck_main.c): a helper
+# defined in two of them, most often, which make render cannot link and the
+# grader, building each alone, does not mind.
+render_src = $(if $(filter labs solutions,$(1)),$(STAGES:%=$(1)/%.c),\
+                 $(foreach s,$(STAGES),$(call stage_src,$(s),$(SUB_DIR))))
 $(BUILD)/sub/%/render: $(RENDER_OBJ) \
-                       $$(addprefix $(BUILD)/sub/$$*/lto/,$$(addsuffix .o,$$(STAGES))) $(BUILD)/kit/libkit.a
-	$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) $^ -o $@ $(LDLIBS)
+                       $$(addprefix $(BUILD)/sub/$$*/lto/,$$(addsuffix .o,$$(STAGES))) $(BUILD)/kit/libkit.a \
+                       | $(BUILD)/bin/linkcheck
+	$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) $^ -o $@ $(LDLIBS) 2>$@.log || \
+	    { cat $@.log >&2; $(BUILD)/bin/linkcheck $@.log $(call render_src,$*); rm -f $@.log; exit 1; }; \
+	    cat $@.log >&2; rm -f $@.log
 $(BUILD)/bin/compare: $(BUILD)/kit/compare_main.o $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 
@@ -265,6 +274,9 @@ $(BUILD)/bin/grade: $(BUILD)/grader/grade_main.o $(GRADE_EXTRA) $(BUILD)/grader/
                     $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $(HARNESS) $(GRADER_REF) $(RUNNERS) $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/lookalike: $(BUILD)/grader/lookalike_main.o $(BUILD)/grader/lookalike.o \
+                        $(BUILD)/kit/libkit.a | $$(@D)/.
+	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+$(BUILD)/bin/linkcheck: $(BUILD)/grader/linkcheck_main.o $(BUILD)/grader/linkmsg.o \
                         $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/stagecheck: $(BUILD)/grader/stagecheck_main.o $(BUILD)/grader/include_scan.o \

@@ -13,7 +13,6 @@
 #include "sandbox.h"
 #include "kit/savefile.h"
 
-#include <ctype.h>
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -163,35 +162,6 @@ static void build_say(Build *b, const char *what, const char *name)
     say(b, "\n");
 }
 
-/* Whether text defines a function name: the name, as a whole word, then
- * its parameters in parentheses, then a body's "{". */
-static bool defines_function(const char *text, const char *name)
-{
-    size_t n = strlen(name);
-    for (const char *p = strstr(text, name); p && n; p = strstr(p + 1, name)) {
-        bool word = (p == text || !(isalnum((unsigned char)p[-1]) || p[-1] == '_')) &&
-                    !(isalnum((unsigned char)p[n]) || p[n] == '_');
-        const char *q = p + n;
-        while (isspace((unsigned char)*q))
-            q++;
-        if (!word || *q != '(')
-            continue;
-        int depth = 0;
-        for (; *q; q++) {
-            depth += (*q == '(') - (*q == ')');
-            if (depth == 0)
-                break;
-        }
-        if (!*q)
-            continue;
-        for (q++; isspace((unsigned char)*q); q++)
-            ;
-        if (*q == '{')
-            return true;
-    }
-    return false;
-}
-
 void build_explain_undefined(Build *b, const char *submission, int part)
 {
     char names[3][LINKMSG_NAME_MAX];
@@ -207,11 +177,11 @@ void build_explain_undefined(Build *b, const char *submission, int part)
                 close(fd);
             size_t len = 0;
             char *text = f ? kit_load_stream(f, BUILD_SOURCE_MAX, &len) : NULL;
-            bool found = text && defines_function(text, names[k]);
+            bool found = text && linkmsg_defines(text, names[k]);
             free(text);
             if (!found)
                 continue;
-            char line[900];
+            char line[1024];
             snprintf(line, sizeof line, "`%s' is defined in your %s.c, but each part is graded with "
                      "the reference's other parts, not with your other files: define %s in %s.c too "
                      "(static, so that the two do not clash in make render)\n", names[k],

@@ -28,34 +28,116 @@ static size_t identifier(const char *p)
     return n;
 }
 
-int linkmsg_undefined(const char *text, char names[][LINKMSG_NAME_MAX], int max)
+/* The name a line of a linker's message says is undefined (dup false) or
+ * defined twice (dup true): stored at *at, its length returned; 0 when the
+ * line says neither. */
+static size_t line_name(const char *copy, bool dup, const char **name)
+{
+    const char *at;
+    const char *word = dup ? "multiple definition of " : "undefined reference to ";
+    size_t wn = strlen(word);
+    if ((at = strstr(copy, word)) && (at[wn] == '`' || at[wn] == '\'')) {   /* GNU ld, gold */
+        at += wn + 1;
+        const char *q = strchr(at, '\'');
+        *name = at;
+        return q && identifier(at) == (size_t)(q - at) ? (size_t)(q - at) : 0;
+    }
+    if (!dup && (at = strstr(copy, "undefined symbol: "))) {                  /* lld */
+        *name = at + strlen("undefined symbol: ");
+        return identifier(*name);
+    }
+    if (dup && (at = strstr(copy, "duplicate symbol: "))) {                   /* lld */
+        *name = at + strlen("duplicate symbol: ");
+        return identifier(*name);
+    }
+    if (!dup && (at = strstr(copy, "\", referenced from"))) {                /* Apple's ld */
+        const char *q = at;
+        while (q > copy && q[-1] != '"')
+            q--;
+        *name = q + 1;
+        return q > copy && *q == '_' && identifier(q) == (size_t)(at - q) ? (size_t)(at - q - 1) : 0;
+    }
+    if (dup && (at = strstr(copy, "duplicate symbol "))) {                    /* Apple's ld */
+        at += strlen("duplicate symbol ");
+        bool quoted = *at == '\'';
+        at += quoted;
+        size_t n = identifier(at);
+        const char *after = at + n;
+        if (quoted && *after++ != '\'')
+            return 0;
+        *name = at + 1;
+        return *at == '_' && n > 1 && strncmp(after, " in:", 4) == 0 ? n - 1 : 0;
+    }
+    return 0;
+}
+
+static int names_in(const char *text, bool dup, char names[][LINKMSG_NAME_MAX], int max)
 {
     int count = 0;
     for (const char *line = text; line && *line && count < max;) {
         const char *end = strchr(line, '\n');
         size_t len = end ? (size_t)(end - line) : strlen(line);
-        const char *at;
         char copy[512];
         size_t n = len < sizeof copy - 1 ? len : sizeof copy - 1;
         memcpy(copy, line, n);
         copy[n] = '\0';
-        if ((at = strstr(copy, "undefined reference to ")) &&               /* GNU ld, gold */
-            (at[strlen("undefined reference to ")] == '`' || at[strlen("undefined reference to ")] == '\'')) {
-            at += strlen("undefined reference to ") + 1;
-            const char *q = strchr(at, '\'');
-            if (q && identifier(at) == (size_t)(q - at))
-                add(names, &count, max, at, (size_t)(q - at));
-        } else if ((at = strstr(copy, "undefined symbol: "))) {            /* lld */
-            at += strlen("undefined symbol: ");
-            add(names, &count, max, at, identifier(at));
-        } else if ((at = strstr(copy, "\", referenced from"))) {           /* Apple's ld */
-            const char *q = at;
-            while (q > copy && q[-1] != '"')
-                q--;
-            if (q > copy && *q == '_' && identifier(q) == (size_t)(at - q))
-                add(names, &count, max, q + 1, (size_t)(at - q - 1));
-        }
+        const char *name = NULL;
+        size_t nn = line_name(copy, dup, &name);
+        if (nn)
+            add(names, &count, max, name, nn);
         line = end ? end + 1 : NULL;
     }
     return count;
+}
+
+int linkmsg_undefined(const char *text, char names[][LINKMSG_NAME_MAX], int max)
+{
+    return names_in(text, false, names, max);
+}
+
+int linkmsg_duplicate(const char *text, char names[][LINKMSG_NAME_MAX], int max)
+{
+    return names_in(text, true, names, max);
+}
+
+static bool word_char(char c)
+{
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+}
+
+static bool space(char c)
+{
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
+}
+
+/* Where text defines the function name (see linkmsg_defines), or NULL. */
+static const char *definition(const char *text, const char *name)
+{
+    size_t n = strlen(name);
+    for (const char *p = strstr(text, name); p && n; p = strstr(p + 1, name)) {
+        bool word = (p == text || !word_char(p[-1])) && !word_char(p[n]);
+        const char *q = p + n;
+        while (space(*q))
+            q++;
+        if (!word || *q != '(')
+            continue;
+        int depth = 0;
+        for (; *q; q++) {
+            depth += (*q == '(') - (*q == ')');
+            if (depth == 0)
+                break;
+        }
+        if (!*q)
+            continue;
+        for (q++; space(*q); q++)
+            ;
+        if (*q == '{')
+            return p;
+    }
+    return NULL;
+}
+
+bool linkmsg_defines(const char *text, const char *name)
+{
+    return definition(text, name) != NULL;
 }

@@ -476,6 +476,44 @@ if [ -d solutions ]; then
                grep -q 'part2_pixel_coordinates.c: refused, as the grader refuses it: .*write #include \"raytracer.h\"' '$tmp/stderr'"
 fi
 
+# Links that fail.  A helper defined, not static, in two stage files: the
+# grader builds each file alone and gives full marks, but make render links
+# them together and the linker refuses; make render says why, and that
+# static is the cure.  A function of the contract defined twice, and one
+# its file does not define: said as plainly.
+if [ -d solutions ]; then
+    mkdir -p "$tmp/twice"
+    cp solutions/*.c "$tmp/twice/"
+    for f in part2_pixel_coordinates part3a_sphere_intersect; do
+        printf 'double sq(double x);\ndouble sq(double x) { return x * x; }\n' >>"$tmp/twice/$f.c"
+    done
+    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/twice" OUT="$tmp/twice.png"
+    check "make render says a helper is defined in two stage files, and to make each static (exit $status)" \
+        sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/twice.png' ] &&
+               grep -q 'make render: sq is defined in .*/part2_pixel_coordinates.c and .*/part3a_sphere_intersect.c' '$tmp/stderr' &&
+               grep -q 'write static in front of each' '$tmp/stderr' &&
+               grep -q 'definition of sq' '$tmp/stderr'"
+    for f in part2_pixel_coordinates part3a_sphere_intersect; do
+        sed 's/^double sq(/static double sq(/' "$tmp/twice/$f.c" >"$tmp/twice/x.c"
+        mv "$tmp/twice/x.c" "$tmp/twice/$f.c"
+    done
+    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/twice" OUT="$tmp/twice.png"
+    check "... and renders once both are static (exit $status)" \
+        sh -c "[ $status -eq 0 ] && [ -s '$tmp/twice.png' ]"
+    sed -n '/^bool sphere_intersect(/,/^}/p' solutions/part3a_sphere_intersect.c >>"$tmp/twice/part3b_ray_color.c"
+    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/twice" OUT="$tmp/twice.png"
+    check "make render says a function of the contract defined twice belongs in its own file (exit $status)" \
+        sh -c "[ $status -eq 2 ] &&
+               grep -q 'It belongs in part3a_sphere_intersect.c only .*remove it from .*/part3b_ray_color.c' '$tmp/stderr'"
+    cp solutions/part3b_ray_color.c "$tmp/twice/"
+    sed 's/^bool sphere_intersect(/bool sphere_intersects(/' solutions/part3a_sphere_intersect.c \
+        >"$tmp/twice/part3a_sphere_intersect.c"
+    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/twice" OUT="$tmp/twice.png"
+    check "make render says a stage file does not define its function of the contract (exit $status)" \
+        sh -c "[ $status -eq 2 ] &&
+               grep -q 'part3a_sphere_intersect.c defines no function sphere_intersect, which the renderer calls' '$tmp/stderr'"
+fi
+
 # misbehaving DIR STATEMENT: a submission in DIR, the reference's but for a
 # Part 3b whose ray_color runs STATEMENT for the pixels right of the centre.
 misbehaving() {

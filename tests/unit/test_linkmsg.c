@@ -1,6 +1,6 @@
 /*
- * The undefined functions read from each linker's own words
- * (tests/grader/linkmsg.c): the messages below are as GNU ld, gold, LLVM's
+ * The undefined and the twice-defined functions read from each linker's
+ * own words, and which sources define them (tests/grader/linkmsg.c): the messages below are as GNU ld, gold, LLVM's
  * lld and Apple's ld print them for a call to an undefined function (the
  * first three as run here; Apple's written from its known form, not run
  * here).
@@ -48,6 +48,88 @@ static const struct {
     { "Apple's words for a name with no underscore", "  \"twice\", referenced from:\n", 0, { NULL } },
 };
 
+/* The same for a function defined twice (GNU ld with and without
+ * link-time optimisation, gold and lld as run here; Apple's ld in its
+ * current and its older words, written from their known forms). */
+static const struct {
+    const char *linker, *text;
+    int n;
+    const char *names[2];
+} duplicates[] = {
+    { "GNU ld",
+      "/usr/bin/ld: /tmp/ccKyolGa.o: in function `dot':\n"
+      "b.c:(.text+0x0): multiple definition of `dot'; /tmp/cchz7paw.o:a.c:(.text+0x0): first defined here\n"
+      "collect2: error: ld returned 1 exit status\n",
+      1, { "dot" } },
+    { "GNU ld, link-time optimisation",
+      "/usr/bin/ld: out/build/sub/labs/lto/part3b_ray_color.o (symbol from plugin): in function `dot':\n"
+      "(.text+0x0): multiple definition of `dot'; out/build/sub/labs/lto/part3a_sphere_intersect.o "
+      "(symbol from plugin):(.text+0x0): first defined here\n",
+      1, { "dot" } },
+    { "gold",
+      "/usr/bin/ld.gold: error: /tmp/cczVFqDt.o: multiple definition of 'dot'\n"
+      "/usr/bin/ld.gold: /tmp/cc6uppXj.o: previous definition here\n",
+      1, { "dot" } },
+    { "lld",
+      "ld.lld: error: duplicate symbol: dot\n"
+      ">>> defined at a.c\n"
+      ">>>            /tmp/ccYVhCnk.o:(dot)\n"
+      ">>> defined at b.c\n"
+      ">>>            /tmp/ccimabXs.o:(.text+0x0)\n",
+      1, { "dot" } },
+    { "Apple's ld",
+      "duplicate symbol '_dot' in:\n"
+      "    /var/folders/xy/part3a_sphere_intersect.o\n"
+      "    /var/folders/xy/part3b_ray_color.o\n"
+      "duplicate symbol '_sq' in:\n"
+      "    a.o\n"
+      "    b.o\n"
+      "ld: 2 duplicate symbols for architecture arm64\n",
+      2, { "dot", "sq" } },
+    { "Apple's older ld", "duplicate symbol _dot in:\n    a.o\n    b.o\n", 1, { "dot" } },
+    { "an undefined function is not a duplicate", "undefined reference to `dot'\n", 0, { NULL } },
+};
+
+static void test_duplicates(void)
+{
+    for (size_t k = 0; k < sizeof duplicates / sizeof duplicates[0]; k++) {
+        char names[2][LINKMSG_NAME_MAX];
+        int n = linkmsg_duplicate(duplicates[k].text, names, 2);
+        CHECK_MSG(n == duplicates[k].n, "%s: %d names, want %d", duplicates[k].linker, n,
+                  duplicates[k].n);
+        for (int q = 0; q < n && q < duplicates[k].n; q++)
+            CHECK_MSG(strcmp(names[q], duplicates[k].names[q]) == 0, "%s: name %d is %s, want %s",
+                      duplicates[k].linker, q, names[q], duplicates[k].names[q]);
+    }
+    char names[1][LINKMSG_NAME_MAX];
+    CHECK_MSG(linkmsg_undefined(duplicates[0].text, names, 1) == 0,
+              "GNU ld's duplicate read as an undefined function");
+}
+
+/* Which sources define a function: a definition, with its body's brace on
+ * the next line or its parameters over two lines; not a prototype, a call,
+ * a longer name or a name inside a longer one. */
+static void test_defines(void)
+{
+    static const struct {
+        const char *text;
+        bool defines;
+    } texts[] = {
+        { "double sq(double x) { return x * x; }", true },
+        { "static double\nsq (double x)\n{\n    return x * x;\n}\n", true },
+        { "double sq(double x,\n          double y) { return x * y; }", true },
+        { "double sq(double x);\n", false },
+        { "double f(double x) { return sq(x) + 1; }", false },
+        { "double sqr(double x) { return x * x; }", false },
+        { "double my_sq(double x) { return x * x; }", false },
+        { "double sq(double x)", false },
+        { "", false },
+    };
+    for (size_t k = 0; k < sizeof texts / sizeof texts[0]; k++)
+        CHECK_MSG(linkmsg_defines(texts[k].text, "sq") == texts[k].defines, "text %zu: %s", k,
+                  texts[k].text);
+}
+
 static void test_each_linker(void)
 {
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
@@ -62,6 +144,8 @@ static void test_each_linker(void)
 
 static const CheckTest tests[] = {
     CHECK_TEST(test_each_linker),
+    CHECK_TEST(test_duplicates),
+    CHECK_TEST(test_defines),
 };
 
 int main(int argc, char **argv)
