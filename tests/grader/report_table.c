@@ -94,4 +94,7 @@ void report_table(FILE *f, const Grade *g, const GradeConfig *cfg, const char *s
     if (g->bonus_max > 0)
         fprintf(f, "   hard-case bonus: %s / %s", points_text(g->bonus).s, points_text(g->bonus_max).s);
     fprintf(f, "   (%.1f s)\n", g->seconds);
+    if (g->total >= g->total_max && g->bonus < g->bonus_max)
+        fprintf(f, "All the core points. Some hard cases failed, which count only as extra credit:\n"
+                   "that is why the grader exits with status 1 (make says Error 1).\n");
 }

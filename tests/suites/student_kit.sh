@@ -351,4 +351,18 @@ for s in "$kit"/labs/scenes/*.scene; do
     fi
 done
 
+# The textbook's Part 3a: every core point, some hard cases (the extra
+# credit) lost, so make ends with Error 1 below "Score: 30 / 30"; the line
+# above make's says why, so that it does not read as a broken build.
+cp tests/selftest/textbook/part3a_sphere_intersect.c "$kit/labs/"
+mk "$kit" grade PART=3a
+check "make grade with the textbook's Part 3a: full core points, and why make says Error 1 (exit $status, grader $ran)" \
+    sh -c "[ $ran -eq 1 ] && grep -q '^Score: 30 / 30 ' '$tmp/out' &&
+           grep -q '^All the core points. Some hard cases failed, which count only as extra credit:' '$tmp/out' &&
+           grep -q '^that is why the grader exits with status 1 (make says Error 1)' '$tmp/out'"
+cp solutions/part3a_sphere_intersect.c "$kit/labs/"
+mk "$kit" grade PART=3a
+check "... and with the reference's, not a word of it (exit $status)" \
+    sh -c "[ $status -eq 0 ] && ! grep -q 'All the core points' '$tmp/out'"
+
 finish
