@@ -29,7 +29,7 @@ static size_t identifier(const char *p)
 }
 
 /* The name a line of a linker's message says is undefined (dup false) or
- * defined twice (dup true): stored at *at, its length returned; 0 when the
+ * defined twice (dup true): its start in *name, its length returned; 0 when the
  * line says neither. */
 static size_t line_name(const char *copy, bool dup, const char **name)
 {
