@@ -18,12 +18,17 @@ static void add(char names[][LINKMSG_NAME_MAX], int *count, int max, const char 
     names[(*count)++][n] = '\0';
 }
 
+/* Whether c may be part of a C identifier. */
+static bool word_char(char c)
+{
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+}
+
 /* The identifier at p: its length (0 when none). */
 static size_t identifier(const char *p)
 {
     size_t n = 0;
-    while ((p[n] >= 'a' && p[n] <= 'z') || (p[n] >= 'A' && p[n] <= 'Z') ||
-           (p[n] >= '0' && p[n] <= '9') || p[n] == '_')
+    while (word_char(p[n]))
         n++;
     return n;
 }
@@ -98,11 +103,6 @@ int linkmsg_undefined(const char *text, char names[][LINKMSG_NAME_MAX], int max)
 int linkmsg_duplicate(const char *text, char names[][LINKMSG_NAME_MAX], int max)
 {
     return names_in(text, true, names, max);
-}
-
-static bool word_char(char c)
-{
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
 }
 
 static bool space(char c)
