@@ -162,33 +162,72 @@ static void build_say(Build *b, const char *what, const char *name)
     say(b, "\n");
 }
 
+/* The submission's stage file of part p, read; NULL when it has none (or
+ * it cannot be read). */
+static char *read_stage(const char *submission, int p)
+{
+    char path[PATH_MAX + 100];
+    if ((size_t)snprintf(path, sizeof path, "%s/%s.c", submission, stage_names[p]) >= sizeof path)
+        return NULL;
+    int fd = build_open_stage(path);
+    FILE *f = fd >= 0 ? fdopen(fd, "rb") : NULL;
+    if (!f && fd >= 0)
+        close(fd);
+    size_t len = 0;
+    return f ? kit_load_stream(f, BUILD_SOURCE_MAX, &len) : NULL;
+}
+
+/* Appends "a, b and c." (the functions text defines), or "none.", to
+ * b->messages. */
+static void say_definitions(Build *b, const char *text)
+{
+    char names[8][LINKMSG_NAME_MAX];
+    int n = linkmsg_definitions(text, names, 8);
+    for (int k = 0; k < n; k++) {
+        say(b, k == 0 ? "" : k == n - 1 ? " and " : ", ");
+        say(b, names[k]);
+    }
+    say(b, n == 0 ? "none.\n" : ".\n");
+}
+
 void build_explain_undefined(Build *b, const char *submission, int part)
 {
     char names[3][LINKMSG_NAME_MAX];
     int nnames = b->messages ? linkmsg_undefined(b->messages, names, 3) : 0;
-    for (int k = 0; k < nnames; k++)
-        for (int p = 0; p < NPARTS; p++) {
-            char path[PATH_MAX + 100];
-            if (p == part || (size_t)snprintf(path, sizeof path, "%s/%s.c", submission, stage_names[p]) >= sizeof path)
-                continue;
-            int fd = build_open_stage(path);
-            FILE *f = fd >= 0 ? fdopen(fd, "rb") : NULL;
-            if (!f && fd >= 0)
-                close(fd);
-            size_t len = 0;
-            char *text = f ? kit_load_stream(f, BUILD_SOURCE_MAX, &len) : NULL;
-            bool found = text && linkmsg_defines(text, names[k]);
-            free(text);
-            if (!found)
-                continue;
-            char line[1024];
+    if (nnames == 0)
+        return;
+    char *texts[NPARTS];
+    for (int p = 0; p < NPARTS; p++)
+        texts[p] = read_stage(submission, p);
+    for (int k = 0; k < nnames; k++) {
+        const char *stage = linkmsg_stage_of(names[k]);
+        bool own = stage && strcmp(stage, stage_names[part]) == 0;
+        int in = -1;
+        for (int p = 0; p < NPARTS && in < 0; p++)
+            if (p != part && texts[p] && linkmsg_defines(texts[p], names[k]))
+                in = p;
+        char line[1024];
+        if (own && in >= 0) {
+            snprintf(line, sizeof line, "`%s' is defined in your %s.c, but it belongs in %s.c "
+                     "(labs/raytracer.h), and each part is graded with the reference's other parts, "
+                     "not with your other files: move it to %s.c\n", names[k], stage_names[in],
+                     stage_names[part], stage_names[part]);
+            say(b, line);
+        } else if (own && texts[part] && !linkmsg_defines(texts[part], names[k])) {
+            snprintf(line, sizeof line, "your %s.c defines no function %s, which the tests call "
+                     "by the name labs/raytracer.h declares. The functions it defines: ", stage_names[part], names[k]);
+            say(b, line);
+            say_definitions(b, texts[part]);
+        } else if (!stage && in >= 0) {
             snprintf(line, sizeof line, "`%s' is defined in your %s.c, but each part is graded with "
                      "the reference's other parts, not with your other files: define %s in %s.c too "
                      "(static, so that the two do not clash in make render)\n", names[k],
-                     stage_names[p], names[k], stage_names[part]);
+                     stage_names[in], names[k], stage_names[part]);
             say(b, line);
-            break;
         }
+    }
+    for (int p = 0; p < NPARTS; p++)
+        free(texts[p]);
 }
 
 bool build_header_changed(const char *root, const char *name)

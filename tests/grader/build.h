@@ -65,10 +65,13 @@ int build_part(const BuildConfig *cfg, int part, const char *submission, Build *
                char *err, size_t errlen);
 void build_remove(Build *b);
 
-/* After a build of part that did not link: for each function the linker
- * found undefined (up to three) that another stage file of the submission
- * defines, adds to b->messages that each part is graded with the
- * reference's other parts, so the helper belongs in this part's file too. */
+/* After a build of part that did not link, for each function the linker
+ * found undefined (up to three), adds to b->messages what the submission's
+ * stage files show: a helper another stage file defines belongs in this
+ * part's file too, as each part is graded with the reference's other
+ * parts; a function of this part's contract defined in another stage file
+ * belongs in this one; one this part's file does not define is named with
+ * the functions the file does define. */
 void build_explain_undefined(Build *b, const char *submission, int part);
 
 /* After a build of part that did not compile or link, in the student kit

@@ -433,9 +433,11 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
             if (t->part != p || done[k])
                 continue;
             if (!b.ok) {
-                r->output = xasprintf(first ? "  your %s.c did not build, so this part scores 0:\n%s"
-                                            : "  your %s.c did not build (see the first test of this part)%s",
-                                      stage_names[p], first ? g->build_messages[p] : "");
+                const char *what = b.refused ? "the grader did not compile your" : "your";
+                const char *did = b.refused ? "" : " did not build";
+                r->output = xasprintf(first ? "  %s %s.c%s, so this part scores 0:\n%s"
+                                            : "  %s %s.c%s (see the first test of this part)%s",
+                                      what, stage_names[p], did, first ? g->build_messages[p] : "");
             } else if (timeouts >= 2) {
                 r->output = xasprintf("  not run: two earlier tests of this part did not finish in time");
             } else {

@@ -25,29 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The contract's functions, and the stage file that defines each
- * (labs/raytracer.h). */
-static const struct {
-    const char *name, *stage;
-} contract[] = {
-    { "image_plane_size", "part1_image_plane" },
-    { "pixel_coordinates", "part2_pixel_coordinates" },
-    { "sphere_intersect", "part3a_sphere_intersect" },
-    { "camera_ray", "part3b_ray_color" },
-    { "ray_color", "part3b_ray_color" },
-    { "plane_intersect", "part4_plane_intersect" },
-    { "triangle_intersect", "part5_triangle_intersect" },
-};
-
 enum { MAX_FILES = 16, MAX_NAMES = 4 };
-
-static const char *stage_of(const char *name)
-{
-    for (size_t k = 0; k < sizeof contract / sizeof contract[0]; k++)
-        if (strcmp(contract[k].name, name) == 0)
-            return contract[k].stage;
-    return NULL;
-}
 
 /* Whether path is the stage file named stage (its last component is
  * stage followed by ".c"). */
@@ -82,7 +60,7 @@ static void explain_duplicate(char *const *texts, char *const *files, int n, con
     int which[MAX_FILES];
     char list[2048];
     int count = definers(texts, files, n, name, which, list, sizeof list);
-    const char *stage = stage_of(name);
+    const char *stage = linkmsg_stage_of(name);
     if (count >= 2 && stage) {
         char others[2048] = "";
         for (int k = 0, m = 0; k < count; k++) {
@@ -113,13 +91,19 @@ static void explain_undefined(char *const *texts, char *const *files, int n, con
     int which[MAX_FILES];
     char list[2048];
     int count = definers(texts, files, n, name, which, list, sizeof list);
-    const char *stage = stage_of(name);
+    const char *stage = linkmsg_stage_of(name);
     if (stage && count == 0) {
         for (int k = 0; k < n; k++)
-            if (texts[k] && is_stage(files[k], stage))
-                fprintf(stderr, "make render: %s defines no function %s, which the renderer calls.\n"
-                                "  Its name and parameters must be those labs/raytracer.h declares.\n",
+            if (texts[k] && is_stage(files[k], stage)) {
+                char defined[8][LINKMSG_NAME_MAX];
+                int nd = linkmsg_definitions(texts[k], defined, 8);
+                fprintf(stderr, "make render: %s defines no function %s, which the renderer\n"
+                                "  calls by the name labs/raytracer.h declares. The functions it defines:",
                         files[k], name);
+                for (int d = 0; d < nd; d++)
+                    fprintf(stderr, "%s%s", d == 0 ? " " : d == nd - 1 ? " and " : ", ", defined[d]);
+                fprintf(stderr, "%s\n", nd == 0 ? " none." : ".");
+            }
     } else if (!stage && count >= 1) {
         fprintf(stderr, "make render: %s is defined in %s, and another file calls it, which the\n"
                         "  linker cannot let it do (a static function stays in its own file). Each\n"

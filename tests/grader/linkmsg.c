@@ -4,6 +4,7 @@
 #include "linkmsg.h"
 
 #include <stdbool.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* Adds the n bytes at name to names unless there already, or too long. */
@@ -110,34 +111,116 @@ static bool space(char c)
     return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
 }
 
-/* Where text defines the function name (see linkmsg_defines), or NULL. */
-static const char *definition(const char *text, const char *name)
+/* A copy of text with its comments and its string and character literals
+ * turned into spaces (newlines kept), so that a definition commented out,
+ * or a name in a message, is not read as code; NULL when out of memory. */
+static char *code_only(const char *text)
 {
-    size_t n = strlen(name);
-    for (const char *p = strstr(text, name); p && n; p = strstr(p + 1, name)) {
-        bool word = (p == text || !word_char(p[-1])) && !word_char(p[n]);
-        const char *q = p + n;
-        while (space(*q))
-            q++;
-        if (!word || *q != '(')
+    size_t n = strlen(text);
+    char *s = malloc(n + 1);
+    if (!s)
+        return NULL;
+    memcpy(s, text, n + 1);
+    for (size_t k = 0; k < n;) {
+        size_t end = k + 1;
+        if (s[k] == '/' && s[k + 1] == '*') {
+            const char *close = strstr(s + k + 2, "*/");
+            end = close ? (size_t)(close - s) + 2 : n;
+        } else if (s[k] == '/' && s[k + 1] == '/') {
+            const char *nl = strchr(s + k, '\n');
+            end = nl ? (size_t)(nl - s) : n;
+        } else if (s[k] == '"' || s[k] == '\'') {
+            for (end = k + 1; end < n && s[end] != s[k] && s[end] != '\n'; end++)
+                end += s[end] == '\\' && end + 1 < n;
+            end += end < n && s[end] == s[k];
+        } else {
+            k++;
             continue;
-        int depth = 0;
-        for (; *q; q++) {
-            depth += (*q == '(') - (*q == ')');
-            if (depth == 0)
-                break;
         }
-        if (!*q)
-            continue;
-        for (q++; space(*q); q++)
-            ;
-        if (*q == '{')
-            return p;
+        for (; k < end; k++)
+            if (s[k] != '\n')
+                s[k] = ' ';
     }
-    return NULL;
+    return s;
+}
+
+/* Whether the n-character identifier at p, in text, starts a definition:
+ * its parameters in parentheses, then a body's "{". */
+static bool defined_at(const char *text, const char *p, size_t n)
+{
+    static const char *const statements[] = { "if", "for", "while", "switch", "return", "sizeof" };
+    if ((p > text && word_char(p[-1])) || word_char(p[n]) || (*p >= '0' && *p <= '9'))
+        return false;
+    for (size_t k = 0; k < sizeof statements / sizeof statements[0]; k++)
+        if (strlen(statements[k]) == n && strncmp(p, statements[k], n) == 0)
+            return false;
+    const char *q = p + n;
+    while (space(*q))
+        q++;
+    if (*q != '(')
+        return false;
+    int depth = 0;
+    for (; *q; q++) {
+        depth += (*q == '(') - (*q == ')');
+        if (depth == 0)
+            break;
+    }
+    if (!*q)
+        return false;
+    for (q++; space(*q); q++)
+        ;
+    return *q == '{';
 }
 
 bool linkmsg_defines(const char *text, const char *name)
 {
-    return definition(text, name) != NULL;
+    char *code = code_only(text);
+    const char *s = code ? code : text;
+    size_t n = strlen(name);
+    bool found = false;
+    for (const char *p = strstr(s, name); p && n && !found; p = strstr(p + 1, name))
+        found = defined_at(s, p, n);
+    free(code);
+    return found;
+}
+
+int linkmsg_definitions(const char *text, char names[][LINKMSG_NAME_MAX], int max)
+{
+    char *code = code_only(text);
+    const char *s = code ? code : text;
+    int count = 0;
+    for (const char *p = s; *p && count < max;) {
+        size_t n = identifier(p);
+        if (n == 0) {
+            p++;
+            continue;
+        }
+        if (defined_at(s, p, n))
+            add(names, &count, max, p, n);
+        p += n;
+    }
+    free(code);
+    return count;
+}
+
+/* The contract's functions (labs/raytracer.h), and the stage file that
+ * defines each. */
+static const struct {
+    const char *name, *stage;
+} contract[] = {
+    { "image_plane_size", "part1_image_plane" },
+    { "pixel_coordinates", "part2_pixel_coordinates" },
+    { "sphere_intersect", "part3a_sphere_intersect" },
+    { "camera_ray", "part3b_ray_color" },
+    { "ray_color", "part3b_ray_color" },
+    { "plane_intersect", "part4_plane_intersect" },
+    { "triangle_intersect", "part5_triangle_intersect" },
+};
+
+const char *linkmsg_stage_of(const char *name)
+{
+    for (size_t k = 0; k < sizeof contract / sizeof contract[0]; k++)
+        if (strcmp(contract[k].name, name) == 0)
+            return contract[k].stage;
+    return NULL;
 }

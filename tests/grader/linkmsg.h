@@ -2,7 +2,8 @@
  * linkmsg.h - what a linker's message says: the functions it finds
  * undefined, or defined twice, in the words of the linkers students'
  * machines have (GNU ld, gold, LLVM's lld, Apple's ld, whose C names carry
- * a leading underscore); and which source defines such a function.
+ * a leading underscore); which functions a source defines; and which stage
+ * file the contract puts each of its functions in.
  */
 #ifndef LINKMSG_H
 #define LINKMSG_H
@@ -23,8 +24,18 @@ int linkmsg_undefined(const char *text, char names[][LINKMSG_NAME_MAX], int max)
 int linkmsg_duplicate(const char *text, char names[][LINKMSG_NAME_MAX], int max);
 
 /* Whether the C source text defines the function name: the name as a whole
- * word, then its parameters in parentheses, then a body's "{".  Read from
- * the text as written: a definition made by a macro is not seen. */
+ * word, then its parameters in parentheses, then a body's "{".  Comments
+ * and string literals are passed over; the rest is read as written: a
+ * definition made by a macro is not seen, one under #if 0 is. */
 bool linkmsg_defines(const char *text, const char *name);
+
+/* Fills names with the distinct functions text defines (as
+ * linkmsg_defines sees a definition), in the order it defines them, at
+ * most max; returns how many. */
+int linkmsg_definitions(const char *text, char names[][LINKMSG_NAME_MAX], int max);
+
+/* The stage file, without ".c", that defines name, a function of the
+ * contract (labs/raytracer.h); NULL when name is not one. */
+const char *linkmsg_stage_of(const char *name);
 
 #endif

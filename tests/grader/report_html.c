@@ -339,18 +339,27 @@ static void failing_test(Markup *m, const Test *t, const TestResult *r, int inde
  * messages once. */
 static void failures(Markup *m, const Grade *g)
 {
-    int nfailed = 0;
-    for (int k = 0; k < g->tests->n; k++)
-        nfailed += g->graded[g->tests->tests[k].part] && !g->results[k].passed;
+    int nfailed = 0, unrun = 0;         /* unrun: those of parts that did not build */
+    for (int p = 0; p < NPARTS; p++) {
+        int failed, total;
+        count_tests(g, p, &failed, &total);
+        nfailed += g->graded[p] ? failed : 0;
+        unrun += g->graded[p] && !g->built[p] && failed == total ? total : 0;
+    }
     mk_printf(m, "<h2 id=\"failures\">What failed</h2>\n");
     if (nfailed == 0) {
         mk_printf(m, "<p>Nothing: every test passed.</p>\n");
         return;
     }
-    mk_printf(m, "<p>%d test%s failed. Each has a picture of its first wrong case, then what the "
-                 "terminal says about it: the input, what was expected, what your code returned, "
-                 "how close it had to be, and a hint when your answer matches a known mistake.</p>\n",
-              nfailed, nfailed == 1 ? "" : "s");
+    if (unrun == nfailed)
+        mk_printf(m, "<p>%d test%s failed: the files of their parts did not build, so none could "
+                     "run.</p>\n", nfailed, nfailed == 1 ? "" : "s");
+    else
+        mk_printf(m, "<p>%d test%s failed%s. Each %shas a picture of its first wrong case, then what "
+                     "the terminal says about it: the input, what was expected, what your code "
+                     "returned, how close it had to be, and a hint when your answer matches a known "
+                     "mistake.</p>\n", nfailed, nfailed == 1 ? "" : "s",
+                  unrun ? ", some in parts whose files did not build" : "", unrun ? "that ran " : "");
     for (int p = 0; p < NPARTS; p++) {
         int failed, total;
         count_tests(g, p, &failed, &total);
@@ -367,6 +376,21 @@ static void failures(Markup *m, const Grade *g)
                       g->build_refused[p] ? "The grader did not compile it:" : "What the compiler said:");
             mk_text(m, g->build_messages[p]);
             mk_printf(m, "</pre>\n");
+            if (failed == total) {      /* counted in unrun above */
+                /* Each test's own article would only say it could not run. */
+                mk_printf(m, "<details><summary>None of its %d tests could run (open to list "
+                             "them)</summary>\n<ul>\n", total);
+                for (int k = 0; k < g->tests->n; k++) {
+                    const Test *t = &g->tests->tests[k];
+                    if (t->part != p)
+                        continue;
+                    mk_printf(m, "<li>");
+                    mk_text(m, t->name);
+                    mk_printf(m, "%s</li>\n", t->hard ? " <span class=\"tag\">hard case</span>" : "");
+                }
+                mk_printf(m, "</ul>\n</details>\n");
+                continue;
+            }
         }
         for (int group = 0; group < 2; group++)
             for (int k = 0; k < g->tests->n; k++) {

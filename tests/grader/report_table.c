@@ -56,6 +56,32 @@ static void print_indented(FILE *f, const char *text)
     }
 }
 
+/* A part whose file did not build, when none of its tests passed: one
+ * line for them all and the compiler's (or the grader's) words once, where
+ * each test's own line would only repeat that it could not run.  Returns
+ * false, printing nothing, when some test passed. */
+static bool unbuilt(FILE *f, const Grade *g, int p)
+{
+    int n = 0, hard = 0;
+    for (int k = 0; k < g->tests->n; k++) {
+        const Test *t = &g->tests->tests[k];
+        if (t->part != p)
+            continue;
+        if (g->results[k].passed)
+            return false;
+        n++;
+        hard += t->hard;
+    }
+    fprintf(f, "  FAIL  all %d tests (%d core, %d hard cases): ", n, n - hard, hard);
+    if (g->build_refused[p])
+        fprintf(f, "the grader did not compile your %s.c, so none could run:\n", stage_names[p]);
+    else
+        fprintf(f, "your %s.c did not build, so none could run:\n", stage_names[p]);
+    if (g->build_messages[p])
+        print_indented(f, g->build_messages[p]);
+    return true;
+}
+
 void report_table(FILE *f, const Grade *g, const GradeConfig *cfg, const char *submission)
 {
     fputs("Grading ", f);
@@ -77,6 +103,8 @@ void report_table(FILE *f, const Grade *g, const GradeConfig *cfg, const char *s
             fprintf(f, "  The compiler warned (a warning often points at a mistake):\n");
             print_indented(f, g->build_messages[p]);
         }
+        if (!g->built[p] && unbuilt(f, g, p))
+            continue;
         for (int group = 0; group < 2; group++)
             for (int k = 0; k < g->tests->n; k++) {
                 const Test *t = &g->tests->tests[k];

@@ -80,6 +80,22 @@ check "the skeleton scores 0 on every part" grep -q "^summary 0 0 0 0 0 0 0 0 1"
 check "the skeleton's Parts 4 and 5 ran without a crash" \
     sh -c "! grep -q -e 'crashed' -e 'did not finish' '$tmp/labs.out'"
 
+# A part whose file did not build is one line of the table, with the
+# compiler's (or the grader's) words once, not a line for each test.
+mkdir "$tmp/unbuilt"
+cp solutions/part1_image_plane.c "$tmp/unbuilt/"
+printf '#include "raytracer.h"\nVec3 pixel_coordinates(int i, int j, int nx, int ny, double w, double h, double d)\n{\n    return oops;\n}\n' \
+    >"$tmp/unbuilt/part2_pixel_coordinates.c"
+chmod -R a+rX "$tmp/unbuilt"
+$grade --submission "$tmp/unbuilt" >"$tmp/unbuilt.out" 2>&1
+check "a part that did not compile: one line for its tests, the compiler's error once" \
+    sh -c "[ \$(grep -c '^  FAIL  all [0-9]* tests ([0-9]* core, [0-9]* hard cases): your part2_pixel_coordinates.c did not build, so none could run:\$' '$tmp/unbuilt.out') -eq 1 ] &&
+           [ \$(grep -c 'oops.*undeclared' '$tmp/unbuilt.out') -eq 1 ] && ! grep -q 'FAIL  Part 2:' '$tmp/unbuilt.out'"
+check "a missing file: one line for its part's tests, saying it is missing once" \
+    sh -c "[ \$(grep -c '^  FAIL  all [0-9]* tests .*: the grader did not compile your part3a_sphere_intersect.c, so none could run:\$' '$tmp/unbuilt.out') -eq 1 ] &&
+           [ \$(grep -c 'the submission has no part3a_sphere_intersect.c' '$tmp/unbuilt.out') -eq 1 ] &&
+           ! grep -q 'FAIL  Part 3a:' '$tmp/unbuilt.out' && grep -q 'PASS  Part 1: ' '$tmp/unbuilt.out'"
+
 # A submission of Parts 1-3b alone keeps full marks by default.
 mkdir "$tmp/core-only"
 for f in part1_image_plane part2_pixel_coordinates part3a_sphere_intersect part3b_ray_color; do
@@ -322,12 +338,11 @@ while read -r class sname g1 g2 g3a g3b g4 g5; do
     expect="tests/selftest/$sname/expect"
     [ -f "$expect" ] || expect="$tmp/expect/$sname/expect"
     json="$tmp/grades-$class/$sname.json"
-    core_full=no part="" want="" hardpart=""
+    core_full=no part="" hardpart=""
     while read -r key rest; do
         case "$key $rest" in
         "core full"*) core_full=yes ;;
-        "part "*) part=$rest ;;
-        "output "*) want=$rest ;;
+        "part "*) part="$part $rest " ;;
         "hard lost "*) hardpart=${rest#lost } ;;
         esac
     done <"$expect"
@@ -346,7 +361,7 @@ while read -r class sname g1 g2 g3a g3b g4 g5; do
         got_all="$got_all $got" max_all="$max_all $max"
         if [ -z "$part" ]; then
             continue
-        elif [ "$p" = "$part" ]; then
+        elif case $part in *" $p "*) true ;; *) false ;; esac; then
             check "$sname: Part $p loses points (got $got of $max)" [ -n "$got" -a "$got" != "$max" -a "$got" != "-" ]
         elif [ "$got" != "-" ]; then
             check "$sname: Part $p keeps full marks (got $got of $max)" [ "$got" = "$max" ]
@@ -355,9 +370,11 @@ while read -r class sname g1 g2 g3a g3b g4 g5; do
     if [ "$core_full" = yes ]; then
         check "$sname: full core marks ($got_all)" [ "$got_all" = "$max_all" ]
     fi
-    if [ -n "$want" ]; then
-        check "$sname: the report says '$want'" grep -q "$want" "$json"
-    fi
+    while read -r key want; do
+        if [ "$key" = output ]; then
+            check "$sname: the report says '$want'" grep -q -e "$want" "$json"
+        fi
+    done <"$expect"
     # The diagnosis: exactly the causes the expect file names, part by part.
     diagnosis_check "$sname" "$expect" "$json" >"$tmp/diagnosis"
     while read -r verdict message; do

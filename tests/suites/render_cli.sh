@@ -511,7 +511,8 @@ if [ -d solutions ]; then
     run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/twice" OUT="$tmp/twice.png"
     check "make render says a stage file does not define its function of the contract (exit $status)" \
         sh -c "[ $status -eq 2 ] &&
-               grep -q 'part3a_sphere_intersect.c defines no function sphere_intersect, which the renderer calls' '$tmp/stderr'"
+               grep -q 'part3a_sphere_intersect.c defines no function sphere_intersect, which the renderer\$' '$tmp/stderr' &&
+               grep -q 'The functions it defines: sphere_intersects\.\$' '$tmp/stderr'"
 fi
 
 # misbehaving DIR STATEMENT: a submission in DIR, the reference's but for a

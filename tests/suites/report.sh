@@ -6,7 +6,8 @@
 #   - valid HTML (tests/tools/htmlcheck_main.c: every tag closed, ids
 #     unique, attributes quoted, no <script>, every image present or a valid
 #     data: URI, no address on the network);
-#   - one figure per failing test, exactly;
+#   - one figure per failing test that ran, exactly, and the tests of a
+#     part that did not build listed by name, once;
 #   - clear about a part that did not build or a render that failed.
 # Then: `make grade` writes out/report/index.html and ends with its path; a
 # page that cannot be written changes neither the exit status nor the
@@ -152,8 +153,15 @@ for name in $subs reference; do
     fi
     figures=$(sed -n 's/^figures //p' "$tmp/check.out")
     failing=$(grep -c '"status": "failed"' "$json")
-    check "$name: one figure per failing test ($figures figures, $failing failing tests)" \
-        [ "${figures:-x}" = "$failing" ]
+    # A test of a part whose file did not build could not run: it has no
+    # figure, only its name in the part's folded list.
+    unrun=$(grep -c -e '"output": "  your part[^ ]*\.c did not build' \
+        -e '"output": "  the grader did not compile your part' "$json")
+    listed=$(sed -n 's/.*None of its \([0-9]*\) tests could run.*/\1/p' "$page" | awk '{ n += $1 } END { print n + 0 }')
+    check "$name: one figure per failing test that ran ($figures figures, $failing failing tests, $unrun could not run)" \
+        [ "${figures:-x}" = "$((failing - unrun))" ]
+    check "$name: each test that could not run listed once ($listed listed, $unrun could not run)" \
+        [ "$listed" = "$unrun" ]
     # belt and braces: no script and no network address, whatever the checker says
     check "$name: no <script>" sh -c "! grep -qi '<script' '$page'"
     check "$name: no address on the network in src or href" \
@@ -201,6 +209,10 @@ check "a part that does not build: the page shows what the compiler said" \
 check "a file the grader did not hand to the compiler: the page says so, not 'what the compiler said'" \
     grep -q 'Your file did not build, so no test of this part could run. The grader did not compile it:' \
     "$page/hostile-missing-file.html"
+check "a part that does not build: its tests listed once, folded away, not a picture-less article each" \
+    sh -c "grep -q 'None of its [0-9]* tests could run (open to list them)' '$page/hostile-compile-error.html' &&
+           grep -q 'tests failed: the files of their parts did not build, so none could run.' '$page/hostile-compile-error.html' &&
+           ! grep -q '<article' '$page/hostile-compile-error.html'"
 check "a part that does not build: no render, and the page says why" \
     grep -q 'could not be built into the renderer' "$page/hostile-compile-error.html"
 check "a missing file: the page says the file is missing" \

@@ -7,6 +7,7 @@
  */
 #include "check.h"            /* first: it sets the POSIX feature level */
 #include "../grader/linkmsg.h"
+#include "kit/savefile.h"
 
 static const struct {
     const char *linker, *text;
@@ -124,10 +125,79 @@ static void test_defines(void)
         { "double my_sq(double x) { return x * x; }", false },
         { "double sq(double x)", false },
         { "", false },
+        { "/* double sq(double x) { return x * x; } */\n", false },
+        { "// double sq(double x) { return x * x; }\n", false },
+        { "const char *s = \"sq(x) {\";\n", false },
+        { "/* sq */ double sq(double x) /* ) { */ { return x * x; }", true },
+        { "const char *s = \"\\\" sq(\";\ndouble sq(double x) { return x * x; }", true },
+        { "char c = '\\'';\ndouble sq(double x) { return x * x; }", true },
     };
     for (size_t k = 0; k < sizeof texts / sizeof texts[0]; k++)
         CHECK_MSG(linkmsg_defines(texts[k].text, "sq") == texts[k].defines, "text %zu: %s", k,
                   texts[k].text);
+}
+
+/* The functions a source defines, in order, each once: not the
+ * statements whose parentheses a brace follows, not a prototype, a call or
+ * a definition in a comment. */
+static void test_definitions(void)
+{
+    static const char text[] =
+        "#include \"raytracer.h\"\n"
+        "static double sq(double x);\n"
+        "/* bool old_intersect(const Sphere *s) { return false; } */\n"
+        "static double\nsq(double x)\n{\n    return x * x;\n}\n"
+        "bool hit_sphere(const Sphere *sphere, const Ray *ray, double *t)\n{\n"
+        "    if (sq(1) < 0) {\n        return false;\n    }\n"
+        "    for (int k = 0; k < 2; k++) {\n    }\n"
+        "    while (0) {\n    }\n"
+        "    switch (0) {\n    }\n"
+        "    return (void)sphere, (void)ray, *t = 1, true;\n}\n"
+        "double sq(double x);\n";
+    char names[4][LINKMSG_NAME_MAX];
+    int n = linkmsg_definitions(text, names, 4);
+    CHECK_MSG(n == 2, "%d functions, want 2 (sq and hit_sphere)", n);
+    CHECK_MSG(n >= 1 && strcmp(names[0], "sq") == 0, "the first is %s, want sq", n >= 1 ? names[0] : "none");
+    CHECK_MSG(n >= 2 && strcmp(names[1], "hit_sphere") == 0, "the second is %s, want hit_sphere",
+              n >= 2 ? names[1] : "none");
+    CHECK(linkmsg_definitions(text, names, 1) == 1);
+    CHECK(linkmsg_definitions("", names, 4) == 0);
+    CHECK(linkmsg_definitions("double sq(double x);\nint main(void);\n", names, 4) == 0);
+}
+
+/* Each function the contract's header declares is given the stage file
+ * that defines it in the kit's reference (the header and the files read
+ * here, not a list written again); a name not in the contract is given
+ * none. */
+static void test_stage_of(void)
+{
+    static const char *const names[] = { "image_plane_size", "pixel_coordinates", "sphere_intersect",
+                                         "camera_ray", "ray_color", "plane_intersect", "triangle_intersect" };
+    size_t n = 0;
+    char *header = kit_load_file("labs/raytracer.h", 1 << 20, &n);
+    CHECK_MSG(header != NULL, "labs/raytracer.h could not be read");
+    for (size_t k = 0; k < sizeof names / sizeof names[0]; k++) {
+        char declared[LINKMSG_NAME_MAX + 2];
+        snprintf(declared, sizeof declared, " %s(", names[k]);
+        CHECK_MSG(header && strstr(header, declared), "labs/raytracer.h does not declare %s", names[k]);
+        const char *stage = linkmsg_stage_of(names[k]);
+        CHECK_MSG(stage != NULL, "%s has no stage file", names[k]);
+        if (!stage)
+            continue;
+        char path[200];
+        snprintf(path, sizeof path, "solutions/%s.c", stage);
+        char *text = kit_load_file(path, 1 << 20, &n);
+        if (!text) {                              /* the student kit has no solutions/ */
+            snprintf(path, sizeof path, "labs/%s.c", stage);
+            text = kit_load_file(path, 1 << 20, &n);
+        }
+        CHECK_MSG(text && linkmsg_defines(text, names[k]), "%s does not define %s", path, names[k]);
+        free(text);
+    }
+    free(header);
+    CHECK(linkmsg_stage_of("hit_sphere") == NULL);
+    CHECK(linkmsg_stage_of("sphere_intersects") == NULL);
+    CHECK(linkmsg_stage_of("") == NULL);
 }
 
 static void test_each_linker(void)
@@ -146,6 +216,8 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_each_linker),
     CHECK_TEST(test_duplicates),
     CHECK_TEST(test_defines),
+    CHECK_TEST(test_definitions),
+    CHECK_TEST(test_stage_of),
 };
 
 int main(int argc, char **argv)
