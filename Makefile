@@ -157,8 +157,14 @@ submission-dir:
 	@test -n "$(wildcard $(STAGES:%=$(SUB_DIR)/%.c))" || \
 	    echo "note: $(SUBMISSION) holds no stage file (nor does its labs folder): the skeletons are drawn"
 
+# In the student kit, a note when labs/raytracer.h or labs/vec3.h is not as
+# shipped (tests/grader/shipped): make render builds with the student's
+# copy, the instructor's grader with the kit's own (as make grade does).
+SHIPPED_HDR = $(wildcard tests/grader/shipped/raytracer.h tests/grader/shipped/vec3.h)
 render: submission-dir $(SUB_BUILD)/render
 	$(SUB_BUILD)/render "$(SCENE)" $(if $(SIZE),--size $(SIZE)) -o "$(OUT_RENDER)"
+	@for h in $(notdir $(SHIPPED_HDR)); do cmp -s labs/$$h tests/grader/shipped/$$h || \
+	    echo "note: labs/$$h is not the one the kit came with. make render used yours; your instructor grades your part*.c files with the kit's own (tests/grader/shipped/$$h), where what they use from your change will be missing: keep it in your part*.c files."; done
 
 # In the kit's own repository the reference image is rendered with
 # solutions/; in the student kit it is the stored render under labs/reference.

@@ -310,12 +310,22 @@ status=$?
 check "a stage file that uses a macro added to labs/raytracer.h does not build in make grade either (exit $status)" \
     sh -c "[ $status -eq 1 ] && grep -q 'EPSILON' '$tmp/out' && grep -q '^Part 1: .*  0 / 20' '$tmp/out' &&
            grep -q 'labs/raytracer.h is not the one the kit came with: part1_image_plane.c was built with the kit.s own' '$tmp/out'"
+(cd "$kit" && ${MAKE:-make} --no-print-directory render OUT="$tmp/changed.png") >"$tmp/out" 2>&1 </dev/null
+status=$?
+check "... while make render, which builds with labs/raytracer.h, draws and notes that it is not the kit's (exit $status)" \
+    sh -c "[ $status -eq 0 ] && [ -s '$tmp/changed.png' ] &&
+           grep -q '^note: labs/raytracer.h is not the one the kit came with. make render used yours' '$tmp/out' &&
+           ! grep -q 'labs/vec3.h is not' '$tmp/out'"
 cp "$tmp/raytracer.h" "$kit/labs/raytracer.h"
 (cd "$kit" && out/build/bin/grade --submission labs --part 1) >"$tmp/out" 2>&1 </dev/null
 status=$?
 check "... and, with the header as shipped, neither it nor the warning is there (exit $status)" \
     sh -c "[ $status -eq 1 ] && grep -q 'EPSILON' '$tmp/out' && ! grep -q 'is not the one the kit came with' '$tmp/out'"
 cp "$tmp/part1_image_plane.c" "$kit/labs/part1_image_plane.c"
+(cd "$kit" && ${MAKE:-make} --no-print-directory render OUT="$tmp/changed.png") >"$tmp/out" 2>&1 </dev/null
+status=$?
+check "make render says nothing of the header once it is as shipped (exit $status)" \
+    sh -c "[ $status -eq 0 ] && ! grep -q 'is not the one the kit came with' '$tmp/out'"
 
 # ---- the reference stage files in labs/: full marks, identical renders ----
 cp solutions/*.c "$kit/labs/"
