@@ -303,19 +303,31 @@ static void name_key(const char *name, char *out, size_t n)
     out[k] = '\0';
 }
 
+/* Whether name ends in ".c", in any case. */
+static bool c_file(const char *name)
+{
+    size_t n = strlen(name);
+    return n > 2 && name[n - 2] == '.' && (name[n - 1] == 'c' || name[n - 1] == 'C');
+}
+
 /* The stage file is missing: says so, naming the files of the submission
  * that look like it under another name ("part1_image_plane (1).c", as a
- * browser names a second download; "Part1_Image_Plane.c"; a ".c.txt"). */
+ * browser names a second download; "Part1_Image_Plane.c"; a ".c.txt"),
+ * and the C files named for its part alone ("part1.c", "Part3a_v2.c"). */
 static int missing_stage(Build *b, const char *submission, const char *stage, const char *cfile)
 {
-    char want[80], key[300], seen[600] = "";
+    char want[80], part[80], key[300], seen[600] = "";
     int nseen = 0;
     name_key(stage, want, sizeof want);
+    snprintf(part, sizeof part, "%.*s", (int)strcspn(stage, "_"), stage);     /* "part3a" */
+    size_t np = strlen(part);
     DIR *d = opendir(submission);
     struct dirent *e;
     while (d && (e = readdir(d)) && nseen < 3) {
         name_key(e->d_name, key, sizeof key);
-        if (!strstr(key, want) || strcmp(e->d_name, cfile) == 0)
+        bool for_part = c_file(e->d_name) && strncmp(key, part, np) == 0 &&
+                        !(key[np] >= '0' && key[np] <= '9');                /* not part10.c */
+        if ((!strstr(key, want) && !for_part) || strcmp(e->d_name, cfile) == 0)
             continue;
         size_t len = strlen(seen);
         snprintf(seen + len, sizeof seen - len, "%s%s", nseen ? ", " : "", e->d_name);

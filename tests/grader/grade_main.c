@@ -610,9 +610,17 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
             ncols++;
         }
     fprintf(f, ",hard,total,status\n");
-    int worst = 0;
+    int worst = 0, nempty = 0;
+    char empty[200] = "";          /* the first four with no stage file */
     for (int k = 0; k < n; k++) {
         Job *j = &all[k];
+        /* No stage file where the grader looks (the folder, or its labs):
+         * nothing handed in, or files under other names (its .json names
+         * them), which the gradebook tells from points lost. */
+        char sub[PATH_MAX], labs[PATH_MAX];
+        snprintf(sub, sizeof sub, "%s/%s", dir, j->name);
+        snprintf(labs, sizeof labs, "%s/%s/labs", dir, j->name);
+        bool none = !holds_stage_file(sub) && !holds_stage_file(labs);
         double v[NPARTS + 2];
         int st = 2, used = 0;
         char *s = strstr(j->line, "summary ");
@@ -629,7 +637,12 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
             for (int p = 0; p < NPARTS; p++)
                 if (cfg.parts[p])
                     fprintf(f, ",%g", v[p]);
-            fprintf(f, ",%g,%g,%s\n", v[NPARTS], v[NPARTS + 1], st == 0 ? "full marks" : "points lost");
+            fprintf(f, ",%g,%g,%s\n", v[NPARTS], v[NPARTS + 1],
+                    st == 0 ? "full marks" : none ? "no stage file" : "points lost");
+            if (none && nempty++ < 4) {
+                append_text(empty, sizeof empty, nempty > 1 ? ", " : "");
+                append_text(empty, sizeof empty, j->name);
+            }
         } else {
             for (int c = 0; c < ncols + 2; c++)
                 fputc(',', f);
@@ -672,6 +685,10 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     if (loose)
         printf("left out %d stage file%s lying in %s itself: a submission is a folder of its own\n", loose,
                loose == 1 ? "" : "s", dir);
+    if (nempty)
+        printf("%d submission%s no stage file (status \"no stage file\": empty, or files under other "
+               "names, which %s .json names): %s%s\n", nempty, nempty == 1 ? " holds" : "s hold",
+               nempty == 1 ? "its" : "each one's", empty, nempty > 4 ? ", ..." : "");
     printf("graded %d submission%s: wrote %s, and one .json and one .html (the report page) %s\n",
            n, n == 1 ? "" : "s", csv, n == 1 ? "for it" : "each");
     return worst;

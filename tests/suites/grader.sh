@@ -600,6 +600,24 @@ status=$?
 check "a folder with no submission in it is refused (exit $status, want 2), and nothing is written" \
     sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/grades-none' ] &&
            grep -q 'no-class holds no submissions: .*left out: .git)' '$tmp/none.out'"
+# A submission with no stage file (an empty folder, or only files under
+# other names) is told apart in the gradebook from one that lost points.
+mkdir -p "$tmp/handed/empty" "$tmp/handed/renamed" "$tmp/handed/part1-only" "$tmp/handed/in-labs/labs"
+cp solutions/part1_image_plane.c "$tmp/handed/renamed/Part1.c"
+cp solutions/part1_image_plane.c "$tmp/handed/part1-only/"
+cp solutions/part1_image_plane.c "$tmp/handed/in-labs/labs/"
+chmod -R a+rX "$tmp/handed"
+$grade --all "$tmp/handed" --out "$tmp/grades-handed" --weights "$core" >"$tmp/handed.out" 2>&1
+check "the gradebook's status: 'no stage file' for an empty folder and for one of files under other names" \
+    sh -c "grep -qx 'empty,0,0,0,0,0,0,no stage file' '$tmp/grades-handed/gradebook.csv' &&
+           grep -qx 'renamed,0,0,0,0,0,0,no stage file' '$tmp/grades-handed/gradebook.csv' &&
+           grep -q '^2 submissions hold no stage file (.*): empty, renamed\$' '$tmp/handed.out'"
+check "... and 'points lost' for one with a stage file, in its folder or its labs" \
+    sh -c "grep -q '^part1-only,20,0,0,0,.*,points lost\$' '$tmp/grades-handed/gradebook.csv' &&
+           grep -q '^in-labs,20,0,0,0,.*,points lost\$' '$tmp/grades-handed/gradebook.csv'"
+check "... and the renamed file is named in its results" \
+    grep -q 'it has Part1.c: hand it in as part1_image_plane.c' "$tmp/grades-handed/renamed.json"
+
 for j in 0 two 3x; do
     $grade --all "$names" --out "$tmp/grades-jobs" --jobs $j >"$tmp/jobs.out" 2>&1
     status=$?

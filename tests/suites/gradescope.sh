@@ -84,6 +84,19 @@ check "a stage file under another name is named in the message: 'it has part1_im
 check "... from a folder too, whatever its letters' case" \
     grep -q 'it has Part2_Pixel_Coordinates.c: hand it in as part2_pixel_coordinates.c' "$ag/results/results.json"
 check "... and such files are not graded" grep -q '"score": 0' "$ag/results/results.json"
+# A C file named for its part alone: named too; a part10 file is not Part 1's.
+rm -rf "$ag/submission"/* "$ag/results/results.json"
+mkdir -p "$ag/submission/lab"
+cp solutions/part1_image_plane.c "$ag/submission/lab/Part1.c"
+cp solutions/part3a_sphere_intersect.c "$ag/submission/part3a.C"
+cp solutions/part1_image_plane.c "$ag/submission/part10.c"
+echo notes >"$ag/submission/part2_notes.txt"
+AUTOGRADER_ROOT="$ag" "$ag/run_autograder" >"$tmp/run-parts.log" 2>&1
+check "a C file named for its part alone is named in the message: 'it has Part1.c', 'it has part3a.C'" \
+    sh -c "grep -q 'the submission has no part1_image_plane.c; it has Part1.c: hand it in as part1_image_plane.c' '$ag/results/results.json' &&
+           grep -q 'it has part3a.C: hand it in as part3a_sphere_intersect.c' '$ag/results/results.json'"
+check "... but not a part10 file, nor a file that is not C" \
+    sh -c "! grep -q 'it has part10.c' '$ag/results/results.json' && ! grep -q 'part2_notes' '$ag/results/results.json'"
 
 # An empty submission: every part missing, score 0, still a valid file.
 rm -rf "$ag/submission"/* "$ag/results/results.json"
