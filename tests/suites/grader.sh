@@ -87,7 +87,12 @@ cp solutions/part1_image_plane.c "$tmp/unbuilt/"
 printf '#include "raytracer.h"\nVec3 pixel_coordinates(int i, int j, int nx, int ny, double w, double h, double d)\n{\n    return oops;\n}\n' \
     >"$tmp/unbuilt/part2_pixel_coordinates.c"
 chmod -R a+rX "$tmp/unbuilt"
-$grade --submission "$tmp/unbuilt" >"$tmp/unbuilt.out" 2>&1
+$grade --submission "$tmp/unbuilt" --results "$tmp/unbuilt.json" >"$tmp/unbuilt.out" 2>&1
+check "the results' summary (Gradescope's text above the tests) says why each part did not build" \
+    sh -c "grep -m 1 '\"output\": ' '$tmp/unbuilt.json' >'$tmp/unbuilt.top' &&
+           grep -q 'Part 2: your part2_pixel_coordinates.c did not build, so none of its tests could run:.*oops.*undeclared' '$tmp/unbuilt.top' &&
+           grep -q 'Part 3a: the grader did not compile your part3a_sphere_intersect.c, so none of its tests could run:.u000amissing: the submission has no part3a_sphere_intersect.c' '$tmp/unbuilt.top' &&
+           ! grep -q 'Part 1: your' '$tmp/unbuilt.top'"
 check "a part that did not compile: one line for its tests, the compiler's error once" \
     sh -c "[ \$(grep -c '^  FAIL  all [0-9]* tests ([0-9]* core, [0-9]* hard cases): your part2_pixel_coordinates.c did not build, so none could run:\$' '$tmp/unbuilt.out') -eq 1 ] &&
            [ \$(grep -c 'oops.*undeclared' '$tmp/unbuilt.out') -eq 1 ] && ! grep -q 'FAIL  Part 2:' '$tmp/unbuilt.out'"
