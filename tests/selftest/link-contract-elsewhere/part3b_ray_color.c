@@ -27,14 +27,16 @@ Vec3 ray_color(const Scene *scene, const Ray *ray)
 
 bool sphere_intersect(const Sphere *sphere, const Ray *ray, double *t)
 {
-    Vec3 oc = vec3_sub(ray->origin, sphere->center);
-    double A = vec3_dot(ray->direction, ray->direction);
-    double B = vec3_dot(oc, ray->direction);
-    double C = vec3_dot(oc, oc) - sphere->radius * sphere->radius;
-    double disc = B * B - A * C;
-    if (A == 0 || disc < 0)
+    /* The geometric form: the closest approach to the centre, then the
+     * half chord (never run here: neither part links). */
+    double dd = vec3_dot(ray->direction, ray->direction);
+    Vec3 L = vec3_sub(sphere->center, ray->origin);
+    double tca = vec3_dot(L, ray->direction) / dd;
+    double d2 = vec3_dot(L, L) - tca * tca * dd;
+    double r2 = sphere->radius * sphere->radius;
+    if (dd == 0 || d2 > r2)
         return false;
-    double t0 = (-B - sqrt(disc)) / A, t1 = (-B + sqrt(disc)) / A;
-    *t = t0 > 0 ? t0 : t1;
+    double thc = sqrt((r2 - d2) / dd);
+    *t = tca - thc > 0 ? tca - thc : tca + thc;
     return *t > 0;
 }
