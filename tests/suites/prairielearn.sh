@@ -141,6 +141,10 @@ cp solutions/part2_pixel_coordinates.c "$job/student/"
 run "one-part"
 check "one-part: gradable, score 20/100" \
     sh -c "[ '$(field gradable "$tmp/one-part.check")' = true ] && [ '$(field score "$tmp/one-part.check")' = 0.2 ]"
+check "one-part: the output says which files did not build and why, under their parts" \
+    sh -c "grep -q 'Your part1_image_plane.c did not build, so none of its tests could run:.u000a.*error' '$tmp/one-part.json' &&
+           grep -q 'Your part3a_sphere_intersect.c did not build, so none of its tests could run:.u000a.*error' '$tmp/one-part.json' &&
+           ! grep -q 'Your part2_pixel_coordinates.c did not build' '$tmp/one-part.json'"
 
 # A question folder without its kit: the grader cannot be built.
 broken="$tmp/broken"
