@@ -190,6 +190,26 @@ static bool holds_stage_file(const char *dir)
     return false;
 }
 
+/* The folder of submission whose stage files are graded, into out: the
+ * submission itself, or its labs folder (not a link) when that holds stage
+ * files and the submission none, as a repository made from the student
+ * kit does (GitHub Classroom's, cloned for grade --all).  Returns whether
+ * that folder holds any stage file. */
+static bool graded_folder(const char *submission, char *out, size_t n)
+{
+    snprintf(out, n, "%s", submission);
+    if (holds_stage_file(submission))
+        return true;
+    char labs[PATH_MAX];
+    struct stat st;
+    if ((size_t)snprintf(labs, sizeof labs, "%s/labs", submission) < sizeof labs &&
+        lstat(labs, &st) == 0 && S_ISDIR(st.st_mode) && holds_stage_file(labs) && strlen(labs) < n) {
+        snprintf(out, n, "%s", labs);
+        return true;
+    }
+    return false;
+}
+
 static int grade_one(const char *submission, const char *part, const char *results,
                      const char *weights, const char *page, bool quiet, bool summary)
 {
@@ -200,14 +220,9 @@ static int grade_one(const char *submission, const char *part, const char *resul
     struct stat st;
     if (stat(submission, &st) != 0 || !S_ISDIR(st.st_mode))
         return fail(results, "%s is not a directory", submission);
-    /* A repository made from the student kit (GitHub Classroom's, cloned
-     * for grade --all) keeps the stage files in its labs folder: graded
-     * there when the folder itself holds none of them. */
-    char labs[PATH_MAX];
-    struct stat lst;
-    if (!holds_stage_file(submission) && (size_t)snprintf(labs, sizeof labs, "%s/labs", submission) < sizeof labs &&
-        lstat(labs, &lst) == 0 && S_ISDIR(lst.st_mode) && holds_stage_file(labs))   /* not a link */
-        submission = labs;
+    char folder[PATH_MAX];
+    graded_folder(submission, folder, sizeof folder);
+    submission = folder;
 
     char root[PATH_MAX];
     if (!getcwd(root, sizeof root))
@@ -617,10 +632,9 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
         /* No stage file where the grader looks (the folder, or its labs):
          * nothing handed in, or files under other names (its .json names
          * them), which the gradebook tells from points lost. */
-        char sub[PATH_MAX], labs[PATH_MAX];
+        char sub[PATH_MAX], folder[PATH_MAX];
         snprintf(sub, sizeof sub, "%s/%s", dir, j->name);
-        snprintf(labs, sizeof labs, "%s/%s/labs", dir, j->name);
-        bool none = !holds_stage_file(sub) && !holds_stage_file(labs);
+        bool none = !graded_folder(sub, folder, sizeof folder);
         double v[NPARTS + 2];
         int st = 2, used = 0;
         char *s = strstr(j->line, "summary ");

@@ -579,8 +579,8 @@ check "... and costs that part alone" grep -q '^too-large,0,20,30,' "$tmp/grades
 check "a stage file saved as UTF-16 is refused with what to do, not the compiler's stray bytes" \
     sh -c "grep -q 'refused: part1_image_plane.c is saved as UTF-16 (what some Windows editors call ..Unicode..), which C compilers do not read: save it as UTF-8' '$tmp/grades-links/utf16.json' &&
            grep -q '^utf16,0,20,30,' '$tmp/grades-links/gradebook.csv'"
-check "a labs folder that is a link (to the reference) is not graded: 0 points" \
-    grep -q '^labs-link,0,0,0,0,0,points lost$' "$tmp/grades-links/gradebook.csv"
+check "a labs folder that is a link (to the reference) is not graded: 0 points, no stage file" \
+    grep -q '^labs-link,0,0,0,0,0,no stage file$' "$tmp/grades-links/gradebook.csv"
 [ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/links.out" "$tmp/grades-links/gradebook.csv"
 # Graded as another user than root, grade --all says what that means.
 if [ "$(id -u)" != 0 ]; then
