@@ -177,19 +177,6 @@ static char *read_stage(const char *submission, int p)
     return f ? kit_load_stream(f, BUILD_SOURCE_MAX, &len) : NULL;
 }
 
-/* Appends "a, b and c." (the functions text defines), or "none.", to
- * b->messages. */
-static void say_definitions(Build *b, const char *text)
-{
-    char names[8][LINKMSG_NAME_MAX];
-    int n = linkmsg_definitions(text, names, 8);
-    for (int k = 0; k < n; k++) {
-        say(b, k == 0 ? "" : k == n - 1 ? " and " : ", ");
-        say(b, names[k]);
-    }
-    say(b, n == 0 ? "none.\n" : ".\n");
-}
-
 void build_explain_undefined(Build *b, const char *submission, int part)
 {
     char names[3][LINKMSG_NAME_MAX];
@@ -214,10 +201,13 @@ void build_explain_undefined(Build *b, const char *submission, int part)
                      stage_names[part], stage_names[part]);
             say(b, line);
         } else if (own && texts[part] && !linkmsg_defines(texts[part], names[k])) {
+            char defined[8 * LINKMSG_NAME_MAX + 64];
+            linkmsg_definitions_list(texts[part], defined, sizeof defined);
             snprintf(line, sizeof line, "your %s.c defines no function %s, which the tests call "
                      "by the name labs/raytracer.h declares. The functions it defines: ", stage_names[part], names[k]);
             say(b, line);
-            say_definitions(b, texts[part]);
+            say(b, defined);
+            say(b, ".\n");
         } else if (!stage && in >= 0) {
             snprintf(line, sizeof line, "`%s' is defined in your %s.c, but each part is graded with "
                      "the reference's other parts, not with your other files: define %s in %s.c too "

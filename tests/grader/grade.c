@@ -433,11 +433,11 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
             if (t->part != p || done[k])
                 continue;
             if (!b.ok) {
-                const char *what = b.refused ? "the grader did not compile your" : "your";
-                const char *did = b.refused ? "" : " did not build";
-                r->output = xasprintf(first ? "  %s %s.c%s, so this part scores 0:\n%s"
-                                            : "  %s %s.c%s (see the first test of this part)%s",
-                                      what, stage_names[p], did, first ? g->build_messages[p] : "");
+                char why[200];
+                grade_unbuilt_why(g, p, why, sizeof why);
+                r->output = xasprintf(first ? "  %s, so this part scores 0:\n%s"
+                                            : "  %s (see the first test of this part)%s",
+                                      why, first ? g->build_messages[p] : "");
             } else if (timeouts >= 2) {
                 r->output = xasprintf("  not run: two earlier tests of this part did not finish in time");
             } else {
@@ -522,4 +522,12 @@ void grade_free(Grade *g)
 bool grade_warned(const Grade *g, int p)
 {
     return g->graded[p] && g->built[p] && g->build_messages[p] && g->build_messages[p][0];
+}
+
+void grade_unbuilt_why(const Grade *g, int p, char *out, size_t n)
+{
+    if (g->build_refused[p])
+        snprintf(out, n, "the grader did not compile your %s.c", stage_names[p]);
+    else
+        snprintf(out, n, "your %s.c did not build", stage_names[p]);
 }

@@ -56,4 +56,11 @@ void grade_free(Grade *g);
  * (warnings: build_messages[p]), for the reports. */
 bool grade_warned(const Grade *g, int p);
 
+/* Why part p's tests could not run, when its file did not build, for the
+ * reports: "your part1_image_plane.c did not build" or, for a file the
+ * grader did not hand to the compiler (missing, refused), "the grader did
+ * not compile your part1_image_plane.c".  Written into out, whose first
+ * letter the caller may capitalise. */
+void grade_unbuilt_why(const Grade *g, int p, char *out, size_t n);
+
 #endif

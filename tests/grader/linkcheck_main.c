@@ -95,14 +95,11 @@ static void explain_undefined(char *const *texts, char *const *files, int n, con
     if (stage && count == 0) {
         for (int k = 0; k < n; k++)
             if (texts[k] && is_stage(files[k], stage)) {
-                char defined[8][LINKMSG_NAME_MAX];
-                int nd = linkmsg_definitions(texts[k], defined, 8);
+                char defined[8 * LINKMSG_NAME_MAX + 64];
+                linkmsg_definitions_list(texts[k], defined, sizeof defined);
                 fprintf(stderr, "make render: %s defines no function %s, which the renderer\n"
-                                "  calls by the name labs/raytracer.h declares. The functions it defines:",
-                        files[k], name);
-                for (int d = 0; d < nd; d++)
-                    fprintf(stderr, "%s%s", d == 0 ? " " : d == nd - 1 ? " and " : ", ", defined[d]);
-                fprintf(stderr, "%s\n", nd == 0 ? " none." : ".");
+                                "  calls by the name labs/raytracer.h declares. The functions it defines: %s.\n",
+                        files[k], name, defined);
             }
     } else if (!stage && count >= 1) {
         fprintf(stderr, "make render: %s is defined in %s, and another file calls it, which the\n"

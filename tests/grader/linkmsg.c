@@ -4,6 +4,7 @@
 #include "linkmsg.h"
 
 #include <stdbool.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -201,6 +202,19 @@ int linkmsg_definitions(const char *text, char names[][LINKMSG_NAME_MAX], int ma
     }
     free(code);
     return count;
+}
+
+void linkmsg_definitions_list(const char *text, char *out, size_t n)
+{
+    char names[8][LINKMSG_NAME_MAX];
+    int count = linkmsg_definitions(text, names, 8);
+    size_t used = 0;
+    out[0] = '\0';
+    for (int k = 0; k < count && used < n; k++)
+        used += (size_t)snprintf(out + used, n - used, "%s%s", k == 0 ? "" : k == count - 1 ? " and " : ", ",
+                                 names[k]);
+    if (count == 0)
+        snprintf(out, n, "none");
 }
 
 /* The contract's functions (labs/raytracer.h), and the stage file that

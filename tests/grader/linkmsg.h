@@ -9,6 +9,7 @@
 #define LINKMSG_H
 
 #include <stdbool.h>
+#include <stddef.h>
 
 #define LINKMSG_NAME_MAX 128
 
@@ -33,6 +34,9 @@ bool linkmsg_defines(const char *text, const char *name);
  * linkmsg_defines sees a definition), in the order it defines them, at
  * most max; returns how many. */
 int linkmsg_definitions(const char *text, char names[][LINKMSG_NAME_MAX], int max);
+
+/* The same as words, into out: "a, b and c" (the first eight), or "none". */
+void linkmsg_definitions_list(const char *text, char *out, size_t n);
 
 /* The stage file, without ".c", that defines name, a function of the
  * contract (labs/raytracer.h); NULL when name is not one. */

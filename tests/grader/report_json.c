@@ -64,11 +64,10 @@ int report_json(const char *path, const Grade *g, const char *submission, char *
     for (int p = 0; p < NPARTS; p++) {
         if (!g->graded[p] || g->built[p] || (size_t)n >= sizeof summary)
             continue;
-        n += snprintf(summary + n, sizeof summary - (size_t)n, "\n\nPart %s: %s %s.c%s, so none of its "
-                      "tests could run:\n%s", part_label(p),
-                      g->build_refused[p] ? "the grader did not compile your" : "your", stage_names[p],
-                      g->build_refused[p] ? "" : " did not build",
-                      g->build_messages[p] ? g->build_messages[p] : "");
+        char why[200];
+        grade_unbuilt_why(g, p, why, sizeof why);
+        n += snprintf(summary + n, sizeof summary - (size_t)n, "\n\nPart %s: %s, so none of its tests "
+                      "could run:\n%s", part_label(p), why, g->build_messages[p] ? g->build_messages[p] : "");
     }
     for (int p = 0; p < NPARTS; p++) {
         if (!g->diagnosis[p] || (size_t)n >= sizeof summary)

@@ -125,10 +125,12 @@ static void write_results(JsonWriter *j, const Grade *g, size_t output_max)
         if (g->build_messages[p] && g->build_messages[p][0]) {
             if (grade_warned(g, p))
                 append(&output, "The compiler warned (a warning often points at a mistake):\n");
-            else if (!g->built[p])
-                append(&output, "%s %s.c%s, so none of its tests could run:\n",
-                       g->build_refused[p] ? "The grader did not compile your" : "Your", stage_names[p],
-                       g->build_refused[p] ? "" : " did not build");
+            else if (!g->built[p]) {
+                char why[200];
+                grade_unbuilt_why(g, p, why, sizeof why);
+                why[0] = (char)(why[0] - 'a' + 'A');             /* "your", "the": a lower-case letter */
+                append(&output, "%s, so none of its tests could run:\n", why);
+            }
             append(&output, "%s", g->build_messages[p]);
             if (!gradable)
                 append(&format_errors, "Part %s: %s", part_label(p), g->build_messages[p]);

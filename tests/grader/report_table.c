@@ -72,11 +72,10 @@ static bool unbuilt(FILE *f, const Grade *g, int p)
         n++;
         hard += t->hard;
     }
-    fprintf(f, "  FAIL  all %d tests (%d core, %d hard cases): ", n, n - hard, hard);
-    if (g->build_refused[p])
-        fprintf(f, "the grader did not compile your %s.c, so none could run:\n", stage_names[p]);
-    else
-        fprintf(f, "your %s.c did not build, so none could run:\n", stage_names[p]);
+    char why[200];
+    grade_unbuilt_why(g, p, why, sizeof why);
+    fprintf(f, "  FAIL  all %d tests (%d core, %d hard cases): %s, so none could run:\n", n, n - hard,
+            hard, why);
     if (g->build_messages[p])
         print_indented(f, g->build_messages[p]);
     return true;

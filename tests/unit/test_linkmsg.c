@@ -161,6 +161,14 @@ static void test_definitions(void)
     CHECK_MSG(n >= 2 && strcmp(names[1], "hit_sphere") == 0, "the second is %s, want hit_sphere",
               n >= 2 ? names[1] : "none");
     CHECK(linkmsg_definitions(text, names, 1) == 1);
+    char list[200];
+    linkmsg_definitions_list(text, list, sizeof list);
+    CHECK_MSG(strcmp(list, "sq and hit_sphere") == 0, "the list is '%s', want 'sq and hit_sphere'", list);
+    linkmsg_definitions_list("int a(void) { return 0; }\nint b(void) { return 1; }\nint c(void) { return 2; }\n",
+                             list, sizeof list);
+    CHECK_MSG(strcmp(list, "a, b and c") == 0, "the list is '%s', want 'a, b and c'", list);
+    linkmsg_definitions_list("int a(void);\n", list, sizeof list);
+    CHECK_MSG(strcmp(list, "none") == 0, "the list is '%s', want 'none'", list);
     CHECK(linkmsg_definitions("", names, 4) == 0);
     CHECK(linkmsg_definitions("double sq(double x);\nint main(void);\n", names, 4) == 0);
 }
