@@ -466,12 +466,15 @@ bool check_answers_in_part(const Test *test, const char *answers, size_t len,
                     "NaN through (every comparison with NaN is false); write it as !(t > 0)\n");
         else if (why)
             say(&t, "    hint:      %s\n", why);
-        else if (flat_near_misses(test, &a, &missed, &found))
+        else if (flat_near_misses(test, &a, &missed, &found)) {
+            /* A fact of the test's missed hits; the case shown may be wrong
+             * for a reason of its own (a float t), which is said first. */
+            flat_evidence(&t, test, bad, a.got[a.first_bad], a.failed);
             say(&t, "    hint:      every hit this test missed (the farthest at t = %.3g) is a thousand "
                     "times nearer the ray's origin, or more, than every hit it found (the nearest at "
                     "t = %.3g): are hits below some small t ignored? This lab's rule is tmin = 0: every "
                     "hit with t > 0 counts\n", missed, found);
-        else
+        } else
             flat_evidence(&t, test, bad, a.got[a.first_bad], a.failed);
     }
     if (a.answered == test->ncases) {
