@@ -94,6 +94,11 @@ static void plane_hints(Case *c, const double p[3], const double n[3], const dou
         hint_hit(c, "r.n = 0 (parallel to the plane, or in it) is a miss: check it before dividing", true, t);
     if (right && rn > 0)
         hint_hit(c, "the plane has two sides: a ray that meets it from behind (r.n > 0) hits too", false, 0);
+    /* The other side alone: Scratchapixel's test, denom = n.r > 1e-6, takes
+     * the normal to point along the ray, and misses the side it faces. */
+    if (right && rn < 0)
+        hint_hit(c, "the plane has two sides: a ray that meets it on the side its normal faces (r.n < 0) "
+                    "hits too", false, 0);
     /* Scratchapixel's test, denom > 1e-6, made two-sided: short or grazing
      * rays and normals lost (the same for 1e-4 or 1e-8 where r.n is far
      * smaller than any of them, as in the hard case of tiny lengths). */
