@@ -321,8 +321,8 @@ static const char *flat_diagnosis(const Test *test, const double (*got)[CASE_MAX
 }
 
 /* Parts 4 and 5: causes that an answer shows by itself, whatever the
- * test: t rounded to float, t a whole number, a ray through a closed
- * mesh that the test gets right elsewhere.  Each is stated only when the
+ * test: a hit at t <= 0 or at NaN, t rounded to float, t a whole number,
+ * a ray through a closed mesh that the test gets right elsewhere.  Each is stated only when the
  * answers prove it. */
 static void flat_evidence(Text *t, const Test *test, const Case *c, const double *got, int failed)
 {
@@ -334,6 +334,18 @@ static void flat_evidence(Text *t, const Test *test, const Case *c, const double
         say(t, "    hint:      the ray entered this closed mesh through an edge or vertex that "
                "triangles share, and %s: your test is not watertight there (the hard-case "
                "challenge)\n", got[0] == 0 ? "hit nothing" : "its first hit was farther on");
+        return;
+    }
+    /* A hit at t <= 0, or at a t that is not a number, where the input is
+     * not NaN (that case has a hint of its own): the answer alone shows it. */
+    if (got[0] == 1 && !(tg > 0)) {
+        if (isnan(tg))
+            say(t, "    hint:      a hit at t = NaN: a hit needs t > 0, and a test written as \"t < 0: "
+                   "miss\" lets NaN through (every comparison with NaN is false); write it as "
+                   "!(t > 0)\n");
+        else
+            say(t, "    hint:      a hit at t = %.3g is %s the ray's origin: only t > 0 is a hit\n", tg,
+                tg == 0 ? "at" : "behind");
         return;
     }
     if (got[0] != 1 || c->want[0] != 1 || !isfinite(tg) || !(want > 0))

@@ -166,6 +166,12 @@ static void part5(TestList *l)
     tg_triangle(t, V(2, 0, 0), V(2, 2, 1), V(2, -1, 2), V(5, 0.5, 1), V(1, 0, 0));
     tg_triangle(t, V(-1, -1, -1e-4), V(1, -1, -1e-4), V(0, 1, -1e-4), O, V(0, 0, -1));
     tg_triangle(t, V(-1, -1, -1e-7), V(1, -1, -1e-7), V(0, 1, -1e-7), O, V(0.25, 0, -1));
+
+    t = new_test(l, PART5, KIND_TRIANGLE, 1, "Part 5: a ray that starts on the triangle",
+                 "t = 0 is the ray's own origin: only t > 0 is a hit ahead of it");
+    tg_triangle(t, WA, WB, WC, V(0, 0, -2), V(0, 0, -1));
+    tg_triangle(t, WA, WB, WC, V(0, 0, -4), V(0, 0, -1));
+    tg_triangle(t, WA, WB, WC, V(0.25, -0.5, -4), V(0, 0, 1));
 }
 
 void testgen_public_flat(TestList *list)

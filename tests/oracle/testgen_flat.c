@@ -145,6 +145,7 @@ enum {
     MT_TMIN = 64,        /* t > 0.001                            */
     MT_GAMMA_SIGN = 128, /* e1 x s for s x e1                    */
     MT_S_SIGN = 256,     /* s = a - e                            */
+    MT_T_ZERO = 512,     /* t >= 0: t = 0 a hit                  */
 };
 
 static bool mt(const double a[3], const double b[3], const double cc[3], const double e[3],
@@ -185,6 +186,8 @@ static bool mt(const double a[3], const double b[3], const double cc[3], const d
         return !(*t < 0);
     if (flags & MT_TMIN)
         return *t > 1e-3 && *t < INFINITY;
+    if (flags & MT_T_ZERO)
+        return *t >= 0 && *t < INFINITY;
     return *t > 0 && *t < INFINITY;
 }
 
@@ -197,13 +200,14 @@ static void triangle_hints(Case *c, const double a[3], const double b[3], const 
     } mistakes[] = {
         { MT_TMIN, "hits at small t count: is there a tmin such as 0.001? In this lab tmin = 0" },
         { MT_STRICT, "edges and vertices belong to the triangle: beta >= 0, gamma >= 0, beta + gamma <= 1" },
-        { MT_EPS, "a hit was missed where det is small (a small or far triangle, or a ray nearly along its plane): no epsilon on det (such as 1e-8), compare it with 0" },
+        { MT_EPS, "a hit was missed where det is small (a small or far triangle, or a grazing ray): no epsilon on det = -(e1 x e2).r (such as 1e-8): compare it with 0" },
         { MT_NO_T, "a hit behind the eye: only t > 0 is ahead of the ray" },
         { MT_NO_SUM, "beta + gamma <= 1 is missing: the ray passed outside the edge bc and still hit" },
         { MT_NO_DET, "det = 0 (parallel to the triangle, or in its plane) is a miss: check it first" },
         { MT_CULL, "both sides count: a ray that meets the triangle from behind (det < 0) hits too" },
         { MT_GAMMA_SIGN, "gamma = r.(s x e1) / det and t = e2.(s x e1) / det: the order of a cross product matters" },
         { MT_S_SIGN, "s = e - a (the ray's origin minus a), not a - e: it flips beta, gamma and t" },
+        { MT_T_ZERO, "t = 0 is the ray's own origin: a hit needs t > 0, not t >= 0" },
     };
     for (size_t k = 0; k < sizeof mistakes / sizeof mistakes[0]; k++) {
         double t = 0;
