@@ -336,6 +336,12 @@ check "make grade writes out/report/index.html" test -s out/report/index.html
 check "make grade's output ends with the page's path" \
     sh -c "grep -v '^make' '$tmp/make.out' | tail -n 1 | grep -q 'out/report/index.html'"
 check "make grade's page is valid" sh -c "'$check_html' out/report/index.html >/dev/null 2>&1"
+check "make grade's last line, with failures: the page has their pictures" \
+    sh -c "grep -v '^make' '$tmp/make.out' | tail -n 1 | grep -q 'pictures of every failure'"
+make -s --no-print-directory grade SUBMISSION=solutions PART=2 >"$tmp/make-full.out" 2>&1
+check "make grade's last line, at full marks: no failure to draw, not 'pictures of every failure'" \
+    sh -c "tail -n 1 '$tmp/make-full.out' | grep -q 'no failure to draw' &&
+           ! grep -q 'pictures of every failure' '$tmp/make-full.out'"
 
 # ---- a page that cannot be written changes nothing else ---------------------
 : >"$tmp/not-a-directory"
