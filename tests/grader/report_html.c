@@ -454,8 +454,18 @@ int report_html(const char *path, const Grade *g, const GradeConfig *cfg, const 
                   "your own computer; the terminal says the same in numbers.</p>\n");
     mk_printf(&m, "<h2 id=\"scores\">Scores</h2>\n");
     scores(&m, g, cfg);
-    mk_printf(&m, "<h2 id=\"reading\">How to read the pictures</h2>\n");
-    legend(&m);
+    /* The legend is for the failures' figures: a page with none has no use
+     * for it (a part that did not build is listed, not drawn). */
+    int drawn = 0;
+    for (int p = 0; p < NPARTS; p++) {
+        int failed, total;
+        count_tests(g, p, &failed, &total);
+        drawn += g->graded[p] && (g->built[p] || failed < total) ? failed : 0;
+    }
+    if (drawn > 0) {
+        mk_printf(&m, "<h2 id=\"reading\">How to read the pictures</h2>\n");
+        legend(&m);
+    }
     if (rr)
         renders(&m, rr);
     failures(&m, g);

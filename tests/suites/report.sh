@@ -342,6 +342,9 @@ make -s --no-print-directory grade SUBMISSION=solutions PART=2 >"$tmp/make-full.
 check "make grade's last line, at full marks: no failure to draw, not 'pictures of every failure'" \
     sh -c "tail -n 1 '$tmp/make-full.out' | grep -q 'no failure to draw' &&
            ! grep -q 'pictures of every failure' '$tmp/make-full.out'"
+check "the page at full marks has no legend for figures it does not have" \
+    sh -c "! grep -q 'How to read the pictures' out/report/index.html"
+check "a page with failures has the legend" grep -q 'How to read the pictures' "$page/p4-one-sided.html"
 
 # ---- a page that cannot be written changes nothing else ---------------------
 : >"$tmp/not-a-directory"
