@@ -64,7 +64,7 @@ KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
 
 .PHONY: all help render compare grade grade-all gradescope student-kit bench \
         handouts test test-build unit-tests clean grader public-tests fuzz sanitize-grader \
-        submission-dir
+        submission-dir sort-submissions
 .DELETE_ON_ERROR:
 .SECONDARY:                             # keep the objects a chain of rules makes (the renderer's lto/)
 .SECONDEXPANSION:
@@ -82,6 +82,7 @@ help:
 	@echo "make grade   [SUBMISSION=dir] [PART=1|2|3a|3b|4|5] [RESULTS=file]"
 	@echo "             [FORMAT=gradescope|prairielearn] [CLASSROOM=file]"
 	@echo "make grade-all SUBMISSIONS=dir [OUT=dir] [JOBS=n]"
+	@echo "make sort-submissions FROM=download.zip|dir TO=newdir"
 	@echo "make gradescope | prairielearn | student-kit | bench | fuzz | sanitize-grader | handouts | test | clean"
 
 $(BUILD)/kit/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
@@ -220,7 +221,7 @@ GRADER_LIB_SRC = tests/grader/cases.c tests/grader/check.c tests/grader/sandbox.
                  tests/grader/build.c tests/grader/memo.c tests/grader/include_scan.c tests/grader/linkmsg.c tests/grader/lookalike.c \
                  tests/grader/own_headers.c tests/grader/config.c tests/grader/grade.c \
                  tests/grader/report_table.c tests/grader/report_json.c \
-                 tests/grader/diagnose.c \
+                 tests/grader/diagnose.c tests/grader/lmsname.c \
                  tests/grader/report_render.c tests/grader/report_html.c tests/grader/markup.c \
                  $(wildcard tests/grader/fig*.c)
 GRADER_LIB_SRC += tests/grader/report_classroom.c tests/grader/report_prairielearn.c
@@ -316,6 +317,17 @@ grade-all: grader $(REPORT_REF)
 	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade-all SUBMISSIONS=dir [OUT=dir]"; exit 2; }
 	@$(BUILD)/bin/grade --all "$(SUBMISSIONS)" --out "$(if $(OUT),$(OUT),out/grades)" $(if $(JOBS),--jobs $(JOBS))
 
+# A class's download from Canvas or Moodle (one zip, or folder, of every
+# student's files, each name carrying its student), sorted into one folder
+# per submission for grade-all (tests/grader/sortsubs_main.c).
+$(BUILD)/bin/sortsubs: $(BUILD)/grader/sortsubs_main.o $(BUILD)/grader/libgrader.a \
+                       $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $$(@D)/.
+	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+grader: $(BUILD)/bin/sortsubs
+sort-submissions: $(BUILD)/bin/sortsubs
+	@test -n "$(FROM)" && test -n "$(TO)" || { echo "usage: make sort-submissions FROM=download.zip|dir TO=newdir"; exit 2; }
+	@$(BUILD)/bin/sortsubs "$(FROM)" "$(TO)"
+
 # The public tests' expected values, from the oracle (commit the result).
 public-tests: $(BUILD)/bin/gentests
 	$(BUILD)/bin/gentests tests/public
@@ -393,7 +405,7 @@ UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
 # student kit builds three of these in every run of its suite.  The object
 # is made again whenever the libraries are, as the program was before.
 # (Not the grader's units nor test_serve: their own rules are below.)
-GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers
+GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers lmsname
 UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) $(BUILD)/tests/test_serve,$(UNIT_BIN))
 $(UNIT_PLAIN:$(BUILD)/tests/%=$(BUILD)/tests/obj/%.o): $(BUILD)/tests/obj/%.o: tests/unit/%.c \
                           tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS) | $$(@D)/.

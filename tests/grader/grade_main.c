@@ -24,6 +24,7 @@
 #define _XOPEN_SOURCE 700
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "build.h"
+#include "lmsname.h"
 #include "config.h"
 #include "grade.h"
 #include "grader.h"
@@ -448,16 +449,24 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     if (config_read(&cfg, weights, err, sizeof err) != 0)
         return fail(NULL, "%s", err);
     DIR *d = opendir(dir);
+    struct stat dst;
+    if (!d && stat(dir, &dst) == 0 && S_ISREG(dst.st_mode)) {   /* a download's zip, most likely */
+        snprintf(err, sizeof err, "%.300s is a file, not a folder of submissions: if it is a class's download "
+                 "from Canvas or Moodle, make sort-submissions FROM=%.300s TO=new-folder sorts it into a "
+                 "folder per submission", dir, dir);
+        return fail(NULL, "%s", err);
+    }
     if (!d)
         return fail(NULL, "%s: cannot open the submissions directory", dir);
     char **names = NULL;
     int n = 0;
     /* Folders whose names start with "." (.git, .github, a system's own)
-     * are not submissions: they are left out, and the run names them, in
-     * order, the first eight. */
+     * and the __MACOSX that macOS's zip tool adds are not submissions: they
+     * are left out, and the run names them, in order, the first eight. */
     char **dots = NULL;
     int ndots = 0;
     int loose = 0;      /* files named like stage files, at the top */
+    int lms = 0;        /* files named as a platform's download names them (lmsname.h) */
     struct dirent *e;
     while ((e = readdir(d))) {
         char path[PATH_MAX];
@@ -467,6 +476,8 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
         snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
         if (stat(path, &st) != 0)
             continue;
+        LmsName named;
+        lms += lms_name(e->d_name, stage_names, NPARTS, &named);
         if (!S_ISDIR(st.st_mode)) {
             for (int p = 0; p < NPARTS; p++) {
                 size_t ln = strlen(e->d_name), ls = strlen(stage_names[p]);
@@ -476,8 +487,9 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
             }
             continue;
         }
-        char ***list = e->d_name[0] == '.' ? &dots : &names;
-        int *count = e->d_name[0] == '.' ? &ndots : &n;
+        bool system = e->d_name[0] == '.' || strcmp(e->d_name, "__MACOSX") == 0;
+        char ***list = system ? &dots : &names;
+        int *count = system ? &ndots : &n;
         char **grown = realloc(*list, (size_t)(*count + 1) * sizeof **list);
         char *name = strdup(e->d_name);
         if (!grown || !name) {
@@ -501,10 +513,17 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     free(dots);
     if (n == 0) {     /* a wrong folder, most likely: nothing is written */
         snprintf(err, sizeof err, "%s holds no submissions: each submission is a folder of stage files in it%s%s",
-                 dir, ndots ? " (folders whose names start with \".\" are left out: " : "", hidden);
+                 dir, ndots ? " (folders of the system's own, a name starting with \".\" or __MACOSX, are left "
+                              "out: " : "", hidden);
         if (ndots)
             append_text(err, sizeof err, ")");
-        if (loose) {      /* one folder of every student's files, as some downloads give */
+        if (lms) {        /* a platform's download: the sorter reads its names */
+            char more[400];
+            snprintf(more, sizeof more, "; %d of its files or folders are named as a Canvas or Moodle download "
+                     "names a class's files: make sort-submissions FROM=%s TO=new-folder sorts them into a "
+                     "folder per submission", lms, dir);
+            append_text(err, sizeof err, more);
+        } else if (loose) {      /* one folder of every student's files, as some downloads give */
             char more[160];
             snprintf(more, sizeof more, "; it holds %d stage file%s of its own: put each submission's files "
                      "in a folder of its own, named after it", loose, loose == 1 ? "" : "s");
@@ -696,11 +715,12 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
                "change your files and stop your processes; grade code you do not trust as root "
                "(README, \"Grading a class\")\n");
     if (ndots)
-        printf("left out %d folder%s whose name starts with \".\", not taken for a submission: %s\n",
-               ndots, ndots == 1 ? "" : "s", hidden);
+        printf("left out %d folder%s of the system's own (a name starting with \".\", or macOS's __MACOSX), "
+               "not taken for a submission: %s\n", ndots, ndots == 1 ? "" : "s", hidden);
     if (loose)
-        printf("left out %d stage file%s lying in %s itself: a submission is a folder of its own\n", loose,
-               loose == 1 ? "" : "s", dir);
+        printf("left out %d stage file%s lying in %s itself: a submission is a folder of its own%s\n", loose,
+               loose == 1 ? "" : "s", dir, lms ? " (they are named as a Canvas or Moodle download names a "
+               "class's files: make sort-submissions sorts them into a folder per submission)" : "");
     if (nempty)
         printf("%d submission%s no stage file (status \"no stage file\": empty, or files under other "
                "names, which %s .json names): %s%s\n", nempty, nempty == 1 ? " holds" : "s hold",

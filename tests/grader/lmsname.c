@@ -1,0 +1,119 @@
+/* lmsname.c - a downloaded file's submission and own name (lmsname.h). */
+#include "lmsname.h"
+
+#include <stdio.h>
+#include <string.h>
+
+static bool digit(char c)
+{
+    return c >= '0' && c <= '9';
+}
+
+/* Copies s[0 .. n-1] into out (LMS_NAME_MAX bytes); false if it does not fit. */
+static bool copy(char *out, const char *s, size_t n)
+{
+    if (n >= LMS_NAME_MAX)
+        return false;
+    memcpy(out, s, n);
+    out[n] = '\0';
+    return true;
+}
+
+/* Canvas's "-N" before the extension of out->name taken off, when what is
+ * left is a stage file's name (one of stages, with ".c"). */
+static void canvas_again(LmsName *out, const char *const *stages, int nstages)
+{
+    char *dot = strrchr(out->name, '.');
+    if (!dot)
+        return;
+    char *d = dot;
+    while (d > out->name && digit(d[-1]))
+        d--;
+    if (d == dot || d - 1 <= out->name || d[-1] != '-' || dot - d > 4)
+        return;
+    char plain[LMS_NAME_MAX];
+    snprintf(plain, sizeof plain, "%.*s%s", (int)(d - 1 - out->name), out->name, dot);
+    for (int k = 0; k < nstages; k++) {
+        size_t n = strlen(stages[k]);
+        if (strncmp(plain, stages[k], n) == 0 && strcmp(plain + n, ".c") == 0) {
+            int again = 0;
+            for (const char *p = d; p < dot; p++)
+                again = 10 * again + (*p - '0');
+            out->again = again;
+            memcpy(out->name, plain, strlen(plain) + 1);
+            return;
+        }
+    }
+}
+
+/* NAME_[LATE_]USERID_SUBMISSIONID_FILE, in the path's last component. */
+static bool canvas(const char *path, const char *const *stages, int nstages, LmsName *out)
+{
+    const char *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    for (const char *u = strchr(base, '_'); u; u = strchr(u + 1, '_')) {
+        if (u == base)
+            continue;
+        const char *id = u + 1;
+        bool late = strncmp(id, "LATE_", 5) == 0;
+        if (late)
+            id += 5;
+        const char *e = id;
+        while (digit(*e))
+            e++;
+        if (e == id || *e != '_')
+            continue;
+        const char *s = e + 1, *f = s;
+        while (digit(*f))
+            f++;
+        if (f == s || *f != '_' || f[1] == '\0')
+            continue;
+        char who[2 * LMS_NAME_MAX];
+        snprintf(who, sizeof who, "%.*s_%.*s", (int)(u - base), base, (int)(e - id), id);
+        if (!copy(out->who, who, strlen(who)) || !copy(out->name, f + 1, strlen(f + 1)))
+            return false;
+        out->lms = LMS_CANVAS;
+        out->late = late;
+        out->again = 0;
+        canvas_again(out, stages, nstages);
+        return true;
+    }
+    return false;
+}
+
+/* FULL NAME_ID_assignsubmission_TYPE_/FILE or FULL NAME_ID_assignsubmission_TYPE_FILE. */
+static bool moodle(const char *path, LmsName *out)
+{
+    static const char mark[] = "_assignsubmission_";
+    const char *m = strstr(path, mark);
+    if (!m || memchr(path, '/', (size_t)(m - path)))
+        return false;
+    const char *id = m;
+    while (id > path && digit(id[-1]))
+        id--;
+    if (id == m || id - 1 <= path || id[-1] != '_')
+        return false;                       /* no "_ID", or no name before it */
+    const char *type = m + sizeof mark - 1, *t = type;
+    while ((*t >= 'a' && *t <= 'z') || digit(*t))
+        t++;
+    if (t == type || *t != '_')
+        return false;
+    const char *file = t + 1;
+    if (*file == '/')
+        file++;                             /* the folder form */
+    else if (strchr(file, '/'))
+        return false;
+    if (*file == '\0' || file[strlen(file) - 1] == '/')
+        return false;
+    if (!copy(out->who, path, (size_t)(m - path)) || !copy(out->name, file, strlen(file)))
+        return false;
+    out->lms = LMS_MOODLE;
+    out->late = false;
+    out->again = 0;
+    return true;
+}
+
+bool lms_name(const char *path, const char *const *stages, int nstages, LmsName *out)
+{
+    return moodle(path, out) || canvas(path, stages, nstages, out);
+}

@@ -1,0 +1,49 @@
+/*
+ * lmsname.h - the names a learning platform gives a class's files when it
+ * downloads them all at once, read back: whose submission a file is, and
+ * the name its student gave it.
+ *
+ *   Canvas ("Download Submissions"): one zip of every student's files,
+ *   each renamed NAME_USERID_SUBMISSIONID_FILE, or NAME_LATE_USERID_
+ *   SUBMISSIONID_FILE when it came late (USERID and SUBMISSIONID digits);
+ *   a file the student uploaded again under the same name gets "-N" before
+ *   its extension ("part1_image_plane-1.c").
+ *
+ *   Moodle ("Download all submissions"): each student's files in a folder
+ *   FULL NAME_ID_assignsubmission_file_ (the default since Moodle 3.1), or,
+ *   with folders turned off, each file named FULL NAME_ID_assignsubmission_
+ *   file_FILE (ID digits; the plugin's name, "file", may be another).
+ *
+ * sortsubs (make sort-submissions) sorts such a download into one folder
+ * per submission, as grade --all takes them; grade --all names the command
+ * when it is given such a download.
+ */
+#ifndef GRADER_LMSNAME_H
+#define GRADER_LMSNAME_H
+
+#include <stdbool.h>
+
+typedef enum { LMS_CANVAS = 1, LMS_MOODLE } Lms;
+
+#define LMS_NAME_MAX 256
+
+typedef struct {
+    Lms lms;
+    char who[LMS_NAME_MAX];   /* the submission's folder: "smithbob_340934"
+                                 (Canvas: name and user id), "Ann Lee_123456"
+                                 (Moodle: full name and participant id)     */
+    char name[LMS_NAME_MAX];  /* the file as its student named it           */
+    int again;                /* Canvas's "-N" taken off name: N; else 0     */
+    bool late;                /* Canvas's LATE mark                          */
+} LmsName;
+
+/* Reads path, a file's path in a download (relative, '/'-separated), into
+ * *out; true when it is named as one of the two platforms name a file of a
+ * submission, false (and *out unspecified) otherwise.  stages lists the
+ * stage files' names without ".c" ("part1_image_plane", ...: build.h's
+ * stage_names), nstages of them: a Canvas "-N" is taken off only where
+ * that leaves one of them with ".c", so that a student's own "notes-2.txt"
+ * keeps its name. */
+bool lms_name(const char *path, const char *const *stages, int nstages, LmsName *out);
+
+#endif

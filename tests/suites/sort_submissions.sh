@@ -1,0 +1,131 @@
+#!/bin/sh
+# make sort-submissions: a class's download from Canvas or Moodle (one zip,
+# or folder, of every student's files, each named for its student), sorted
+# into one folder per submission, then graded by make grade-all.  The
+# downloads are made here in the platforms' own naming (lmsname.h): Canvas's
+# NAME_USERID_SUBMISSIONID_FILE with LATE_ and "-1", Moodle's folders and
+# its flat form.  Then what must be refused, with nothing written: a TO that
+# is not new, a download with no such names; and what grade-all says when
+# it is given the download itself.
+set -u
+unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtsort.XXXXXX")
+trap 'rm -rf "$tmp"' EXIT
+. tests/lib/checks.sh
+pack=out/build/bin/pack
+for f in out/build/bin/sortsubs "$pack" out/build/bin/grade; do
+    if [ ! -x "$f" ]; then
+        echo "FAIL: $f is missing: run make first"
+        echo "0 passed, 1 failed"
+        exit 1
+    fi
+done
+sort_subs() {   # sort_subs FROM TO: the sorter, its output in $tmp/out
+    out/build/bin/sortsubs "$1" "$2" >"$tmp/out" 2>&1
+}
+
+# ---- Canvas: a reference, a late one uploaded again, a stray file ------------
+dl=$tmp/canvas
+mkdir "$dl"
+for f in solutions/part1_image_plane.c solutions/part2_pixel_coordinates.c \
+         solutions/part3a_sphere_intersect.c solutions/part3b_ray_color.c; do
+    b=${f##*/}
+    cp "$f" "$dl/smithbob_340934_208490284_$b"
+    cp "$f" "$dl/wellslane_LATE_334244_394803489_$b"
+done
+# wellslane uploaded Part 1 again: the skeleton first, the reference after it
+cp labs/part1_image_plane.c "$dl/wellslane_LATE_334244_394803489_part1_image_plane.c"
+cp solutions/part1_image_plane.c "$dl/wellslane_LATE_334244_394803489_part1_image_plane-1.c"
+cp tests/selftest/p2-no-half/part2_pixel_coordinates.c "$dl/leeann_77_88_part2_pixel_coordinates.c"
+echo notes >"$dl/leeann_77_88_notes-2.txt"
+echo stray >"$dl/README.txt"
+mkdir "$dl/__MACOSX" && echo x >"$dl/__MACOSX/._smithbob_340934_208490284_part1_image_plane.c"
+echo x >"$dl/.DS_Store"
+$pack zip "$tmp/canvas.zip" "$dl" >/dev/null 2>&1
+
+make -s --no-print-directory sort-submissions FROM="$tmp/canvas.zip" TO="$tmp/sorted" >"$tmp/out" 2>&1
+status=$?
+check "a Canvas zip, through make sort-submissions: sorted (exit 0)" [ "$status" -eq 0 ]
+check "each submission in a folder of its own, named for the student and the user id" \
+    sh -c "[ \"\$(cd '$tmp/sorted' && ls -d */ | tr -d / | tr '\n' ' ')\" = 'leeann_77 smithbob_340934 wellslane_334244 ' ]"
+check "the files get their own names back" \
+    sh -c "cmp -s solutions/part3a_sphere_intersect.c '$tmp/sorted/smithbob_340934/part3a_sphere_intersect.c' &&
+           [ -f '$tmp/sorted/leeann_77/notes-2.txt' ] && [ \$(ls '$tmp/sorted/smithbob_340934' | wc -l) -eq 4 ]"
+check "a file uploaded again: the later upload (\"-1\") is kept, and the run says so" \
+    sh -c "cmp -s solutions/part1_image_plane.c '$tmp/sorted/wellslane_334244/part1_image_plane.c' &&
+           grep -q 'wellslane_334244/part1_image_plane.c: kept the later upload, wellslane_LATE_334244_394803489_part1_image_plane-1.c; left out wellslane_LATE_334244_394803489_part1_image_plane.c' '$tmp/out'"
+check "the late submission is counted" grep -q '1 of them late' "$tmp/out"
+check "a file not named as a download names them is named, and not sorted" \
+    sh -c "grep -q 'not sorted.*: README.txt\$' '$tmp/out' && [ ! -e '$tmp/sorted/README.txt' ]"
+check "the system's own files are left out" \
+    sh -c "grep -q 'left out 2 files of the system' '$tmp/out' && ! grep -rq . '$tmp/sorted/__MACOSX' 2>/dev/null"
+check "sorted.txt says where each file came from" \
+    sh -c "grep -q '^smithbob_340934/part2_pixel_coordinates.c	smithbob_340934_208490284_part2_pixel_coordinates.c\$' '$tmp/sorted/sorted.txt' &&
+           grep -q '^(left out)	wellslane_LATE_334244_394803489_part1_image_plane.c	(late)	(an earlier upload' '$tmp/sorted/sorted.txt' &&
+           grep -q '^(not sorted)	README.txt\$' '$tmp/sorted/sorted.txt'"
+check "no temporary folder is left beside it" sh -c "! ls -d '$tmp'/sorted.sorting.* >/dev/null 2>&1"
+
+# The same download unpacked into a folder: the same folders and files.
+sort_subs "$dl" "$tmp/sorted-dir"
+status=$?
+check "a Canvas download's folder: the same as its zip" \
+    sh -c "[ $status -eq 0 ] && cd '$tmp' && [ \"\$(find sorted -type f | sed 's|^sorted/||' | grep -v sorted.txt | sort)\" = \"\$(find sorted-dir -type f | sed 's|^sorted-dir/||' | grep -v sorted.txt | sort)\" ]"
+
+# Graded as a class.
+make -s --no-print-directory grade-all SUBMISSIONS="$tmp/sorted" OUT="$tmp/grades" >"$tmp/grade.out" 2>&1
+book=$tmp/grades/gradebook.csv
+check "grade-all grades the sorted folders: the reference and the later upload keep full marks" \
+    sh -c "grep -q '^smithbob_340934,20,20,30,30,.*full marks\$' '$book' && grep -q '^wellslane_334244,20,20,30,30,.*full marks\$' '$book'"
+check "grade-all grades the sorted folders: a Part 2 mistake loses Part 2 alone, the missing parts theirs" \
+    sh -c "grep -q '^leeann_77,0,[0-9.]*,0,0,' '$book' && ! grep -q '^leeann_77,0,20,' '$book'"
+
+# ---- Moodle: folders (the default) and the flat form ------------------------
+m=$tmp/moodle
+mkdir -p "$m/Ann Lee_123456_assignsubmission_file_" "$m/Bo Chen_654321_assignsubmission_file_"
+cp solutions/part1_image_plane.c "$m/Ann Lee_123456_assignsubmission_file_/"
+cp solutions/part2_pixel_coordinates.c "$m/Bo Chen_654321_assignsubmission_file_/"
+cp solutions/part3a_sphere_intersect.c "$m/Cy Diaz_111_assignsubmission_file_part3a_sphere_intersect.c"
+$pack zip "$tmp/moodle.zip" "$m" >/dev/null 2>&1
+sort_subs "$tmp/moodle.zip" "$tmp/msorted"
+status=$?
+check "a Moodle zip, with folders and without: sorted (exit 0)" [ "$status" -eq 0 ]
+check "Moodle: a folder per submission, named for the student and the participant id" \
+    sh -c "[ -f '$tmp/msorted/Ann Lee_123456/part1_image_plane.c' ] && [ -f '$tmp/msorted/Bo Chen_654321/part2_pixel_coordinates.c' ] &&
+           [ -f '$tmp/msorted/Cy Diaz_111/part3a_sphere_intersect.c' ] && grep -q 'of a Moodle download into 3 submission folders' '$tmp/out'"
+
+# ---- refused, nothing written ------------------------------------------------
+mkdir "$tmp/full" && echo x >"$tmp/full/keep.txt"
+sort_subs "$tmp/canvas.zip" "$tmp/full"
+status=$?
+check "TO not empty: refused (exit 1), its files untouched" \
+    sh -c "[ $status -eq 1 ] && grep -q 'it is not empty' '$tmp/out' && [ \"\$(ls '$tmp/full')\" = keep.txt ]"
+mkdir "$tmp/empty"
+sort_subs "$tmp/canvas.zip" "$tmp/empty"
+status=$?
+check "TO an empty folder: sorted into it" sh -c "[ $status -eq 0 ] && [ -d '$tmp/empty/smithbob_340934' ]"
+mkdir "$tmp/plain" && cp solutions/part1_image_plane.c "$tmp/plain/"
+sort_subs "$tmp/plain" "$tmp/none"
+status=$?
+check "no file named as a download names them: refused (exit 1), nothing written" \
+    sh -c "[ $status -eq 1 ] && grep -q 'holds no file named as Canvas or Moodle' '$tmp/out' && [ ! -e '$tmp/none' ] &&
+           ! ls -d '$tmp'/none.sorting.* >/dev/null 2>&1"
+sort_subs "$tmp/no-such.zip" "$tmp/none"
+status=$?
+check "a download that is not there: refused (exit 1)" sh -c "[ $status -eq 1 ] && [ ! -e '$tmp/none' ]"
+printf 'PK not a zip' >"$tmp/bad.zip"
+sort_subs "$tmp/bad.zip" "$tmp/none"
+status=$?
+check "a zip that is not one: refused (exit 1), nothing written" \
+    sh -c "[ $status -eq 1 ] && grep -q 'could not be read' '$tmp/out' && [ ! -e '$tmp/none' ]"
+make -s --no-print-directory sort-submissions FROM="$tmp/canvas.zip" >"$tmp/out" 2>&1
+status=$?
+check "make sort-submissions without TO: its usage (exit 2)" sh -c "[ $status -eq 2 ] && grep -q 'usage: make sort-submissions' '$tmp/out'"
+
+# ---- grade-all given the download itself names the sorter ------------------
+out/build/bin/grade --all "$dl" --out "$tmp/g2" >"$tmp/out" 2>&1
+check "grade-all on a Canvas download's folder (its __MACOSX left out, not graded): names make sort-submissions" \
+    sh -c "grep -q 'named as a Canvas or Moodle download names a class.s files: make sort-submissions FROM=$dl TO=new-folder' '$tmp/out'"
+out/build/bin/grade --all "$tmp/canvas.zip" --out "$tmp/g2" >"$tmp/out" 2>&1
+check "grade-all on the download's zip: names make sort-submissions" \
+    sh -c "grep -q 'canvas.zip is a file, not a folder of submissions: .*make sort-submissions FROM=' '$tmp/out'"
+finish
