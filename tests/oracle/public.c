@@ -175,6 +175,15 @@ static void part3b(TestList *l)
     tg_color(t, V(0, 0, 0), V(0, 0, -1));
     tg_color(t, V(0, 0, 0), V(0, 0, 1));
     tg_color(t, V(0, 0, 0), V(0, 0.5, -0.8660254037844386));
+    t = new_test(l, PART3B, KIND_COLOR, 1, "Part 3b: ray_color counts a hit just ahead of the eye",
+                 "the red sphere is hit at t = 5e-4 and 6.3e-4: every hit of sphere_intersect counts, however "
+                 "near (no bound such as t > 0.001): red, not the green behind it");
+    t->background[0] = 0.2, t->background[1] = 0.2, t->background[2] = 0.2;
+    test_add_sphere(t, V(0, 0, -10), 3, V(0, 1, 0));
+    test_add_sphere(t, V(0, 0, -1.0005), 1, V(1, 0, 0));
+    tg_color(t, V(0, 0, 0), V(0, 0, -1));
+    tg_color(t, V(0, 0, 0), V(0, 0.6, -0.8));
+    tg_color(t, V(0, 0, 0), V(0, 0, 1));
 
     tg_image(l, "Part 3b: render the default scene at 40 x 30", "labs/scenes/default.scene", 40, 30)->weight = 2;
     tg_image(l, "Part 3b: render the flip scene at 24 x 24", "labs/scenes/flip.scene", 24, 24);
