@@ -350,6 +350,15 @@ int scene_parse(Scene *scene, const char *text, const char *name, char *err, siz
         text_error(err, errlen, name, 0, "no fov line: 'fov degrees' is required");
         goto fail;
     }
+    if (scene->nspheres == b.spheres) {           /* room for the guard (scene.h) */
+        Sphere *more = realloc(scene->spheres, ((size_t)scene->nspheres + 1) * sizeof *more);
+        if (!more) {
+            text_error(err, errlen, name, 0, "out of memory");
+            goto fail;
+        }
+        scene->spheres = more;
+    }
+    scene->spheres[scene->nspheres] = scene_guard_sphere();
     free(dir);
     return 0;
 

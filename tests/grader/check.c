@@ -8,6 +8,7 @@
 #include "grader.h"
 #include "hexfloat.h"
 #include "kit/numtext.h"
+#include "kit/scene.h"                  /* the guard sphere's colour */
 
 #include <math.h>
 #include <stdarg.h>
@@ -465,6 +466,14 @@ bool check_answers_in_part(const Test *test, const char *answers, size_t len,
             describe_case(&t, test, c, &test->cases[c], got, true);
         }
     }
+    /* The guard sphere's colour, which only a read past the scene's last
+     * sphere can give (scene.h). */
+    if ((test->kind == KIND_COLOR || test->kind == KIND_IMAGE) && a.first_bad >= 0 &&
+        a.got[a.first_bad][0] == SCENE_GUARD_RED && a.got[a.first_bad][1] == SCENE_GUARD_GREEN &&
+        a.got[a.first_bad][2] == SCENE_GUARD_BLUE)
+        say(&t, "    hint:      this magenta is the grader's marker sphere, kept just past the last "
+                "sphere, around everything: ray_color read scene->spheres[scene->nspheres], one sphere "
+                "too many. Loop while k < scene->nspheres\n");
     if (flat && a.first_bad >= 0) {
         const Case *bad = &test->cases[a.first_bad];
         bool nan_in = false;

@@ -24,6 +24,7 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "raytracer.h"
+#include "kit/scene.h"                  /* the guard sphere */
 #ifdef HARNESS_LOAD
 #include "harness_load.h"
 #include "harness_serve.h"
@@ -159,7 +160,10 @@ static int one_test(const char *kind, int n)
             return 3;
         scene.background = vec3(bg[0], bg[1], bg[2]);
         scene.spheres = calloc((size_t)m + 1, sizeof *scene.spheres);
+        if (!scene.spheres)
+            return 3;
         scene.nspheres = m;
+        scene.spheres[m] = scene_guard_sphere();     /* past the last: scene.h */
         for (int s = 0; s < m; s++) {
             double v[7];
             if (get(v, 7))

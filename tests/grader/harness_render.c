@@ -16,6 +16,7 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "raytracer.h"
+#include "kit/scene.h"                  /* the guard sphere */
 #include "kit/image.h"
 
 #include <stdio.h>
@@ -62,6 +63,7 @@ int main(void)
         spheres[s].radius = v[3];
         spheres[s].color = vec3(v[4], v[5], v[6]);
     }
+    spheres[m] = scene_guard_sphere();  /* past the last: scene.h */
     scene.spheres = spheres;
     scene.nspheres = m;
 

@@ -211,7 +211,7 @@ static void test_defaults_crlf_and_edges(void)
     CHECK_EQ_DOUBLE(scene.background.y, 0);
     CHECK_EQ_DOUBLE(scene.background.z, 0);
     CHECK_EQ_INT(scene.nspheres, 0);
-    CHECK(scene.spheres == NULL);
+    CHECK(scene.spheres != NULL);               /* the guard alone (test_guard_sphere) */
     scene_free(&scene);
 
     /* colours at both ends of [0, 1], a tiny field of view, a whole number
@@ -307,6 +307,41 @@ static void test_sphere_limit(void)
     CHECK_STR_CONTAINS(err, where);
     CHECK(scene.spheres == NULL);
     free(text);
+}
+
+/* Past the last sphere, the guard (scene.h): for no sphere, for a number
+ * that fills the array's capacity (16, then 32) and for one that does not,
+ * and at the limit.  (In the sanitized build an array with no room for it
+ * would be caught writing or reading it.) */
+static void test_guard_sphere(void)
+{
+    static const int counts[] = { 0, 1, 15, 16, 17, 32, SCENE_MAX_SPHERES };
+    const char *line = "sphere 0 0 -5 1 1 0 0\n";
+    size_t len = strlen(line);
+    for (size_t c = 0; c < sizeof counts / sizeof counts[0]; c++) {
+        int n = counts[c];
+        char *text = malloc(strlen(GOOD_HEAD) + (size_t)n * len + 1);
+        CHECK(text != NULL);
+        if (!text)
+            return;
+        char *p = text;
+        memcpy(p, GOOD_HEAD, strlen(GOOD_HEAD));
+        p += strlen(GOOD_HEAD);
+        for (int k = 0; k < n; k++, p += len)
+            memcpy(p, line, len);
+        *p = '\0';
+        Scene scene;
+        char err[256];
+        CHECK_EQ_INT(scene_parse(&scene, text, "guard.scene", err, sizeof err), 0);
+        CHECK_EQ_INT(scene.nspheres, n);
+        const Sphere *g = scene.spheres ? &scene.spheres[n] : NULL;
+        CHECK_MSG(g && g->radius == SCENE_GUARD_RADIUS && g->center.x == 0 && g->center.y == 0 &&
+                      g->center.z == 0 && g->color.x == SCENE_GUARD_RED && g->color.y == SCENE_GUARD_GREEN &&
+                      g->color.z == SCENE_GUARD_BLUE,
+                  "%d spheres: no guard sphere after the last", n);
+        scene_free(&scene);
+        free(text);
+    }
 }
 
 /* A short err buffer is truncated safely; a NULL one is allowed. */
@@ -581,6 +616,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_long_lines),
     CHECK_TEST(test_many_words),
     CHECK_TEST(test_sphere_limit),
+    CHECK_TEST(test_guard_sphere),
     CHECK_TEST(test_small_error_buffers),
     CHECK_TEST(test_load_errors),
     CHECK_TEST(test_load_files),
