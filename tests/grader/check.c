@@ -177,7 +177,12 @@ static void describe_case(Text *t, const Test *test, int index, const Case *c, c
                 c->tol[1]);
         else
             say(t, "miss");
-        if ((c->flags & CASE_EITHER_HIT) && kind == KIND_SPHERE && c->alt[0] < c->alt[1])
+        if ((c->flags & CASE_EITHER_HIT) && kind == KIND_SPHERE && c->alt[0] < c->alt[1] && c->alt[0] <= 0)
+            say(t, " -- or a hit at a t > 0 up to %s: the ray starts within rounding of "
+                   "the surface, so a miss, a hit just ahead and the far side are all accepted "
+                   "(t = 0, the origin itself, is not ahead)",
+                kit_shortest_double(b1, sizeof b1, c->alt[1]));
+        else if ((c->flags & CASE_EITHER_HIT) && kind == KIND_SPHERE && c->alt[0] < c->alt[1])
             say(t, " -- or a hit at t from %s to %s: the ray starts within rounding of "
                    "the surface, so a miss, a hit just ahead and the far side are all accepted",
                 kit_shortest_double(b0, sizeof b0, c->alt[0]),

@@ -488,6 +488,27 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
             g->core_max[t->part] += r->max_score;
         }
     }
+    /* A part's points are the ones weights.conf gives it: its tests' shares
+     * (30 / 13 each, say) add up to them only within rounding, so the
+     * maxima, and a part that passed every test, are set to them. */
+    for (int p = 0; p < NPARTS; p++) {
+        bool all_core = true, all_hard = true;
+        for (int k = 0; k < tests->n; k++)
+            if (tests->tests[k].part == p && g->graded[p] && !g->results[k].passed) {
+                all_core = all_core && tests->tests[k].hard;
+                all_hard = all_hard && !tests->tests[k].hard;
+            }
+        if (g->core_max[p] > 0) {
+            g->core_max[p] = cfg->core[p];
+            if (all_core)
+                g->core[p] = cfg->core[p];
+        }
+        if (g->hard_max[p] > 0) {
+            g->hard_max[p] = cfg->hard[p];
+            if (all_hard)
+                g->hard[p] = cfg->hard[p];
+        }
+    }
     for (int p = 0; p < NPARTS; p++) {
         g->total += g->core[p];
         g->total_max += g->core_max[p];

@@ -175,6 +175,53 @@ static bool tangent_is_exact(const Sphere *sp, const Ray *ray)
     return tangent_exact_for(f, sp->radius, unit);
 }
 
+/*
+ * An origin exactly on the surface that no usual method can get wrong: f,
+ * f.f, R^2 and C = f.f - R^2 = 0 are doubles without rounding, and so are
+ * B^2, f.f - B^2 (the geometric form's d^2), the closest-point form's
+ * b = B/A, l = f - b r, l.l, |l| and (R - |l|)(R + |l|) (pbrt's), and the
+ * same for the normalize-first variant's r/|r|: every method finds one
+ * root exactly t = 0, which is not ahead of the ray (t > 0), and the other
+ * is the answer.  Axis directions through the centre, such as e = (0, 0, 0),
+ * c = (0, 0, -1), R = 1, r = (0, 0, -1), are of this kind; an origin on the
+ * surface where |l| is irrational (sqrt 13) is not, and stays ambiguous.
+ */
+static bool surface_exact_for(const double f[3], double R, const double r[3])
+{
+    double A, B, ff, R2, C, BB, d2, b, br, l[3], ll, nl, lo, hi, disc;
+    if (!exact_dot(r, r, &A) || !exact_dot(f, r, &B) || !exact_dot(f, f, &ff) || !exact_mul(R, R, &R2)
+        || !exact_add(ff, -R2, &C) || C != 0 || !exact_mul(B, B, &BB) || !exact_add(ff, -BB, &d2)
+        || !exact_div(B, A, &b))
+        return false;
+    for (int k = 0; k < 3; k++)
+        if (!exact_mul(b, r[k], &br) || !exact_add(f[k], -br, &l[k]))
+            return false;
+    if (!exact_dot(l, l, &ll))
+        return false;
+    nl = sqrt(ll);
+    return fma(nl, nl, -ll) == 0 && exact_add(R, -nl, &lo) && exact_add(R, nl, &hi) && exact_mul(lo, hi, &disc);
+}
+
+static bool surface_is_exact(const Sphere *sp, const Ray *ray)
+{
+    double e[3] = { ray->origin.x, ray->origin.y, ray->origin.z };
+    double c[3] = { sp->center.x, sp->center.y, sp->center.z };
+    double r[3] = { ray->direction.x, ray->direction.y, ray->direction.z };
+    double f[3], A, n, unit[3];
+    for (int k = 0; k < 3; k++)
+        if (!exact_add(e[k], -c[k], &f[k]))
+            return false;
+    if (!surface_exact_for(f, sp->radius, r) || !exact_dot(r, r, &A))
+        return false;
+    n = sqrt(A);
+    if (fma(n, n, -A) != 0)
+        return false;
+    for (int k = 0; k < 3; k++)
+        if (!exact_div(r[k], n, &unit[k]))
+            return false;
+    return surface_exact_for(f, sp->radius, unit);
+}
+
 /* Everything oracle_sphere knows about one sphere and ray. */
 typedef struct {
     bool hit;          /* a root t > 0                                         */
@@ -253,7 +300,7 @@ static void solve_sphere(const Sphere *sp, const Ray *ray, SphereSolution *S)
     double gap = lnorm + R > 0 ? -dd_to_double(disc) / (lnorm + R) : 0;
     S->silhouette = fabs(gap) <= ORACLE_K_SILHOUETTE * U * (S->nf + R) && t_closest > 0
                     && !tangent_is_exact(sp, ray);
-    S->surface = fabs(dd_to_double(C)) <= ORACLE_K_SURFACE * U * (ff.hi + R2.hi);
+    S->surface = fabs(dd_to_double(C)) <= ORACLE_K_SURFACE * U * (ff.hi + R2.hi) && !surface_is_exact(sp, ray);
 
     double s = 0;
     dd t_hit = dd_from(0);

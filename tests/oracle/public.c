@@ -127,6 +127,11 @@ static void part3a(TestList *l)
     tg_sphere(t, V(0, 0, -5), 1, V(0, 0, 0), V(0, 0, 0));
     tg_sphere(t, V(0, 0, -5), 1, V(0, 0, 0), V(0, 0.6, -0.8));
     tg_sphere(t, V(0, 0, -5), 1, V(0, 0, 0), V(0, 0.1, -0.9));
+    t = new_test(l, PART3A, KIND_SPHERE, 1, "Part 3a: a ray that starts on the sphere",
+                 "C = 0 exactly: one root is t = 0, the ray's own origin, which is not ahead of it (t > 0)");
+    tg_sphere(t, V(0, 0, -1), 1, V(0, 0, 0), V(0, 0, -1));
+    tg_sphere(t, V(0, 0, -1), 1, V(0, 0, 0), V(0, 0, 1));
+    tg_sphere(t, V(0, 0, -2), 2, V(0, 0, 0), V(0, 0, -2));
     t = new_test(l, PART3A, KIND_SPHERE, 1, "Part 3a: rays that do not start at the origin",
                  "f = e - c uses the ray's own origin e");
     tg_sphere(t, V(0, 0, -5), 1, V(0, 0, 3), V(0, 0, -1));

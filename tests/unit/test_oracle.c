@@ -353,6 +353,11 @@ static void test_oracle_sphere_exact(void)
             /* on the surface at (2, 3, 6): inwards the roots are 0 and 12 */
             CHECK_SPHERE(sphere_at(0, 0, 0, 7 * s), ray_of(2 * s, 3 * s, 6 * s, 0, 0, -q), true, 12 * s / q, true);
             CHECK_SPHERE(sphere_at(0, 0, 0, 7 * s), ray_of(2 * s, 3 * s, 6 * s, 0, 0, q), false, 0, true);
+            /* on the surface at (0, 0, 5), along the radius: every method's every step is
+             * exact (C = 0, l = 0), so the root t = 0 is certain, and not ahead: the far
+             * side inwards, a miss outwards, neither ambiguous (sqrt 13 above keeps it so) */
+            CHECK_SPHERE(sphere_at(0, 0, 0, 5 * s), ray_of(0, 0, 5 * s, 0, 0, -q), true, 10 * s / q, false);
+            CHECK_SPHERE(sphere_at(0, 0, 0, 5 * s), ray_of(0, 0, 5 * s, 0, 0, q), false, 0, false);
             /* along the radius, 3-4-5 direction: through the centre */
             CHECK_SPHERE(sphere_at(0, 0, 0, 5 * s), ray_of(-6 * s, -8 * s, 0, 3 * q, 4 * q, 0),
                          true, 1 * s / q, false);
