@@ -155,7 +155,10 @@ static bool tangent_exact_for(const double f[3], double R, const double r[3])
     return exact_dot(l, l, &ll) && ll == R2;
 }
 
-static bool tangent_is_exact(const Sphere *sp, const Ray *ray)
+/* exact_for(f, R, r) holds for f = e - c (itself exact), for the ray's r and
+ * for the normalize-first variant's r/|r| (|r| and r/|r| exact too). */
+static bool exact_both_ways(const Sphere *sp, const Ray *ray,
+                            bool (*exact_for)(const double *f, double R, const double *r))
 {
     double e[3] = { ray->origin.x, ray->origin.y, ray->origin.z };
     double c[3] = { sp->center.x, sp->center.y, sp->center.z };
@@ -164,7 +167,7 @@ static bool tangent_is_exact(const Sphere *sp, const Ray *ray)
     for (int k = 0; k < 3; k++)
         if (!exact_add(e[k], -c[k], &f[k]))
             return false;
-    if (!tangent_exact_for(f, sp->radius, r) || !exact_dot(r, r, &A))
+    if (!exact_for(f, sp->radius, r) || !exact_dot(r, r, &A))
         return false;
     n = sqrt(A);
     if (fma(n, n, -A) != 0)
@@ -172,7 +175,12 @@ static bool tangent_is_exact(const Sphere *sp, const Ray *ray)
     for (int k = 0; k < 3; k++)
         if (!exact_div(r[k], n, &unit[k]))
             return false;
-    return tangent_exact_for(f, sp->radius, unit);
+    return exact_for(f, sp->radius, unit);
+}
+
+static bool tangent_is_exact(const Sphere *sp, const Ray *ray)
+{
+    return exact_both_ways(sp, ray, tangent_exact_for);
 }
 
 /*
@@ -204,22 +212,7 @@ static bool surface_exact_for(const double f[3], double R, const double r[3])
 
 static bool surface_is_exact(const Sphere *sp, const Ray *ray)
 {
-    double e[3] = { ray->origin.x, ray->origin.y, ray->origin.z };
-    double c[3] = { sp->center.x, sp->center.y, sp->center.z };
-    double r[3] = { ray->direction.x, ray->direction.y, ray->direction.z };
-    double f[3], A, n, unit[3];
-    for (int k = 0; k < 3; k++)
-        if (!exact_add(e[k], -c[k], &f[k]))
-            return false;
-    if (!surface_exact_for(f, sp->radius, r) || !exact_dot(r, r, &A))
-        return false;
-    n = sqrt(A);
-    if (fma(n, n, -A) != 0)
-        return false;
-    for (int k = 0; k < 3; k++)
-        if (!exact_div(r[k], n, &unit[k]))
-            return false;
-    return surface_exact_for(f, sp->radius, unit);
+    return exact_both_ways(sp, ray, surface_exact_for);
 }
 
 /* Everything oracle_sphere knows about one sphere and ray. */

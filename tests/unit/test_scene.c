@@ -281,20 +281,31 @@ static void test_many_words(void)
 }
 
 /* SCENE_MAX_SPHERES spheres load; one more is refused on its line. */
+#define ONE_SPHERE "sphere 0 0 -5 1 1 0 0\n"
+
+/* GOOD_HEAD and n lines ONE_SPHERE, with room for one line more (malloc'd). */
+static char *spheres_text(size_t n)
+{
+    size_t head = strlen(GOOD_HEAD), len = strlen(ONE_SPHERE);
+    char *text = malloc(head + (n + 1) * len + 1);
+    if (!text)
+        return NULL;
+    memcpy(text, GOOD_HEAD, head);
+    for (size_t k = 0; k < n; k++)
+        memcpy(text + head + k * len, ONE_SPHERE, len);
+    text[head + n * len] = '\0';
+    return text;
+}
+
 static void test_sphere_limit(void)
 {
-    const char *line = "sphere 0 0 -5 1 1 0 0\n";
-    size_t n = SCENE_MAX_SPHERES + 1, len = strlen(line);
-    char *text = malloc(strlen(GOOD_HEAD) + n * len + 1);
+    const char *line = ONE_SPHERE;
+    size_t len = strlen(line);
+    char *text = spheres_text(SCENE_MAX_SPHERES);
     CHECK(text != NULL);
     if (!text)
         return;
-    char *p = text;
-    memcpy(p, GOOD_HEAD, strlen(GOOD_HEAD));
-    p += strlen(GOOD_HEAD);
-    for (size_t k = 0; k < n - 1; k++, p += len)
-        memcpy(p, line, len);
-    *p = '\0';
+    char *p = text + strlen(text);
     Scene scene;
     char err[256];
     CHECK_EQ_INT(scene_parse(&scene, text, "max.scene", err, sizeof err), 0);
@@ -316,20 +327,12 @@ static void test_sphere_limit(void)
 static void test_guard_sphere(void)
 {
     static const int counts[] = { 0, 1, 15, 16, 17, 32, SCENE_MAX_SPHERES };
-    const char *line = "sphere 0 0 -5 1 1 0 0\n";
-    size_t len = strlen(line);
     for (size_t c = 0; c < sizeof counts / sizeof counts[0]; c++) {
         int n = counts[c];
-        char *text = malloc(strlen(GOOD_HEAD) + (size_t)n * len + 1);
+        char *text = spheres_text((size_t)n);
         CHECK(text != NULL);
         if (!text)
             return;
-        char *p = text;
-        memcpy(p, GOOD_HEAD, strlen(GOOD_HEAD));
-        p += strlen(GOOD_HEAD);
-        for (int k = 0; k < n; k++, p += len)
-            memcpy(p, line, len);
-        *p = '\0';
         Scene scene;
         char err[256];
         CHECK_EQ_INT(scene_parse(&scene, text, "guard.scene", err, sizeof err), 0);
