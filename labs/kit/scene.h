@@ -29,6 +29,8 @@
 #include "../raytracer.h"
 
 #define SCENE_MAX_SPHERES   100000
+#define SCENE_MAX_PLANES    100000
+#define SCENE_MAX_TRIANGLES 1000000
 
 /* The guard: a sphere kept just past a scene's last one, in
  * spheres[nspheres] (not counted in nspheres), by scene_load and by the
@@ -46,8 +48,6 @@ static inline Sphere scene_guard_sphere(void)
     Sphere s = { vec3(0, 0, 0), SCENE_GUARD_RADIUS, vec3(SCENE_GUARD_RED, SCENE_GUARD_GREEN, SCENE_GUARD_BLUE) };
     return s;
 }
-#define SCENE_MAX_PLANES    100000
-#define SCENE_MAX_TRIANGLES 1000000
 
 /* Loads path into scene (eye at the origin).  Returns 0, or -1 with a
  * message "path:line: reason" (or "path: reason") in err.  On failure the

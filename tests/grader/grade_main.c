@@ -135,10 +135,13 @@ static void write_page(const char *page, const Grade *g, const GradeConfig *cfg,
         fprintf(stderr, "grade: the report page has no pictures of the scene: %s\n", err);
     if (report_html(page, g, cfg, submission, have ? &rr : NULL, err, sizeof err) != 0)
         fprintf(stderr, "grade: the report page was not written: %s\n", err);
-    else if (!quiet && g->total == g->total_max && g->bonus == g->bonus_max)
-        printf("\nThe report (no failure to draw; your render beside the reference's): %s\n", page);
-    else if (!quiet)
-        printf("\nThe report with pictures of every failure: %s\n", page);
+    else if (!quiet) {
+        bool failed = false;            /* a graded test failed: the page draws it */
+        for (int k = 0; k < g->tests->n && !failed; k++)
+            failed = g->graded[g->tests->tests[k].part] && !g->results[k].passed;
+        printf(failed ? "\nThe report with pictures of every failure: %s\n"
+                      : "\nThe report (no failure to draw; your render beside the reference's): %s\n", page);
+    }
     if (have)
         report_renders_free(&rr);
 }

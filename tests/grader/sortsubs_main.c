@@ -71,30 +71,6 @@ static bool system_file(const char *path)
     return false;
 }
 
-/* Removes the tree at path, which this run made (links are removed, never followed). */
-static void remove_tree(const char *path)
-{
-    struct stat st;
-    if (lstat(path, &st) != 0)
-        return;
-    if (S_ISDIR(st.st_mode)) {
-        DIR *d = opendir(path);
-        struct dirent *e;
-        while (d && (e = readdir(d))) {
-            if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
-                continue;
-            char sub[4096];
-            if ((size_t)snprintf(sub, sizeof sub, "%s/%s", path, e->d_name) < sizeof sub)
-                remove_tree(sub);
-        }
-        if (d)
-            closedir(d);
-        rmdir(path);
-    } else {
-        unlink(path);
-    }
-}
-
 /* 1 when TO can be made (missing, or an empty folder), 0 when not (why in err). */
 static int new_destination(const char *to, bool *exists, char *err, size_t errlen)
 {
@@ -259,7 +235,7 @@ int main(int argc, char **argv)
             status = -1;
         }
         if (status != 0)
-            remove_tree(tmp);
+            build_rmtree(tmp);
     }
     archive_free(&out);
     if (status != 0) {
