@@ -222,28 +222,41 @@ static void describe_case(Text *t, const Test *test, int index, const Case *c, c
     say(t, "\n");
 }
 
-/* Whether a test the same code passed (one of passed[0 .. npassed-1])
- * rules out the mistake of this hint text: a case of it has the hint, so
- * there the mistake answers wrongly, and the code answered right. */
-static bool ruled_out(const char *text, const Test *const *passed, int npassed)
+/* Whether a test the same code passed rules out the mistake of this hint
+ * text: a case of it has the hint, so there the mistake answers wrongly,
+ * and the code answered right. */
+static bool ruled_out(const char *text, const PartSoFar *part)
 {
-    for (int k = 0; k < npassed; k++)
-        for (int c = 0; c < passed[k]->ncases; c++)
-            for (int h = 0; h < passed[k]->cases[c].nhints; h++)
-                if (strcmp(passed[k]->cases[c].hints[h].text, text) == 0)
+    for (int k = 0; k < part->npassed; k++) {
+        const Test *pt = part->passed[k];
+        for (int c = 0; c < pt->ncases; c++)
+            for (int h = 0; h < pt->cases[c].nhints; h++)
+                if (strcmp(pt->cases[c].hints[h].text, text) == 0)
                     return true;
+    }
+    return false;
+}
+
+/* Whether the mistake of this hint text was named for another test of the
+ * part that the same code failed. */
+static bool named_before(const char *text, const PartSoFar *part)
+{
+    for (int k = 0; k < part->nnamed; k++)
+        if (strcmp(part->named[k], text) == 0)
+            return true;
     return false;
 }
 
 /* Whether one of the tests passed has a case whose certain answer is a
  * hit: code that passed it is not code that misses every ray. */
-static bool hits_right(const Test *const *passed, int npassed)
+static bool hits_right(const PartSoFar *part)
 {
-    for (int k = 0; k < npassed; k++)
-        for (int c = 0; c < passed[k]->ncases; c++)
-            if (kind_is_hit(passed[k]->kind) && passed[k]->cases[c].want[0] == 1 &&
-                !(passed[k]->cases[c].flags & CASE_EITHER_HIT))
+    for (int k = 0; k < part->npassed; k++) {
+        const Test *pt = part->passed[k];
+        for (int c = 0; c < pt->ncases; c++)
+            if (kind_is_hit(pt->kind) && pt->cases[c].want[0] == 1 && !(pt->cases[c].flags & CASE_EITHER_HIT))
                 return true;
+    }
     return false;
 }
 
@@ -252,14 +265,15 @@ static bool hits_right(const Test *const *passed, int npassed)
  * (a hint of that text on the case) or, where the mistake gives the right
  * answer (no hint of that text), the right answer; it must explain every
  * case answered, and be wrong somewhere.  That mistake when it is the only
- * one.  When several fit, the tests of the part that the code passed may
- * tell them apart: a mistake that would have failed one of them is dropped,
- * and the one left, if one is, is named.  (Only then: a mistake is a model
- * of many ways to write it, the student's way may differ from it elsewhere,
- * and a test it alone explains names it whatever the other tests say.)
- * NULL when none is confirmed. */
+ * one.  When several fit, the part's other tests may tell them apart: a
+ * mistake that would have failed a test the code passed is dropped, and
+ * the one left, if one is, is named; if more are left, the one named for
+ * another failed test of the part, if one was.  (Only then: a mistake is a
+ * model of many ways to write it, the student's way may differ from it
+ * elsewhere, and a test it alone explains names it whatever the other
+ * tests say.)  NULL when none is confirmed. */
 static const char *flat_mistake(const Test *test, const double (*got)[CASE_MAX_OUT],
-                                const bool *ok, int answered, const Test *const *passed, int npassed)
+                                const bool *ok, int answered, const PartSoFar *part)
 {
     enum { MAX_FIT = 16 };
     const char *fit[MAX_FIT];
@@ -295,15 +309,21 @@ static const char *flat_mistake(const Test *test, const double (*got)[CASE_MAX_O
     }
     if (nfit == 1)
         return fit[0];
-    const char *left = NULL;
-    for (int k = 0; k < nfit; k++) {
-        if (ruled_out(fit[k], passed, npassed))
+    int nleft = 0;
+    for (int k = 0; k < nfit; k++)
+        if (!ruled_out(fit[k], part))
+            fit[nleft++] = fit[k];
+    if (nleft == 1)
+        return fit[0];
+    const char *named = NULL;
+    for (int k = 0; k < nleft; k++) {
+        if (!named_before(fit[k], part))
             continue;
-        if (left)
+        if (named)
             return NULL;                /* two mistakes fit: name neither */
-        left = fit[k];
+        named = fit[k];
     }
-    return left;
+    return named;
 }
 
 /* Parts 4 and 5: what explains the test's answers.  When every answer is
@@ -313,17 +333,19 @@ static const char *flat_mistake(const Test *test, const double (*got)[CASE_MAX_O
  * of its part with a hit in it is it not the skeleton; then the mistake
  * flat_mistake confirms, if it confirms one, is named. */
 static const char *flat_diagnosis(const Test *test, const double (*got)[CASE_MAX_OUT],
-                                  const bool *ok, int answered, const Test *const *passed, int npassed)
+                                  const bool *ok, int answered, const PartSoFar *part,
+                                  const char **mistake)
 {
     static const char all_miss_fact[] =
         "every case of this test was answered as a miss, also where the ray plainly hits";
     bool all_miss = answered > 0;
     for (int c = 0; c < answered; c++)
         all_miss = all_miss && got[c][0] == 0;
-    if (all_miss && !hits_right(passed, npassed))
+    *mistake = NULL;
+    if (all_miss && !hits_right(part))
         return all_miss_fact;
-    const char *mistake = flat_mistake(test, got, ok, answered, passed, npassed);
-    return mistake ? mistake : all_miss ? all_miss_fact : NULL;
+    *mistake = flat_mistake(test, got, ok, answered, part);
+    return *mistake ? *mistake : all_miss ? all_miss_fact : NULL;
 }
 
 /* Parts 4 and 5: causes that an answer shows by itself, whatever the
@@ -423,12 +445,15 @@ bool case_is_right(Kind kind, const Case *c, const double *got)
 
 bool check_answers(const Test *test, const char *answers, size_t len, char **out, Answers *keep)
 {
-    return check_answers_in_part(test, answers, len, NULL, 0, out, keep);
+    return check_answers_in_part(test, answers, len, NULL, out, keep);
 }
 
 bool check_answers_in_part(const Test *test, const char *answers, size_t len,
-                           const Test *const *passed, int npassed, char **out, Answers *keep)
+                           const PartSoFar *part, char **out, Answers *keep)
 {
+    static const PartSoFar alone = { 0 };
+    if (!part)
+        part = &alone;
     Text t = { 0 };
     int nout = kind_nout(test->kind);
     const char *p = answers, *end = answers + len;
@@ -485,7 +510,7 @@ bool check_answers_in_part(const Test *test, const char *answers, size_t len,
         for (int k = 0; k < kind_nin(test->kind); k++)
             nan_in = nan_in || isnan(bad->in[k]);
         const char *why = flat_diagnosis(test, (const double (*)[CASE_MAX_OUT])a.got, a.ok, a.answered,
-                                         passed, npassed);
+                                         part, &a.named);
         double missed, found;
         if (nan_in && a.got[a.first_bad][0] == 1)
             say(&t, "    hint:      NaN input must be a miss: a test written as \"t < 0: miss\" lets "

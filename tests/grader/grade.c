@@ -162,10 +162,10 @@ static int run_child(const GradeOptions *opt, const Build *b, SandboxServer *srv
     return status;
 }
 
-/* Runs one test in the sandbox and judges it, beside the tests of its part
- * that the same code passed (check_answers_in_part). */
+/* Runs one test in the sandbox and judges it, beside the other tests of
+ * its part (check_answers_in_part). */
 static void run_test(const GradeOptions *opt, const Build *b, SandboxServer *srv, const Test *t,
-                     const Test *const *passed, int npassed, TestResult *r)
+                     const PartSoFar *part, TestResult *r)
 {
     SandboxResult res;
     char err[256];
@@ -176,7 +176,7 @@ static void run_test(const GradeOptions *opt, const Build *b, SandboxServer *srv
     r->seconds = res.seconds;
 
     char *verdict = NULL;
-    bool ok = check_answers_in_part(t, res.answer, res.answer_len, passed, npassed, &verdict,
+    bool ok = check_answers_in_part(t, res.answer, res.answer_len, part, &verdict,
                                     &r->answers);
     r->ran = true;
     const char *why = "";
@@ -387,9 +387,11 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         bool first = true;
         bool *done = calloc((size_t)tests->n + 1, sizeof *done);
         const Test **passed = calloc((size_t)tests->n + 1, sizeof *passed);
-        if (!done || !passed) {
+        const char **named = calloc((size_t)tests->n + 1, sizeof *named);
+        if (!done || !passed || !named) {
             free(done);
             free(passed);
+            free(named);
             build_remove(&b);
             snprintf(err, errlen, "out of memory");
             return -1;
@@ -406,6 +408,7 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
             if (rc != 0) {
                 free(done);
                 free(passed);
+                free(named);
                 build_remove(&b);
                 return -1;
             }
@@ -443,11 +446,17 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
             } else {
                 if (opt->verbose)
                     fprintf(stderr, "  %s\n", t->name);
-                int npassed = 0;
-                for (int j = 0; j < tests->n; j++)
-                    if (tests->tests[j].part == p && g->results[j].passed)
-                        passed[npassed++] = &tests->tests[j];
-                run_test(opt, &b, &srv, t, passed, npassed, r);
+                PartSoFar part = { passed, 0, named, 0 };
+                for (int j = 0; j < tests->n; j++) {
+                    const TestResult *rj = &g->results[j];
+                    if (tests->tests[j].part != p)
+                        continue;
+                    if (rj->passed)
+                        passed[part.npassed++] = &tests->tests[j];
+                    else if (rj->ran && rj->answers.named)
+                        named[part.nnamed++] = rj->answers.named;
+                }
+                run_test(opt, &b, &srv, t, &part, r);
                 if (!r->passed && r->seconds >= cfg->timeout)
                     timeouts++;
             }
@@ -455,6 +464,7 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         }
         free(done);
         free(passed);
+        free(named);
         sandbox_serve_stop(&srv);
         g->cpu_tests += sandbox_cpu(false) - children;
         children = sandbox_cpu(false);

@@ -137,6 +137,9 @@ typedef struct {
     bool complete;                 /* every case answered, then "end N"         */
     double (*got)[CASE_MAX_OUT];   /* one row per case answered (malloc'd)      */
     bool *ok;                      /* per case answered: right?  (malloc'd)     */
+    const char *named;             /* Parts 4 and 5: the known mistake that
+                                      explains the answers (a hint text of the
+                                      test), or NULL                            */
 } Answers;
 
 void answers_free(Answers *a);
@@ -156,11 +159,20 @@ typedef struct {
  * every case is right; out receives the message for the student, and a,
  * when not NULL, every answer and whether it was right. */
 bool check_answers(const Test *test, const char *answers, size_t len, char **out, Answers *a);
-/* The same, for a test judged beside the tests of its part that the same
- * code passed (passed[0 .. npassed-1]): a known mistake those tests rule
- * out is not named (Parts 4 and 5, check.c). */
+/* What the same code did in the other tests of a part, for the hints of
+ * Parts 4 and 5 (check.c): a known mistake a passed test rules out is not
+ * named, and of two that fit, the one named for another failed test is. */
+typedef struct {
+    const Test *const *passed;     /* the tests of the part it passed          */
+    int npassed;
+    const char *const *named;      /* the mistakes named for its failed tests  */
+    int nnamed;
+} PartSoFar;
+
+/* The same, for a test judged beside the other tests of its part (part may
+ * be NULL: none). */
 bool check_answers_in_part(const Test *test, const char *answers, size_t len,
-                           const Test *const *passed, int npassed, char **out, Answers *a);
+                           const PartSoFar *part, char **out, Answers *a);
 /* A batch's answers (every test of a part, run in one child), split after
  * each line that starts "end ": from[k] and size[k] are the k-th test's
  * answers.  Returns ntests when the answers split into exactly ntests

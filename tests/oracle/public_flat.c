@@ -122,6 +122,13 @@ static void part5(TestList *l)
     tg_triangle(t, V(0, 0, -4), V(2, 0, -4), V(0, 2, -4), V(2.0625, 0, 0), V(0, 0, -1));
     tg_triangle(t, V(0, 0, -4), V(2, 0, -4), V(0, 2, -4), V(1, -0.0625, 0), V(0, 0, -1));
 
+    t = new_test(l, PART5, KIND_TRIANGLE, 1, "Part 5: edges and vertices met from behind",
+                 "the triangle wound the other way (det < 0): its edges and vertices belong to it too");
+    tg_triangle(t, V(0, 0, -4), V(0, 2, -4), V(2, 0, -4), V(1, 0, 0), V(0, 0, -1));
+    tg_triangle(t, V(0, 0, -4), V(0, 2, -4), V(2, 0, -4), V(0, 1, 0), V(0, 0, -1));
+    tg_triangle(t, V(0, 0, -4), V(0, 2, -4), V(2, 0, -4), V(1, 1, 0), V(0, 0, -1));
+    tg_triangle(t, V(0, 0, -4), V(0, 2, -4), V(2, 0, -4), V(0, 2, 0), V(0, 0, -1));
+
     t = new_test(l, PART5, KIND_TRIANGLE, 1, "Part 5: triangles behind the ray are misses",
                  "t < 0: the triangle is behind the ray's origin");
     tg_triangle(t, WA, WB, WC, O, V(0.1, 0, -1));

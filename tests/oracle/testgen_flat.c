@@ -89,7 +89,7 @@ static void plane_hints(Case *c, const double p[3], const double n[3], const dou
     if (rn != 0 && t == 0)
         hint_hit(c, "t = 0 is the ray's own origin: a hit needs t > 0, not t >= 0", true, 0);
     if (rn != 0 && t < 0)
-        hint_hit(c, "a hit behind the eye: only t > 0 is ahead of the ray", true, t);
+        hint_hit(c, "a hit at or behind the ray's origin (t <= 0): only t > 0 is a hit", true, t);
     if (rn == 0 && !(t <= 0))       /* NaN or +infinity got through "t <= 0: miss" */
         hint_hit(c, "r.n = 0 (parallel to the plane, or in it) is a miss: check it before dividing", true, t);
     if (right && rn > 0)
@@ -146,6 +146,7 @@ enum {
     MT_GAMMA_SIGN = 128, /* e1 x s for s x e1                    */
     MT_S_SIGN = 256,     /* s = a - e                            */
     MT_T_ZERO = 512,     /* t >= 0: t = 0 a hit                  */
+    MT_STRICT_BEHIND = 1024, /* MT_STRICT where det < 0 alone        */
 };
 
 static bool mt(const double a[3], const double b[3], const double cc[3], const double e[3],
@@ -174,7 +175,7 @@ static bool mt(const double a[3], const double b[3], const double cc[3], const d
         cross3(s, e1, sx);
     double gamma = dot3(r, sx) * inv;
     *t = dot3(e2, sx) * inv;
-    if (flags & MT_STRICT) {
+    if ((flags & MT_STRICT) || ((flags & MT_STRICT_BEHIND) && det < 0)) {
         if (!(beta > 0 && gamma > 0 && beta + gamma < 1))
             return false;
     } else if (beta < 0 || gamma < 0 || (!(flags & MT_NO_SUM) && beta + gamma > 1)) {
@@ -201,13 +202,14 @@ static void triangle_hints(Case *c, const double a[3], const double b[3], const 
         { MT_TMIN, "hits at small t count: is there a tmin such as 0.001? In this lab tmin = 0" },
         { MT_STRICT, "edges and vertices belong to the triangle: beta >= 0, gamma >= 0, beta + gamma <= 1" },
         { MT_EPS, "a hit was missed where det is small (a small or far triangle, or a grazing ray): no epsilon on det = -(e1 x e2).r (such as 1e-8): compare it with 0" },
-        { MT_NO_T, "a hit behind the eye: only t > 0 is ahead of the ray" },
+        { MT_NO_T, "a hit at or behind the ray's origin (t <= 0): only t > 0 is a hit" },
         { MT_NO_SUM, "beta + gamma <= 1 is missing: the ray passed outside the edge bc and still hit" },
         { MT_NO_DET, "det = 0 (parallel to the triangle, or in its plane) is a miss: check it first" },
         { MT_CULL, "both sides count: a ray that meets the triangle from behind (det < 0) hits too" },
         { MT_GAMMA_SIGN, "gamma = r.(s x e1) / det and t = e2.(s x e1) / det: the order of a cross product matters" },
         { MT_S_SIGN, "s = e - a (the ray's origin minus a), not a - e: it flips beta, gamma and t" },
         { MT_T_ZERO, "t = 0 is the ray's own origin: a hit needs t > 0, not t >= 0" },
+        { MT_STRICT_BEHIND, "edges and vertices met from behind (det < 0) belong to the triangle too: where the signs flip, 0 is still inside (<= 0, not < 0)" },
     };
     for (size_t k = 0; k < sizeof mistakes / sizeof mistakes[0]; k++) {
         double t = 0;

@@ -4,7 +4,9 @@
  * each "end N" line.  The child shares its process with the student's
  * code, which may write anything there, so the split must take exactly
  * the pieces the harness wrote, refuse everything else (the tests then run
- * alone), and read no byte past the answers' end.
+ * alone), and read no byte past the answers' end.  And what the judgement
+ * of Parts 4 and 5 tells: which known mistake it names when two explain a
+ * test's answers, and a hit at t <= 0 where none does.
  */
 #include "check.h"            /* first: it sets the POSIX feature level */
 #include "../grader/grader.h"
@@ -83,10 +85,96 @@ static void test_bytes(void)
     free(buf);
 }
 
+/* A triangle case whose answer is a hit at t = 4; with a hint of each
+ * text given, a mistake that answers it with a miss. */
+static void hit_case(Test *t, const char *const *mistakes, int nmistakes)
+{
+    Case *c = test_add_case(t);
+    c->want[0] = 1;
+    c->want[1] = 4;
+    c->tol[1] = 1e-9;
+    for (int k = 0; k < nmistakes; k++)
+        snprintf(case_add_hint(c)->text, sizeof c->hints[0].text, "%s", mistakes[k]);
+}
+
+/* Two mistakes, A and B, answer both cases of a test with misses, as the
+ * code did: the test alone cannot tell them apart.  The part's other tests
+ * can: a test passed where A would have failed rules A out, and a mistake
+ * named for another failed test is the one named here.  Otherwise neither
+ * is named. */
+static void test_two_mistakes_fit(void)
+{
+    static const char A[] = "mistake A", B[] = "mistake B";
+    const char *both[] = { A, B }, *a_only[] = { A };
+    TestList list = { 0 };
+    Test *failed = testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: the test failed");
+    hit_case(failed, both, 2);
+    hit_case(failed, both, 2);
+    Test *hits = testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: a test of plain hits");
+    hit_case(hits, NULL, 0);
+    Test *rules_a_out = testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: a test A fails");
+    hit_case(rules_a_out, a_only, 1);
+    const char answers[] = "0x0p+0 0x0p+0\n0x0p+0 0x0p+0\nend 2\n";
+
+    const Test *passed[2] = { &list.tests[1], &list.tests[2] };
+    const char *named_a[] = { A }, *named_ab[] = { A, B };
+    static const struct {
+        int npassed, nnamed, ab;       /* ab: named_ab, not named_a */
+        const char *want;
+    } cases[] = {
+        { 1, 0, 0, NULL },             /* nothing tells them apart   */
+        { 2, 0, 0, B },                /* a passed test rules A out  */
+        { 1, 1, 0, A },                /* A was named for a failed test */
+        { 1, 2, 1, NULL },             /* both were: name neither    */
+        { 2, 1, 0, B },                /* A ruled out, though named  */
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        PartSoFar part = { passed, cases[k].npassed, cases[k].ab ? named_ab : named_a, cases[k].nnamed };
+        char *out = NULL;
+        Answers a;
+        CHECK(!check_answers_in_part(&list.tests[0], answers, sizeof answers - 1, &part, &out, &a));
+        if (cases[k].want) {
+            CHECK_MSG(a.named && strcmp(a.named, cases[k].want) == 0, "case %zu: named %s, not %s", k,
+                      a.named ? a.named : "nothing", cases[k].want);
+            CHECK_STR_CONTAINS(out, cases[k].want);
+        } else {
+            CHECK_MSG(!a.named, "case %zu: named %s", k, a.named ? a.named : "");
+            CHECK_MSG(!strstr(out, A) && !strstr(out, B), "case %zu: %s", k, out);
+        }
+        free(out);
+        answers_free(&a);
+    }
+    testlist_free(&list);
+}
+
+/* Where no known mistake explains a test, a hit at t <= 0 is told as what
+ * it is, at or behind the ray's origin, for the case shown. */
+static void test_hit_not_ahead(void)
+{
+    static const struct {
+        const char *answers, *told;
+    } cases[] = {
+        { "0x1p+0 0x0p+0\nend 1\n", "a hit at t = 0 is at the ray's origin: only t > 0 is a hit" },
+        { "0x1p+0 -0x1.8p+1\nend 1\n", "a hit at t = -3 is behind the ray's origin: only t > 0 is a hit" },
+        { "0x1p+0 nan\nend 1\n", "a hit at t = NaN: a hit needs t > 0" },
+    };
+    TestList list = { 0 };
+    hit_case(testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: a test"), NULL, 0);
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        char *out = NULL;
+        CHECK(!check_answers(&list.tests[0], cases[k].answers, strlen(cases[k].answers), &out, NULL));
+        CHECK_STR_CONTAINS(out, cases[k].told);
+        free(out);
+    }
+    testlist_free(&list);
+}
+
 static const CheckTest tests[] = {
     CHECK_TEST(test_pieces),
     CHECK_TEST(test_refused),
     CHECK_TEST(test_bytes),
+    CHECK_TEST(test_two_mistakes_fit),
+    CHECK_TEST(test_hit_not_ahead),
 };
 
 int main(int argc, char **argv)
