@@ -221,7 +221,7 @@ GRADER_LIB_SRC = tests/grader/cases.c tests/grader/check.c tests/grader/sandbox.
                  tests/grader/build.c tests/grader/memo.c tests/grader/include_scan.c tests/grader/linkmsg.c tests/grader/lookalike.c \
                  tests/grader/own_headers.c tests/grader/config.c tests/grader/grade.c \
                  tests/grader/report_table.c tests/grader/report_json.c \
-                 tests/grader/diagnose.c tests/grader/lmsname.c \
+                 tests/grader/diagnose.c tests/grader/lmsname.c tests/grader/terminal.c \
                  tests/grader/report_render.c tests/grader/report_html.c tests/grader/markup.c \
                  $(wildcard tests/grader/fig*.c)
 GRADER_LIB_SRC += tests/grader/report_classroom.c tests/grader/report_prairielearn.c
@@ -405,7 +405,7 @@ UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
 # student kit builds three of these in every run of its suite.  The object
 # is made again whenever the libraries are, as the program was before.
 # (Not the grader's units nor test_serve: their own rules are below.)
-GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers lmsname
+GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers lmsname terminal
 UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) $(BUILD)/tests/test_serve,$(UNIT_BIN))
 $(UNIT_PLAIN:$(BUILD)/tests/%=$(BUILD)/tests/obj/%.o): $(BUILD)/tests/obj/%.o: tests/unit/%.c \
                           tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS) | $$(@D)/.
@@ -429,6 +429,8 @@ $(GRADER_UNITS:%=$(ASAN)/tests/test_%): $(ASAN)/tests/test_%: tests/unit/test_%.
 	$(CC) $(SAN_LINK) -Ilabs $(filter %.c,$^) $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
 # check.c reads the kinds of cases from cases.c.
 $(BUILD)/tests/test_check $(ASAN)/tests/test_check: tests/grader/cases.c
+# terminal.c reads UTF-8 with markup.c (which writes PNG images with base64.c).
+$(BUILD)/tests/test_terminal $(ASAN)/tests/test_terminal: tests/grader/markup.c tests/tools/base64.c
 # own_headers.c reads the names with include_scan.c.
 $(BUILD)/tests/test_own_headers $(ASAN)/tests/test_own_headers: tests/grader/include_scan.c
 # The server of tests' unit test links the sandbox and, on Linux, the

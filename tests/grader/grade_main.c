@@ -32,6 +32,7 @@
 #include "report_classroom.h"
 #include "report_prairielearn.h"
 #include "sandbox.h"
+#include "terminal.h"
 #include "kit/savefile.h"
 #ifdef GRADER_ORACLE
 #include "../oracle/testgen.h"
@@ -510,7 +511,7 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
         if (k > 0 && k <= 8)
             append_text(hidden, sizeof hidden, k < 8 ? ", " : ", ...");
         if (k < 8)
-            append_text(hidden, sizeof hidden, dots[k]);
+            term_append(hidden, sizeof hidden, dots[k]);
         free(dots[k]);
     }
     free(dots);
@@ -679,7 +680,7 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
                     st == 0 ? "full marks" : none ? "no stage file" : "points lost");
             if (none && nempty++ < 4) {
                 append_text(empty, sizeof empty, nempty > 1 ? ", " : "");
-                append_text(empty, sizeof empty, j->name);
+                term_append(empty, sizeof empty, j->name);
             }
         } else {
             for (int c = 0; c < ncols + 2; c++)

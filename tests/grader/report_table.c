@@ -4,43 +4,9 @@
  * failure what went wrong.
  */
 #include "report.h"
-#include "markup.h"
+#include "terminal.h"
 
 #include <string.h>
-
-/* Writes n bytes of text for a terminal.  What a student's code printed,
- * and the compiler's and linker's words about it (a symbol's name, say),
- * are the student's to choose, escape sequences and all (which set the
- * window's title, write the clipboard, move the cursor...): a control
- * character other than newline and tab is shown as ^X (ESC as ^[, DEL as
- * ^?), and a byte that is not valid UTF-8 or a C1 control (U+0080 to
- * U+009F, which some terminals obey too) as '?'. */
-static void put_text(FILE *f, const char *text, size_t n)
-{
-    const unsigned char *s = (const unsigned char *)text;
-    size_t k = 0;
-    while (k < n) {
-        unsigned char c = s[k];
-        size_t len = 1;
-        if (c == 0x7F) {
-            fputs("^?", f);
-        } else if (c < 0x20 && c != '\n' && c != '\t') {
-            fputc('^', f);
-            fputc(c + 64, f);
-        } else if (c < 0x80) {
-            fputc(c, f);
-        } else {
-            int u = utf8_length(s + k, n - k);
-            bool c1 = u == 2 && c == 0xC2 && s[k + 1] < 0xA0;
-            if (u > 0 && !c1)
-                fwrite(s + k, 1, (size_t)u, f);
-            else
-                fputc('?', f);
-            len = u > 0 ? (size_t)u : 1;
-        }
-        k += len;
-    }
-}
 
 static void print_indented(FILE *f, const char *text)
 {
@@ -50,7 +16,7 @@ static void print_indented(FILE *f, const char *text)
         const char *nl = strchr(p, '\n');
         size_t n = nl ? (size_t)(nl - p) : strlen(p);
         fputs("    ", f);
-        put_text(f, p, n);
+        term_put(f, p, n);
         fputc('\n', f);
         p += n + (nl ? 1 : 0);
     }
@@ -84,7 +50,7 @@ static bool unbuilt(FILE *f, const Grade *g, int p)
 void report_table(FILE *f, const Grade *g, const GradeConfig *cfg, const char *submission)
 {
     fputs("Grading ", f);
-    put_text(f, submission, strlen(submission));
+    term_put(f, submission, strlen(submission));
     fputc('\n', f);
     for (int p = 0; p < NPARTS; p++) {
         if (!g->graded[p])
@@ -111,7 +77,7 @@ void report_table(FILE *f, const Grade *g, const GradeConfig *cfg, const char *s
                 if (t->part != p || t->hard != group)
                     continue;
                 fprintf(f, "  %s  ", r->passed ? "PASS" : "FAIL");
-                put_text(f, t->name, strlen(t->name));
+                term_put(f, t->name, strlen(t->name));
                 fprintf(f, "%s%s\n", t->hard ? "  [hard]" : "", t->hidden ? "  [hidden]" : "");
                 if (!r->passed && r->output && *r->output)
                     print_indented(f, r->output);

@@ -33,6 +33,7 @@
 
 #include "build.h"
 #include "lmsname.h"
+#include "terminal.h"
 #include "../tools/archive.h"
 
 #define ERR_MAX 1024
@@ -42,6 +43,13 @@ typedef struct {
     LmsName n;
     bool kept;                      /* false: an earlier upload of the same file */
 } Item;
+
+/* A name from the download, on standard output: the students chose the
+ * names of their files (and Moodle's folders carry their own names). */
+static void put_name(const char *name)
+{
+    term_put(stdout, name, strlen(name));
+}
 
 static int usage(void)
 {
@@ -255,8 +263,10 @@ int main(int argc, char **argv)
     size_t shown = 0;
     for (size_t k = 0; k < nitems; k++)
         if (k == 0 || strcmp(items[k].n.who, items[k - 1].n.who) != 0) {
-            if (shown < 8)
-                printf("%s%s", shown ? ", " : " ", items[k].n.who);
+            if (shown < 8) {
+                fputs(shown ? ", " : " ", stdout);
+                put_name(items[k].n.who);
+            }
             else if (shown == 8)
                 printf(", ...");
             shown++;
@@ -268,13 +278,22 @@ int main(int argc, char **argv)
         size_t last = k + 1;                /* the one kept: the last of its run */
         while (!items[last].kept)
             last++;
-        printf("  %s/%s: kept the later upload, %s; left out %s\n", items[k].n.who, items[k].n.name,
-               items[last].entry->path, items[k].entry->path);
+        fputs("  ", stdout);
+        put_name(items[k].n.who);
+        fputs("/", stdout);
+        put_name(items[k].n.name);
+        fputs(": kept the later upload, ", stdout);
+        put_name(items[last].entry->path);
+        fputs("; left out ", stdout);
+        put_name(items[k].entry->path);
+        fputs("\n", stdout);
     }
     if (nunsorted) {
         printf("not sorted (not named as Canvas or Moodle name a submission's files): ");
-        for (size_t k = 0; k < nunsorted && k < 8; k++)
-            printf("%s%s", k ? ", " : "", unsorted[k]->path);
+        for (size_t k = 0; k < nunsorted && k < 8; k++) {
+            fputs(k ? ", " : "", stdout);
+            put_name(unsorted[k]->path);
+        }
         printf("%s\n", nunsorted > 8 ? ", ..." : "");
     }
     if (nsystem)

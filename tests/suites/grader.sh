@@ -512,6 +512,17 @@ check "folders whose names start with . are left out, and the run names them, in
            grep -q ': \.git, \.github\$' '$tmp/names.out' &&
            grep -q '^graded 6 submissions' '$tmp/names.out'"
 [ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/names.out" "$tmp/grades-names/gradebook.csv"
+# Folder names with escape sequences, in the lists the run prints (the
+# folders left out, those with no stage file): shown as ^[ and ^G, and no
+# ESC or BEL reaches the terminal.
+esc=$tmp/escnames
+mkdir -p "$esc/ok" "$esc/$(printf 'x\033]0;title\007y')" "$esc/$(printf '.\033[2Jz')"
+cp solutions/part1_image_plane.c "$esc/ok/"
+chmod -R a+rX "$esc"
+$grade --all "$esc" --out "$tmp/grades-esc" --weights "$tmp/part1.conf" --jobs 1 >"$tmp/esc.out" 2>&1
+check "folder names with escape sequences are printed as ^[ and ^G, with no ESC or BEL" \
+    sh -c "grep -qF '.^[[2Jz' '$tmp/esc.out' && grep -qF 'x^[]0;title^Gy' '$tmp/esc.out' &&
+           ! grep -q \"\$(printf '[\\033\\007]')\" '$tmp/esc.out'"
 # A class of repositories made from the student kit (GitHub Classroom's,
 # cloned): each keeps its stage files in labs/, where they are graded; a
 # folder with stage files of its own is graded there, whatever its labs/.

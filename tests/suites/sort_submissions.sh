@@ -93,6 +93,18 @@ check "Moodle: a folder per submission, named for the student and the participan
     sh -c "[ -f '$tmp/msorted/Ann Lee_123456/part1_image_plane.c' ] && [ -f '$tmp/msorted/Bo Chen_654321/part2_pixel_coordinates.c' ] &&
            [ -f '$tmp/msorted/Cy Diaz_111/part3a_sphere_intersect.c' ] && grep -q 'of a Moodle download into 3 submission folders' '$tmp/out'"
 
+# Names are the students' to choose, escape sequences and all: the run shows
+# them (ESC as ^[, BEL as ^G) and passes none of them to the terminal.
+e=$tmp/escapes
+mkdir "$e"
+cp solutions/part1_image_plane.c "$e/$(printf 'Di\033[2JEck')_7_assignsubmission_file_part1_image_plane.c"
+echo x >"$e/$(printf 'x\033]0;title\007y.txt')"
+sort_subs "$e" "$tmp/esorted"
+status=$?
+check "names with escape sequences: sorted, shown as ^[ and ^G, and no ESC or BEL printed" \
+    sh -c "[ $status -eq 0 ] && grep -qF 'Di^[[2JEck_7' '$tmp/out' && grep -qF 'x^[]0;title^Gy.txt' '$tmp/out' &&
+           ! grep -q \"\$(printf '[\\033\\007]')\" '$tmp/out'"
+
 # ---- refused, nothing written ------------------------------------------------
 mkdir "$tmp/full" && echo x >"$tmp/full/keep.txt"
 sort_subs "$tmp/canvas.zip" "$tmp/full"
