@@ -514,7 +514,8 @@ fuzz:
 # Builds the grader with the address, undefined-behaviour and leak
 # sanitizers and runs the suites that grade with it (GRADE= names it to
 # them): the reference, the skeleton and the self-test's faulty and
-# hostile submissions, their pages, results and gradebooks.  The runners
+# hostile submissions, their pages, results and gradebooks; and the sorter
+# of a class's download (SORTSUBS=), on the downloads its suite makes.  The runners
 # and harnesses it uses are the plain build's (a sanitized test would not
 # fit the tests' memory limit).  Not part of `make test`: about a minute.
 GRADER_ASAN_OBJ = $(GRADER_LIB_SRC:tests/grader/%.c=$(ASAN)/grader/%.o)
@@ -528,11 +529,14 @@ $(ASAN)/grader/hidden.o: tests/hidden/hidden.c $(GRADER_HDR) $(wildcard tests/or
 $(ASAN)/bin/grade: $(ASAN)/grader/grade_main.o $(GRADE_EXTRA_ASAN) $(GRADER_ASAN_OBJ) \
                    $(ASAN)/tools/libtools.a $(ASAN)/kit/libkit.a | grader $$(@D)/.
 	$(CC) $(SAN_LINK) $^ -o $@ $(LDLIBS)
-SANITIZE_SUITES = grader.sh report.sh grade_store.sh limits.sh signals.sh
+$(ASAN)/bin/sortsubs: $(ASAN)/grader/sortsubs_main.o $(GRADER_ASAN_OBJ) $(ASAN)/tools/libtools.a \
+                      $(ASAN)/kit/libkit.a | $$(@D)/.
+	$(CC) $(SAN_LINK) $^ -o $@ $(LDLIBS)
+SANITIZE_SUITES = grader.sh report.sh grade_store.sh limits.sh signals.sh sort_submissions.sh
 ifneq ($(wildcard tests/suites/grader.sh),)
-sanitize-grader: all $(ASAN)/bin/grade
-	@echo "grading with $(ASAN)/bin/grade (address, undefined-behaviour and leak sanitizers)"
-	@GRADE=$(ASAN)/bin/grade sh tests/run.sh $(SANITIZE_SUITES)
+sanitize-grader: all $(ASAN)/bin/grade $(ASAN)/bin/sortsubs
+	@echo "grading with $(ASAN)/bin/grade, sorting with $(ASAN)/bin/sortsubs (address, undefined-behaviour and leak sanitizers)"
+	@GRADE=$(ASAN)/bin/grade SORTSUBS=$(ASAN)/bin/sortsubs sh tests/run.sh $(SANITIZE_SUITES)
 else
 sanitize-grader:
 	@echo "make sanitize-grader: only the instructor's kit has the grader's suites (tests/suites)"; exit 2

@@ -13,7 +13,9 @@ tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtsort.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 . tests/lib/checks.sh
 pack=out/build/bin/pack
-for f in out/build/bin/sortsubs "$pack" out/build/bin/grade; do
+sortsubs=${SORTSUBS:-out/build/bin/sortsubs}   # make sanitize-grader: the sanitized one
+grade=${GRADE:-out/build/bin/grade}
+for f in "$sortsubs" "$pack" "$grade"; do
     if [ ! -x "$f" ]; then
         echo "FAIL: $f is missing: run make first"
         echo "0 passed, 1 failed"
@@ -21,7 +23,7 @@ for f in out/build/bin/sortsubs "$pack" out/build/bin/grade; do
     fi
 done
 sort_subs() {   # sort_subs FROM TO: the sorter, its output in $tmp/out
-    out/build/bin/sortsubs "$1" "$2" >"$tmp/out" 2>&1
+    "$sortsubs" "$1" "$2" >"$tmp/out" 2>&1
 }
 
 # ---- Canvas: a reference, a late one uploaded again, a stray file ------------
@@ -134,10 +136,10 @@ status=$?
 check "make sort-submissions without TO: its usage (exit 2)" sh -c "[ $status -eq 2 ] && grep -q 'usage: make sort-submissions' '$tmp/out'"
 
 # ---- grade-all given the download itself names the sorter ------------------
-out/build/bin/grade --all "$dl" --out "$tmp/g2" >"$tmp/out" 2>&1
+$grade --all "$dl" --out "$tmp/g2" >"$tmp/out" 2>&1
 check "grade-all on a Canvas download's folder (its __MACOSX left out, not graded): names make sort-submissions" \
     sh -c "grep -q 'named as a Canvas or Moodle download names a class.s files: make sort-submissions FROM=$dl TO=new-folder' '$tmp/out'"
-out/build/bin/grade --all "$tmp/canvas.zip" --out "$tmp/g2" >"$tmp/out" 2>&1
+$grade --all "$tmp/canvas.zip" --out "$tmp/g2" >"$tmp/out" 2>&1
 check "grade-all on the download's zip: names make sort-submissions" \
     sh -c "grep -q 'canvas.zip is a file, not a folder of submissions: .*make sort-submissions FROM=' '$tmp/out'"
 finish
