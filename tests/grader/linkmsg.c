@@ -112,9 +112,63 @@ static bool space(char c)
     return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
 }
 
-/* A copy of text with its comments and its string and character literals
- * turned into spaces (newlines kept), so that a definition commented out,
- * or a name in a message, is not read as code; NULL when out of memory. */
+/* The directive on the line at p (after its blanks, '#', blanks), or NULL
+ * when the line is not one; *n its name's length. */
+static const char *directive(const char *p, size_t *n)
+{
+    while (*p == ' ' || *p == '\t')
+        p++;
+    if (*p != '#')
+        return NULL;
+    p++;
+    while (*p == ' ' || *p == '\t')
+        p++;
+    *n = identifier(p);
+    return p;
+}
+
+/* Turns into spaces, in s (comments already gone), each group under "#if
+ * 0" up to its #else, #elif or #endif (the directives nested in it
+ * counted), so that a definition kept there as an old version is not read
+ * as code. */
+static void blank_if0(char *s)
+{
+    int depth = -1;                     /* -1: not in a group under #if 0 */
+    for (char *line = s; *line;) {
+        char *nl = strchr(line, '\n'), *end = nl ? nl : line + strlen(line);
+        size_t n;
+        const char *d = directive(line, &n);
+        bool blank = depth >= 0;
+        if (d && depth < 0 && n == 2 && strncmp(d, "if", 2) == 0) {
+            const char *v = d + 2;
+            while (*v == ' ' || *v == '\t')
+                v++;
+            if (v[0] == '0' && !word_char(v[1])) {
+                const char *rest = v + 1;
+                while (rest < end && space(*rest))
+                    rest++;
+                if (rest == end)
+                    depth = 0;
+            }
+        } else if (d && depth >= 0) {
+            if (n >= 2 && strncmp(d, "if", 2) == 0)
+                depth++;
+            else if (n == 5 && strncmp(d, "endif", 5) == 0)
+                depth--;
+            else if (depth == 0 && ((n == 4 && strncmp(d, "else", 4) == 0) ||
+                                    (n == 4 && strncmp(d, "elif", 4) == 0)))
+                depth = -1;
+        }
+        if (blank)
+            memset(line, ' ', (size_t)(end - line));
+        line = nl ? nl + 1 : end;
+    }
+}
+
+/* A copy of text with its comments, its string and character literals
+ * and its groups under "#if 0" turned into spaces (newlines kept), so that
+ * a definition commented out, or a name in a message, is not read as
+ * code; NULL when out of memory. */
 static char *code_only(const char *text)
 {
     size_t n = strlen(text);
@@ -142,6 +196,7 @@ static char *code_only(const char *text)
             if (s[k] != '\n')
                 s[k] = ' ';
     }
+    blank_if0(s);
     return s;
 }
 

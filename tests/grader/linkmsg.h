@@ -26,8 +26,10 @@ int linkmsg_duplicate(const char *text, char names[][LINKMSG_NAME_MAX], int max)
 
 /* Whether the C source text defines the function name: the name as a whole
  * word, then its parameters in parentheses, then a body's "{".  Comments
- * and string literals are passed over; the rest is read as written: a
- * definition made by a macro is not seen, one under #if 0 is. */
+ * and string literals are passed over, and so are the groups under
+ * "#if 0" (up to their #else, #elif or #endif); the rest is read as
+ * written: a definition made by a macro is not seen, and one under any
+ * other condition is, true or false. */
 bool linkmsg_defines(const char *text, const char *name);
 
 /* Fills names with the distinct functions text defines (as

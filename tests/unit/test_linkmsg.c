@@ -109,7 +109,7 @@ static void test_duplicates(void)
 
 /* Which sources define a function: a definition, with its body's brace on
  * the next line or its parameters over two lines; not a prototype, a call,
- * a longer name or a name inside a longer one. */
+ * a longer name, a name inside a longer one, or a definition under #if 0. */
 static void test_defines(void)
 {
     static const struct {
@@ -131,6 +131,16 @@ static void test_defines(void)
         { "/* sq */ double sq(double x) /* ) { */ { return x * x; }", true },
         { "const char *s = \"\\\" sq(\";\ndouble sq(double x) { return x * x; }", true },
         { "char c = '\\'';\ndouble sq(double x) { return x * x; }", true },
+        /* an old version kept under #if 0 is not code; its #else is */
+        { "#if 0\ndouble sq(double x) { return x * x; }\n#endif\n", false },
+        { "  #  if 0 /* old */\ndouble sq(double x) { return x * x; }\n#endif\n", false },
+        { "#if 0\n#ifdef X\n#endif\ndouble sq(double x) { return x * x; }\n#endif\n", false },
+        { "#if 0\nold();\n#else\ndouble sq(double x) { return x * x; }\n#endif\n", true },
+        { "#if 0\n#if 1\n#else\n#endif\ndouble sq(double x) { return x * x; }\n#endif\n", false },
+        { "#if 0\n#endif\ndouble sq(double x) { return x * x; }\n", true },
+        { "#if 01\ndouble sq(double x) { return x * x; }\n#endif\n", true },
+        { "#if 0 || 1\ndouble sq(double x) { return x * x; }\n#endif\n", true },
+        { "#if 1\ndouble sq(double x) { return x * x; }\n#endif\n", true },
     };
     for (size_t k = 0; k < sizeof texts / sizeof texts[0]; k++)
         CHECK_MSG(linkmsg_defines(texts[k].text, "sq") == texts[k].defines, "text %zu: %s", k,
