@@ -641,4 +641,20 @@ for j in 0 two 3x; do
         sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/grades-jobs' ] && grep -q -- '--jobs $j: want a whole number' '$tmp/jobs.out'"
 done
 
+# The results for PrairieLearn and for GitHub Classroom's reporter, written
+# by this grader (make sanitize-grader: the writers under the sanitizers;
+# prairielearn.sh and classroom.sh check the platforms' own rules).
+$grade --submission solutions --format prairielearn --results "$tmp/pl-ref.json" --quiet >/dev/null 2>&1
+check "PrairieLearn: the reference scores 1, gradable" \
+    sh -c "grep -q '\"score\": 1,\$' '$tmp/pl-ref.json' && grep -q '\"gradable\": true' '$tmp/pl-ref.json'"
+$grade --submission "$tmp/subs/p1-no-factor-2" --format prairielearn --results "$tmp/pl-bad.json" --quiet \
+    >/dev/null 2>&1
+check "PrairieLearn: Part 1 with its factor 2 missing scores between 0 and 1, and says what went wrong" \
+    sh -c "grep -q '\"score\": 0\\.[0-9]*,\$' '$tmp/pl-bad.json' && grep -q 'What went wrong' '$tmp/pl-bad.json'"
+: >"$tmp/classroom.out"
+$grade --submission "$tmp/subs/p1-no-factor-2" --part 1 --classroom "$tmp/classroom.out" --quiet >/dev/null 2>&1
+check "Classroom: one line per Part 1 test and one for the hard cases, each its name = base64" \
+    sh -c "[ \$(grep -c '^part1test' '$tmp/classroom.out') -ge 5 ] && grep -q '^hard=' '$tmp/classroom.out' &&
+           ! grep -v -q -E '^(part1test[0-9]+|hard)=[A-Za-z0-9+/]+=*\$' '$tmp/classroom.out'"
+
 finish
