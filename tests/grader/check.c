@@ -349,7 +349,7 @@ static const char *flat_diagnosis(const Test *test, const double (*got)[CASE_MAX
 }
 
 /* Parts 4 and 5: causes that an answer shows by itself, whatever the
- * test: a hit at t <= 0 or at NaN, t rounded to float, t a whole number,
+ * test: a hit at t <= 0, at NaN or at infinity, t rounded to float, t a whole number,
  * a ray through a closed mesh that the test gets right elsewhere.  Each is stated only when the
  * answers prove it. */
 static void flat_evidence(Text *t, const Test *test, const Case *c, const double *got, int failed)
@@ -374,6 +374,13 @@ static void flat_evidence(Text *t, const Test *test, const Case *c, const double
         else
             say(t, "    hint:      a hit at t = %.3g is %s the ray's origin: only t > 0 is a hit\n", tg,
                 tg == 0 ? "at" : "behind");
+        return;
+    }
+    /* A hit at t = +inf: a quotient whose divisor was 0. */
+    if (got[0] == 1 && tg == INFINITY) {
+        say(t, "    hint:      a hit at t = inf is no point of the ray: t must be finite. A division by "
+               "%s = 0 (a ray parallel to the %s) gives it: that is a miss\n",
+            test->kind == KIND_PLANEHIT ? "r.n" : "det", test->kind == KIND_PLANEHIT ? "plane" : "triangle");
         return;
     }
     if (got[0] != 1 || c->want[0] != 1 || !isfinite(tg) || !(want > 0))

@@ -63,6 +63,7 @@ static void part4(TestList *l)
                  "r.n = 0: no single point to hit (and no division by zero); NaN input is a miss");
     tg_planehit(t, V(0, -1, 0), V(0, 1, 0), O, V(0, -0.25, -1));
     tg_planehit(t, V(0, -1, 0), V(0, 1, 0), O, V(0, 0, -1));
+    tg_planehit(t, V(0, 1, 0), V(0, 1, 0), O, V(0, 0, -1));   /* above: (p - e).n / r.n = +inf */
     tg_planehit(t, V(0, 0, 0), V(0, 1, 0), O, V(1, 0, 0));
     tg_planehit(t, V(0, -1, 0), V(0, 1, 0), O, V(0, 0, 0));
     tg_planehit(t, V(0, -1, 0), V(0, 0, 0), O, V(0, -1, -1));

@@ -6,7 +6,7 @@
  * the pieces the harness wrote, refuse everything else (the tests then run
  * alone), and read no byte past the answers' end.  And what the judgement
  * of Parts 4 and 5 tells: which known mistake it names when two explain a
- * test's answers, and a hit at t <= 0 where none does.
+ * test's answers, and a hit at t <= 0, NaN or infinity where none does.
  */
 #include "check.h"            /* first: it sets the POSIX feature level */
 #include "../grader/grader.h"
@@ -147,8 +147,8 @@ static void test_two_mistakes_fit(void)
     testlist_free(&list);
 }
 
-/* Where no known mistake explains a test, a hit at t <= 0 is told as what
- * it is, at or behind the ray's origin, for the case shown. */
+/* Where no known mistake explains a test, a hit at t <= 0, NaN or
+ * infinity is told as what it is for the case shown. */
 static void test_hit_not_ahead(void)
 {
     static const struct {
@@ -157,6 +157,8 @@ static void test_hit_not_ahead(void)
         { "0x1p+0 0x0p+0\nend 1\n", "a hit at t = 0 is at the ray's origin: only t > 0 is a hit" },
         { "0x1p+0 -0x1.8p+1\nend 1\n", "a hit at t = -3 is behind the ray's origin: only t > 0 is a hit" },
         { "0x1p+0 nan\nend 1\n", "a hit at t = NaN: a hit needs t > 0" },
+        { "0x1p+0 inf\nend 1\n", "a hit at t = inf is no point of the ray: t must be finite. A division "
+                                  "by det = 0 (a ray parallel to the triangle) gives it: that is a miss" },
     };
     TestList list = { 0 };
     hit_case(testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: a test"), NULL, 0);

@@ -1,0 +1,43 @@
+/* Self-test of the grader: p4-t-infinite. Takes t = +infinity for a hit
+ * (root <= INFINITY): a ray parallel to a plane above it "hits". */
+#include "raytracer.h"
+
+/*
+ * plane_intersect - the point, ahead of the ray's origin, where the ray
+ *                   x(t) = e + t r meets the plane (x - p).n = 0.
+ *
+ * Parameters:
+ *   plane        a point p of the plane and its normal n; n need NOT have
+ *                unit length
+ *   ray          origin e and direction r; r need NOT have unit length
+ *   t            out: on a hit, the t > 0 with (e + t r - p).n = 0
+ * Returns:       true on a hit (and stores *t), false on a miss (*t unused).
+ *                The plane has two sides: a hit from either side counts.
+ *                A ray parallel to the plane or lying in it, a plane behind
+ *                e, a zero direction or normal, and NaN input are misses.
+ * Example:       p = (0, -1, 0), n = (0, 2, 0) (the ground y = -1),
+ *                e = (0, 0, 0), r = (0, -0.5, -1):
+ *                (p - e).n = -2, r.n = -1, so *t = 2 (the point (0, -1, -2)).
+ * Formula:       put x(t) into (x - p).n = 0:  (e - p).n + t (r.n) = 0, so
+ *                t = (p - e).n / (r.n);  no hit when r.n = 0 (the ray is
+ *                parallel to the plane) or when t <= 0 (tmin = 0).
+ */
+bool plane_intersect(const Plane *plane, const Ray *ray, double *t)
+{
+    Vec3 n = plane->normal;
+    double rn = vec3_dot(ray->direction, n);
+    /* (p - e).n: the difference first, so that a plane and an origin far
+     * from the world's origin but near each other keep their digits (the
+     * form p.n - e.n would lose them to cancellation). */
+    double pn = vec3_dot(vec3_sub(plane->point, ray->origin), n);
+    double root = pn / rn;
+    /* One test for every miss.  r.n = 0 (parallel, or a zero direction or
+     * normal) gives a quotient of +-infinity, or NaN for 0 / 0 (a ray lying
+     * in the plane); NaN input gives NaN; a plane behind e gives t <= 0.
+     * Each fails "0 < t < infinity", since every comparison with NaN is
+     * false. */
+    if (!(root > 0 && root <= INFINITY))
+        return false;
+    *t = root;
+    return true;
+}
