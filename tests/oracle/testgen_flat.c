@@ -204,7 +204,7 @@ static void triangle_hints(Case *c, const double a[3], const double b[3], const 
         { MT_EPS, "a hit was missed where det is small (a small or far triangle, or a grazing ray): no epsilon on det = -(e1 x e2).r (such as 1e-8): compare it with 0" },
         { MT_NO_T, "a hit at or behind the ray's origin (t <= 0): only t > 0 is a hit" },
         { MT_NO_SUM, "beta + gamma <= 1 is missing: the ray passed outside the edge bc and still hit" },
-        { MT_NO_DET, "det = 0 (parallel to the triangle, or in its plane) is a miss: check it first" },
+        { MT_NO_DET, "det = 0 (parallel to the triangle, or in its plane) is a miss: check it first; and a hit needs t > 0, not only t >= 0" },
         { MT_CULL, "both sides count: a ray that meets the triangle from behind (det < 0) hits too" },
         { MT_GAMMA_SIGN, "gamma = r.(s x e1) / det and t = e2.(s x e1) / det: the order of a cross product matters" },
         { MT_S_SIGN, "s = e - a (the ray's origin minus a), not a - e: it flips beta, gamma and t" },
