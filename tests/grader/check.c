@@ -268,7 +268,8 @@ static bool hits_right(const PartSoFar *part)
  * one.  When several fit, the part's other tests may tell them apart: a
  * mistake that would have failed a test the code passed is dropped, and
  * the one left, if one is, is named; if more are left, the one named for
- * another failed test of the part, if one was.  (Only then: a mistake is a
+ * a failed test of the part judged before this one, if one was (the tests
+ * are judged in the order of their files).  (Only then: a mistake is a
  * model of many ways to write it, the student's way may differ from it
  * elsewhere, and a test it alone explains names it whatever the other
  * tests say.)  NULL when none is confirmed. */
@@ -349,9 +350,9 @@ static const char *flat_diagnosis(const Test *test, const double (*got)[CASE_MAX
 }
 
 /* Parts 4 and 5: causes that an answer shows by itself, whatever the
- * test: a hit at t <= 0, at NaN or at infinity, t rounded to float, t a whole number,
- * a ray through a closed mesh that the test gets right elsewhere.  Each is stated only when the
- * answers prove it. */
+ * test: a hit at t <= 0, at NaN or at infinity, t rounded to float, t a
+ * whole number, a ray through a closed mesh that the test gets right
+ * elsewhere.  Each is stated only when the answers prove it. */
 static void flat_evidence(Text *t, const Test *test, const Case *c, const double *got, int failed)
 {
     double want = c->want[1], tg = got[1];

@@ -165,7 +165,8 @@ bool check_answers(const Test *test, const char *answers, size_t len, char **out
 typedef struct {
     const Test *const *passed;     /* the tests of the part it passed          */
     int npassed;
-    const char *const *named;      /* the mistakes named for its failed tests  */
+    const char *const *named;      /* the mistakes named for its failed tests
+                                      judged so far                             */
     int nnamed;
 } PartSoFar;
 
