@@ -7,6 +7,8 @@
 #   check WHAT COMMAND...    pass if COMMAND succeeds, else fail WHAT
 #   finish                   prints "N passed, N failed", the last line that
 #                            tests/run.sh reads, and exits 0 if none failed
+#   need_built PROGRAM...    ends the suite as one failed check, naming the
+#                            first PROGRAM that is not built
 # (Not in tests/suites itself: tests/run.sh runs every file there.)
 passed=0
 failed=0
@@ -17,4 +19,13 @@ finish() {
     echo "$passed passed, $failed failed"
     [ "$failed" -eq 0 ] && exit 0
     exit 1
+}
+need_built() {
+    for f in "$@"; do
+        if [ ! -x "$f" ]; then
+            echo "FAIL: $f is missing: run make first"
+            echo "0 passed, 1 failed"
+            exit 1
+        fi
+    done
 }

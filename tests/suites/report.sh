@@ -24,13 +24,7 @@ trap 'rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
 . tests/lib/checks.sh
 
-for f in "$grade" "$check_html" "$compare"; do
-    if [ ! -x "$f" ]; then
-        echo "FAIL: $f is missing: run make first"
-        echo "0 passed, 1 failed"
-        exit 1
-    fi
-done
+need_built "$grade" "$check_html" "$compare"
 if [ ! -d solutions ]; then
     echo "FAIL: no solutions/ here: run this from the instructor's kit"
     echo "0 passed, 1 failed"

@@ -15,13 +15,7 @@ trap 'rm -rf "$tmp"' EXIT
 pack=out/build/bin/pack
 sortsubs=${SORTSUBS:-out/build/bin/sortsubs}   # make sanitize-grader: the sanitized one
 grade=${GRADE:-out/build/bin/grade}
-for f in "$sortsubs" "$pack" "$grade"; do
-    if [ ! -x "$f" ]; then
-        echo "FAIL: $f is missing: run make first"
-        echo "0 passed, 1 failed"
-        exit 1
-    fi
-done
+need_built "$sortsubs" "$pack" "$grade"
 sort_subs() {   # sort_subs FROM TO: the sorter, its output in $tmp/out
     "$sortsubs" "$1" "$2" >"$tmp/out" 2>&1
 }
