@@ -281,14 +281,14 @@ $(BUILD)/bin/grade: $(BUILD)/grader/grade_main.o $(GRADE_EXTRA) $(BUILD)/grader/
                     $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $(HARNESS) $(GRADER_REF) $(RUNNERS) $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/lookalike: $(BUILD)/grader/lookalike_main.o $(BUILD)/grader/lookalike.o \
-                        $(BUILD)/kit/libkit.a | $$(@D)/.
+                        $(BUILD)/tools/utf8.o $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/linkcheck: $(BUILD)/grader/linkcheck_main.o $(BUILD)/grader/linkmsg.o \
                         $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/stagecheck: $(BUILD)/grader/stagecheck_main.o $(BUILD)/grader/include_scan.o \
                          $(BUILD)/grader/own_headers.o $(BUILD)/grader/lookalike.o \
-                         $(BUILD)/kit/libkit.a | $$(@D)/.
+                         $(BUILD)/tools/utf8.o $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/gentests: $(BUILD)/oracle/gentests_main.o $(BUILD)/oracle/liboracle.a \
                        $(BUILD)/grader/libgrader.a $(BUILD)/kit/libkit.a | $$(@D)/.
@@ -429,8 +429,9 @@ $(GRADER_UNITS:%=$(ASAN)/tests/test_%): $(ASAN)/tests/test_%: tests/unit/test_%.
 	$(CC) $(SAN_LINK) -Ilabs $(filter %.c,$^) $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
 # check.c reads the kinds of cases from cases.c.
 $(BUILD)/tests/test_check $(ASAN)/tests/test_check: tests/grader/cases.c
-# terminal.c reads UTF-8 with markup.c (which writes PNG images with base64.c).
-$(BUILD)/tests/test_terminal $(ASAN)/tests/test_terminal: tests/grader/markup.c tests/tools/base64.c
+# terminal.c and lookalike.c read UTF-8 with tests/tools/utf8.c.
+$(BUILD)/tests/test_terminal $(ASAN)/tests/test_terminal: tests/tools/utf8.c
+$(BUILD)/tests/test_lookalike $(ASAN)/tests/test_lookalike: tests/tools/utf8.c
 # own_headers.c reads the names with include_scan.c.
 $(BUILD)/tests/test_own_headers $(ASAN)/tests/test_own_headers: tests/grader/include_scan.c
 # The server of tests' unit test links the sandbox and, on Linux, the
@@ -496,7 +497,7 @@ FUZZ_FLAGS  = $(STD) -g -O1 $(FPFLAGS) $(WARN) -fsanitize=fuzzer,address,undefin
 FUZZ_SRC    = $(filter-out labs/kit/render.c labs/kit/closest.c,$(KIT_SRC)) tests/grader/cases.c \
               tests/grader/check.c tests/grader/config.c tests/grader/markup.c \
               tests/grader/figures.c $(wildcard tests/grader/fig_*.c) tests/tools/json_read.c \
-              tests/tools/base64.c
+              tests/tools/base64.c tests/tools/utf8.c
 FUZZ_OBJ    = $(addprefix $(OUT_ROOT)/fuzz/obj/,$(notdir $(FUZZ_SRC:.c=.o)))
 $(OUT_ROOT)/fuzz/obj/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
 	$(FUZZ_CC) $(FUZZ_FLAGS) -c $< -o $@

@@ -3,6 +3,7 @@
  */
 #include "lookalike.h"
 #include "kit/textfile.h"
+#include "../tools/utf8.h"
 
 #include <stdbool.h>
 #include <stdio.h>
@@ -34,23 +35,6 @@ static const struct {
     { 0x2265, "a greater-than-or-equal sign", ">=" },
     { 0x2260, "a not-equal sign", "!=" },
 };
-
-/* The code point of the UTF-8 sequence at s (n bytes left) and its length
- * in *used; 0 when it is not a sequence of two or three bytes.  (Every
- * code point listed above is below U+10000.) */
-static unsigned long utf8_at(const unsigned char *s, size_t n, size_t *used)
-{
-    *used = 1;
-    if (n >= 2 && (s[0] & 0xE0) == 0xC0 && (s[1] & 0xC0) == 0x80) {
-        *used = 2;
-        return (unsigned long)(s[0] & 0x1F) << 6 | (s[1] & 0x3F);
-    }
-    if (n >= 3 && (s[0] & 0xF0) == 0xE0 && (s[1] & 0xC0) == 0x80 && (s[2] & 0xC0) == 0x80) {
-        *used = 3;
-        return (unsigned long)(s[0] & 0x0F) << 12 | (unsigned long)(s[1] & 0x3F) << 6 | (s[2] & 0x3F);
-    }
-    return 0;
-}
 
 /* A character found: its line, which of known[] it is, how many times on
  * that line. */
@@ -121,8 +105,8 @@ int lookalike_explain(const char *text, size_t len, const char *file, char *out,
         } else if (c == '\'') {
             state = CHAR;
         } else if (c >= 0x80) {
-            size_t used;
-            unsigned long cp = utf8_at(s + i, len - i, &used);
+            int used = utf8_sequence(s + i, len - i);
+            unsigned long cp = used > 0 ? utf8_code_point(s + i, used) : 0;
             for (int k = 0; cp && k < (int)(sizeof known / sizeof known[0]); k++) {
                 if (known[k].cp != cp)
                     continue;
@@ -136,7 +120,7 @@ int lookalike_explain(const char *text, size_t len, const char *file, char *out,
                 else if (!seen)
                     more++;
             }
-            i += used - 1;
+            i += (size_t)(used > 0 ? used : -used) - 1;
         }
     }
     write_found(f, nfound, more, file, out, outlen);

@@ -6,6 +6,7 @@
 #include "markup.h"
 #include "kit/png.h"
 #include "../tools/base64.h"
+#include "../tools/utf8.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -71,32 +72,6 @@ void mk_printf(Markup *m, const char *fmt, ...)
     va_end(ap);
 }
 
-int utf8_length(const unsigned char *s, size_t n)
-{
-    unsigned char c = s[0], lo = 0x80, hi = 0xBF;
-    int need;
-    if (c >= 0xC2 && c <= 0xDF) {
-        need = 2;
-    } else if (c >= 0xE0 && c <= 0xEF) {
-        need = 3;
-        lo = c == 0xE0 ? 0xA0 : 0x80;      /* no overlong forms */
-        hi = c == 0xED ? 0x9F : 0xBF;      /* no surrogates     */
-    } else if (c >= 0xF0 && c <= 0xF4) {
-        need = 4;
-        lo = c == 0xF0 ? 0x90 : 0x80;
-        hi = c == 0xF4 ? 0x8F : 0xBF;      /* up to U+10FFFF    */
-    } else {
-        return 0;
-    }
-    for (int k = 1; k < need; k++) {
-        if ((size_t)k >= n || s[k] < lo || s[k] > hi)
-            return 0;
-        lo = 0x80;
-        hi = 0xBF;
-    }
-    return need;
-}
-
 void mk_text(Markup *m, const char *text)
 {
     if (!text)
@@ -113,7 +88,7 @@ void mk_text(Markup *m, const char *text)
         if (k == n)
             break;
         unsigned char c = s[k];
-        int len = c >= 0x80 ? utf8_length(s + k, n - k) : 0;
+        int len = c >= 0x80 ? utf8_sequence(s + k, n - k) : 1;
         if (c == '&')
             mk_raw(m, "&amp;", 5);
         else if (c == '<')
@@ -124,11 +99,11 @@ void mk_text(Markup *m, const char *text)
             mk_raw(m, "&quot;", 6);
         else if (c == '\'')
             mk_raw(m, "&#39;", 5);
-        else if (len > 0)
+        else if (len > 1)
             mk_raw(m, text + k, (size_t)len);
         else
             mk_raw(m, "\xEF\xBF\xBD", 3);              /* U+FFFD */
-        k += len > 0 ? (size_t)len : 1;
+        k += (size_t)(len > 0 ? len : -len);
     }
 }
 

@@ -24,17 +24,14 @@ void mk_init(Markup *m);
 void mk_free(Markup *m);
 bool mk_ok(const Markup *m);
 
-/* The length (2 to 4) of the valid UTF-8 sequence at s[0 .. n-1], whose
- * first byte is 0x80 or more, or 0 when it is not valid. */
-int utf8_length(const unsigned char *s, size_t n);
-
 /* Appends text formatted as by printf (written as is: no escaping). */
 void mk_printf(Markup *m, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 /* Appends raw bytes. */
 void mk_raw(Markup *m, const char *s, size_t n);
 /* Appends s escaped for HTML and XML text and attribute values (& < > " '),
- * as valid UTF-8: an invalid byte and a control character other than
- * newline and tab become U+FFFD.  NULL appends nothing. */
+ * as valid UTF-8: a control character other than newline and tab becomes
+ * U+FFFD, and so does each stretch of bytes that is not valid UTF-8 (its
+ * maximal subparts, tests/tools/utf8.h).  NULL appends nothing. */
 void mk_text(Markup *m, const char *s);
 /* The same, formatted as by printf first. */
 void mk_textf(Markup *m, const char *fmt, ...) __attribute__((format(printf, 2, 3)));

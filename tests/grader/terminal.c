@@ -2,7 +2,7 @@
  * terminal.c - text the student chose, shown safely (terminal.h).
  */
 #include "terminal.h"
-#include "markup.h"
+#include "../tools/utf8.h"
 
 #include <stdbool.h>
 #include <string.h>
@@ -23,7 +23,7 @@ static size_t shown_as(const unsigned char *s, size_t n, char out[5])
         out[1] = '\0';
         return 1;
     }
-    int u = utf8_length(s, n);
+    int u = utf8_sequence(s, n);
     bool c1 = u == 2 && c == 0xC2 && s[1] < 0xA0;
     if (u > 0 && !c1) {
         memcpy(out, s, (size_t)u);
@@ -32,7 +32,7 @@ static size_t shown_as(const unsigned char *s, size_t n, char out[5])
     }
     out[0] = '?';
     out[1] = '\0';
-    return u > 0 ? (size_t)u : 1;
+    return (size_t)(u > 0 ? u : -u);
 }
 
 void term_put(FILE *f, const char *text, size_t n)

@@ -7,8 +7,9 @@
  * the students' to choose, escape sequences and all (which set the
  * window's title, write the clipboard, move the cursor...).  Here a
  * control character other than newline and tab is shown as ^X (ESC as ^[,
- * DEL as ^?), and a byte that is not valid UTF-8, or a C1 control (U+0080
- * to U+009F, which some terminals obey too), as '?'.
+ * DEL as ^?), and a C1 control (U+0080 to U+009F, which some terminals
+ * obey too), or a stretch of bytes that is not valid UTF-8 (each maximal
+ * subpart, tests/tools/utf8.h), as '?'.
  */
 #ifndef GRADER_TERMINAL_H
 #define GRADER_TERMINAL_H

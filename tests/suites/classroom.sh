@@ -34,7 +34,8 @@ chmod 755 "$tmp"
 # ---- the reporter's rules, in C ---------------------------------------------
 totals="$tmp/reporter_totals"
 cc_build "$tmp" reporter_totals "$tmp/cc.log" \
-    tests/classroom/reporter_totals.c tests/tools/base64.c tests/tools/json_read.c labs/kit/numtext.c
+    tests/classroom/reporter_totals.c tests/tools/base64.c tests/tools/json_read.c tests/tools/utf8.c \
+    labs/kit/numtext.c
 check "tests/classroom/reporter_totals.c builds without a warning" [ -x "$totals" ]
 [ -x "$totals" ] || { cat "$tmp/cc.log"; finish; }
 have_node=

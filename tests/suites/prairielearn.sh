@@ -31,7 +31,7 @@ chmod 755 "$tmp"
 
 checker="$tmp/check_results"
 cc_build "$tmp" check_results "$tmp/cc.log" \
-    tests/prairielearn/check_results.c tests/tools/json_read.c labs/kit/numtext.c
+    tests/prairielearn/check_results.c tests/tools/json_read.c tests/tools/utf8.c labs/kit/numtext.c
 check "tests/prairielearn/check_results.c builds without a warning" [ -x "$checker" ]
 [ -x "$checker" ] || { cat "$tmp/cc.log"; finish; }
 

@@ -5,6 +5,7 @@
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 
 #include "json.h"
+#include "utf8.h"
 #include "../../labs/kit/numtext.h"
 #include "../../labs/kit/savefile.h"
 
@@ -139,40 +140,6 @@ void json_end_object(JsonWriter *w) { json_end(w, true); }
 void json_begin_array(JsonWriter *w) { json_begin(w, false); }
 void json_end_array(JsonWriter *w) { json_end(w, false); }
 
-/* The length (2 to 4) of the valid UTF-8 sequence that starts s[0 .. n-1]
- * with a lead byte of 0xC2 or more, or the length of its longest invalid
- * start (the bytes one U+FFFD replaces) as a negative number. */
-static int json_utf8_sequence(const unsigned char *s, size_t n)
-{
-    unsigned char c = s[0];
-    int need;
-    unsigned char lo = 0x80, hi = 0xBF;     /* the range of the second byte */
-    if (c >= 0xC2 && c <= 0xDF) {
-        need = 2;
-    } else if (c >= 0xE0 && c <= 0xEF) {
-        need = 3;
-        if (c == 0xE0)
-            lo = 0xA0;                      /* no overlong forms */
-        if (c == 0xED)
-            hi = 0x9F;                      /* no surrogates */
-    } else if (c >= 0xF0 && c <= 0xF4) {
-        need = 4;
-        if (c == 0xF0)
-            lo = 0x90;                      /* no overlong forms */
-        if (c == 0xF4)
-            hi = 0x8F;                      /* nothing past U+10FFFF */
-    } else {
-        return -1;                          /* 0x80..0xC1, 0xF5..0xFF */
-    }
-    for (int k = 1; k < need; k++) {
-        if ((size_t)k >= n || s[k] < lo || s[k] > hi)
-            return -k;
-        lo = 0x80;
-        hi = 0xBF;
-    }
-    return need;
-}
-
 /* Writes s[0 .. n-1] as a quoted, escaped string of valid UTF-8. */
 static void json_put_string(JsonWriter *w, const unsigned char *s, size_t n)
 {
@@ -197,7 +164,7 @@ static void json_put_string(JsonWriter *w, const unsigned char *s, size_t n)
             json_put(w, esc, 6);
             k++;
         } else {
-            int len = json_utf8_sequence(s + k, n - k);
+            int len = utf8_sequence(s + k, n - k);
             if (len > 0) {
                 json_put(w, s + k, (size_t)len);
                 k += (size_t)len;

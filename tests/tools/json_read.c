@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "json_read.h"
+#include "utf8.h"
 
 #include <stdint.h>
 #include <stdio.h>
@@ -69,38 +70,6 @@ static size_t put_utf8(unsigned char *buf, size_t at, uint32_t cp)
     return at;
 }
 
-/* The length of the valid UTF-8 sequence at s[0 .. n-1] (lead byte 0x80 or
- * more), or 0 if it is not one: no overlong forms, no surrogates, nothing
- * past U+10FFFF. */
-static size_t utf8_length(const unsigned char *s, size_t n)
-{
-    unsigned char c = s[0];
-    size_t need;
-    unsigned char lo = 0x80, hi = 0xBF;
-    if (c >= 0xC2 && c <= 0xDF) {
-        need = 2;
-    } else if (c >= 0xE0 && c <= 0xEF) {
-        need = 3;
-        lo = c == 0xE0 ? 0xA0 : 0x80;
-        hi = c == 0xED ? 0x9F : 0xBF;
-    } else if (c >= 0xF0 && c <= 0xF4) {
-        need = 4;
-        lo = c == 0xF0 ? 0x90 : 0x80;
-        hi = c == 0xF4 ? 0x8F : 0xBF;
-    } else {
-        return 0;
-    }
-    if (n < need)
-        return 0;
-    for (size_t k = 1; k < need; k++) {
-        if (s[k] < lo || s[k] > hi)
-            return 0;
-        lo = 0x80;
-        hi = 0xBF;
-    }
-    return need;
-}
-
 /* Four hex digits of a \u escape; -1 if they are not. */
 static long hex4(Reader *r)
 {
@@ -144,14 +113,14 @@ static int read_string(Reader *r, char **out, size_t *outlen)
             return refuse(r, "a control character in a string (it must be escaped)");
         }
         if (c >= 0x80) {
-            size_t k = utf8_length(r->p + r->at, end - r->at);
-            if (k == 0) {
+            int k = utf8_sequence(r->p + r->at, end - r->at);
+            if (k < 0) {
                 free(buf);
                 return refuse(r, "a string that is not valid UTF-8");
             }
-            memcpy(buf + len, r->p + r->at, k);
-            len += k;
-            r->at += k;
+            memcpy(buf + len, r->p + r->at, (size_t)k);
+            len += (size_t)k;
+            r->at += (size_t)k;
             continue;
         }
         if (c != '\\') {

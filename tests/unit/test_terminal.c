@@ -16,6 +16,7 @@ static const struct {
     { "caf\xc3\xa9", "caf\xc3\xa9" },                   /* é, valid UTF-8       */
     { "\xc2\x9b" "31m", "?31m" },                       /* C1 CSI               */
     { "x\xff" "y\xc3", "x?y?" },                        /* invalid, cut short   */
+    { "\xe2\x82" "z\xed\xa0\x80", "?z???" },             /* a maximal subpart is one '?'; a surrogate's 3 bytes are 3 */
     { "\xe2\x82\xac\xf0\x9f\x98\x80", "\xe2\x82\xac\xf0\x9f\x98\x80" },   /* € and an emoji */
 };
 
