@@ -256,7 +256,8 @@ $(BUILD)/grader/harness_load_%.o: tests/grader/harness.c tests/grader/harness_lo
                                   tests/grader/harness_serve.h tests/grader/hexfloat.h \
                                   $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -DHARNESS_LOAD $(RUNNER_DEFS) -c $< -o $@
-$(BUILD)/grader/harness_load.o: tests/grader/harness_load.c tests/grader/harness_load.h $(KIT_HDR) | $$(@D)/.
+$(BUILD)/grader/harness_load.o: tests/grader/harness_load.c tests/grader/harness_load.h \
+                                tests/grader/contract.h $(KIT_HDR) | $$(@D)/.
 	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/grader/harness_serve.o: tests/grader/harness_serve.c tests/grader/harness_serve.h \
                                  tests/grader/serve_protocol.h | $$(@D)/.

@@ -4,6 +4,7 @@
 #define _XOPEN_SOURCE 700
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "build.h"
+#include "contract.h"
 #include "memo.h"
 #include "grader.h"
 #include "include_scan.h"
@@ -41,10 +42,7 @@
                                        memory of the group on macOS) */
 #define CC_FILE_MB   16             /* largest file it may write */
 
-const char *const stage_names[NPARTS] = {
-    "part1_image_plane", "part2_pixel_coordinates", "part3a_sphere_intersect", "part3b_ray_color",
-    "part4_plane_intersect", "part5_triangle_intersect",
-};
+const char *const stage_names[NPARTS] = { CONTRACT_STAGE_NAMES };
 
 int build_tempdir(char *dir, size_t len, char *err, size_t errlen)
 {

@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (built only on Linux today) */
 #include "harness_load.h"
+#include "contract.h"
 
 #include <dlfcn.h>
 #include <math.h>
@@ -22,19 +23,15 @@ bool (*load_triangle_intersect)(const Triangle *, const Ray *, double *);
  * student's object finds tan, sqrt and the rest there. */
 double (*volatile harness_keep_libm)(double) = tan;
 
+static const char *const stages[] = { CONTRACT_STAGE_NAMES };
 static const struct {
     const char *name;
-    int part;                       /* HARNESS_PART's numbering */
-    const char *file;               /* the stage file that defines it */
+    int part;                       /* HARNESS_PART's numbering, from 1 */
     void *slot;
 } functions[] = {
-    { "image_plane_size", 1, "part1_image_plane.c", &load_image_plane_size },
-    { "pixel_coordinates", 2, "part2_pixel_coordinates.c", &load_pixel_coordinates },
-    { "sphere_intersect", 3, "part3a_sphere_intersect.c", &load_sphere_intersect },
-    { "camera_ray", 4, "part3b_ray_color.c", &load_camera_ray },
-    { "ray_color", 4, "part3b_ray_color.c", &load_ray_color },
-    { "plane_intersect", 5, "part4_plane_intersect.c", &load_plane_intersect },
-    { "triangle_intersect", 6, "part5_triangle_intersect.c", &load_triangle_intersect },
+#define ROW(function, part) { #function, part + 1, &load_##function },
+    CONTRACT_FUNCTIONS(ROW)
+#undef ROW
 };
 
 /* dlerror's text without the object's path, which names a temporary
@@ -75,9 +72,9 @@ int harness_load(int part, bool refs, const char *path, char *why, size_t whylen
             }
             memcpy(functions[k].slot, &f, sizeof f);
         } else if (f && refs) {
-            snprintf(why, whylen, "multiple definition of `%s': it belongs in %s, which this "
+            snprintf(why, whylen, "multiple definition of `%s': it belongs in %s.c, which this "
                      "part is graded with; define it only there", functions[k].name,
-                     functions[k].file);
+                     stages[functions[k].part - 1]);
             return -1;
         }
     }

@@ -2,6 +2,7 @@
  * linkmsg.c - see linkmsg.h.
  */
 #include "linkmsg.h"
+#include "contract.h"
 
 #include <stdbool.h>
 #include <stdio.h>
@@ -272,24 +273,19 @@ void linkmsg_definitions_list(const char *text, char *out, size_t n)
         snprintf(out, n, "none");
 }
 
-/* The contract's functions (labs/raytracer.h), and the stage file that
- * defines each. */
-static const struct {
-    const char *name, *stage;
-} contract[] = {
-    { "image_plane_size", "part1_image_plane" },
-    { "pixel_coordinates", "part2_pixel_coordinates" },
-    { "sphere_intersect", "part3a_sphere_intersect" },
-    { "camera_ray", "part3b_ray_color" },
-    { "ray_color", "part3b_ray_color" },
-    { "plane_intersect", "part4_plane_intersect" },
-    { "triangle_intersect", "part5_triangle_intersect" },
-};
-
 const char *linkmsg_stage_of(const char *name)
 {
+    static const char *const stages[] = { CONTRACT_STAGE_NAMES };
+    static const struct {
+        const char *name;
+        int part;
+    } contract[] = {
+#define ROW(function, part) { #function, part },
+        CONTRACT_FUNCTIONS(ROW)
+#undef ROW
+    };
     for (size_t k = 0; k < sizeof contract / sizeof contract[0]; k++)
         if (strcmp(contract[k].name, name) == 0)
-            return contract[k].stage;
+            return stages[contract[k].part];
     return NULL;
 }
