@@ -370,10 +370,15 @@ static void failures(Markup *m, const Grade *g)
         mk_printf(m, ": %s / %s</h3>\n", points_text(g->core[p]).s, points_text(g->core_max[p]).s);
         bool built = g->built[p];
         if (!built) {
-            /* The grader's own words when it did not hand the file to the
-             * compiler (missing, unreadable, a link, a kit file included...). */
-            mk_printf(m, "<p>Your file did not build, so no test of this part could run. %s</p>\n<pre>",
-                      g->build_refused[p] ? "The grader did not compile it:" : "What the compiler said:");
+            /* The compiler's words, or the grader's own when it did not
+             * hand the file to the compiler (missing, unreadable, a link, a
+             * kit file included...), in the words of every other report. */
+            char why[200];
+            grade_unbuilt_why(g, p, why, sizeof why);
+            why[0] = (char)(why[0] - 'a' + 'A');             /* "your", "the": a lower-case letter */
+            mk_printf(m, "<p>");
+            mk_textf(m, "%s, so none of its tests could run:", why);
+            mk_printf(m, "</p>\n<pre>");
             mk_text(m, g->build_messages[p]);
             mk_printf(m, "</pre>\n");
             if (failed == total) {      /* counted in unrun above */

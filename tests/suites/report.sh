@@ -197,11 +197,11 @@ $grade --submission "$tmp/subs/warn-unused" --part 1 >"$tmp/warn-table.out" 2>&1
 check "... and so does the table, under the part's heading" \
     sh -c "grep -A2 'The compiler warned (a warning often points at a mistake):' '$tmp/warn-table.out' |
            grep -q '^    part1_image_plane.c:[0-9]*:[0-9]*: warning: unused variable'"
-check "a part that does not build: the page shows what the compiler said" \
-    grep -q 'Your file did not build, so no test of this part could run. What the compiler said:' \
-    "$page/hostile-compile-error.html"
-check "a file the grader did not hand to the compiler: the page says so, not 'what the compiler said'" \
-    grep -q 'Your file did not build, so no test of this part could run. The grader did not compile it:' \
+check "a part that does not build: the page says so in the terminal's words, then what the compiler said" \
+    sh -c "grep -A3 'Your part2_pixel_coordinates.c did not build, so none of its tests could run:' \
+           '$page/hostile-compile-error.html' | grep -q 'error'"
+check "a file the grader did not hand to the compiler: the page says so, in the terminal's words" \
+    grep -q 'The grader did not compile your part[0-9a-z_]*.c, so none of its tests could run:' \
     "$page/hostile-missing-file.html"
 check "a part that does not build: its tests listed once, folded away, not a picture-less article each" \
     sh -c "grep -q 'None of its [0-9]* tests could run (open to list them)' '$page/hostile-compile-error.html' &&
