@@ -46,11 +46,52 @@ static void canvas_again(LmsName *out, const char *const *stages, int nstages)
     }
 }
 
-/* NAME_[LATE_]USERID_SUBMISSIONID_FILE, in the path's last component. */
+/* After the student's part of a Canvas name, "_FILEID_FILE" at s: the
+ * file's name, or NULL when s is not that. */
+static const char *canvas_file(const char *s)
+{
+    if (*s != '_')
+        return NULL;
+    const char *f = s + 1;
+    while (digit(*f))
+        f++;
+    return f == s + 1 || *f != '_' || f[1] == '\0' ? NULL : f + 1;
+}
+
+/* Fills *out for Canvas: who is the n bytes at w, file the file's name. */
+static bool canvas_fill(LmsName *out, const char *w, size_t n, const char *file, bool late,
+                        const char *const *stages, int nstages)
+{
+    if (!copy(out->who, w, n) || !copy(out->name, file, strlen(file)))
+        return false;
+    out->lms = LMS_CANVAS;
+    out->late = late;
+    out->again = 0;
+    canvas_again(out, stages, nstages);
+    return true;
+}
+
+/* With anonymous grading: [LATE_]anon_ANONID_FILEID_FILE, ANONID letters
+ * and digits (five, in base 58), in the path's last component. */
+static bool canvas_anonymous(const char *base, const char *const *stages, int nstages, LmsName *out)
+{
+    bool late = strncmp(base, "LATE_", 5) == 0;
+    const char *anon = late ? base + 5 : base, *e = anon + 5;
+    if (strncmp(anon, "anon_", 5) != 0)
+        return false;
+    while ((*e >= 'A' && *e <= 'Z') || (*e >= 'a' && *e <= 'z') || digit(*e))
+        e++;
+    const char *file = e > anon + 5 ? canvas_file(e) : NULL;
+    return file && canvas_fill(out, anon, (size_t)(e - anon), file, late, stages, nstages);
+}
+
+/* NAME_[LATE_]USERID_FILEID_FILE, in the path's last component. */
 static bool canvas(const char *path, const char *const *stages, int nstages, LmsName *out)
 {
     const char *base = strrchr(path, '/');
     base = base ? base + 1 : path;
+    if (canvas_anonymous(base, stages, nstages, out))
+        return true;
     for (const char *u = strchr(base, '_'); u; u = strchr(u + 1, '_')) {
         if (u == base)
             continue;
@@ -61,22 +102,12 @@ static bool canvas(const char *path, const char *const *stages, int nstages, Lms
         const char *e = id;
         while (digit(*e))
             e++;
-        if (e == id || *e != '_')
-            continue;
-        const char *s = e + 1, *f = s;
-        while (digit(*f))
-            f++;
-        if (f == s || *f != '_' || f[1] == '\0')
+        const char *file = e > id ? canvas_file(e) : NULL;
+        if (!file)
             continue;
         char who[2 * LMS_NAME_MAX];
         snprintf(who, sizeof who, "%.*s_%.*s", (int)(u - base), base, (int)(e - id), id);
-        if (!copy(out->who, who, strlen(who)) || !copy(out->name, f + 1, strlen(f + 1)))
-            return false;
-        out->lms = LMS_CANVAS;
-        out->late = late;
-        out->again = 0;
-        canvas_again(out, stages, nstages);
-        return true;
+        return canvas_fill(out, who, strlen(who), file, late, stages, nstages);
     }
     return false;
 }

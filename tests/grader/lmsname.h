@@ -4,10 +4,12 @@
  * the name its student gave it.
  *
  *   Canvas ("Download Submissions"): one zip of every student's files,
- *   each renamed NAME_USERID_SUBMISSIONID_FILE, or NAME_LATE_USERID_
- *   SUBMISSIONID_FILE when it came late (USERID and SUBMISSIONID digits);
- *   a file the student uploaded again under the same name gets "-N" before
- *   its extension ("part1_image_plane-1.c").
+ *   each renamed NAME_USERID_FILEID_FILE, or NAME_LATE_USERID_FILEID_FILE
+ *   when it came late (USERID and FILEID digits: the user's and the
+ *   uploaded file's); with anonymous grading, anon_ANONID_FILEID_FILE or
+ *   LATE_anon_ANONID_FILEID_FILE (ANONID five letters and digits, the
+ *   submission's anonymous id).  A file the student uploaded again under
+ *   the same name gets "-N" before its extension ("part1_image_plane-1.c").
  *
  *   Moodle ("Download all submissions"): each student's files in a folder
  *   FULL NAME_ID_assignsubmission_file_ (the default since Moodle 3.1), or,
@@ -30,7 +32,8 @@ typedef enum { LMS_CANVAS = 1, LMS_MOODLE } Lms;
 typedef struct {
     Lms lms;
     char who[LMS_NAME_MAX];   /* the submission's folder: "smithbob_340934"
-                                 (Canvas: name and user id), "Ann Lee_123456"
+                                 (Canvas: name and user id), "anon_Xy3Ab"
+                                 (Canvas, anonymous), "Ann Lee_123456"
                                  (Moodle: full name and participant id)     */
     char name[LMS_NAME_MAX];  /* the file as its student named it           */
     int again;                /* Canvas's "-N" taken off name: N; else 0     */

@@ -173,7 +173,7 @@ int main(int argc, char **argv)
     }
     if (nitems == 0) {
         snprintf(err, sizeof err, "%s holds no file named as Canvas or Moodle name a class's files "
-                 "(NAME_USERID_SUBMISSIONID_FILE, or \"FULL NAME_ID_assignsubmission_file_\" and the file)", from);
+                 "(NAME_USERID_FILEID_FILE, or \"FULL NAME_ID_assignsubmission_file_\" and the file)", from);
         free(items);
         free(unsorted);
         archive_free(&in);

@@ -3,7 +3,8 @@
 # or folder, of every student's files, each named for its student), sorted
 # into one folder per submission, then graded by make grade-all.  The
 # downloads are made here in the platforms' own naming (lmsname.h): Canvas's
-# NAME_USERID_SUBMISSIONID_FILE with LATE_ and "-1", Moodle's folders and
+# NAME_USERID_FILEID_FILE with LATE_ and "-1" (and anonymous grading's
+# anon_ANONID_FILEID_FILE), Moodle's folders and
 # its flat form.  Then what must be refused, with nothing written: a TO that
 # is not new, a download with no such names; and what grade-all says when
 # it is given the download itself.
@@ -66,6 +67,20 @@ sort_subs "$dl" "$tmp/sorted-dir"
 status=$?
 check "a Canvas download's folder: the same as its zip" \
     sh -c "[ $status -eq 0 ] && cd '$tmp' && [ \"\$(find sorted -type f | sed 's|^sorted/||' | grep -v sorted.txt | sort)\" = \"\$(find sorted-dir -type f | sed 's|^sorted-dir/||' | grep -v sorted.txt | sort)\" ]"
+
+# With anonymous grading Canvas writes anon_ and the submission's
+# anonymous id where the name and user id were (LATE_ first when late).
+a=$tmp/canvas-anonymous
+mkdir "$a"
+cp solutions/part1_image_plane.c "$a/anon_Xy3Ab_208490284_part1_image_plane.c"
+cp solutions/part2_pixel_coordinates.c "$a/anon_Xy3Ab_208490285_part2_pixel_coordinates.c"
+cp solutions/part1_image_plane.c "$a/LATE_anon_9kPqR_394803489_part1_image_plane.c"
+sort_subs "$a" "$tmp/sorted-anon"
+status=$?
+check "a Canvas download graded anonymously: a folder per anonymous id, the files under their own names" \
+    sh -c "[ $status -eq 0 ] && [ \"\$(cd '$tmp/sorted-anon' && ls -d */ | tr -d / | tr '\n' ' ')\" = 'anon_9kPqR anon_Xy3Ab ' ] &&
+           cmp -s solutions/part2_pixel_coordinates.c '$tmp/sorted-anon/anon_Xy3Ab/part2_pixel_coordinates.c' &&
+           grep -q '1 of them late' '$tmp/out'"
 
 # Graded as a class.
 make -s --no-print-directory grade-all SUBMISSIONS="$tmp/sorted" OUT="$tmp/grades" >"$tmp/grade.out" 2>&1

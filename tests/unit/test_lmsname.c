@@ -1,8 +1,9 @@
 /*
  * A downloaded file's submission and own name (tests/grader/lmsname.c), for
  * names as Canvas and Moodle write them (lmsname.h gives their forms: from
- * Canvas's documented renaming and Moodle's download code), and names that
- * only look like them.
+ * Canvas's documented renaming, the code that names the files in its zip
+ * (anonymous grading's among them) and Moodle's download code), and names
+ * that only look like them.
  */
 #include "check.h"            /* first: it sets the POSIX feature level */
 #include "../grader/lmsname.h"
@@ -35,6 +36,13 @@ static const struct {
       "Part1_Image_Plane (1).c", 0, false },
     /* an underscore in the name; the file's name has digits and underscores too */
     { "o_brien_77_88_part_1_2_3.c", LMS_CANVAS, "o_brien_77", "part_1_2_3.c", 0, false },
+    /* anonymous grading: "anon_" and the submission's anonymous id (five
+     * characters of base 58) where the name and user id were; LATE first */
+    { "anon_Xy3Ab_208490284_part1_image_plane.c", LMS_CANVAS, "anon_Xy3Ab", "part1_image_plane.c", 0, false },
+    { "LATE_anon_9kPqR_394803489_part3b_ray_color.c", LMS_CANVAS, "anon_9kPqR", "part3b_ray_color.c", 0,
+      true },
+    { "anon_Xy3Ab_208490284_part1_image_plane-2.c", LMS_CANVAS, "anon_Xy3Ab", "part1_image_plane.c", 2,
+      false },
     /* re-zipped under a folder */
     { "submissions/smithbob_340934_208490284_part1_image_plane.c", LMS_CANVAS, "smithbob_340934",
       "part1_image_plane.c", 0, false },
@@ -52,6 +60,10 @@ static const struct {
     { "_340934_208490284_part1_image_plane.c", 0, NULL, NULL, 0, false },
     { "smithbob_340934_208490284_", 0, NULL, NULL, 0, false },
     { "smithbob_LATE_x_208490284_part1.c", 0, NULL, NULL, 0, false },
+    { "anon__208490284_part1_image_plane.c", 0, NULL, NULL, 0, false },
+    { "anon_Xy3Ab_part1_image_plane.c", 0, NULL, NULL, 0, false },
+    { "anon_Xy-3b_208490284_part1_image_plane.c", 0, NULL, NULL, 0, false },
+    { "LATE_anon_Xy3Ab_208490284_", 0, NULL, NULL, 0, false },
     { "Ann Lee_assignsubmission_file_part1.c", 0, NULL, NULL, 0, false },
     { "_123456_assignsubmission_file_part1.c", 0, NULL, NULL, 0, false },
     { "Ann Lee_123456_assignsubmission_file_", 0, NULL, NULL, 0, false },
