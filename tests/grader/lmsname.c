@@ -1,6 +1,7 @@
 /* lmsname.c - a downloaded file's submission and own name (lmsname.h). */
 #include "lmsname.h"
 
+#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -144,7 +145,44 @@ static bool moodle(const char *path, LmsName *out)
     return true;
 }
 
+/* ASSIGNMENT_USERNAME_attempt_DATE_FILE or ASSIGNMENT_USERNAME_attempt_
+ * DATE.txt, in the path's last component. */
+static bool blackboard(const char *path, LmsName *out)
+{
+    static const char mark[] = "_attempt_";
+    const char *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    for (const char *m = strstr(base, mark); m; m = strstr(m + 1, mark)) {
+        const char *user = m;
+        while (user > base && user[-1] != '_')
+            user--;
+        if (user == m || user - 1 <= base)
+            continue;                       /* no username, or no assignment before it */
+        const char *date = m + sizeof mark - 1, *e = date;
+        int digits = 0;
+        while (digit(*e) || *e == '-')
+            digits += digit(*e++);
+        if (digits < 8 || e - date >= (ptrdiff_t)sizeof out->attempt)
+            continue;
+        char receipt[sizeof out->attempt + 16];
+        snprintf(receipt, sizeof receipt, "attempt_%.*s.txt", (int)(e - date), date);
+        const char *name = *e == '_' && e[1] != '\0' ? e + 1 : strcmp(e, ".txt") == 0 ? receipt : NULL;
+        if (!name)
+            continue;
+        if (!copy(out->who, user, (size_t)(m - user)) || !copy(out->name, name, strlen(name)))
+            return false;
+        memcpy(out->attempt, date, (size_t)(e - date));
+        out->attempt[e - date] = '\0';
+        out->lms = LMS_BLACKBOARD;
+        out->late = false;
+        out->again = 0;
+        return true;
+    }
+    return false;
+}
+
 bool lms_name(const char *path, const char *const *stages, int nstages, LmsName *out)
 {
-    return moodle(path, out) || canvas(path, stages, nstages, out);
+    memset(out, 0, sizeof *out);
+    return moodle(path, out) || blackboard(path, out) || canvas(path, stages, nstages, out);
 }

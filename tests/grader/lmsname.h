@@ -11,6 +11,12 @@
  *   submission's anonymous id).  A file the student uploaded again under
  *   the same name gets "-N" before its extension ("part1_image_plane-1.c").
  *
+ *   Blackboard Learn ("Assignment File Download"): one zip of every
+ *   student's files, each renamed ASSIGNMENT_USERNAME_attempt_DATE_FILE
+ *   (DATE as 2024-03-15-10-30-00: the attempt's), beside a text file of
+ *   the attempt's own, ASSIGNMENT_USERNAME_attempt_DATE.txt; with every
+ *   attempt downloaded, a student's earlier attempts are there too.
+ *
  *   Moodle ("Download all submissions"): each student's files in a folder
  *   FULL NAME_ID_assignsubmission_file_ (the default since Moodle 3.1), or,
  *   with folders turned off, each file named FULL NAME_ID_assignsubmission_
@@ -18,14 +24,17 @@
  *
  * sortsubs (make sort-submissions) sorts such a download into one folder
  * per submission, as grade --all takes them; grade --all names the command
- * when it is given such a download.
+ * when it is given such a download.  (Blackboard's form is read as the
+ * tools that sort its downloads read it, BBGradebookOrganiser among them:
+ * the username is what comes between the last "_" before "_attempt_" and
+ * it, the file's own name what follows the date.)
  */
 #ifndef GRADER_LMSNAME_H
 #define GRADER_LMSNAME_H
 
 #include <stdbool.h>
 
-typedef enum { LMS_CANVAS = 1, LMS_MOODLE } Lms;
+typedef enum { LMS_CANVAS = 1, LMS_MOODLE, LMS_BLACKBOARD } Lms;
 
 #define LMS_NAME_MAX 256
 
@@ -34,8 +43,12 @@ typedef struct {
     char who[LMS_NAME_MAX];   /* the submission's folder: "smithbob_340934"
                                  (Canvas: name and user id), "anon_Xy3Ab"
                                  (Canvas, anonymous), "Ann Lee_123456"
-                                 (Moodle: full name and participant id)     */
-    char name[LMS_NAME_MAX];  /* the file as its student named it           */
+                                 (Moodle: full name and participant id),
+                                 "jsmith" (Blackboard: the username)        */
+    char name[LMS_NAME_MAX];  /* the file as its student named it; for
+                                 Blackboard's text file of an attempt,
+                                 "attempt_DATE.txt"                         */
+    char attempt[32];         /* Blackboard: the attempt's DATE; else ""    */
     int again;                /* Canvas's "-N" taken off name: N; else 0     */
     bool late;                /* Canvas's LATE mark                          */
 } LmsName;

@@ -1,7 +1,7 @@
 /*
  * sortsubs_main.c - the `sortsubs` command (make sort-submissions): a whole
- * class's download from Canvas or Moodle, sorted into one folder per
- * submission, as grade --all takes them.
+ * class's download from Canvas, Moodle or Blackboard, sorted into one
+ * folder per submission, as grade --all takes them.
  *
  *     sortsubs FROM TO
  *
@@ -10,7 +10,10 @@
  * submission it is, and the name its student gave it, which it gets back.
  * Where a student's submission has the same file twice (Canvas's
  * "part1_image_plane-1.c", uploaded again, beside "part1_image_plane.c"),
- * the later upload is kept and the run says so.  TO must be new (missing,
+ * the later upload is kept and the run says so; where a download holds a
+ * student's earlier attempts too (Blackboard's, with every attempt
+ * downloaded), the latest attempt's files are kept, and the run says so.
+ * TO must be new (missing,
  * or an empty folder): the sorted folders are written into a temporary
  * folder beside it, renamed to TO when all is written, so a run that fails
  * leaves nothing.  FROM is only read.  TO/sorted.txt lists where each file
@@ -41,7 +44,9 @@
 typedef struct {
     const ArchiveEntry *entry;      /* the file in the download */
     LmsName n;
-    bool kept;                      /* false: an earlier upload of the same file */
+    bool kept;                      /* false: an earlier upload of the same file,
+                                       or a file of an earlier attempt */
+    bool earlier_attempt;           /* left out as of an earlier attempt */
 } Item;
 
 /* A name from the download, on standard output: the students chose the
@@ -54,7 +59,8 @@ static void put_name(const char *name)
 static int usage(void)
 {
     fprintf(stderr, "usage: sortsubs FROM TO\n"
-                    "  FROM  a class's download from Canvas or Moodle: the .zip, or the folder it was "
+                    "  FROM  a class's download from Canvas, Moodle or Blackboard: the .zip, or the "
+                    "folder it was "
                     "unpacked into\n"
                     "  TO    a new folder (missing or empty), to hold one folder per submission\n");
     return 2;
@@ -150,7 +156,7 @@ int main(int argc, char **argv)
         archive_free(&in);
         return fail("out of memory", NULL);
     }
-    size_t nitems = 0, nunsorted = 0, nsystem = 0, ncanvas = 0, nmoodle = 0;
+    size_t nitems = 0, nunsorted = 0, nsystem = 0, nby[LMS_BLACKBOARD + 1] = { 0 };
     for (size_t k = 0; k < in.count; k++) {
         const ArchiveEntry *e = &in.entries[k];
         if (e->is_dir)
@@ -167,29 +173,45 @@ int main(int argc, char **argv)
         }
         it->entry = e;
         it->kept = true;
-        ncanvas += it->n.lms == LMS_CANVAS;
-        nmoodle += it->n.lms == LMS_MOODLE;
+        nby[it->n.lms]++;
         nitems++;
     }
     if (nitems == 0) {
-        snprintf(err, sizeof err, "%s holds no file named as Canvas or Moodle name a class's files "
-                 "(NAME_USERID_FILEID_FILE, or \"FULL NAME_ID_assignsubmission_file_\" and the file)", from);
+        snprintf(err, sizeof err, "%s holds no file named as Canvas, Moodle or Blackboard name a class's "
+                 "files (NAME_USERID_FILEID_FILE, \"FULL NAME_ID_assignsubmission_file_\" and the file, or "
+                 "ASSIGNMENT_USERNAME_attempt_DATE_FILE)", from);
         free(items);
         free(unsorted);
         archive_free(&in);
         return fail(err, NULL);
     }
 
-    /* By submission, then name; of one file uploaded more than once, the
-     * last (Canvas's highest "-N") is kept. */
+    /* By submission, then name.  Of a submission's attempts, the latest
+     * is kept (Blackboard's dates, written so that their order is that of
+     * their text); of one file uploaded more than once, the last (Canvas's
+     * highest "-N"). */
     qsort(items, nitems, sizeof *items, by_who_then_name);
     size_t nfolders = 0, nlater = 0, nlate = 0;
-    for (size_t k = 0; k < nitems; k++) {
-        bool new_who = k == 0 || strcmp(items[k].n.who, items[k - 1].n.who) != 0;
-        nfolders += new_who;
-        nlate += new_who && items[k].n.late;
-        if (k + 1 < nitems && strcmp(items[k].n.who, items[k + 1].n.who) == 0 &&
-            strcmp(items[k].n.name, items[k + 1].n.name) == 0) {
+    for (size_t k = 0, end; k < nitems; k = end) {
+        const char *latest = items[k].n.attempt;
+        for (end = k; end < nitems && strcmp(items[end].n.who, items[k].n.who) == 0; end++)
+            if (strcmp(items[end].n.attempt, latest) > 0)
+                latest = items[end].n.attempt;
+        nfolders++;
+        nlate += items[k].n.late;
+        for (size_t j = k; j < end; j++)
+            if (strcmp(items[j].n.attempt, latest) != 0) {
+                items[j].kept = false;
+                items[j].earlier_attempt = true;
+                nlater++;
+            }
+    }
+    for (size_t k = 0; k + 1 < nitems; k++) {
+        size_t next = k + 1;                /* the next file of the same attempt */
+        while (next < nitems && items[next].earlier_attempt)
+            next++;
+        if (items[k].kept && next < nitems && strcmp(items[k].n.who, items[next].n.who) == 0 &&
+            strcmp(items[k].n.name, items[next].n.name) == 0) {
             items[k].kept = false;
             nlater++;
         }
@@ -209,7 +231,9 @@ int main(int argc, char **argv)
         if (it->kept)
             status = archive_add_file(&out, path, it->entry->data, it->entry->size, 0644, why, sizeof why);
         snprintf(line, sizeof line, "%s\t%s%s%s\n", it->kept ? path : "(left out)", it->entry->path,
-                 it->n.late ? "\t(late)" : "", it->kept ? "" : "\t(an earlier upload of the same file)");
+                 it->n.late ? "\t(late)" : "",
+                 it->kept ? "" : it->earlier_attempt ? "\t(of an earlier attempt)"
+                                                     : "\t(an earlier upload of the same file)");
         if (status == 0)
             status = kit_buf_append(&list, line, strlen(line));
     }
@@ -253,10 +277,16 @@ int main(int argc, char **argv)
         return fail("the sorted folders could not be written", why);
     }
 
+    static const char *const platform[] = { "", "Canvas", "Moodle", "Blackboard" };
+    char platforms[64] = "";
+    for (int l = LMS_CANVAS, named = 0, left = (nby[1] > 0) + (nby[2] > 0) + (nby[3] > 0); l <= LMS_BLACKBOARD; l++)
+        if (nby[l]) {
+            named++;
+            snprintf(platforms + strlen(platforms), sizeof platforms - strlen(platforms), "%s%s",
+                     named == 1 ? "" : named == left ? " and " : ", ", platform[l]);
+        }
     printf("sorted %zu file%s of a %s download into %zu submission folder%s in %s", nitems - nlater,
-           nitems - nlater == 1 ? "" : "s",
-           ncanvas && nmoodle ? "Canvas and Moodle" : ncanvas ? "Canvas" : "Moodle", nfolders,
-           nfolders == 1 ? "" : "s", to);
+           nitems - nlater == 1 ? "" : "s", platforms, nfolders, nfolders == 1 ? "" : "s", to);
     if (nlate)
         printf(" (%zu of them late, as Canvas marked them)", nlate);
     printf(":");
@@ -272,12 +302,27 @@ int main(int argc, char **argv)
             shown++;
         }
     printf("\n");
+    for (size_t k = 0, end; k < nitems; k = end) {      /* earlier attempts: once a submission */
+        size_t left = 0, kept = k;
+        for (end = k; end < nitems && strcmp(items[end].n.who, items[k].n.who) == 0; end++) {
+            left += items[end].earlier_attempt;
+            if (!items[end].earlier_attempt)
+                kept = end;
+        }
+        if (!left)
+            continue;
+        fputs("  ", stdout);
+        put_name(items[k].n.who);
+        printf(": kept the latest attempt, ");
+        put_name(items[kept].n.attempt);
+        printf("; left out %zu file%s of earlier attempts\n", left, left == 1 ? "" : "s");
+    }
     for (size_t k = 0; k < nitems; k++) {
-        if (items[k].kept)
+        if (items[k].kept || items[k].earlier_attempt)
             continue;
         size_t last = k + 1;                /* the one kept: the last of its run */
         while (!items[last].kept)
-            last++;
+            last++;                         /* (files of earlier attempts are not kept either) */
         fputs("  ", stdout);
         put_name(items[k].n.who);
         fputs("/", stdout);
@@ -289,7 +334,7 @@ int main(int argc, char **argv)
         fputs("\n", stdout);
     }
     if (nunsorted) {
-        printf("not sorted (not named as Canvas or Moodle name a submission's files): ");
+        printf("not sorted (not named as Canvas, Moodle or Blackboard name a submission's files): ");
         for (size_t k = 0; k < nunsorted && k < 8; k++) {
             fputs(k ? ", " : "", stdout);
             put_name(unsorted[k]->path);

@@ -1,10 +1,10 @@
 #!/bin/sh
-# make sort-submissions: a class's download from Canvas or Moodle (one zip,
+# make sort-submissions: a class's download from Canvas, Moodle or Blackboard (one zip,
 # or folder, of every student's files, each named for its student), sorted
 # into one folder per submission, then graded by make grade-all.  The
 # downloads are made here in the platforms' own naming (lmsname.h): Canvas's
 # NAME_USERID_FILEID_FILE with LATE_ and "-1" (and anonymous grading's
-# anon_ANONID_FILEID_FILE), Moodle's folders and
+# anon_ANONID_FILEID_FILE), Blackboard's attempts, Moodle's folders and
 # its flat form.  Then what must be refused, with nothing written: a TO that
 # is not new, a download with no such names; and what grade-all says when
 # it is given the download itself.
@@ -104,6 +104,35 @@ check "Moodle: a folder per submission, named for the student and the participan
     sh -c "[ -f '$tmp/msorted/Ann Lee_123456/part1_image_plane.c' ] && [ -f '$tmp/msorted/Bo Chen_654321/part2_pixel_coordinates.c' ] &&
            [ -f '$tmp/msorted/Cy Diaz_111/part3a_sphere_intersect.c' ] && grep -q 'of a Moodle download into 3 submission folders' '$tmp/out'"
 
+# ---- Blackboard: every attempt downloaded, each with its text file ----------
+b=$tmp/blackboard
+mkdir "$b"
+early=2024-03-15-10-30-00 late=2024-03-16-09-05-59
+for f in solutions/part1_image_plane.c solutions/part2_pixel_coordinates.c; do
+    cp "$f" "$b/Ray Tracing Lab_jsmith_attempt_${late}_${f##*/}"
+done
+# jsmith's first attempt: the skeleton's Part 1 and a file the second lacks
+cp labs/part1_image_plane.c "$b/Ray Tracing Lab_jsmith_attempt_${early}_part1_image_plane.c"
+echo draft >"$b/Ray Tracing Lab_jsmith_attempt_${early}_notes.txt"
+cp solutions/part3a_sphere_intersect.c "$b/Ray Tracing Lab_20103940_attempt_${early}_part3a_sphere_intersect.c"
+for a in "jsmith_attempt_$early" "jsmith_attempt_$late" "20103940_attempt_$early"; do
+    printf 'Name: A Student (%s)\nAssignment: Ray Tracing Lab\n' "${a%%_*}" >"$b/Ray Tracing Lab_$a.txt"
+done
+$pack zip "$tmp/blackboard.zip" "$b" >/dev/null 2>&1
+sort_subs "$tmp/blackboard.zip" "$tmp/bsorted"
+status=$?
+check "a Blackboard zip: a folder per username, the files under their own names" \
+    sh -c "[ $status -eq 0 ] && [ \"\$(cd '$tmp/bsorted' && ls -d */ | tr -d / | tr '\n' ' ')\" = '20103940 jsmith ' ] &&
+           cmp -s solutions/part2_pixel_coordinates.c '$tmp/bsorted/jsmith/part2_pixel_coordinates.c' &&
+           grep -q 'of a Blackboard download into 2 submission folders' '$tmp/out'"
+check "Blackboard, every attempt: the latest attempt's files are kept, the earlier's left out, and the run says so" \
+    sh -c "cmp -s solutions/part1_image_plane.c '$tmp/bsorted/jsmith/part1_image_plane.c' && [ ! -e '$tmp/bsorted/jsmith/notes.txt' ] &&
+           grep -q 'jsmith: kept the latest attempt, $late; left out 3 files of earlier attempts' '$tmp/out' &&
+           grep -q '^(left out)	Ray Tracing Lab_jsmith_attempt_${early}_notes.txt	(of an earlier attempt)\$' '$tmp/bsorted/sorted.txt'"
+check "Blackboard: each attempt's own text file is kept beside its files, named for its date" \
+    sh -c "[ -f '$tmp/bsorted/jsmith/attempt_$late.txt' ] && [ ! -e '$tmp/bsorted/jsmith/attempt_$early.txt' ] &&
+           [ -f '$tmp/bsorted/20103940/attempt_$early.txt' ]"
+
 # Names are the students' to choose, escape sequences and all: the run shows
 # them (ESC as ^[, BEL as ^G) and passes none of them to the terminal.
 e=$tmp/escapes
@@ -130,7 +159,7 @@ mkdir "$tmp/plain" && cp solutions/part1_image_plane.c "$tmp/plain/"
 sort_subs "$tmp/plain" "$tmp/none"
 status=$?
 check "no file named as a download names them: refused (exit 1), nothing written" \
-    sh -c "[ $status -eq 1 ] && grep -q 'holds no file named as Canvas or Moodle' '$tmp/out' && [ ! -e '$tmp/none' ] &&
+    sh -c "[ $status -eq 1 ] && grep -q 'holds no file named as Canvas, Moodle or Blackboard' '$tmp/out' && [ ! -e '$tmp/none' ] &&
            ! ls -d '$tmp'/none.sorting.* >/dev/null 2>&1"
 sort_subs "$tmp/no-such.zip" "$tmp/none"
 status=$?
@@ -147,7 +176,7 @@ check "make sort-submissions without TO: its usage (exit 2)" sh -c "[ $status -e
 # ---- grade-all given the download itself names the sorter ------------------
 $grade --all "$dl" --out "$tmp/g2" >"$tmp/out" 2>&1
 check "grade-all on a Canvas download's folder (its __MACOSX left out, not graded): names make sort-submissions" \
-    sh -c "grep -q 'named as a Canvas or Moodle download names a class.s files: make sort-submissions FROM=$dl TO=new-folder' '$tmp/out'"
+    sh -c "grep -q 'named as a Canvas, Moodle or Blackboard download names a class.s files: make sort-submissions FROM=$dl TO=new-folder' '$tmp/out'"
 $grade --all "$tmp/canvas.zip" --out "$tmp/g2" >"$tmp/out" 2>&1
 check "grade-all on the download's zip: names make sort-submissions" \
     sh -c "grep -q 'canvas.zip is a file, not a folder of submissions: .*make sort-submissions FROM=' '$tmp/out'"

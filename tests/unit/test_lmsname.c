@@ -1,6 +1,6 @@
 /*
  * A downloaded file's submission and own name (tests/grader/lmsname.c), for
- * names as Canvas and Moodle write them (lmsname.h gives their forms: from
+ * names as Canvas, Moodle and Blackboard write them (lmsname.h gives their forms: from
  * Canvas's documented renaming, the code that names the files in its zip
  * (anonymous grading's among them) and Moodle's download code), and names
  * that only look like them.
@@ -92,6 +92,44 @@ static void test_names(void)
     }
 }
 
+/* Blackboard: ASSIGNMENT_USERNAME_attempt_DATE_FILE, and the attempt's own
+ * text file; the username is the last "_"-separated part before
+ * "_attempt_", the assignment's name may hold spaces and "_". */
+static void test_blackboard(void)
+{
+    static const struct {
+        const char *path, *who, *name, *attempt;       /* who NULL: not a download's name */
+    } bb[] = {
+        { "Lab 1_jsmith_attempt_2024-03-15-10-30-00_part1_image_plane.c", "jsmith", "part1_image_plane.c",
+          "2024-03-15-10-30-00" },
+        { "Lab 1_jsmith_attempt_2024-03-15-10-30-00.txt", "jsmith", "attempt_2024-03-15-10-30-00.txt",
+          "2024-03-15-10-30-00" },
+        { "Ray_Tracing_Lab_20103940_attempt_2024-03-16-09-05-59_part3a_sphere_intersect.c", "20103940",
+          "part3a_sphere_intersect.c", "2024-03-16-09-05-59" },
+        { "gradebook/Lab 1_a.b-c_attempt_2024-03-15-10-30-00_my_attempt_2.c", "a.b-c", "my_attempt_2.c",
+          "2024-03-15-10-30-00" },
+        /* not Blackboard's */
+        { "jsmith_attempt_2024-03-15-10-30-00_part1.c", NULL, NULL, NULL },      /* no assignment */
+        { "Lab 1__attempt_2024-03-15-10-30-00_part1.c", NULL, NULL, NULL },      /* no username */
+        { "Lab 1_jsmith_attempt_2024_part1.c", NULL, NULL, NULL },               /* no date */
+        { "Lab 1_jsmith_attempt_2024-03-15-10-30-00_", NULL, NULL, NULL },       /* no file */
+        { "Lab 1_jsmith_attempt_2024-03-15-10-30-00.c", NULL, NULL, NULL },
+    };
+    for (size_t k = 0; k < sizeof bb / sizeof bb[0]; k++) {
+        LmsName n;
+        bool got = lms_name(bb[k].path, stages, 4, &n);
+        CHECK_MSG(got == (bb[k].who != NULL), "%s: read %s", bb[k].path,
+                  got ? "as a download's name" : "as no download's name");
+        if (!got || !bb[k].who)
+            continue;
+        CHECK_MSG(n.lms == LMS_BLACKBOARD && strcmp(n.who, bb[k].who) == 0 && strcmp(n.name, bb[k].name) == 0 &&
+                  strcmp(n.attempt, bb[k].attempt) == 0 && !n.late && n.again == 0,
+                  "%s: read as %d, '%s', '%s', attempt '%s'", bb[k].path, (int)n.lms, n.who, n.name, n.attempt);
+    }
+    LmsName n;                                           /* the other platforms have no attempt */
+    CHECK(lms_name("smithbob_340934_208490284_part1_image_plane.c", stages, 4, &n) && n.attempt[0] == '\0');
+}
+
 /* Names too long for the result are refused, not cut. */
 static void test_long(void)
 {
@@ -109,6 +147,7 @@ static void test_long(void)
 
 static const CheckTest tests[] = {
     CHECK_TEST(test_names),
+    CHECK_TEST(test_blackboard),
     CHECK_TEST(test_long),
 };
 
