@@ -20,6 +20,9 @@ need_built "$sortsubs" "$pack" "$grade"
 sort_subs() {   # sort_subs FROM TO: the sorter, its output in $tmp/out
     "$sortsubs" "$1" "$2" >"$tmp/out" 2>&1
 }
+folders() {     # folders DIR: the names of DIR's folders, each followed by a space
+    (cd "$1" && ls -d */ | tr -d / | tr '\n' ' ')
+}
 
 # ---- Canvas: a reference, a late one uploaded again, a stray file ------------
 dl=$tmp/canvas
@@ -44,7 +47,7 @@ make -s --no-print-directory sort-submissions FROM="$tmp/canvas.zip" TO="$tmp/so
 status=$?
 check "a Canvas zip, through make sort-submissions: sorted (exit 0)" [ "$status" -eq 0 ]
 check "each submission in a folder of its own, named for the student and the user id" \
-    sh -c "[ \"\$(cd '$tmp/sorted' && ls -d */ | tr -d / | tr '\n' ' ')\" = 'leeann_77 smithbob_340934 wellslane_334244 ' ]"
+    [ "$(folders "$tmp/sorted")" = 'leeann_77 smithbob_340934 wellslane_334244 ' ]
 check "the files get their own names back" \
     sh -c "cmp -s solutions/part3a_sphere_intersect.c '$tmp/sorted/smithbob_340934/part3a_sphere_intersect.c' &&
            [ -f '$tmp/sorted/leeann_77/notes-2.txt' ] && [ \$(ls '$tmp/sorted/smithbob_340934' | wc -l) -eq 4 ]"
@@ -78,7 +81,7 @@ cp solutions/part1_image_plane.c "$a/LATE_anon_9kPqR_394803489_part1_image_plane
 sort_subs "$a" "$tmp/sorted-anon"
 status=$?
 check "a Canvas download graded anonymously: a folder per anonymous id, the files under their own names" \
-    sh -c "[ $status -eq 0 ] && [ \"\$(cd '$tmp/sorted-anon' && ls -d */ | tr -d / | tr '\n' ' ')\" = 'anon_9kPqR anon_Xy3Ab ' ] &&
+    sh -c "[ $status -eq 0 ] && [ '$(folders "$tmp/sorted-anon")' = 'anon_9kPqR anon_Xy3Ab ' ] &&
            cmp -s solutions/part2_pixel_coordinates.c '$tmp/sorted-anon/anon_Xy3Ab/part2_pixel_coordinates.c' &&
            grep -q '1 of them late' '$tmp/out'"
 
@@ -122,7 +125,7 @@ $pack zip "$tmp/blackboard.zip" "$b" >/dev/null 2>&1
 sort_subs "$tmp/blackboard.zip" "$tmp/bsorted"
 status=$?
 check "a Blackboard zip: a folder per username, the files under their own names" \
-    sh -c "[ $status -eq 0 ] && [ \"\$(cd '$tmp/bsorted' && ls -d */ | tr -d / | tr '\n' ' ')\" = '20103940 jsmith ' ] &&
+    sh -c "[ $status -eq 0 ] && [ '$(folders "$tmp/bsorted")' = '20103940 jsmith ' ] &&
            cmp -s solutions/part2_pixel_coordinates.c '$tmp/bsorted/jsmith/part2_pixel_coordinates.c' &&
            grep -q 'of a Blackboard download into 2 submission folders' '$tmp/out'"
 check "Blackboard, every attempt: the latest attempt's files are kept, the earlier's left out, and the run says so" \
