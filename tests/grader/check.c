@@ -268,11 +268,12 @@ static bool hits_right(const PartSoFar *part)
  * one.  When several fit, the part's other tests may tell them apart: a
  * mistake that would have failed a test the code passed is dropped, and
  * the one left, if one is, is named; if more are left, the one named for
- * a failed test of the part judged before this one, if one was (the tests
- * are judged in the order of their files).  (Only then: a mistake is a
- * model of many ways to write it, the student's way may differ from it
- * elsewhere, and a test it alone explains names it whatever the other
- * tests say.)  NULL when none is confirmed. */
+ * another failed test of the part, if one was (those judged before this
+ * one; once the part's every test is, check_part_again judges again a test
+ * that named none, with those judged after it too).  (Only then: a
+ * mistake is a model of many ways to write it, the student's way may
+ * differ from it elsewhere, and a test it alone explains names it
+ * whatever the other tests say.)  NULL when none is confirmed. */
 static const char *flat_mistake(const Test *test, const double (*got)[CASE_MAX_OUT],
                                 const bool *ok, int answered, const PartSoFar *part)
 {
@@ -456,16 +457,138 @@ bool check_answers(const Test *test, const char *answers, size_t len, char **out
     return check_answers_in_part(test, answers, len, NULL, out, keep);
 }
 
+static bool is_flat(const Test *test)
+{
+    return test->kind == KIND_PLANEHIT || test->kind == KIND_TRIANGLE || test->kind == KIND_MESH;
+}
+
+/* The message for the student about answers a to the test, read beside
+ * the other tests of its part; sets a->named.  Returns the message. */
+static char *verdict(const Test *test, Answers *a, const PartSoFar *part)
+{
+    Text t = { 0 };
+    if (a->first_bad >= 0)
+        describe_case(&t, test, a->first_bad, &test->cases[a->first_bad], a->got[a->first_bad], true);
+    /* The guard sphere's colour, which only a read past the scene's last
+     * sphere can give (scene.h). */
+    if ((test->kind == KIND_COLOR || test->kind == KIND_IMAGE) && a->first_bad >= 0 &&
+        a->got[a->first_bad][0] == SCENE_GUARD_RED && a->got[a->first_bad][1] == SCENE_GUARD_GREEN &&
+        a->got[a->first_bad][2] == SCENE_GUARD_BLUE)
+        say(&t, "    hint:      this magenta is the grader's marker sphere, kept just past the last "
+                "sphere, around everything: ray_color read scene->spheres[scene->nspheres], one sphere "
+                "too many. Loop while k < scene->nspheres\n");
+    a->named = NULL;
+    if (is_flat(test) && a->first_bad >= 0) {
+        const Case *bad = &test->cases[a->first_bad];
+        bool nan_in = false;
+        for (int k = 0; k < kind_nin(test->kind); k++)
+            nan_in = nan_in || isnan(bad->in[k]);
+        const char *why = flat_diagnosis(test, (const double (*)[CASE_MAX_OUT])a->got, a->ok, a->answered,
+                                         part, &a->named);
+        double missed, found;
+        if (nan_in && a->got[a->first_bad][0] == 1)
+            say(&t, "    hint:      NaN input must be a miss: a test written as \"t < 0: miss\" lets "
+                    "NaN through (every comparison with NaN is false); write it as !(t > 0)\n");
+        else if (why)
+            say(&t, "    hint:      %s\n", why);
+        else if (flat_near_misses(test, a, &missed, &found)) {
+            /* A fact of the test's missed hits; the case shown may be wrong
+             * for a reason of its own (a float t), which is said first. */
+            flat_evidence(&t, test, bad, a->got[a->first_bad], a->failed);
+            say(&t, "    hint:      every hit this test missed (the farthest at t = %.3g) is a thousand "
+                    "times nearer the ray's origin, or more, than every hit it found (the nearest at "
+                    "t = %.3g): are hits below some small t ignored? This lab's rule is tmin = 0: every "
+                    "hit with t > 0 counts\n", missed, found);
+        } else
+            flat_evidence(&t, test, bad, a->got[a->first_bad], a->failed);
+    }
+    if (!a->complete) {
+        say(&t, "  the answers stopped after case %d of %d", a->answered, test->ncases);
+        if (a->answered < test->ncases) {
+            say(&t, ": this case did not finish\n");
+            describe_case(&t, test, a->answered, &test->cases[a->answered], NULL, false);
+        } else {
+            say(&t, ": the program did not finish normally\n");
+        }
+    }
+    if (a->failed > 1)
+        say(&t, "  %d of %d cases were wrong; the first is shown.\n", a->failed, test->ncases);
+    return t.s ? t.s : calloc(1, 1);
+}
+
+bool check_name_again(const Test *test, Answers *a, const PartSoFar *part, char **out)
+{
+    if (!is_flat(test) || a->named || a->first_bad < 0 || !a->got)
+        return false;
+    char *text = verdict(test, a, part);
+    if (!a->named) {
+        free(text);
+        return false;
+    }
+    *out = text;
+    return true;
+}
+
+/* The result's output with its verdict replaced by v; false when memory
+ * runs out (the output unchanged). */
+static bool replace_verdict(TestResult *r, const char *v)
+{
+    size_t head = r->verdict_at, vlen = strlen(v), tail = strlen(r->output + head + r->verdict_len);
+    char *out = malloc(head + vlen + tail + 1);
+    if (!out)
+        return false;
+    memcpy(out, r->output, head);
+    memcpy(out + head, v, vlen);
+    memcpy(out + head + vlen, r->output + head + r->verdict_len, tail + 1);
+    free(r->output);
+    r->output = out;
+    r->verdict_len = vlen;
+    return true;
+}
+
+void check_part_again(const TestList *tests, TestResult *results, int part)
+{
+    const Test **passed = calloc((size_t)tests->n + 1, sizeof *passed);
+    const char **named = calloc((size_t)tests->n + 1, sizeof *named);
+    for (bool changed = passed && named; changed;) {
+        changed = false;
+        for (int k = 0; k < tests->n; k++) {
+            TestResult *r = &results[k];
+            const Test *t = &tests->tests[k];
+            if (t->part != part || r->passed || !r->ran || r->answers.named || !r->output || !r->verdict_len)
+                continue;
+            PartSoFar so_far = { passed, 0, named, 0 };
+            for (int j = 0; j < tests->n; j++) {
+                const TestResult *rj = &results[j];
+                if (j == k || tests->tests[j].part != part)
+                    continue;
+                if (rj->passed)
+                    passed[so_far.npassed++] = &tests->tests[j];
+                else if (rj->ran && rj->answers.named)
+                    named[so_far.nnamed++] = rj->answers.named;
+            }
+            char *v;
+            if (so_far.nnamed == 0 || !check_name_again(t, &r->answers, &so_far, &v))
+                continue;
+            if (replace_verdict(r, v))
+                changed = true;
+            else
+                r->answers.named = NULL;            /* the message names none */
+            free(v);
+        }
+    }
+    free(passed);
+    free(named);
+}
+
 bool check_answers_in_part(const Test *test, const char *answers, size_t len,
                            const PartSoFar *part, char **out, Answers *keep)
 {
     static const PartSoFar alone = { 0 };
     if (!part)
         part = &alone;
-    Text t = { 0 };
     int nout = kind_nout(test->kind);
     const char *p = answers, *end = answers + len;
-    bool flat = test->kind == KIND_PLANEHIT || test->kind == KIND_TRIANGLE || test->kind == KIND_MESH;
     Answers a = { 0 };
     a.first_bad = -1;
     a.got = calloc((size_t)test->ncases + 1, sizeof *a.got);
@@ -499,59 +622,14 @@ bool check_answers_in_part(const Test *test, const char *answers, size_t len,
         }
         a.answered++;
         a.ok[c] = case_ok(test->kind, &test->cases[c], test->cases[c].want, got);
-        if (!a.ok[c] && a.failed++ == 0) {
+        if (!a.ok[c] && a.failed++ == 0)
             a.first_bad = c;
-            describe_case(&t, test, c, &test->cases[c], got, true);
-        }
-    }
-    /* The guard sphere's colour, which only a read past the scene's last
-     * sphere can give (scene.h). */
-    if ((test->kind == KIND_COLOR || test->kind == KIND_IMAGE) && a.first_bad >= 0 &&
-        a.got[a.first_bad][0] == SCENE_GUARD_RED && a.got[a.first_bad][1] == SCENE_GUARD_GREEN &&
-        a.got[a.first_bad][2] == SCENE_GUARD_BLUE)
-        say(&t, "    hint:      this magenta is the grader's marker sphere, kept just past the last "
-                "sphere, around everything: ray_color read scene->spheres[scene->nspheres], one sphere "
-                "too many. Loop while k < scene->nspheres\n");
-    if (flat && a.first_bad >= 0) {
-        const Case *bad = &test->cases[a.first_bad];
-        bool nan_in = false;
-        for (int k = 0; k < kind_nin(test->kind); k++)
-            nan_in = nan_in || isnan(bad->in[k]);
-        const char *why = flat_diagnosis(test, (const double (*)[CASE_MAX_OUT])a.got, a.ok, a.answered,
-                                         part, &a.named);
-        double missed, found;
-        if (nan_in && a.got[a.first_bad][0] == 1)
-            say(&t, "    hint:      NaN input must be a miss: a test written as \"t < 0: miss\" lets "
-                    "NaN through (every comparison with NaN is false); write it as !(t > 0)\n");
-        else if (why)
-            say(&t, "    hint:      %s\n", why);
-        else if (flat_near_misses(test, &a, &missed, &found)) {
-            /* A fact of the test's missed hits; the case shown may be wrong
-             * for a reason of its own (a float t), which is said first. */
-            flat_evidence(&t, test, bad, a.got[a.first_bad], a.failed);
-            say(&t, "    hint:      every hit this test missed (the farthest at t = %.3g) is a thousand "
-                    "times nearer the ray's origin, or more, than every hit it found (the nearest at "
-                    "t = %.3g): are hits below some small t ignored? This lab's rule is tmin = 0: every "
-                    "hit with t > 0 counts\n", missed, found);
-        } else
-            flat_evidence(&t, test, bad, a.got[a.first_bad], a.failed);
     }
     if (a.answered == test->ncases) {
         int n = -1;
         a.complete = p < end && sscanf(p, "end %d", &n) == 1 && n == test->ncases;
     }
-    if (!a.complete) {
-        say(&t, "  the answers stopped after case %d of %d", a.answered, test->ncases);
-        if (a.answered < test->ncases) {
-            say(&t, ": this case did not finish\n");
-            describe_case(&t, test, a.answered, &test->cases[a.answered], NULL, false);
-        } else {
-            say(&t, ": the program did not finish normally\n");
-        }
-    }
-    if (a.failed > 1)
-        say(&t, "  %d of %d cases were wrong; the first is shown.\n", a.failed, test->ncases);
-    *out = t.s ? t.s : calloc(1, 1);
+    *out = verdict(test, &a, part);
     bool right = a.complete && a.failed == 0;
     if (keep)
         *keep = a;

@@ -201,11 +201,13 @@ static void run_test(const GradeOptions *opt, const Build *b, SandboxServer *srv
 
     size_t ns = res.output_len < OUTPUT_SHOWN ? res.output_len : OUTPUT_SHOWN;
     char *shown = ns && !ok ? indented(res.output, ns, "    ") : NULL;
-    r->output = xasprintf("%s%s%s%s%s%s%s", ok ? "" : t->note[0] ? "  about: " : "",
-                          ok ? "" : t->note, ok || !t->note[0] ? "" : "\n",
-                          ok ? "" : why, ok ? "" : verdict,
-                          ns && !ok ? "  your code printed:\n" : "",
-                          shown ? shown : "");
+    char *head = xasprintf("%s%s%s%s", ok ? "" : t->note[0] ? "  about: " : "", ok ? "" : t->note,
+                           ok || !t->note[0] ? "" : "\n", ok ? "" : why);
+    r->output = xasprintf("%s%s%s%s", head ? head : "", ok ? "" : verdict,
+                          ns && !ok ? "  your code printed:\n" : "", shown ? shown : "");
+    r->verdict_at = head ? strlen(head) : 0;
+    r->verdict_len = ok || !head ? 0 : strlen(verdict);
+    free(head);
     free(shown);
     if (ns && !ok && (res.output_truncated || res.output_len > OUTPUT_SHOWN)) {
         char *more = xasprintf("%s\n  [... more output cut]\n", r->output);
@@ -462,6 +464,7 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
             }
             first = false;
         }
+        check_part_again(tests, g->results, p);
         free(done);
         free(passed);
         free(named);

@@ -150,6 +150,9 @@ typedef struct {
     bool passed;
     double score, max_score;
     char *output;                  /* what the student is told (malloc'd)      */
+    size_t verdict_at, verdict_len; /* where in output the judging of the
+                                      answers is (check_answers_in_part's
+                                      message); 0, 0 when none              */
     double seconds;
     Answers answers;
 } TestResult;
@@ -165,8 +168,9 @@ bool check_answers(const Test *test, const char *answers, size_t len, char **out
 typedef struct {
     const Test *const *passed;     /* the tests of the part it passed          */
     int npassed;
-    const char *const *named;      /* the mistakes named for its failed tests
-                                      judged so far                             */
+    const char *const *named;      /* the mistakes named for its other failed
+                                      tests judged so far (check_part_again:
+                                      all of them)                              */
     int nnamed;
 } PartSoFar;
 
@@ -174,6 +178,18 @@ typedef struct {
  * be NULL: none). */
 bool check_answers_in_part(const Test *test, const char *answers, size_t len,
                            const PartSoFar *part, char **out, Answers *a);
+/* A failed test of Parts 4 and 5 whose answers a named no mistake, judged
+ * again once its part's every test is: part lists the tests passed and the
+ * mistakes named for the part's other failed tests, those judged after it
+ * too.  True when a mistake is named now (a->named), with the message for
+ * the student in out; false, out untouched, when not. */
+bool check_name_again(const Test *test, Answers *a, const PartSoFar *part, char **out);
+/* After every test of part (grader.h's numbering) is judged: each failed
+ * test of Parts 4 and 5 that named no mistake judged again with what the
+ * whole part showed (check_name_again), again until nothing changes, so
+ * that the order of the tests' files does not matter; a mistake named now
+ * replaces the test's verdict in its output (verdict_at, verdict_len). */
+void check_part_again(const TestList *tests, TestResult *results, int part);
 /* A batch's answers (every test of a part, run in one child), split after
  * each line that starts "end ": from[k] and size[k] are the k-th test's
  * answers.  Returns ntests when the answers split into exactly ntests

@@ -147,6 +147,76 @@ static void test_two_mistakes_fit(void)
     testlist_free(&list);
 }
 
+/* The order of the tests' files does not matter: a failed test that two
+ * mistakes fit, judged before the test that names one of them, names it
+ * once the part's every test is judged (check_part_again), with the same
+ * message as if it had been judged after, and the rest of its output kept.
+ * A test named already, or whose mistakes nothing tells apart, is left. */
+static void test_part_again(void)
+{
+    static const char A[] = "mistake A", B[] = "mistake B";
+    const char *both[] = { A, B }, *a_only[] = { A };
+    TestList list = { 0 };
+    hit_case(testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: A or B"), both, 2);
+    hit_case(testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: plain hits"), NULL, 0);
+    hit_case(testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: A alone"), a_only, 1);
+    hit_case(testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: A or B again"), both, 2);
+    const char miss[] = "0x0p+0 0x0p+0\nend 1\n";
+    const Test *passed[] = { &list.tests[1] };
+    const char *named_a[] = { A };
+
+    /* Judged in the files' order: only "A alone" names A. */
+    TestResult r[4];
+    memset(r, 0, sizeof r);
+    r[1].ran = r[1].passed = true;
+    for (int k = 0; k < 4; k++) {
+        if (k == 1)
+            continue;
+        PartSoFar so_far = { passed, 1, named_a, k > 2 };
+        char *v = NULL;
+        check_answers_in_part(&list.tests[k], miss, sizeof miss - 1, &so_far, &v, &r[k].answers);
+        r[k].ran = true;
+        r[k].verdict_at = strlen("  about: a note\n");
+        r[k].verdict_len = strlen(v);
+        size_t n = r[k].verdict_at + r[k].verdict_len + 40;
+        r[k].output = malloc(n);
+        snprintf(r[k].output, n, "  about: a note\n%s  your code printed:\n    hi\n", v);
+        free(v);
+    }
+    CHECK(r[2].answers.named && strcmp(r[2].answers.named, A) == 0);
+    CHECK_MSG(!r[0].answers.named, "judged first, A or B named %s", r[0].answers.named);
+    CHECK(r[3].answers.named && strcmp(r[3].answers.named, A) == 0);
+
+    /* Judged again: A or B names A, in the words "A or B again" got. */
+    char *again = strdup(r[3].output);
+    check_part_again(&list, r, PART5);
+    CHECK_MSG(r[0].answers.named && strcmp(r[0].answers.named, A) == 0, "judged again, named %s",
+              r[0].answers.named ? r[0].answers.named : "nothing");
+    CHECK_MSG(strcmp(r[0].output, again) == 0, "the message is\n%s\nnot\n%s", r[0].output, again);
+    CHECK_MSG(strcmp(r[3].output, again) == 0, "a test named already changed:\n%s", r[3].output);
+    free(again);
+
+    /* Nothing tells A and B apart when no other test names either. */
+    for (int k = 0; k < 4; k++) {
+        free(r[k].output);
+        answers_free(&r[k].answers);
+    }
+    memset(r, 0, sizeof r);
+    r[1].ran = r[1].passed = true;
+    PartSoFar alone = { passed, 1, NULL, 0 };
+    char *v = NULL;
+    check_answers_in_part(&list.tests[0], miss, sizeof miss - 1, &alone, &v, &r[0].answers);
+    r[0].ran = true;
+    r[0].output = strdup(v);
+    r[0].verdict_len = strlen(v);
+    check_part_again(&list, r, PART5);
+    CHECK(!r[0].answers.named && strcmp(r[0].output, v) == 0);
+    free(v);
+    free(r[0].output);
+    answers_free(&r[0].answers);
+    testlist_free(&list);
+}
+
 /* Where no known mistake explains a test, a hit at t <= 0, NaN or
  * infinity is told as what it is for the case shown. */
 static void test_hit_not_ahead(void)
@@ -176,6 +246,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_refused),
     CHECK_TEST(test_bytes),
     CHECK_TEST(test_two_mistakes_fit),
+    CHECK_TEST(test_part_again),
     CHECK_TEST(test_hit_not_ahead),
 };
 
