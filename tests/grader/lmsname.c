@@ -77,9 +77,10 @@ static bool canvas_fill(LmsName *out, const char *w, size_t n, const char *file,
 static bool canvas_anonymous(const char *base, const char *const *stages, int nstages, LmsName *out)
 {
     bool late = strncmp(base, "LATE_", 5) == 0;
-    const char *anon = late ? base + 5 : base, *e = anon + 5;
+    const char *anon = late ? base + 5 : base;
     if (strncmp(anon, "anon_", 5) != 0)
         return false;
+    const char *e = anon + 5;
     while ((*e >= 'A' && *e <= 'Z') || (*e >= 'a' && *e <= 'z') || digit(*e))
         e++;
     const char *file = e > anon + 5 ? canvas_file(e) : NULL;

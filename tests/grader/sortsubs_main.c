@@ -277,13 +277,17 @@ int main(int argc, char **argv)
         return fail("the sorted folders could not be written", why);
     }
 
+    /* "Canvas", "Canvas and Moodle", "Canvas, Moodle and Blackboard" */
     static const char *const platform[] = { "", "Canvas", "Moodle", "Blackboard" };
     char platforms[64] = "";
-    for (int l = LMS_CANVAS, named = 0, left = (nby[1] > 0) + (nby[2] > 0) + (nby[3] > 0); l <= LMS_BLACKBOARD; l++)
+    int nplatforms = 0, named = 0;
+    for (int l = LMS_CANVAS; l <= LMS_BLACKBOARD; l++)
+        nplatforms += nby[l] > 0;
+    for (int l = LMS_CANVAS; l <= LMS_BLACKBOARD; l++)
         if (nby[l]) {
             named++;
             snprintf(platforms + strlen(platforms), sizeof platforms - strlen(platforms), "%s%s",
-                     named == 1 ? "" : named == left ? " and " : ", ", platform[l]);
+                     named == 1 ? "" : named == nplatforms ? " and " : ", ", platform[l]);
         }
     printf("sorted %zu file%s of a %s download into %zu submission folder%s in %s", nitems - nlater,
            nitems - nlater == 1 ? "" : "s", platforms, nfolders, nfolders == 1 ? "" : "s", to);
