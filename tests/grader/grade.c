@@ -439,7 +439,7 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
                 continue;
             if (!b.ok) {
                 char why[200];
-                grade_unbuilt_why(g, p, why, sizeof why);
+                grade_unbuilt_why(g, p, false, why, sizeof why);
                 r->output = xasprintf(first ? "  %s, so this part scores 0:\n%s"
                                             : "  %s (see the first test of this part)%s",
                                       why, first ? g->build_messages[p] : "");
@@ -558,10 +558,10 @@ bool grade_warned(const Grade *g, int p)
     return g->graded[p] && g->built[p] && g->build_messages[p] && g->build_messages[p][0];
 }
 
-void grade_unbuilt_why(const Grade *g, int p, char *out, size_t n)
+void grade_unbuilt_why(const Grade *g, int p, bool capital, char *out, size_t n)
 {
     if (g->build_refused[p])
-        snprintf(out, n, "the grader did not compile your %s.c", stage_names[p]);
+        snprintf(out, n, "%s grader did not compile your %s.c", capital ? "The" : "the", stage_names[p]);
     else
-        snprintf(out, n, "your %s.c did not build", stage_names[p]);
+        snprintf(out, n, "%s %s.c did not build", capital ? "Your" : "your", stage_names[p]);
 }

@@ -59,8 +59,8 @@ bool grade_warned(const Grade *g, int p);
 /* Why part p's tests could not run, when its file did not build, for the
  * reports: "your part1_image_plane.c did not build" or, for a file the
  * grader did not hand to the compiler (missing, refused), "the grader did
- * not compile your part1_image_plane.c".  Written into out, whose first
- * letter the caller may capitalise. */
-void grade_unbuilt_why(const Grade *g, int p, char *out, size_t n);
+ * not compile your part1_image_plane.c".  Written into out; capital: its
+ * first word with a capital letter, to begin a sentence. */
+void grade_unbuilt_why(const Grade *g, int p, bool capital, char *out, size_t n);
 
 #endif

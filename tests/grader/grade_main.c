@@ -455,9 +455,9 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     DIR *d = opendir(dir);
     struct stat dst;
     if (!d && stat(dir, &dst) == 0 && S_ISREG(dst.st_mode)) {   /* a download's zip, most likely */
-        snprintf(err, sizeof err, "%.300s is a file, not a folder of submissions: if it is a class's download "
-                 "from Canvas, Moodle or Blackboard, make sort-submissions FROM=%.300s TO=new-folder sorts it into a "
-                 "folder per submission", dir, dir);
+        snprintf(err, sizeof err, "%.300s is a file, not a folder of submissions: if it is a class's "
+                 "download from Canvas, Moodle or Blackboard, make sort-submissions FROM=%.300s "
+                 "TO=new-folder sorts it into a folder per submission", dir, dir);
         return fail(NULL, "%s", err);
     }
     if (!d)
@@ -523,9 +523,9 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
             append_text(err, sizeof err, ")");
         if (lms) {        /* a platform's download: the sorter reads its names */
             char more[700];
-            snprintf(more, sizeof more, "; %d of its files or folders are named as a Canvas, Moodle or Blackboard "
-                     "download names a class's files: make sort-submissions FROM=%s TO=new-folder sorts them into a "
-                     "folder per submission", lms, dir);
+            snprintf(more, sizeof more, "; %d of its files or folders are named as a Canvas, Moodle or "
+                     "Blackboard download names a class's files: make sort-submissions FROM=%s "
+                     "TO=new-folder sorts them into a folder per submission", lms, dir);
             append_text(err, sizeof err, more);
         } else if (loose) {      /* one folder of every student's files, as some downloads give */
             char more[160];
@@ -723,8 +723,9 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
                "not taken for a submission: %s\n", ndots, ndots == 1 ? "" : "s", hidden);
     if (loose)
         printf("left out %d stage file%s lying in %s itself: a submission is a folder of its own%s\n", loose,
-               loose == 1 ? "" : "s", dir, lms ? " (they are named as a Canvas, Moodle or Blackboard download names a "
-               "class's files: make sort-submissions sorts them into a folder per submission)" : "");
+               loose == 1 ? "" : "s", dir,
+               lms ? " (they are named as a Canvas, Moodle or Blackboard download names a class's files: "
+                     "make sort-submissions sorts them into a folder per submission)" : "");
     if (nempty)
         printf("%d submission%s no stage file (status \"no stage file\": empty, or files under other "
                "names, which %s .json names): %s%s\n", nempty, nempty == 1 ? " holds" : "s hold",

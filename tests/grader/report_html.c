@@ -374,8 +374,7 @@ static void failures(Markup *m, const Grade *g)
              * hand the file to the compiler (missing, unreadable, a link, a
              * kit file included...), in the words of every other report. */
             char why[200];
-            grade_unbuilt_why(g, p, why, sizeof why);
-            why[0] = (char)(why[0] - 'a' + 'A');             /* "your", "the": a lower-case letter */
+            grade_unbuilt_why(g, p, true, why, sizeof why);
             mk_printf(m, "<p>");
             mk_textf(m, "%s, so none of its tests could run:", why);
             mk_printf(m, "</p>\n<pre>");

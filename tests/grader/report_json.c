@@ -65,7 +65,7 @@ int report_json(const char *path, const Grade *g, const char *submission, char *
         if (!g->graded[p] || g->built[p] || (size_t)n >= sizeof summary)
             continue;
         char why[200];
-        grade_unbuilt_why(g, p, why, sizeof why);
+        grade_unbuilt_why(g, p, false, why, sizeof why);
         n += snprintf(summary + n, sizeof summary - (size_t)n, "\n\nPart %s: %s, so none of its tests "
                       "could run:\n%s", part_label(p), why, g->build_messages[p] ? g->build_messages[p] : "");
     }

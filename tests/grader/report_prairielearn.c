@@ -127,8 +127,7 @@ static void write_results(JsonWriter *j, const Grade *g, size_t output_max)
                 append(&output, "The compiler warned (a warning often points at a mistake):\n");
             else if (!g->built[p]) {
                 char why[200];
-                grade_unbuilt_why(g, p, why, sizeof why);
-                why[0] = (char)(why[0] - 'a' + 'A');             /* "your", "the": a lower-case letter */
+                grade_unbuilt_why(g, p, true, why, sizeof why);
                 append(&output, "%s, so none of its tests could run:\n", why);
             }
             append(&output, "%s", g->build_messages[p]);

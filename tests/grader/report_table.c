@@ -39,7 +39,7 @@ static bool unbuilt(FILE *f, const Grade *g, int p)
         hard += t->hard;
     }
     char why[200];
-    grade_unbuilt_why(g, p, why, sizeof why);
+    grade_unbuilt_why(g, p, false, why, sizeof why);
     fprintf(f, "  FAIL  all %d tests (%d core, %d hard cases): %s, so none could run:\n", n, n - hard,
             hard, why);
     if (g->build_messages[p])
