@@ -318,9 +318,9 @@ grade-all: grader $(REPORT_REF)
 	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade-all SUBMISSIONS=dir [OUT=dir]"; exit 2; }
 	@$(BUILD)/bin/grade --all "$(SUBMISSIONS)" --out "$(if $(OUT),$(OUT),out/grades)" $(if $(JOBS),--jobs $(JOBS))
 
-# A class's download from Canvas, Moodle or Blackboard (one zip, or folder, of every
-# student's files, each name carrying its student), sorted into one folder
-# per submission for grade-all (tests/grader/sortsubs_main.c).
+# A class's download from Canvas, Moodle or Blackboard (one zip, or folder,
+# of every student's files, each name carrying its student), sorted into
+# one folder per submission for grade-all (tests/grader/sortsubs_main.c).
 $(BUILD)/bin/sortsubs: $(BUILD)/grader/sortsubs_main.o $(BUILD)/grader/libgrader.a \
                        $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
