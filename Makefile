@@ -34,6 +34,21 @@ SYSTEM    := $(shell uname -s)
 # (found without starting a process); plain ar elsewhere.
 KIT_AR    ?= $(if $(filter Linux,$(SYSTEM)),$(firstword $(wildcard $(addsuffix /gcc-ar,$(subst :, ,$(PATH)))) ar),ar)
 
+# A copy of the kit with Windows line ends (CRLF), as Git for Windows checks
+# files out where core.autocrlf is set and no .gitattributes says LF (the
+# kit's does; a template made from an older kit may not): the shell cannot
+# run its scripts, and the grader refuses its own test files.  Say so, and
+# how to mend it without losing work, before anything else fails.
+ifneq ($(shell grep -l "$$(printf '\r')" tests/run.sh 2>/dev/null),)
+$(info this copy of the kit has Windows line ends (CRLF), which the shell cannot run:)
+$(info Git for Windows wrote them when it checked the files out.  To mend the copy,)
+$(info commit your work (git commit -am "my work"), then, in this folder:)
+$(info $(empty)    git config core.autocrlf false)
+$(info $(empty)    git rm -rq --cached . && git reset -q --hard)
+$(info or clone the repository again from a WSL (Linux) terminal.)
+$(error the kit's files have Windows line ends)
+endif
+
 # What the targets act on (all accept absolute paths).
 SUBMISSION ?= labs
 SCENE      ?= labs/scenes/default.scene
@@ -356,7 +371,7 @@ prairielearn:
 KIT_DIR    = out/student-kit
 student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 	rm -rf $(KIT_DIR) && mkdir -p $(KIT_DIR)/tests/unit $(KIT_DIR)/labs/reference
-	cp -R Makefile labs handouts $(KIT_DIR)/
+	cp -R Makefile .gitattributes .gitignore labs handouts $(KIT_DIR)/
 	cp handouts/student-readme.md $(KIT_DIR)/README.md
 	mkdir -p $(KIT_DIR)/.github/workflows
 	sh tests/classroom/workflow.sh >$(KIT_DIR)/.github/workflows/classroom.yml

@@ -5,6 +5,8 @@
 #   - nothing of solutions/, tests/hidden, tests/oracle, tests/selftest or
 #     tests/bench, and no line of the solutions' function bodies in any file;
 #   - the handouts, their figures and a reference render of every scene;
+#   - .gitattributes (LF in every checkout, tests/suites/line_ends.sh) and
+#     a .gitignore that keeps its builds out of a student's repository;
 #   - `make` builds without a warning;
 #   - `make grade` on the untouched skeleton: 0 points on every part,
 #     status 1, no crash; it writes the report page out/report/index.html
@@ -121,7 +123,7 @@ for f in README.md labs/raytracer.h labs/vec3.h tests/weights.conf \
          handouts/part3a_sphere_intersect.md handouts/part3b_ray_color.md; do
     check "the kit lacks $f" test -s "$kit/$f"
 done
-for f in labs/part*.c tests/public/*.tests; do
+for f in labs/part*.c tests/public/*.tests .gitattributes .gitignore; do
     check "the kit lacks $f" cmp -s "$f" "$kit/$f"
 done
 for s in labs/scenes/*.scene; do
@@ -364,6 +366,21 @@ done
 # The textbook's Part 3a: every core point, some hard cases (the extra
 # credit) lost, so make ends with Error 1 below "Score: 30 / 30"; the line
 # above make's says why, so that it does not read as a broken build.
+# Made a repository (a GitHub Classroom template), the kit's builds stay
+# out of it: a student's `git add -A` adds no file of out/.
+if command -v git >/dev/null 2>&1; then
+    (cd "$kit" && HOME=$tmp GIT_CONFIG_NOSYSTEM=1 GIT_CONFIG_GLOBAL=/dev/null git init -q &&
+        HOME=$tmp GIT_CONFIG_NOSYSTEM=1 GIT_CONFIG_GLOBAL=/dev/null git add -A -n) >"$tmp/out" 2>&1
+    status=$?
+    built=$(ls "$kit/out" | wc -l | tr -d ' ')
+    check "git add -A in the kit adds none of its builds ($built entries in out/; exit $status)" \
+        sh -c "[ $status -eq 0 ] && [ $built -gt 0 ] && grep -q \"^add 'labs/\" '$tmp/out' &&
+               ! grep -q \"^add 'out/\" '$tmp/out'"
+    rm -rf "$kit/.git"
+else
+    echo "skipped: git is not installed (the kit as a repository keeps its builds out)"
+fi
+
 cp tests/selftest/textbook/part3a_sphere_intersect.c "$kit/labs/"
 mk "$kit" grade PART=3a
 check "make grade with the textbook's Part 3a: full core points, and why make says Error 1 (exit $status, grader $ran)" \
