@@ -216,9 +216,37 @@ static void draw_content(Markup *m, const FigView *v, const RayFig *f, double aw
         svg_mark_got(m, fig_px(v, ag), y0);
 }
 
-void ray_figure(Markup *m, const RayFig *f)
+/* How many times heights off the ray are stretched to draw a plane that
+ * the ray meets far away at a grazing angle: 1 when the plane's height
+ * above e, C / B, is at least 1/20 of the distance along the ray to the
+ * expected hit (else the ray is drawn on the plane, and the hit looks like
+ * a point of it); else 1, 2 or 5 times a power of ten, the largest that
+ * makes the height at most 1/3 of that distance. */
+static double line_stretch(const RayFig *f)
+{
+    if (!f->has_line || !f->want_hit || !(f->line_B != 0))
+        return 1;
+    double along = fabs(f->want_t * f->rlen), h = fabs(f->line_C / f->line_B);
+    if (!(h > 0) || !(h < along / 20) || !isfinite(along))
+        return 1;
+    double x = along / 3 / h, k = pow(10, floor(log10(x)));
+    k *= x >= 5 * k ? 5 : x >= 2 * k ? 2 : 1;
+    return isfinite(k) && k > 1 ? k : 1;
+}
+
+void ray_figure(Markup *m, const RayFig *given)
 {
     char buf[64], buf2[64];
+    /* a grazing plane is drawn with heights stretched: b becomes k b, so
+     * the line A a + B b = C becomes A a + (B / k) b = C */
+    const double stretch = line_stretch(given);
+    RayFig stretched;
+    const RayFig *f = given;
+    if (stretch > 1) {
+        stretched = *given;
+        stretched.line_B = given->line_B / stretch;
+        f = &stretched;
+    }
     double aw = f->want_hit ? f->want_t * f->rlen : NAN;
     double ag = f->got_known && f->got_hit ? f->got_t * f->rlen : NAN;
     const RayCircle *tc = f->target >= 0 && f->target < f->ncircles ? &f->circles[f->target] : NULL;
@@ -423,6 +451,11 @@ void ray_figure(Markup *m, const RayFig *f)
                              tc->b < tc->R ? "inside" : "outside");
             }
             svg_text(m, v->px0 + 6, v->py0 + v->ph - 8, "start", 11, COL_NOTE, false, "%s", note);
+        } else if (stretch > 1) {
+            /* on the side of the ray away from the plane at e */
+            bool below = f->line_C / f->line_B < 0;
+            svg_text(m, v->px0 + 6, below ? v->py0 + 16 : v->py0 + v->ph - 8, "start", 12, "#7a4fbf", true,
+                     "heights off the ray stretched %s times", fig_times(buf, sizeof buf, stretch));
         }
     }
     /* a returned hit off the figure */

@@ -79,7 +79,7 @@ sed 's/^parts .*/parts 4 5/' tests/weights.conf >"$only45"
 mkdir "$tmp/subs" "$tmp/subs45"
 core="p1-w-h-swapped p2-y-not-flipped p3a-far-root p3a-tangent-miss p3b-first-hit textbook
       hostile-compile-error hostile-missing-file hostile-segfault warn-unused"
-flat="p4-hits-behind p4-one-sided p5-one-sided p5-strict-edges"
+flat="p4-hits-behind p4-one-sided p4-epsilon p5-one-sided p5-strict-edges"
 for name in $core $flat; do
     dir=tests/selftest/$name
     case " $flat " in *" $name "*) to=$tmp/subs45/$name ;; *) to=$tmp/subs/$name ;; esac
@@ -321,6 +321,54 @@ check "Part 4's figure, the normal along the ray: it is drawn in the window, off
     normal_shown "$page/p4-one-sided.html" "both sides of the plane count"
 check "Part 4's figure, the plane's nearest point at the window's top: the normal is drawn in the window" \
     normal_shown "$page/p4-one-sided.html" "hits and misses"
+# A grazing ray meets the plane far away: drawn to scale, the plane lies
+# on the ray and the hit looks like a point of it (it once did).  Heights
+# are stretched, and the figure says by how much, F: the plane's line in
+# the main window then rises or falls 30 pixels or more, crosses the ray
+# where the expected hit is marked, and its slope over F is the true
+# tangent of the angle between the ray and the plane, worked out here from
+# the case's input (r.n over |r| |n|).
+grazing_drawn() {
+    awk -v head="Part 4: $2<span" '
+    function attr(s, name) {
+        if (!match(s, " " name "=\"[^\"]*\"")) return ""
+        return substr(s, RSTART + length(name) + 3, RLENGTH - length(name) - 4) + 0
+    }
+    index($0, head) { on = 1; next }
+    !on { next }
+    /<svg x=/ && !seen { seen = inwin = 1; next }
+    inwin && /^<\/svg>/ { inwin = 0 }
+    inwin && /stroke-width="3"/ { x1 = attr($0, "x1"); y1 = attr($0, "y1"); x2 = attr($0, "x2"); y2 = attr($0, "y2") }
+    inwin && /stroke-width="1.6"/ && attr($0, "y1") == attr($0, "y2") { axis = attr($0, "y1") }
+    inwin && /fill="#1f5fbf"/ && /<circle/ { want = attr($0, "cx") }
+    />heights off the ray stretched / { F = $0; sub(/.*stretched /, "", F); sub(/ times.*/, "", F); F += 0 }
+    /input: *p[.]x = / {
+        line = $0
+        sub(/.*input: */, "", line)
+        k = split(line, part, ", ")
+        for (i = 1; i <= k; i++) { split(part[i], nv, " = "); val[nv[1]] = nv[2] + 0 }
+        rn = val["r.x"] * val["n.x"] + val["r.y"] * val["n.y"] + val["r.z"] * val["n.z"]
+        rr = val["r.x"] ^ 2 + val["r.y"] ^ 2 + val["r.z"] ^ 2
+        nn = val["n.x"] ^ 2 + val["n.y"] ^ 2 + val["n.z"] ^ 2
+        c = rn / sqrt(rr * nn); if (c < 0) c = -c
+        exit
+    }
+    END {
+        dy = y2 - y1; if (dy < 0) dy = -dy
+        dx = x2 - x1; if (dx < 0) dx = -dx
+        cross = y2 != y1 ? x1 + (axis - y1) * (x2 - x1) / (y2 - y1) : -1e9
+        off = cross - want; if (off < 0) off = -off
+        ratio = F > 0 && c > 0 ? (dy / dx / F) / (c / sqrt(1 - c * c)) : 0
+        printf "F %s, %.0f px tall, %.2f px from the mark, slope / F / tan %.4f\n", F, dy, off, ratio
+        exit !(F > 1 && dy >= 30 && off <= 1.5 && ratio > 0.99 && ratio < 1.01)
+    }' "$1"
+}
+grazing_drawn "$page/p4-epsilon.html" "hard: grazing ray, 1e-12..1e-3 off the plane" >"$tmp/grazing"
+grazing=$?
+check "Part 4's figure, a grazing ray: heights stretched and said so, the plane's slope true to F ($(cat "$tmp/grazing"))" \
+    [ "$grazing" -eq 0 ]
+check "Part 4's figure, a plane not grazed: drawn to scale" \
+    sh -c "! grep -q 'heights off the ray stretched' '$page/p4-hits-behind.html'"
 check "the scores are at the top" sh -c "grep -n 'id=\"scores\"' '$page/p3a-far-root.html' | \
     awk -F: '{ exit !(\$1 < 80) }'"
 
