@@ -367,7 +367,8 @@ prairielearn:
 
 # The student kit: skeletons, framework, scenes and their reference renders,
 # the grader with the public tests, the handouts.  No solutions/, no hidden
-# tests, no oracle, and none of the instructor's test material.
+# tests, no oracle, and none of the instructor's test material (nor the
+# hidden cases' seed from tests/weights.conf).
 KIT_DIR    = out/student-kit
 student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 	rm -rf $(KIT_DIR) && mkdir -p $(KIT_DIR)/tests/unit $(KIT_DIR)/labs/reference
@@ -375,7 +376,9 @@ student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 	cp handouts/student-readme.md $(KIT_DIR)/README.md
 	mkdir -p $(KIT_DIR)/.github/workflows
 	sh tests/classroom/workflow.sh >$(KIT_DIR)/.github/workflows/classroom.yml
-	cp -R tests/grader tests/public tests/tools tests/weights.conf tests/run.sh $(KIT_DIR)/tests/
+	cp -R tests/grader tests/public tests/tools tests/run.sh $(KIT_DIR)/tests/
+	sed 's/^[ 	]*seed[ 	].*/# seed: the hidden cases'"'"' seed is the instructor'"'"'s (the student kit has no hidden tests)/' \
+	    tests/weights.conf >$(KIT_DIR)/tests/weights.conf
 	mkdir -p $(KIT_DIR)/tests/grader/shipped && cp labs/raytracer.h labs/vec3.h $(KIT_DIR)/tests/grader/shipped/
 	cp tests/unit/check.h tests/unit/test_vec3.c tests/unit/test_png.c tests/unit/test_scene.c \
 	   $(KIT_DIR)/tests/unit/

@@ -3,7 +3,8 @@
 # tarball into an empty directory (with the kit's own pack, not tar), and
 # there:
 #   - nothing of solutions/, tests/hidden, tests/oracle, tests/selftest or
-#     tests/bench, and no line of the solutions' function bodies in any file;
+#     tests/bench, nor the hidden cases' seed, and no line of the
+#     solutions' function bodies in any file;
 #   - the handouts, their figures and a reference render of every scene;
 #   - .gitattributes (LF in every checkout, tests/suites/line_ends.sh) and
 #     a .gitignore that keeps its builds out of a student's repository;
@@ -126,6 +127,14 @@ done
 for f in labs/part*.c tests/public/*.tests .gitattributes .gitignore; do
     check "the kit lacks $f" cmp -s "$f" "$kit/$f"
 done
+# The hidden cases' seed is the instructor's: the kit's weights.conf is
+# the instructor's without it.
+grep -v '^[ 	]*seed[ 	]' tests/weights.conf >"$tmp/weights.want"
+grep -v '^# seed: the hidden cases' "$kit/tests/weights.conf" >"$tmp/weights.got"
+check "the kit's tests/weights.conf holds the hidden cases' seed" \
+    sh -c "! grep -q '^[ 	]*seed[ 	]' '$kit/tests/weights.conf' && grep -q '^# seed: the hidden cases' '$kit/tests/weights.conf'"
+check "the kit's tests/weights.conf differs from the instructor's elsewhere than the seed" \
+    cmp -s "$tmp/weights.want" "$tmp/weights.got"
 for s in labs/scenes/*.scene; do
     name=$(basename "$s" .scene)
     check "the kit lacks $s" cmp -s "$s" "$kit/$s"
