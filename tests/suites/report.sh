@@ -230,16 +230,19 @@ check "Part 5's mesh tests: the mesh seen along the ray" grep -q 'The mesh seen 
 check "Part 1's figure: the frustum from the side" grep -q 'From the side' "$page/p1-w-h-swapped.html"
 check "Part 2's figure: the pixel grid" grep -q "pixels around pixel" "$page/p2-y-not-flipped.html"
 check "Part 4's figure: the plane edge on" grep -q 'plane seen edge on' "$page/p4-hits-behind.html"
+# An awk function for the checks of figures below: attr(s, name), the
+# number in the attribute name="..." of the tag on the line s, or "".
+awk_attr='
+    function attr(s, name) {
+        if (!match(s, " " name "=\"[^\"]*\"")) return ""
+        return substr(s, RSTART + length(name) + 3, RLENGTH - length(name) - 4) + 0
+    }'
 # normal_shown PAGE TEST: in the plane figure of Part 4's TEST on PAGE, the
 # label "normal n" lies inside the main window and the normal's arrow
 # starts 20 pixels or more off the ray's line: where the normal points
 # along the ray, it was once drawn under the ray, its label past the frame.
 normal_shown() {
-    awk -v head="Part 4: $2</h4>" '
-    function attr(s, name) {
-        if (!match(s, " " name "=\"[^\"]*\"")) return ""
-        return substr(s, RSTART + length(name) + 3, RLENGTH - length(name) - 4) + 0
-    }
+    awk -v head="Part 4: $2</h4>" "$awk_attr"'
     index($0, head) { on = 1; next }
     !on { next }
     /<svg x=/ && !seen { seen = inwin = 1; wx = attr($0, "x"); wy = attr($0, "y"); ww = attr($0, "width"); wh = attr($0, "height"); next }
@@ -260,11 +263,7 @@ normal_shown() {
 # the winding of a, b, c, in every such figure of two pages, gives the
 # sign of det = (b - a).(r x (c - a)), worked out here from the case's
 # input (at least one of each sign).
-awk '
-    function attr(s, name) {
-        if (!match(s, " " name "=\"[^\"]*\"")) return ""
-        return substr(s, RSTART + length(name) + 3, RLENGTH - length(name) - 4) + 0
-    }
+awk "$awk_attr"'
     index($0, "Part 5: both sides count</h4>") { on = 1 }
     on && />[abc]<\/text>/ { v = substr($0, index($0, "</text>") - 1, 1); x[v] = attr($0, "x"); y[v] = attr($0, "y"); n++ }
     on && /<\/figure>/ { exit }
@@ -329,11 +328,7 @@ check "Part 4's figure, the plane's nearest point at the window's top: the norma
 # tangent of the angle between the ray and the plane, worked out here from
 # the case's input (r.n over |r| |n|).
 grazing_drawn() {
-    awk -v head="Part 4: $2<span" '
-    function attr(s, name) {
-        if (!match(s, " " name "=\"[^\"]*\"")) return ""
-        return substr(s, RSTART + length(name) + 3, RLENGTH - length(name) - 4) + 0
-    }
+    awk -v head="Part 4: $2<span" "$awk_attr"'
     index($0, head) { on = 1; next }
     !on { next }
     /<svg x=/ && !seen { seen = inwin = 1; next }
