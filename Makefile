@@ -38,7 +38,9 @@ KIT_AR    ?= $(if $(filter Linux,$(SYSTEM)),$(firstword $(wildcard $(addsuffix /
 # files out where core.autocrlf is set and no .gitattributes says LF (the
 # kit's does; a template made from an older kit may not): the shell cannot
 # run its scripts, and the grader refuses its own test files.  Say so, and
-# how to mend it without losing work, before anything else fails.
+# how to mend it without losing work, before anything else fails ($(empty)
+# keeps the commands' indent, which make would strip).
+empty :=
 ifneq ($(shell grep -l "$$(printf '\r')" tests/run.sh 2>/dev/null),)
 $(info this copy of the kit has Windows line ends (CRLF), which the shell cannot run:)
 $(info Git for Windows wrote them when it checked the files out.  To mend the copy,)
