@@ -231,7 +231,7 @@ static double line_stretch(const RayFig *f)
         return 1;
     double x = along / 3 / h, k = pow(10, floor(log10(x)));
     k *= x >= 5 * k ? 5 : x >= 2 * k ? 2 : 1;
-    return isfinite(k) && k > 1 ? k : 1;
+    return isfinite(k) ? k : 1;      /* at least 5: x is more than 20 / 3 */
 }
 
 void ray_figure(Markup *m, const RayFig *given)

@@ -75,10 +75,7 @@ fi
 
 # A template made without .gitattributes: the clone has CRLF, make says
 # so, and its commands, run as written after the student commits, mend it.
-mkdir -p "$tmp/old"
-(cd "$tmp/old" && mkdir -p labs tests && cp "$top/tests/run.sh" tests/ &&
-    cp "$top/labs/part1_image_plane.c" labs/) &&
-    (cd "$tmp/old" && g init -q && g -c core.autocrlf=false add -A && g commit -qm kit) >"$tmp/out" 2>&1
+repo "$tmp/old" tests/run.sh labs/part1_image_plane.c >"$tmp/out" 2>&1
 g -c core.autocrlf=true clone -q "$tmp/old" "$tmp/stu" >>"$tmp/out" 2>&1
 check "without .gitattributes, a clone made with core.autocrlf has CRLF" grep -q "$cr" "$tmp/stu/tests/run.sh"
 (cd "$tmp/stu" && make -f "$top/Makefile" render) >"$tmp/out" 2>&1 </dev/null
