@@ -119,7 +119,7 @@ bool hard_check3b_color(const HardCase3b *c, Vec3 got);
 
 /* ---- Part 4: plane_intersect (hard_flat.c) --------------------------------- */
 
-#define HARD_PART4_FAMILIES 6
+#define HARD_PART4_FAMILIES 8
 
 typedef struct {
     char family[HARD_FAMILY_LEN];

@@ -16,7 +16,9 @@ static const char *const fam4[HARD_PART4_FAMILIES] = {
     "origin just off the plane, 1e-15..1e-6",
     "far from the world's origin, 1e3..1e9",
     "normal and direction lengths 2^-200..2^200",
-    "parallel or in the plane (exact dyadic)",
+    "parallel, in front of the plane (exact dyadic)",
+    "parallel, behind the plane (exact dyadic)",
+    "in the plane (exact dyadic)",
 };
 
 /* A dyadic number k / 16, |k| <= n. */
@@ -71,20 +73,23 @@ static void gen4(uint64_t *s, int fam, bool want_hit, Plane *pl, Ray *ray)
         Vec3 towards = vec3_scale(nh, (h > 0) == want_hit ? -1 : 1);
         d = vec3_scale(vec3_add(towards, side), draw_len(s));
     } else {                                        /* exact dyadic: parallel, in the plane */
+        /* n and r lie along axes k and j, so that r.n is an exact zero,
+         * and +0 whatever the order of the sum (the third axis adds
+         * +0 * +0). The height h of e above the plane, along n, is
+         * positive (fam 5, in front), negative (6, behind) or zero (7):
+         * dividing by r.n unchecked gives -inf, +inf and NaN, and every
+         * round has each. */
         int k = draw_int(s, 0, 2), j = (k + draw_int(s, 1, 2)) % 3;
-        n = axis(k, ldexp(hard_rng_next(s) % 2 ? 1 : -1, draw_int(s, -4, 4)));
+        double nk = ldexp(hard_rng_next(s) % 2 ? 1 : -1, draw_int(s, -4, 4));
+        n = axis(k, nk);
         p = vec3(dyadic(s, 64), dyadic(s, 64), dyadic(s, 64));
         o = vec3(dyadic(s, 64), dyadic(s, 64), dyadic(s, 64));
-        if (hard_rng_next(s) % 2) {                 /* in the plane */
-            double *ok = k == 0 ? &o.x : k == 1 ? &o.y : &o.z;
-            *ok = k == 0 ? p.x : k == 1 ? p.y : p.z;
-        }
-        double dj = ldexp(hard_rng_next(s) % 2 ? 1 : -1, draw_int(s, -4, 4));
-        d = axis(j, dj);
-        if (want_hit) {                             /* tilted towards the plane */
-            double gap = (k == 0 ? p.x - o.x : k == 1 ? p.y - o.y : p.z - o.z);
-            d = vec3_add(d, axis(k, gap == 0 ? 0 : gap > 0 ? 0.5 : -0.5));
-        }
+        double h = fam == 7 ? 0 : draw_int(s, 1, 64) / 16.0 * (fam == 5 ? 1 : -1);
+        double *ok = k == 0 ? &o.x : k == 1 ? &o.y : &o.z;
+        *ok = (k == 0 ? p.x : k == 1 ? p.y : p.z) + (nk > 0 ? h : -h);
+        d = axis(j, ldexp(hard_rng_next(s) % 2 ? 1 : -1, draw_int(s, -4, 4)));
+        if (want_hit && h != 0)                     /* tilted towards the plane */
+            d = vec3_add(d, axis(k, (nk > 0) == (h > 0) ? -0.5 : 0.5));
     }
     pl->point = p;
     pl->normal = n;

@@ -91,10 +91,15 @@ static void plane_hints(Case *c, const double p[3], const double n[3], const dou
     if (rn != 0 && t < 0)
         hint_hit(c, "a hit at or behind the ray's origin (t <= 0): only t > 0 is a hit", true, t);
     /* No check of r.n, and "t <= 0: miss": a quotient by r.n = 0 (+infinity,
-     * or NaN for 0 / 0) and NaN input both get through. */
+     * or NaN for 0 / 0) and NaN input both get through.  No check of r.n,
+     * and "!(t > 0): miss": only +infinity does (a ray parallel to the
+     * plane, off it, on the side where (p - e).n / +0 is +infinity). */
     if (!(t <= 0) && !(t < INFINITY))
         hint_hit(c, "r.n = 0 (parallel to the plane, or in it) is a miss: check it before dividing; and "
                     "\"t <= 0: miss\" lets NaN through: write it as !(t > 0)", true, t);
+    if (t == INFINITY)
+        hint_hit(c, "a hit at t = inf is no point of the ray: r.n = 0 (a ray parallel to the plane) is a "
+                    "miss: check it before dividing, or require t < inf", true, t);
     if (right && rn > 0)
         hint_hit(c, "the plane has two sides: a ray that meets it from behind (r.n > 0) hits too", false, 0);
     /* The other side alone: Scratchapixel's test, denom = n.r > 1e-6, takes

@@ -495,6 +495,42 @@ static void test_plane_methods_on_hard_cases(void)
     free(cases);
 }
 
+/* Dividing by r.n unchecked, with t = (p - e).n / (r.n) or t = (e - p).n / -(r.n)
+ * (the same t, written the other way round), and t <= 0 or !(t > 0) for
+ * "behind". */
+static bool plane_unchecked(const Plane *P, const Ray *R, double *t, bool flipped, bool nan_safe)
+{
+    double tt = flipped ? vec3_dot(vec3_sub(R->origin, P->point), P->normal) / -vec3_dot(R->direction, P->normal)
+                        : vec3_dot(vec3_sub(P->point, R->origin), P->normal) / vec3_dot(R->direction, P->normal);
+    if (nan_safe ? !(tt > 0) : tt <= 0)
+        return false;
+    *t = tt;
+    return true;
+}
+
+/* The hidden tests hold one round of hard cases: whatever the seed, that
+ * round must fail every way of dividing by r.n unchecked. */
+static void test_every_round_catches_an_unchecked_division(void)
+{
+    HardCase4 cases[2 * HARD_PART4_FAMILIES];
+    for (uint64_t seed = 1; seed <= 400; seed++) {
+        hard_part4(seed * 7919, cases, 2 * HARD_PART4_FAMILIES);
+        for (int way = 0; way < 4; way++) {
+            int failed = 0;
+            for (int k = 0; k < 2 * HARD_PART4_FAMILIES; k++) {
+                double t = 0;
+                bool hit = plane_unchecked(&cases[k].plane, &cases[k].ray, &t, way & 1, way & 2);
+                failed += !hard_check4(&cases[k], hit, t);
+            }
+            CHECK_MSG(failed > 0, "seed %llu: a round of hard cases passes t = %s unchecked, %s",
+                      (unsigned long long)(seed * 7919), way & 1 ? "(e - p).n / -(r.n)" : "(p - e).n / (r.n)",
+                      way & 2 ? "!(t > 0): miss" : "t <= 0: miss");
+            if (failed == 0)
+                return;
+        }
+    }
+}
+
 /* ---- closed meshes: no ray goes through the reference ------------------------- */
 
 /* A ray goes through a closed mesh where it enters when no triangle is hit
@@ -557,6 +593,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_band_holds_next_to_edges),
     CHECK_TEST(test_plane_methods_on_hard_cases),
     CHECK_TEST(test_reference_is_watertight),
+    CHECK_TEST(test_every_round_catches_an_unchecked_division),
     CHECK_TEST(test_oracle_mesh),
 };
 
