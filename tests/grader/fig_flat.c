@@ -136,6 +136,7 @@ void fig_planehit(Markup *m, const Test *t, const Case *c, const double *got)
         f.got_text = "your code: neither true nor false";
     f.note = along < 0 ? "The ray comes at the plane from the side its normal points to (r.n < 0)."
              : along > 0 ? "The ray comes at the plane from behind, against its normal (r.n > 0)."
+             : f.line_C == 0 ? "The ray is parallel to the plane (r.n = 0), and lies in it ((p - e).n = 0)."
              : "The ray is parallel to the plane (r.n = 0).";
     ray_figure(m, &f);
 }

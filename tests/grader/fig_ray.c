@@ -92,20 +92,41 @@ static void line_foot(const RayFig *f, double *fa, double *fb)
     *fb = B * C;
 }
 
-/* The normal's arrow, drawn from (px, py): 38 pixels along the normal,
+/* The normal's arrow, drawn from (px, py): len pixels along the normal,
  * (ux, uy) in pixels (y down), to (*tx, *ty); its label "normal n" past
  * the tip, on the side the arrow points to, from *lx0 to *lx1 with its
  * baseline at *ly. */
-enum { NORMAL_LABEL_W = 56 };
-static void normal_arrow(double px, double py, double ux, double uy, double *tx, double *ty, double *lx0,
-                         double *lx1, double *ly)
+enum { NORMAL_LABEL_W = 56, NORMAL_LEN = 38, NORMAL_LEN_MIN = 16 };
+static void normal_arrow(double px, double py, double ux, double uy, double len, double *tx, double *ty,
+                         double *lx0, double *lx1, double *ly)
 {
-    *tx = px + 38 * ux;
-    *ty = py + 38 * uy;
-    double qx = px + 44 * ux;
+    *tx = px + len * ux;
+    *ty = py + len * uy;
+    double qx = px + (len + 6) * ux;
     *lx0 = ux >= 0 ? qx + 4 : qx - 4 - NORMAL_LABEL_W;
     *lx1 = *lx0 + NORMAL_LABEL_W;
-    *ly = py + 44 * uy + 4;
+    *ly = py + (len + 6) * uy + 4;
+}
+
+/* The normal drawn where no point of the plane's line has room for it
+ * (normal_anchor: a plane along the window's edge, its normal pointing
+ * out): the arrow shortened until its tip is inside the window (to
+ * NORMAL_LEN_MIN pixels at the least), and its label, if it does not fit
+ * past the tip, beside it, on the side with room. */
+static void normal_squeeze(const FigView *v, double px, double py, double ux, double uy, double *tx, double *ty,
+                           double *lx0, double *lx1, double *ly)
+{
+    double x0 = v->px0 + 4, x1 = v->px0 + v->pw - 4, y0 = v->py0 + 4, y1 = v->py0 + v->ph - 4;
+    double len = NORMAL_LEN;
+    while (len > NORMAL_LEN_MIN && (px + len * ux < x0 || px + len * ux > x1 || py + len * uy < y0 ||
+                                    py + len * uy > y1))
+        len -= 2;
+    normal_arrow(px, py, ux, uy, len, tx, ty, lx0, lx1, ly);
+    if (*lx0 >= x0 && *lx1 <= x1 && *ly - 10 >= y0 && *ly <= y1)
+        return;
+    *lx0 = *tx + 6 + NORMAL_LABEL_W <= x1 ? *tx + 6 : *tx - 6 - NORMAL_LABEL_W;
+    *lx1 = *lx0 + NORMAL_LABEL_W;
+    *ly = fmin(fmax(*ty + 4, y0 + 10), y1);
 }
 
 /* Where on the plane's line (foot (fa, fb), direction (da, db)) the normal
@@ -125,7 +146,7 @@ static bool normal_anchor(const FigView *v, const RayFig *f, double fa, double f
     for (int k = 0; k <= 32; k++) {
         double sk = sc + S * (k / 32.0 - 0.5), a = fa + sk * da, b = fb + sk * db;
         double px = fig_px(v, a), py = fig_py(v, b), tx, ty, lx0, lx1, ly;
-        normal_arrow(px, py, ux, uy, &tx, &ty, &lx0, &lx1, &ly);
+        normal_arrow(px, py, ux, uy, NORMAL_LEN, &tx, &ty, &lx0, &lx1, &ly);
         bool fits = px > x0 && px < x1 && py > y0w && py < y1w && tx > x0 && tx < x1 && ty > y0w &&
                     ty < y1w && lx0 > x0 && lx1 < x1 && ly - 10 > y0w && ly < y1w;
         double off = fmin(fmin(fabs(py - y0), fabs(ty - y0)), 50);
@@ -170,9 +191,13 @@ static void draw_content(Markup *m, const FigView *v, const RayFig *f, double aw
                                                               + fabs(fb - v->cy);
         fig_segment(m, v, fa - far * da, fb - far * db, fa + far * da, fb + far * db, "#333333", 3, NULL);
         double na = fa, nb = fb;
-        if (main && (normal_anchor(v, f, fa, fb, da, db, fig_py(v, 0), &na, &nb) || fig_inside(v, fa, fb))) {
+        bool room = main && normal_anchor(v, f, fa, fb, da, db, fig_py(v, 0), &na, &nb);
+        if (room || (main && fig_inside(v, fa, fb))) {
             double px = fig_px(v, na), py = fig_py(v, nb), tx, ty, lx0, lx1, ly;
-            normal_arrow(px, py, f->line_A / n, -f->line_B / n, &tx, &ty, &lx0, &lx1, &ly);
+            if (room)
+                normal_arrow(px, py, f->line_A / n, -f->line_B / n, NORMAL_LEN, &tx, &ty, &lx0, &lx1, &ly);
+            else
+                normal_squeeze(v, px, py, f->line_A / n, -f->line_B / n, &tx, &ty, &lx0, &lx1, &ly);
             svg_arrow(m, px, py, tx, ty, "#333333", 1.4, NULL);
             svg_text(m, lx0, ly, "start", 12, COL_TEXT, false, "normal n");
         }
@@ -458,8 +483,11 @@ void ray_figure(Markup *m, const RayFig *given)
                      "heights off the ray stretched %s times", fig_times(buf, sizeof buf, stretch));
         }
     }
-    /* a returned hit off the figure */
-    if (f->got_known && f->got_hit && !got_shown) {
+    /* a returned hit off the figure, or at a t that is not a number */
+    if (f->got_known && f->got_hit && !got_shown && isnan(f->got_t)) {
+        svg_text(m, main.px0 + main.pw - 6, fig_py(&main, 0) + 34, "end", 12, COL_GOT, true,
+                 "your t = NaN: no point of the ray");
+    } else if (f->got_known && f->got_hit && !got_shown) {
         bool ahead = !(ag < 0) && !(f->got_t < 0);
         double y0 = fig_py(&main, 0);
         double xe = ahead ? main.px0 + main.pw - 6 : main.px0 + 6;

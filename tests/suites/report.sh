@@ -79,7 +79,8 @@ sed 's/^parts .*/parts 4 5/' tests/weights.conf >"$only45"
 mkdir "$tmp/subs" "$tmp/subs45"
 core="p1-w-h-swapped p2-y-not-flipped p3a-far-root p3a-tangent-miss p3b-first-hit textbook
       hostile-compile-error hostile-missing-file hostile-segfault warn-unused"
-flat="p4-hits-behind p4-one-sided p4-float p5-one-sided p5-strict-edges"
+flat="p4-hits-behind p4-one-sided p4-float p4-no-parallel-check p4-no-parallel-check-nan-safe"
+flat="$flat p5-one-sided p5-strict-edges"
 for name in $core $flat; do
     dir=tests/selftest/$name
     case " $flat " in *" $name "*) to=$tmp/subs45/$name ;; *) to=$tmp/subs/$name ;; esac
@@ -237,12 +238,15 @@ awk_attr='
         if (!match(s, " " name "=\"[^\"]*\"")) return ""
         return substr(s, RSTART + length(name) + 3, RLENGTH - length(name) - 4) + 0
     }'
-# normal_shown PAGE TEST: in the plane figure of Part 4's TEST on PAGE, the
-# label "normal n" lies inside the main window and the normal's arrow
-# starts 20 pixels or more off the ray's line: where the normal points
-# along the ray, it was once drawn under the ray, its label past the frame.
+# normal_shown PAGE TEST: in the plane figure of Part 4's TEST on PAGE (the
+# test's name and what follows it in its heading: </h4>, or <span for a
+# tagged test), the label "normal n" lies inside the main window and the
+# normal's arrow starts 20 pixels or more off the ray's line: where the
+# normal points along the ray, it was once drawn under the ray, its label
+# past the frame; where the plane lies along the window's top and its
+# normal points out, its label was drawn across the frame.
 normal_shown() {
-    awk -v head="Part 4: $2</h4>" "$awk_attr"'
+    awk -v head="Part 4: $2" "$awk_attr"'
     index($0, head) { on = 1; next }
     !on { next }
     /<svg x=/ && !seen { seen = inwin = 1; wx = attr($0, "x"); wy = attr($0, "y"); ww = attr($0, "width"); wh = attr($0, "height"); next }
@@ -317,9 +321,22 @@ sides=$?
 check "Part 4's note on the side the ray comes from gives r.n's sign, worked out from each case (wrong, r.n > 0, r.n < 0: $(cat "$tmp/sides"))" \
     [ "$sides" -eq 0 ]
 check "Part 4's figure, the normal along the ray: it is drawn in the window, off the ray" \
-    normal_shown "$page/p4-one-sided.html" "both sides of the plane count"
+    normal_shown "$page/p4-one-sided.html" "both sides of the plane count</h4>"
 check "Part 4's figure, the plane's nearest point at the window's top: the normal is drawn in the window" \
-    normal_shown "$page/p4-one-sided.html" "hits and misses"
+    normal_shown "$page/p4-one-sided.html" "hits and misses</h4>"
+check "Part 4's figure, a plane along the window's top, its normal pointing out: the normal is drawn in the window" \
+    normal_shown "$page/p4-no-parallel-check-nan-safe.html" "hard: parallel, behind the plane (exact dyadic)<span"
+# A ray in the plane answered with a hit at t = NaN (0 / 0): the figure says
+# the ray lies in the plane, and that NaN is no point of the ray (it once
+# said "off the figure", as of a t too large to draw).
+check "Part 4's figure, a ray in the plane and a hit at t = NaN: both said as such" \
+    awk 'index($0, "Part 4: hard: in the plane (exact dyadic)<span") { on = 1 }
+         !on { next }
+         /lies in it [(][(]p - e[)][.]n = 0[)]/ { lies = 1 }
+         /your t = NaN: no point of the ray/ { nan = 1 }
+         /off the figure/ { off = 1 }
+         /<\/figure>/ { exit }
+         END { exit !(lies && nan && !off) }' "$page/p4-no-parallel-check.html"
 # A grazing ray meets the plane far away: drawn to scale, the plane lies
 # on the ray and the hit looks like a point of it (it once did).  Heights
 # are stretched, and the figure says by how much, F: the plane's line in
