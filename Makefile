@@ -427,7 +427,8 @@ UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
 # is made again whenever the libraries are, as the program was before.
 # (Not the grader's units nor test_serve: their own rules are below.)
 GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers lmsname terminal
-UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) $(BUILD)/tests/test_serve,$(UNIT_BIN))
+UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) $(BUILD)/tests/test_serve \
+                         $(BUILD)/tests/test_hidden,$(UNIT_BIN))
 $(UNIT_PLAIN:$(BUILD)/tests/%=$(BUILD)/tests/obj/%.o): $(BUILD)/tests/obj/%.o: tests/unit/%.c \
                           tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS) | $$(@D)/.
 	$(CC) $(CFLAGS) $(THREADS) -Ilabs -c $< -o $@
@@ -465,6 +466,19 @@ $(BUILD)/tests/test_serve: tests/unit/test_serve.c tests/unit/check.h $(SERVE_SR
 $(ASAN)/tests/test_serve: tests/unit/test_serve.c tests/unit/check.h $(SERVE_SRC) $(SERVE_HDR) \
                           $(ASAN)/kit/libkit.a | $$(@D)/.
 	$(CC) $(SAN_LINK) -Ilabs $< $(SERVE_SRC) $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
+
+# The hidden tests' unit test (instructor's kit only) links them, the
+# oracle, the grader's library (the tests' lists and their judge) and the
+# reference, whose ray_color it holds up against the mistakes.
+$(BUILD)/tests/test_hidden: tests/unit/test_hidden.c tests/unit/check.h $(BUILD)/grader/hidden.o $(REF_OBJ) \
+                            $(BUILD)/oracle/liboracle.a $(BUILD)/grader/libgrader.a $(BUILD)/tools/libtools.a \
+                            $(BUILD)/kit/libkit.a | $$(@D)/.
+	$(CC) $(CFLAGS) -Ilabs $(filter-out %.h,$^) -o $@ $(LDLIBS)
+$(ASAN)/tests/test_hidden: tests/unit/test_hidden.c tests/unit/check.h $(ASAN)/grader/hidden.o $(REF_ASAN) \
+                           $(ASAN)/oracle/liboracle.a $(GRADER_LIB_SRC:tests/grader/%.c=$(ASAN)/grader/%.o) \
+                           $(ASAN)/tools/libtools.a \
+                           $(ASAN)/kit/libkit.a | $$(@D)/.
+	$(CC) $(SAN_LINK) -Ilabs $(filter-out %.h,$^) -o $@ $(LDLIBS)
 
 # ---- bench: speed against accuracy (tests/bench) ----------------------------
 # `make bench` writes out/bench/: results.csv, report.md, plot.svg and more

@@ -11,6 +11,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #define V(x, y, z) ((const double[3]){ x, y, z })
 
@@ -27,6 +28,84 @@ static void random_direction(TgRandom *g, double len, double r[3])
 {
     double z = tg_uniform(g, -1, 1), phi = tg_uniform(g, 0, 2 * M_PI), s = sqrt(1 - z * z);
     r[0] = len * s * cos(phi), r[1] = len * s * sin(phi), r[2] = len * z;
+}
+
+/* The distance from c to the line of the ray from the origin along r. */
+static double off_line(const double c[3], const double r[3])
+{
+    double rr = r[0] * r[0] + r[1] * r[1] + r[2] * r[2], cr = (c[0] * r[0] + c[1] * r[1] + c[2] * r[2]) / rr;
+    double q[3] = { c[0] - cr * r[0], c[1] - cr * r[1], c[2] - cr * r[2] };
+    return sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+}
+
+/* Part 3b's random scene: 8 spheres in four pairs, each pair's far sphere
+ * straight behind its near one as the eye sees them, listed near first in
+ * two pairs and far first in the other two; and 60 rays from the origin.
+ * Whatever the seed, 16 rays pass through both spheres of a pair (so that
+ * the nearest hit is neither always the first sphere listed nor always
+ * the last), 12 hit nothing (so that the background counts), and 32 go
+ * anywhere the spheres are.  The pairs lie one in each quadrant of the
+ * view, apart: seen from the eye, a sphere's edge is at most 0.21 radians
+ * from its centre (radius 2 at distance 9.6), and the pairs' directions
+ * are at least 0.49 radians apart, so a ray through one pair meets no
+ * other. */
+static void color_scene(Test *t, TgRandom *g)
+{
+    t->background[0] = 0.25, t->background[1] = 0.5, t->background[2] = 0.75;
+    double cn[4][3], Rn[4], Rf[4], cf[4][3], fit[4];
+    for (int q = 0; q < 4; q++) {
+        double u[3] = { (q % 2 ? 0.3 : -0.3) + tg_uniform(g, -0.04, 0.04),
+                        (q / 2 ? 0.3 : -0.3) + tg_uniform(g, -0.04, 0.04), -1 };
+        double zn = tg_uniform(g, 5, 9), zf = zn + tg_uniform(g, 4, 10);
+        Rn[q] = tg_uniform(g, 0.4, 0.9);
+        Rf[q] = tg_uniform(g, Rn[q], 2);
+        for (int k = 0; k < 3; k++)
+            cn[q][k] = zn * u[k], cf[q][k] = zf * u[k];
+        double dn = sqrt(cn[q][0] * cn[q][0] + cn[q][1] * cn[q][1] + cn[q][2] * cn[q][2]);
+        fit[q] = 0.8 * fmin(Rn[q] / dn, Rf[q] / (dn * zf / zn));   /* an angle inside both */
+    }
+    for (int s = 0; s < 8; s++) {
+        int q = s / 2;
+        bool near = (s % 2 == 0) == (q % 2 == 0);         /* near first in pairs 0 and 2 */
+        double col[3] = { (s + 1) / 8.0, (s % 3) / 2.0, (7 - s) / 7.0 };
+        test_add_sphere(t, near ? cn[q] : cf[q], near ? Rn[q] : Rf[q], col);
+    }
+    for (int k = 0; k < 16; k++) {                          /* through a pair */
+        int q = k % 4;
+        double u[3], r[3];
+        random_direction(g, 1, u);
+        double cu = (u[0] * cn[q][0] + u[1] * cn[q][1] + u[2] * cn[q][2]) /
+                    (cn[q][0] * cn[q][0] + cn[q][1] * cn[q][1] + cn[q][2] * cn[q][2]);
+        double w[3] = { u[0] - cu * cn[q][0], u[1] - cu * cn[q][1], u[2] - cu * cn[q][2] };
+        double wl = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        double dn = sqrt(cn[q][0] * cn[q][0] + cn[q][1] * cn[q][1] + cn[q][2] * cn[q][2]);
+        double a = tg_uniform(g, 0, fit[q]) * dn / (wl > 0 ? wl : 1);
+        for (int i = 0; i < 3; i++)
+            r[i] = cn[q][i] + a * w[i];
+        tg_color(t, V(0, 0, 0), r);
+    }
+    for (int k = 0; k < 12; k++) {                          /* between the spheres */
+        double r[3] = { 0, 0, 1 };
+        for (int tries = 0; tries < 200; tries++) {
+            double cand[3] = { tg_uniform(g, -0.6, 0.6), tg_uniform(g, -0.6, 0.6), -1 };
+            bool clear = true;
+            for (int s = 0; s < t->nspheres && clear; s++)
+                clear = off_line(t->spheres[s].c, cand) > 1.05 * t->spheres[s].R;
+            if (clear) {
+                memcpy(r, cand, sizeof r);
+                break;
+            }
+        }
+        if (r[2] > 0) {                                     /* none found: away from them all */
+            r[0] = tg_uniform(g, -0.6, 0.6);
+            r[1] = tg_uniform(g, -0.6, 0.6);
+        }
+        tg_color(t, V(0, 0, 0), r);
+    }
+    for (int k = 0; k < 32; k++) {                          /* anywhere */
+        double r[3] = { tg_uniform(g, -0.3, 0.3), tg_uniform(g, -0.3, 0.3), -1 };
+        tg_color(t, V(0, 0, 0), r);
+    }
 }
 
 void testgen_hidden(TestList *l, uint64_t seed)
@@ -108,17 +187,9 @@ void testgen_hidden(TestList *l, uint64_t seed)
         tg_camera(t, e, p);
     }
     t = hidden_test(l, PART3B, KIND_COLOR, "Part 3b: hidden: ray_color in a random scene of 8 spheres",
-                    "rays from the origin into overlapping spheres at random depths");
-    t->background[0] = 0.25, t->background[1] = 0.5, t->background[2] = 0.75;
-    for (int s = 0; s < 8; s++) {
-        double c[3] = { tg_uniform(&g, -3, 3), tg_uniform(&g, -3, 3), -tg_uniform(&g, 4, 20) };
-        double col[3] = { (s + 1) / 8.0, (s % 3) / 2.0, (7 - s) / 7.0 };
-        test_add_sphere(t, c, tg_uniform(&g, 0.5, 2.5), col);
-    }
-    for (int k = 0; k < 60; k++) {
-        double r[3] = { tg_uniform(&g, -0.3, 0.3), tg_uniform(&g, -0.3, 0.3), -1 };
-        tg_color(t, V(0, 0, 0), r);
-    }
+                    "rays from the origin through spheres one behind another, between the spheres, "
+                    "and at random");
+    color_scene(t, &g);
     Test *img = tg_image(l, "Part 3b: hidden: render the wide scene at 64 x 20", "labs/scenes/wide.scene", 64, 20);
     img->hidden = true;
     img = tg_image(l, "Part 3b: hidden: render the behind scene at 32 x 24", "labs/scenes/behind.scene", 32, 24);

@@ -1,0 +1,122 @@
+/*
+ * test_hidden.c - the hidden tests (tests/hidden) test what they say
+ * whatever the seed: an instructor changes the seed every term, and a
+ * mistake must not pass a hidden test by the luck of one.
+ */
+#include "check.h"
+#include "../grader/grader.h"
+#include "../oracle/testgen.h"
+#include "raytracer.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define SEEDS 300
+
+static const Test *find(const TestList *l, const char *name)
+{
+    for (int k = 0; k < l->n; k++)
+        if (strcmp(l->tests[k].name, name) == 0)
+            return &l->tests[k];
+    return NULL;
+}
+
+/* ---- Part 3b: ray_color's mistakes, as the self-tests write them ----------- */
+
+enum { BACKGROUND_IGNORED, PAST_END, FIRST_HIT, LAST_HIT, FARTHEST_HIT, MISTAKES };
+static const char *const mistake_name[MISTAKES] = {
+    "the background ignored (black where nothing is hit)",
+    "a read past the last sphere (the grader's marker sphere, around everything, where nothing else is hit)",
+    "the first sphere listed that is hit, not the nearest",
+    "the last sphere listed that is hit, not the nearest",
+    "the farthest hit, not the nearest",
+};
+
+static Vec3 mistaken_color(const Scene *scene, const Ray *ray, int mistake)
+{
+    Vec3 color = scene->background;
+    if (mistake == BACKGROUND_IGNORED)
+        color = vec3(0, 0, 0);
+    if (mistake == PAST_END)
+        color = vec3(1, 0, 1);
+    double best = mistake == FARTHEST_HIT ? -INFINITY : INFINITY;
+    bool found = false;
+    for (int k = 0; k < scene->nspheres; k++) {
+        double tt;
+        if (!sphere_intersect(&scene->spheres[k], ray, &tt))
+            continue;
+        bool take = mistake == FIRST_HIT ? !found : mistake == LAST_HIT ? true
+                  : mistake == FARTHEST_HIT ? tt > best : tt < best;
+        if (take) {
+            best = tt;
+            color = scene->spheres[k].color;
+        }
+        found = true;
+    }
+    return color;
+}
+
+/* The test's scene as ray_color reads it (spheres malloc'd). */
+static Scene scene_of_test(const Test *t)
+{
+    Scene scene = { 0 };
+    scene.background = vec3(t->background[0], t->background[1], t->background[2]);
+    scene.spheres = calloc((size_t)t->nspheres, sizeof *scene.spheres);
+    scene.nspheres = t->nspheres;
+    for (int k = 0; k < t->nspheres; k++) {
+        const TestSphere *s = &t->spheres[k];
+        scene.spheres[k] = (Sphere){ vec3(s->c[0], s->c[1], s->c[2]), s->R,
+                                     vec3(s->color[0], s->color[1], s->color[2]) };
+    }
+    return scene;
+}
+
+/* How many cases of t the reference (m < 0) or mistake m answers wrongly. */
+static int wrong_cases(const Test *t, const Scene *scene, int m)
+{
+    int failed = 0;
+    for (int c = 0; c < t->ncases; c++) {
+        const Case *cs = &t->cases[c];
+        Ray ray = { vec3(cs->in[0], cs->in[1], cs->in[2]), vec3(cs->in[3], cs->in[4], cs->in[5]) };
+        Vec3 got = m < 0 ? ray_color(scene, &ray) : mistaken_color(scene, &ray, m);
+        failed += !case_is_right(t->kind, cs, (const double[3]){ got.x, got.y, got.z });
+    }
+    return failed;
+}
+
+static void test_random_scene_catches_every_mistake(void)
+{
+    for (uint64_t seed = 1; seed <= SEEDS; seed++) {
+        TestList l = { 0 };
+        testgen_hidden(&l, seed * 0x9e3779b97f4a7c15u);
+        const Test *t = find(&l, "Part 3b: hidden: ray_color in a random scene of 8 spheres");
+        CHECK_MSG(t != NULL, "no hidden test of ray_color in a random scene");
+        bool ok = t != NULL;
+        if (ok) {
+            Scene scene = scene_of_test(t);
+            int ref = wrong_cases(t, &scene, -1);
+            CHECK_MSG(ref == 0, "seed %llu: the reference fails %d cases of the hidden test of ray_color",
+                      (unsigned long long)seed, ref);
+            ok = ref == 0;
+            for (int m = 0; m < MISTAKES && ok; m++) {
+                ok = wrong_cases(t, &scene, m) > 0;
+                CHECK_MSG(ok, "seed %llu: the hidden test of ray_color passes %s", (unsigned long long)seed,
+                          mistake_name[m]);
+            }
+            free(scene.spheres);
+        }
+        testlist_free(&l);
+        if (!ok)
+            return;
+    }
+}
+
+static const CheckTest tests[] = {
+    CHECK_TEST(test_random_scene_catches_every_mistake),
+};
+
+int main(int argc, char **argv)
+{
+    return check_main(argc, argv, tests, CHECK_COUNT(tests));
+}
