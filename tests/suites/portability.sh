@@ -372,6 +372,44 @@ else
     check "the unit tests were built with $other" test $((ran + kept)) -gt 0
 fi
 
+# A second C library and its maths, when installed: musl (musl-gcc, from
+# Debian's musl-tools), whose libm is not glibc's, as Apple's is not.  The
+# kit built with it into out/port/musl, and submissions graded by both
+# builds, the students' code compiled and linked with each (the grader
+# takes its compiler from CC): the grades must be the same, so that a
+# student's grade does not depend on the machine's maths library.  The
+# submissions are the reference and self-tests whose answers go through
+# libm's tan, sqrt or float arithmetic.
+if ! have musl-gcc; then
+    echo "   skipped the second C library: musl-gcc is not installed (Debian's musl-tools has it)"
+else
+    mroot=out/port/musl
+    ${MAKE:-make} -j2 OUT_ROOT="$mroot" CC=musl-gcc all >"$tmp/musl.log" 2>&1
+    status=$?
+    check "make all with musl-gcc (exit $status): $(grep -E 'error:|warning:' "$tmp/musl.log" | head -n 5 | tr '\n' ' ')" \
+        test "$status" -eq 0
+    if [ "$status" -eq 0 ]; then
+        sed 's/^parts .*/parts 1 2 3a 3b 4 5/' tests/weights.conf >"$tmp/all-parts.conf"
+        same=0 differ=""
+        for name in reference p1-float p1-pi-approximate rw-tinyraytracer rw-tinyraytracer-camera rw-pbrt-v4 \
+            rw-rtiow-v1 rw-wikipedia-moller-trumbore textbook; do
+            sub=$tmp/musl-$name
+            mkdir "$sub" && cp solutions/part*.c "$sub/"
+            [ "$name" = reference ] || cp tests/selftest/"$name"/part*.c "$sub/"
+            a=$(out/build/bin/grade --submission "$sub" --weights "$tmp/all-parts.conf" --summary --quiet 2>/dev/null |
+                grep '^summary')
+            b=$(CC=musl-gcc "$mroot"/build/bin/grade --submission "$sub" --weights "$tmp/all-parts.conf" --summary \
+                --quiet 2>/dev/null | grep '^summary')
+            if [ -n "$a" ] && [ "$a" = "$b" ]; then same=$((same + 1)); else differ="$differ $name (${a:-none}; ${b:-none})"; fi
+            [ "$name" = reference ] && ref=$b
+        done
+        check "graded with musl's libm as with the system's: $same of 9 the same${differ:+; differ:$differ}" \
+            test "$same" -eq 9
+        check "the reference keeps every point with musl ($ref)" test "$ref" = "summary 20 20 30 30 20 20 20 160 0"
+        echo "   second C library: musl (musl-gcc), 9 submissions graded alike"
+    fi
+fi
+
 # Against Apple's headers, when a macOS SDK is at hand (syntax only).
 if [ -n "${MACOS_SDK:-}" ]; then
     if [ -d "$MACOS_SDK/usr/include" ] && have clang; then
