@@ -201,7 +201,7 @@ void testgen_hidden(TestList *l, uint64_t seed)
 
 /* ---- Parts 4 and 5 -------------------------------------------------------- */
 
-void testgen_hidden_flat(TestList *l, uint64_t seed)
+void testgen_hidden_flat_random(TestList *l, uint64_t seed)
 {
     TgRandom g = { seed };
     Test *t = hidden_test(l, PART4, KIND_PLANEHIT, "Part 4: hidden: random rays at random planes",
@@ -239,11 +239,16 @@ void testgen_hidden_flat(TestList *l, uint64_t seed)
                 v[i][q] += c[q];
         }
         random_direction(&g, tg_uniform(&g, 0, 3), e);
-        /* aim at a point with random barycentric weights: inside about
-         * half the time */
+        /* aim at a point with random barycentric weights: inside for
+         * even k; for odd k outside, beyond each edge in turn (one weight
+         * negative, each other one larger than it is negative), so that
+         * every seed's misses lie beyond every edge: beyond bc with
+         * alpha < 0 and beta, gamma < 1 each, where only beta + gamma > 1
+         * tells the miss */
         double sum = 0;
         for (int i = 0; i < 3; i++)
-            sum += w[i] = tg_uniform(&g, k % 2 ? -0.5 : 0.02, 1);
+            sum += w[i] = !(k % 2) ? tg_uniform(&g, 0.02, 1)
+                        : i == (k / 2) % 3 ? -tg_uniform(&g, 0.05, 0.45) : tg_uniform(&g, 0.5, 1);
         double len = tg_log_uniform(&g, 0.1, 10), d2 = 0;
         for (int q = 0; q < 3; q++) {
             aim[q] = (w[0] * v[0][q] + w[1] * v[1][q] + w[2] * v[2][q]) / sum;
@@ -254,7 +259,11 @@ void testgen_hidden_flat(TestList *l, uint64_t seed)
             r[q] *= (k % 9 == 0 ? -len : len) / sqrt(d2);
         tg_triangle(t, v[0], v[1], v[2], e, r);
     }
+}
 
+void testgen_hidden_flat(TestList *l, uint64_t seed)
+{
+    testgen_hidden_flat_random(l, seed);
     /* Hard cases drawn from this seed, beyond the public ones. */
     tg_hard_flat(l, seed, 0, 1, true);
 }

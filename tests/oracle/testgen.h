@@ -59,6 +59,8 @@ void tg_hard_flat(TestList *list, uint64_t seed, int first_round, int rounds, bo
 /* The public and hidden tests of Parts 4 and 5. */
 void testgen_public_flat(TestList *list);
 void testgen_hidden_flat(TestList *list, uint64_t seed);
+/* Its random tests alone, without the hard cases (tests/unit/test_hidden.c). */
+void testgen_hidden_flat_random(TestList *list, uint64_t seed);
 
 /* A small deterministic random number generator (splitmix64). */
 typedef struct { uint64_t s; } TgRandom;

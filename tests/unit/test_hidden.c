@@ -12,7 +12,18 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define SEEDS 300
+/* How many seeds each test draws (the sanitized build, which checks the
+ * code rather than the seeds, draws fewer: the Makefile). */
+#ifndef SEEDS
+#define SEEDS 300           /* every hidden test of Parts 1-3b: 2.6 ms a seed */
+#endif
+#ifndef SEEDS_FLAT
+#define SEEDS_FLAT 1000     /* the random tests of Parts 4 and 5 alone: 1.2 ms a seed */
+#endif
+/* The seeds drawn are 1, 2, ... as weights.conf would give them, salted as
+ * the grader salts them (grade_main.c). */
+#define SALT_CORE 0xcbf29ce484222325u
+#define SALT_FLAT 0x9e3779b97f4a7c15u
 
 static const Test *find(const TestList *l, const char *name)
 {
@@ -89,7 +100,7 @@ static void test_random_scene_catches_every_mistake(void)
 {
     for (uint64_t seed = 1; seed <= SEEDS; seed++) {
         TestList l = { 0 };
-        testgen_hidden(&l, seed * 0x9e3779b97f4a7c15u);
+        testgen_hidden(&l, seed ^ SALT_CORE);
         const Test *t = find(&l, "Part 3b: hidden: ray_color in a random scene of 8 spheres");
         CHECK_MSG(t != NULL, "no hidden test of ray_color in a random scene");
         bool ok = t != NULL;
@@ -112,8 +123,67 @@ static void test_random_scene_catches_every_mistake(void)
     }
 }
 
+/* ---- Part 5: triangle_intersect's mistakes, as the self-tests write them -- */
+
+enum { NO_SUM_CHECK = 1, NO_T_CHECK = 2, ONE_SIDED = 4, BETA_AT_MOST_1 = 8 };
+
+/* Moller-Trumbore with the checks a mistake leaves out. */
+static bool mistaken_triangle(const Triangle *tri, const Ray *ray, double *t, int mistake)
+{
+    Vec3 e1 = vec3_sub(tri->b, tri->a), e2 = vec3_sub(tri->c, tri->a), q = vec3_cross(ray->direction, e2);
+    double det = vec3_dot(e1, q);
+    if (mistake & ONE_SIDED ? det <= 0 : det == 0)
+        return false;
+    Vec3 s = vec3_sub(ray->origin, tri->a), r = vec3_cross(s, e1);
+    double beta = vec3_dot(s, q) / det, gamma = vec3_dot(ray->direction, r) / det, tt = vec3_dot(e2, r) / det;
+    if (beta < 0 || gamma < 0 || (!(mistake & NO_SUM_CHECK) && beta + gamma > 1) ||
+        (mistake & BETA_AT_MOST_1 && beta > 1))
+        return false;
+    if (!(mistake & NO_T_CHECK) && !(tt > 0))
+        return false;
+    *t = tt;
+    return true;
+}
+
+static void test_random_triangles_catch_every_mistake(void)
+{
+    static const struct { int flags; const char *name; } mistakes[] = {
+        { NO_SUM_CHECK, "no check of beta + gamma <= 1" },
+        { NO_SUM_CHECK | BETA_AT_MOST_1, "beta <= 1 checked, but not beta + gamma <= 1 (p5-no-sum-check)" },
+        { NO_T_CHECK, "no check of t > 0" },
+        { ONE_SIDED, "one side of the triangle only" },
+    };
+    for (uint64_t seed = 1; seed <= SEEDS_FLAT; seed++) {
+        TestList l = { 0 };
+        testgen_hidden_flat_random(&l, seed ^ SALT_FLAT);
+        const Test *t = find(&l, "Part 5: hidden: random rays at random triangles");
+        CHECK_MSG(t != NULL, "no hidden test of random rays at random triangles");
+        bool ok = t != NULL;
+        for (int m = -1; ok && m < (int)(sizeof mistakes / sizeof mistakes[0]); m++) {
+            int failed = 0;
+            for (int c = 0; c < t->ncases; c++) {
+                const double *in = t->cases[c].in;
+                Triangle tri = { vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]), vec3(in[6], in[7], in[8]),
+                                 vec3(1, 1, 1) };
+                Ray ray = { vec3(in[9], in[10], in[11]), vec3(in[12], in[13], in[14]) };
+                double tt = 0;
+                bool hit = m < 0 ? triangle_intersect(&tri, &ray, &tt)
+                                 : mistaken_triangle(&tri, &ray, &tt, mistakes[m].flags);
+                failed += !case_is_right(t->kind, &t->cases[c], (const double[2]){ hit, tt });
+            }
+            ok = m < 0 ? failed == 0 : failed > 0;
+            CHECK_MSG(ok, "seed %llu: the hidden test of random triangles %s %s", (unsigned long long)seed,
+                      m < 0 ? "fails" : "passes", m < 0 ? "the reference" : mistakes[m].name);
+        }
+        testlist_free(&l);
+        if (!ok)
+            return;
+    }
+}
+
 static const CheckTest tests[] = {
     CHECK_TEST(test_random_scene_catches_every_mistake),
+    CHECK_TEST(test_random_triangles_catch_every_mistake),
 };
 
 int main(int argc, char **argv)
