@@ -125,14 +125,14 @@ static void test_random_scene_catches_every_mistake(void)
 
 /* ---- Part 5: triangle_intersect's mistakes, as the self-tests write them -- */
 
-enum { NO_SUM_CHECK = 1, NO_T_CHECK = 2, ONE_SIDED = 4, BETA_AT_MOST_1 = 8 };
+enum { NO_SUM_CHECK = 1, NO_T_CHECK = 2, ONE_SIDED = 4, BETA_AT_MOST_1 = 8, DET_EPSILON = 16 };
 
 /* Moller-Trumbore with the checks a mistake leaves out. */
 static bool mistaken_triangle(const Triangle *tri, const Ray *ray, double *t, int mistake)
 {
     Vec3 e1 = vec3_sub(tri->b, tri->a), e2 = vec3_sub(tri->c, tri->a), q = vec3_cross(ray->direction, e2);
     double det = vec3_dot(e1, q);
-    if (mistake & ONE_SIDED ? det <= 0 : det == 0)
+    if (mistake & ONE_SIDED ? det <= 0 : mistake & DET_EPSILON ? fabs(det) < 1e-8 : det == 0)
         return false;
     Vec3 s = vec3_sub(ray->origin, tri->a), r = vec3_cross(s, e1);
     double beta = vec3_dot(s, q) / det, gamma = vec3_dot(ray->direction, r) / det, tt = vec3_dot(e2, r) / det;
@@ -152,6 +152,7 @@ static void test_random_triangles_catch_every_mistake(void)
         { NO_SUM_CHECK | BETA_AT_MOST_1, "beta <= 1 checked, but not beta + gamma <= 1 (p5-no-sum-check)" },
         { NO_T_CHECK, "no check of t > 0" },
         { ONE_SIDED, "one side of the triangle only" },
+        { DET_EPSILON, "|det| < 1e-8 taken for a miss (p5-det-epsilon)" },
     };
     for (uint64_t seed = 1; seed <= SEEDS_FLAT; seed++) {
         TestList l = { 0 };
