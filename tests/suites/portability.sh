@@ -407,7 +407,7 @@ else
         check "graded with musl's libm as with the system's: $same of 9 the same${differ:+; differ:$differ}" \
             test "$same" -eq 9
         check "the reference keeps every point with musl ($ref)" test "$ref" = "summary 20 20 30 30 20 20 20 160 0"
-        echo "   second C library: musl (musl-gcc), 9 submissions graded alike"
+        echo "   second C library: musl (musl-gcc), 9 submissions graded with both builds"
     fi
 fi
 
