@@ -145,7 +145,12 @@ void testgen_hidden(TestList *l, uint64_t seed)
         random_direction(&g, R * tg_uniform(&g, 0, 2), aim);
         for (int q = 0; q < 3; q++)
             dir[q] = (c[q] + aim[q] - e[q]) * (k % 7 == 0 ? -1 : 1);
-        double len = tg_log_uniform(&g, 0.01, 100) / sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+        /* |r| from 0.01 to 100, but at most (D - R) / 0.01, so that every
+         * hit is at t >= 0.01: hits just ahead of the origin are for the
+         * test of rays from just outside (below), and a tmin such as
+         * 0.001 must not lose this one by the luck of a seed */
+        double L = fmin(tg_log_uniform(&g, 0.01, 100), (D - R) / 0.01);
+        double len = L / sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
         for (int q = 0; q < 3; q++)
             dir[q] *= len;
         tg_sphere(t, c, R, e, dir);

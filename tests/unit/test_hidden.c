@@ -33,6 +33,40 @@ static const Test *find(const TestList *l, const char *name)
     return NULL;
 }
 
+/* ---- Part 3a: where a tmin is tested, and where not ------------------------ */
+
+/* Every seed's random rays at random spheres hit at t >= 0.01 or miss, so
+ * that a tmin up to 0.01 loses that test never; and every seed's rays from
+ * just outside have hits at t < 0.001, so that a tmin of 0.001 loses that
+ * one always. */
+static void test_tmin_is_tested_whatever_the_seed(void)
+{
+    for (uint64_t seed = 1; seed <= SEEDS; seed++) {
+        TestList l = { 0 };
+        testgen_hidden(&l, seed ^ SALT_CORE);
+        const Test *any = find(&l, "Part 3a: hidden: random rays at random spheres");
+        const Test *near = find(&l, "Part 3a: hidden: random rays from just outside spheres");
+        CHECK_MSG(any && near, "no hidden tests of random rays at spheres");
+        double least_any = INFINITY, least_near = INFINITY;
+        int hits = 0;
+        for (int c = 0; any && c < any->ncases; c++)
+            if (any->cases[c].want[0] == 1) {
+                hits++;
+                least_any = fmin(least_any, any->cases[c].want[1]);
+            }
+        for (int c = 0; near && c < near->ncases; c++)
+            if (near->cases[c].want[0] == 1)
+                least_near = fmin(least_near, near->cases[c].want[1]);
+        bool ok = any && near && hits >= 30 && least_any >= 0.01 && least_near < 0.001;
+        CHECK_MSG(ok, "seed %llu: %d hits at random spheres, the nearest at t = %g (want >= 0.01); the "
+                  "nearest from just outside at t = %g (want < 0.001)", (unsigned long long)seed, hits,
+                  least_any, least_near);
+        testlist_free(&l);
+        if (!ok)
+            return;
+    }
+}
+
 /* ---- Part 3b: ray_color's mistakes, as the self-tests write them ----------- */
 
 enum { BACKGROUND_IGNORED, PAST_END, FIRST_HIT, LAST_HIT, FARTHEST_HIT, MISTAKES };
@@ -183,6 +217,7 @@ static void test_random_triangles_catch_every_mistake(void)
 }
 
 static const CheckTest tests[] = {
+    CHECK_TEST(test_tmin_is_tested_whatever_the_seed),
     CHECK_TEST(test_random_scene_catches_every_mistake),
     CHECK_TEST(test_random_triangles_catch_every_mistake),
 };
