@@ -77,17 +77,6 @@ static int fail(const char *results, const char *fmt, const char *what)
     return 2;
 }
 
-#ifdef GRADER_ORACLE
-/* The random hidden cases' seeds: tests/weights.conf's seed, mixed with a
- * constant for Parts 1-3b and another for Parts 4-5.  Not with the
- * submission's files: every submission meets the same cases, so one that
- * changes only a comment or a space cannot draw other (easier) ones where
- * its score is shown at once (PrairieLearn), and the same code gets the
- * same grade whoever wrote it.  Change the seed each term. */
-#define HIDDEN_SALT_CORE 0xcbf29ce484222325u
-#define HIDDEN_SALT_FLAT 0x9e3779b97f4a7c15u
-#endif
-
 static int load_tests(TestList *list, const GradeConfig *cfg, const bool parts[NPARTS], char *err,
                       size_t errlen)
 {
@@ -102,6 +91,8 @@ static int load_tests(TestList *list, const GradeConfig *cfg, const bool parts[N
 #ifdef GRADER_ORACLE
     struct stat st;
     if (stat("tests/hidden", &st) == 0) {
+        /* tests/weights.conf's seed, salted (testgen.h), not the
+         * submission's files: every submission meets the same cases. */
         testgen_hidden(list, cfg->seed ^ HIDDEN_SALT_CORE);
         if (parts[PART4] || parts[PART5])
             testgen_hidden_flat(list, cfg->seed ^ HIDDEN_SALT_FLAT);

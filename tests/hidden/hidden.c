@@ -52,7 +52,7 @@ static double off_line(const double c[3], const double r[3])
 static void color_scene(Test *t, TgRandom *g)
 {
     t->background[0] = 0.25, t->background[1] = 0.5, t->background[2] = 0.75;
-    double cn[4][3], Rn[4], Rf[4], cf[4][3], fit[4];
+    double cn[4][3], Rn[4], Rf[4], cf[4][3], dn[4], fit[4];
     for (int q = 0; q < 4; q++) {
         double u[3] = { (q % 2 ? 0.3 : -0.3) + tg_uniform(g, -0.04, 0.04),
                         (q / 2 ? 0.3 : -0.3) + tg_uniform(g, -0.04, 0.04), -1 };
@@ -61,8 +61,8 @@ static void color_scene(Test *t, TgRandom *g)
         Rf[q] = tg_uniform(g, Rn[q], 2);
         for (int k = 0; k < 3; k++)
             cn[q][k] = zn * u[k], cf[q][k] = zf * u[k];
-        double dn = sqrt(cn[q][0] * cn[q][0] + cn[q][1] * cn[q][1] + cn[q][2] * cn[q][2]);
-        fit[q] = 0.8 * fmin(Rn[q] / dn, Rf[q] / (dn * zf / zn));   /* an angle inside both */
+        dn[q] = sqrt(cn[q][0] * cn[q][0] + cn[q][1] * cn[q][1] + cn[q][2] * cn[q][2]);
+        fit[q] = 0.8 * fmin(Rn[q] / dn[q], Rf[q] / (dn[q] * zf / zn));   /* an angle inside both */
     }
     for (int s = 0; s < 8; s++) {
         int q = s / 2;
@@ -78,8 +78,7 @@ static void color_scene(Test *t, TgRandom *g)
                     (cn[q][0] * cn[q][0] + cn[q][1] * cn[q][1] + cn[q][2] * cn[q][2]);
         double w[3] = { u[0] - cu * cn[q][0], u[1] - cu * cn[q][1], u[2] - cu * cn[q][2] };
         double wl = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-        double dn = sqrt(cn[q][0] * cn[q][0] + cn[q][1] * cn[q][1] + cn[q][2] * cn[q][2]);
-        double a = tg_uniform(g, 0, fit[q]) * dn / (wl > 0 ? wl : 1);
+        double a = tg_uniform(g, 0, fit[q]) * dn[q] / (wl > 0 ? wl : 1);
         for (int i = 0; i < 3; i++)
             r[i] = cn[q][i] + a * w[i];
         tg_color(t, V(0, 0, 0), r);

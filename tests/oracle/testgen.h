@@ -56,6 +56,15 @@ void tg_mesh_ray(Test *t, const double e[3], const double r[3]);
  * tg_hard does for the others. */
 void tg_hard_flat(TestList *list, uint64_t seed, int first_round, int rounds, bool hidden);
 
+/* The random hidden cases' seeds: tests/weights.conf's seed, mixed with
+ * the first constant for Parts 1-3b and the second for Parts 4-5.  Not
+ * with the submission's files: every submission meets the same cases, so
+ * one that changes only a comment or a space cannot draw other (easier)
+ * ones where its score is shown at once (PrairieLearn), and the same code
+ * gets the same grade whoever wrote it.  Change the seed each term. */
+#define HIDDEN_SALT_CORE 0xcbf29ce484222325u
+#define HIDDEN_SALT_FLAT 0x9e3779b97f4a7c15u
+
 /* The public and hidden tests of Parts 4 and 5. */
 void testgen_public_flat(TestList *list);
 void testgen_hidden_flat(TestList *list, uint64_t seed);
