@@ -76,10 +76,11 @@ static const char *const fam2[HARD_PART2_FAMILIES] = {
     "power-of-two size (rounding ties)",
 };
 
-/* One of the four special indices of a row of n pixels. */
-static int edge_index(uint64_t *s, int n)
+/* The special indices of a row of n pixels: the first, the last and the
+ * two middle ones (one when n is odd). */
+static int edge_index(int kind, int n)
 {
-    switch (draw_int(s, 0, 3)) {
+    switch (kind % 4) {
     case 0: return 0;
     case 1: return n - 1;
     case 2: return n / 2;
@@ -110,17 +111,36 @@ int hard_part2(uint64_t seed, HardCase2 *cases, int max)
             c->i = draw_int(&s, 0, c->nx - 1);
             c->j = draw_int(&s, 0, c->ny - 1);
             break;
-        case 1:
-            c->nx = (int)draw_log(&s, 1, 1e6);
-            c->ny = (int)draw_log(&s, 1, 1e6);
-            c->i = edge_index(&s, c->nx);
-            c->j = edge_index(&s, c->ny);
+        case 1: {
+            /* The family's m-th case: every four in a row take each index
+             * kind once for i and once for j, in different pairs, so that
+             * no mistake that is right at one of them (rows counted from
+             * the bottom, right at the middle row) passes four cases.  At
+             * least 2 a side: a single row or column is the tiny images'. */
+            int m = k / HARD_PART2_FAMILIES;
+            c->nx = (int)draw_log(&s, 2, 1e6);
+            c->ny = (int)draw_log(&s, 2, 1e6);
+            c->i = edge_index(m, c->nx);
+            c->j = edge_index(3 * m + m / 4, c->ny);
             break;
+        }
         case 2:
             c->nx = draw_int(&s, 1, 16);
             c->ny = draw_int(&s, 1, 16);
             c->i = draw_int(&s, 0, c->nx - 1);
             c->j = draw_int(&s, 0, c->ny - 1);
+            if ((k / HARD_PART2_FAMILIES) % 4 == 0) {
+                /* Every fourth: the bottom-left pixel of an image that is
+                 * neither square nor one row, where a flipped y, swapped i
+                 * and j, or nx for ny are each wrong, as a random pixel of
+                 * a tiny image is not always. */
+                c->nx = draw_int(&s, 2, 15);
+                c->ny = draw_int(&s, 2, 15);
+                if (c->ny >= c->nx)
+                    c->ny++;
+                c->i = 0;
+                c->j = c->ny - 1;
+            }
             break;
         default:
             c->nx = 1 << draw_int(&s, 0, 19);

@@ -32,6 +32,61 @@ static const Test *find(const TestList *l, const char *name)
     return NULL;
 }
 
+/* ---- Parts 1 and 2: no hard family passes a mistake by one case's luck ----- */
+
+/* The mistakes of the p1-* and p2-* self-tests that are right on some
+ * inputs: a square image, a middle row, i = j, an aspect of 1. */
+enum { W_H_SWAPPED, ASPECT_INVERTED, Y_NOT_FLIPPED, I_J_SWAPPED, NX_FOR_Y, CAMERA_MISTAKES };
+static const char *const camera_mistake[CAMERA_MISTAKES] = {
+    "w and h swapped", "w = h / aspect", "rows counted from the bottom (y not flipped)",
+    "i and j swapped", "nx for ny in y",
+};
+
+/* Part 1's (w, h) or Part 2's (x, y, z) as mistake m gives them for case c. */
+static void camera_mistaken(int m, const double *in, double *out)
+{
+    if (m <= ASPECT_INVERTED) {
+        double fov = in[0], aspect = in[1], d = in[2], h = 2 * d * tan(fov * M_PI / 360);
+        out[0] = m == W_H_SWAPPED ? h : h / aspect;
+        out[1] = m == W_H_SWAPPED ? aspect * h : h;
+        return;
+    }
+    double i = in[0], j = in[1], nx = in[2], ny = in[3], w = in[4], h = in[5], d = in[6];
+    out[0] = -w / 2 + w * ((m == I_J_SWAPPED ? j : i) + 0.5) / nx;
+    out[1] = m == Y_NOT_FLIPPED ? -h / 2 + h * (j + 0.5) / ny
+           : m == I_J_SWAPPED   ? h / 2 - h * (i + 0.5) / ny
+                                : h / 2 - h * (j + 0.5) / nx;
+    out[2] = -d;
+}
+
+static void test_hard_camera_families_catch_every_mistake(void)
+{
+    for (uint64_t seed = 1; seed <= SEEDS; seed++) {
+        TestList l = { 0 };
+        testgen_hidden(&l, seed ^ HIDDEN_SALT_CORE);
+        bool ok = true;
+        for (int k = 0; k < l.n && ok; k++) {
+            const Test *t = &l.tests[k];
+            if (!t->hard || (t->part != PART1 && t->part != PART2))
+                continue;
+            for (int m = t->part == PART1 ? 0 : Y_NOT_FLIPPED; ok && m < (t->part == PART1 ? Y_NOT_FLIPPED : CAMERA_MISTAKES); m++) {
+                int failed = 0;
+                for (int c = 0; c < t->ncases; c++) {
+                    double out[3];
+                    camera_mistaken(m, t->cases[c].in, out);
+                    failed += !case_is_right(t->kind, &t->cases[c], out);
+                }
+                ok = failed > 0;
+                CHECK_MSG(ok, "seed %llu: \"%s\" (%d cases) passes %s", (unsigned long long)seed, t->name,
+                          t->ncases, camera_mistake[m]);
+            }
+        }
+        testlist_free(&l);
+        if (!ok)
+            return;
+    }
+}
+
 /* ---- Part 3a: where a tmin is tested, and where not ------------------------ */
 
 /* Every seed's random rays at random spheres hit at t >= 0.01 or miss, so
@@ -216,6 +271,7 @@ static void test_random_triangles_catch_every_mistake(void)
 }
 
 static const CheckTest tests[] = {
+    CHECK_TEST(test_hard_camera_families_catch_every_mistake),
     CHECK_TEST(test_tmin_is_tested_whatever_the_seed),
     CHECK_TEST(test_random_scene_catches_every_mistake),
     CHECK_TEST(test_random_triangles_catch_every_mistake),
