@@ -768,8 +768,8 @@ static void p3_eval(int m, const double *in, double tmin, double *out)
         first_root_above(&m2, 0, out);
         break;
     }
-    case M_INSIDE_MISS:
-        if (q.C < 0)
+    case M_INSIDE_MISS:                             /* the near root alone: behind from */
+        if (q.C <= 0)                               /* inside, the origin itself from on */
             hit(out, false, 0);
         else
             first_root_above(&q, 0, out);
