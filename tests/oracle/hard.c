@@ -50,7 +50,11 @@ int hard_part1(uint64_t seed, HardCase1 *cases, int max)
         }
         draw_family(c->family, fam1[fam]);
         c->fov_degrees = fov;
-        c->aspect = draw_log(&s, 1e-6, 1e6);
+        /* Wide and tall in turn, so that a field of view taken along the
+         * wrong side (pbrt's shorter axis) fails every family. */
+        c->aspect = draw_log(&s, 1, 1e6);
+        if ((k / HARD_PART1_FAMILIES) % 2)
+            c->aspect = 1 / c->aspect;
         c->d = draw_log(&s, 1e-6, 1e6);
         oracle_image_plane(c->fov_degrees, c->aspect, c->d, &c->w, &c->h);
     }

@@ -36,19 +36,26 @@ static const Test *find(const TestList *l, const char *name)
 
 /* The mistakes of the p1-* and p2-* self-tests that are right on some
  * inputs: a square image, a middle row, i = j, an aspect of 1. */
-enum { W_H_SWAPPED, ASPECT_INVERTED, Y_NOT_FLIPPED, I_J_SWAPPED, NX_FOR_Y, CAMERA_MISTAKES };
+enum { W_H_SWAPPED, ASPECT_INVERTED, SHORTER_AXIS, Y_NOT_FLIPPED, I_J_SWAPPED, NX_FOR_Y, CAMERA_MISTAKES };
 static const char *const camera_mistake[CAMERA_MISTAKES] = {
-    "w and h swapped", "w = h / aspect", "rows counted from the bottom (y not flipped)",
+    "w and h swapped", "w = h / aspect", "the field of view along the shorter side (rw-pbrt-camera)",
+    "rows counted from the bottom (y not flipped)",
     "i and j swapped", "nx for ny in y",
 };
 
 /* Part 1's (w, h) or Part 2's (x, y, z) as mistake m gives them for case c. */
 static void camera_mistaken(int m, const double *in, double *out)
 {
-    if (m <= ASPECT_INVERTED) {
-        double fov = in[0], aspect = in[1], d = in[2], h = 2 * d * tan(fov * M_PI / 360);
-        out[0] = m == W_H_SWAPPED ? h : h / aspect;
-        out[1] = m == W_H_SWAPPED ? aspect * h : h;
+    if (m <= SHORTER_AXIS) {
+        double fov = in[0], aspect = in[1], d = in[2], side = 2 * d * tan(fov * M_PI / 360);
+        double w = aspect * side, h = side;                 /* right */
+        if (m == W_H_SWAPPED)
+            w = side, h = aspect * side;
+        else if (m == ASPECT_INVERTED)
+            w = side / aspect;
+        else if (aspect < 1)                                /* shorter axis: the width */
+            w = side, h = side / aspect;
+        out[0] = w, out[1] = h;
         return;
     }
     double i = in[0], j = in[1], nx = in[2], ny = in[3], w = in[4], h = in[5], d = in[6];
