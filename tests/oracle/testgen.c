@@ -271,27 +271,25 @@ void tg_hard(TestList *l, uint64_t seed, int first_round, int rounds, bool hidde
     }
 
     /* Part 3b: the camera rays in one test; each colour case has its own
-     * scene, so its own test. */
-    int n4 = (first_round + rounds) * HARD_PART3B_FAMILIES;
+     * scene, so its own test.  Two scenes a round, the family's two
+     * variants (hard.c: even and odd), so that a hidden round holds both. */
+    int scenes = 2 * rounds;
+    int n4 = 2 * (first_round + rounds) * HARD_PART3B_FAMILIES;
     HardCase3b *c4 = calloc((size_t)n4, sizeof *c4);
     hard_part3b(seed, c4, n4);
     /* By index: adding the colour tests may move the list. */
     int cam = l->n;
     tg_hard_test(l, PART3B, KIND_CAMERA, "camera rays through pixels of huge images", hidden);
-    for (int k = first_round * HARD_PART3B_FAMILIES; k < n4; k++) {
+    for (int k = 2 * first_round * HARD_PART3B_FAMILIES; k < n4; k++) {
         double e[3] = { c4[k].eye.x, c4[k].eye.y, c4[k].eye.z };
         double p[3] = { c4[k].pixel.x, c4[k].pixel.y, c4[k].pixel.z };
         tg_camera(&l->tests[cam], e, p);
-        /* A family drawn in more than one round gets a scene per round:
-         * numbered, so that no two tests share a name. */
+        /* Numbered, so that no two tests share a name. */
         char family[sizeof c4[k].family + 32];
-        int round = k / HARD_PART3B_FAMILIES - first_round;
-        if (rounds > 1)
-            snprintf(family, sizeof family, "%s (scene %d of %d)", c4[k].family, round + 1, rounds);
-        else
-            snprintf(family, sizeof family, "%s", c4[k].family);
+        int scene = k / HARD_PART3B_FAMILIES - 2 * first_round;
+        snprintf(family, sizeof family, "%s (scene %d of %d)", c4[k].family, scene + 1, scenes);
         Test *t = tg_hard_test(l, PART3B, KIND_COLOR, family, hidden);
-        t->weight = 1.0 / rounds;
+        t->weight = 1.0 / scenes;
         t->background[0] = c4[k].background.x;
         t->background[1] = c4[k].background.y;
         t->background[2] = c4[k].background.z;

@@ -29,8 +29,8 @@ void tg_color(Test *t, const double e[3], const double r[3]);   /* t's scene */
 Test *tg_image(TestList *list, const char *name, const char *scene_path, int nx, int ny);
 
 /* The hard cases of hard.c for rounds first_round .. first_round + rounds - 1
- * of every family (Part 3a: two cases a round, Parts 1 and 2: four), as
- * tests tagged hard. */
+ * of every family (Parts 3a and 3b: two cases a round, Parts 1 and 2:
+ * four), as tests tagged hard. */
 void tg_hard(TestList *list, uint64_t seed, int first_round, int rounds, bool hidden);
 
 /* A test of the hard-case group ("Part P: [hidden: ]hard: FAMILY"), and the

@@ -218,6 +218,35 @@ static void test_random_scene_catches_every_mistake(void)
     }
 }
 
+/* Every seed's hidden hard scenes of Part 3b hold both variants of each
+ * family: in the room, a sphere before the wall and one beyond it, where
+ * the last sphere hit in the list (the small one) is wrong. */
+static void test_hard_scenes_hold_both_variants(void)
+{
+    for (uint64_t seed = 1; seed <= SEEDS; seed++) {
+        TestList l = { 0 };
+        testgen_hidden(&l, seed ^ HIDDEN_SALT_CORE);
+        int scenes = 0, failed = 0;
+        for (int k = 0; k < l.n; k++) {
+            const Test *t = &l.tests[k];
+            if (!t->hard || t->part != PART3B || !strstr(t->name, "eye inside a big sphere"))
+                continue;
+            Scene scene = scene_of_test(t);
+            CHECK_MSG(wrong_cases(t, &scene, -1) == 0, "seed %llu: the reference fails \"%s\"",
+                      (unsigned long long)seed, t->name);
+            scenes++;
+            failed += wrong_cases(t, &scene, LAST_HIT) > 0;
+            free(scene.spheres);
+        }
+        testlist_free(&l);
+        bool ok = scenes > 0 && failed > 0;
+        CHECK_MSG(ok, "seed %llu: the hidden hard family \"eye inside a big sphere\" (%d scenes) passes %s",
+                  (unsigned long long)seed, scenes, mistake_name[LAST_HIT]);
+        if (!ok)
+            return;
+    }
+}
+
 /* ---- Part 5: triangle_intersect's mistakes, as the self-tests write them -- */
 
 enum { NO_SUM_CHECK = 1, NO_T_CHECK = 2, ONE_SIDED = 4, BETA_AT_MOST_1 = 8, DET_EPSILON = 16 };
@@ -281,6 +310,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_hard_camera_families_catch_every_mistake),
     CHECK_TEST(test_tmin_is_tested_whatever_the_seed),
     CHECK_TEST(test_random_scene_catches_every_mistake),
+    CHECK_TEST(test_hard_scenes_hold_both_variants),
     CHECK_TEST(test_random_triangles_catch_every_mistake),
 };
 

@@ -771,8 +771,8 @@ static void test_reference_part3b_hard(void)
     CHECK(ambiguous > 0 && ambiguous < n);
 }
 
-/* The hard group has one camera case per family and round however the
- * list grows around it.  The camera test used to be filled through a
+/* The hard group has one camera case per scene (two a family and round)
+ * however the list grows around it.  The camera test used to be filled through a
  * pointer that adding the colour tests left dangling whenever the list
  * had to grow then: lists of every length up to two growths' worth make
  * sure it does (the sanitizer build of this test reports the bad write;
@@ -788,7 +788,7 @@ static void test_hard_camera_cases(void)
         for (int k = 0; k < l.n; k++)
             if (strstr(l.tests[k].name, "hard: camera rays")) {
                 found++;
-                CHECK_MSG(l.tests[k].ncases == HARD_PART3B_FAMILIES, "after %d tests: %d camera cases",
+                CHECK_MSG(l.tests[k].ncases == 2 * HARD_PART3B_FAMILIES, "after %d tests: %d camera cases",
                           n0, l.tests[k].ncases);
             }
         CHECK_EQ_INT(found, 1);
