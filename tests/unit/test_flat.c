@@ -574,6 +574,49 @@ static void test_every_round_catches_an_unchecked_division(void)
     }
 }
 
+/* The reference, one-sided: rays against the normal (r.n < 0) alone, or
+ * along it alone (Scratchapixel's denom > 1e-6). */
+static bool plane_front_only(const Plane *P, const Ray *R, double *t)
+{
+    return vec3_dot(R->direction, P->normal) < 0 && plane_intersect(P, R, t);
+}
+
+static bool plane_back_only(const Plane *P, const Ray *R, double *t)
+{
+    return vec3_dot(R->direction, P->normal) > 0 && plane_intersect(P, R, t);
+}
+
+/* As for triangles: whatever the seed, a one-sided plane test fails the
+ * same families of a round, those whose hit meets the side it leaves out
+ * (the side is not drawn: hard_part4), but for the parallel ones, where
+ * no side is met, and a hit within rounding of parallel. */
+static void test_every_round_meets_both_sides_of_a_plane(void)
+{
+    HardCase4 cases[2 * HARD_PART4_FAMILIES];
+    for (uint64_t seed = 1; seed <= 300; seed++) {
+        hard_part4(seed * 7919, cases, 2 * HARD_PART4_FAMILIES);
+        for (int f = 0; f < HARD_PART4_FAMILIES; f++) {
+            if (strstr(cases[f].family, "exact dyadic") || cases[f].expect.ambiguous)
+                continue;
+            int front_bad = 0, back_bad = 0;
+            for (int k = f; k < 2 * HARD_PART4_FAMILIES; k += HARD_PART4_FAMILIES) {
+                double t = 0;
+                bool hit = plane_front_only(&cases[k].plane, &cases[k].ray, &t);
+                front_bad += !hard_check4(&cases[k], hit, t);
+                t = 0;
+                hit = plane_back_only(&cases[k].plane, &cases[k].ray, &t);
+                back_bad += !hard_check4(&cases[k], hit, t);
+            }
+            bool ok = f % 2 == 0 ? front_bad == 0 && back_bad > 0 : back_bad == 0 && front_bad > 0;
+            CHECK_MSG(ok, "seed %llu, '%s': a test of the front side alone fails %d cases, of the back side "
+                      "alone %d (the hit should meet the %s side)", (unsigned long long)(seed * 7919),
+                      cases[f].family, front_bad, back_bad, f % 2 == 0 ? "front" : "back");
+            if (!ok)
+                return;
+        }
+    }
+}
+
 /* ---- closed meshes: no ray goes through the reference ------------------------- */
 
 /* A ray goes through a closed mesh where it enters when no triangle is hit
@@ -637,6 +680,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_plane_methods_on_hard_cases),
     CHECK_TEST(test_reference_is_watertight),
     CHECK_TEST(test_every_round_catches_an_unchecked_division),
+    CHECK_TEST(test_every_round_meets_both_sides_of_a_plane),
     CHECK_TEST(test_every_round_has_both_sides),
     CHECK_TEST(test_oracle_mesh),
 };
