@@ -399,9 +399,16 @@ void ray_figure(Markup *m, const RayFig *given)
     for (int k = 0; k < nwin; k++) {
         double w = widths[nwin - 1][k];
         if (k == 0) {
+            /* its left edge kept, unless that would push the far end of
+             * what it shows past the right: then what it shows, centred
+             * (a main window fitted to its height starts well left of
+             * what it shows) */
             double left = main.cx - main.pw / 2 / main.s;
             win[0].pw = w;
             win[0].s = fmin(main.s, w / fmax((bx.x1 - bx.x0) * 1.12, 1e-300));
+            double seen = w / win[0].s;
+            if (left + seen < bx.x1 + 0.06 * (bx.x1 - bx.x0))
+                left = (bx.x0 + bx.x1) / 2 - seen / 2;
             win[0].cx = left + w / 2 / win[0].s;
         } else {
             FigView z = win[k];
