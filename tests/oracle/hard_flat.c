@@ -169,15 +169,17 @@ static Vec3 bary(const Triangle *tr, double alpha, double beta, double gamma)
 }
 
 /* A point of the triangle's plane: inside (each weight >= 0.05) or
- * outside (one weight -0.05 .. -0.8). */
-static Vec3 plane_point(uint64_t *s, const Triangle *tr, bool inside)
+ * outside, beyond the edge opposite vertex `beyond` (0 a, 1 b, 2 c): that
+ * weight -0.05 .. -0.45, the others 0.5 .. 1, so that each of those stays
+ * under 1 and only their sum tells the miss. */
+static Vec3 plane_point(uint64_t *s, const Triangle *tr, bool inside, int beyond)
 {
     double w[3];
     for (;;) {
         for (int k = 0; k < 3; k++)
-            w[k] = draw_uni(s, 0.05, 1);
+            w[k] = inside ? draw_uni(s, 0.05, 1) : draw_uni(s, 0.5, 1);
         if (!inside)
-            w[draw_int(s, 0, 2)] = -draw_uni(s, 0.05, 0.8);
+            w[beyond] = -draw_uni(s, 0.05, 0.45);
         double sum = w[0] + w[1] + w[2];
         if (sum > 0.1)
             return bary(tr, w[0] / sum, w[1] / sum, w[2] / sum);
@@ -224,7 +226,9 @@ static void exact_triangle(uint64_t *s, bool want_hit, Triangle *tr, Ray *ray)
     ray->direction = axis(k, sgn * ldexp(1, draw_int(s, -3, 3)));
 }
 
-static void gen5(uint64_t *s, int fam, bool want_hit, Triangle *tr, Ray *ray)
+/* beyond: the vertex whose edge a miss lies beyond (plane_point), not
+ * drawn: hard_part5. */
+static void gen5(uint64_t *s, int fam, bool want_hit, int beyond, Triangle *tr, Ray *ray)
 {
     Vec3 o = draw_point(s, 5), X;
     if (fam == 6) {
@@ -233,11 +237,11 @@ static void gen5(uint64_t *s, int fam, bool want_hit, Triangle *tr, Ray *ray)
     }
     if (fam == 0 || fam == 5) {                     /* ordinary, far from the origin */
         *tr = random_triangle(s, draw_point(s, 3), draw_uni(s, 0.5, 2));
-        X = plane_point(s, tr, want_hit);
+        X = plane_point(s, tr, want_hit, beyond);
     } else if (fam == 1) {                          /* tiny, far */
         double S = draw_log(s, 1e-8, 1e-4);
         *tr = random_triangle(s, vec3_add(o, vec3_scale(draw_unit(s), draw_log(s, 1, 1e4))), S);
-        X = plane_point(s, tr, want_hit);
+        X = plane_point(s, tr, want_hit, beyond);
     } else if (fam == 2) {                          /* sliver */
         Vec3 c = draw_point(s, 3), u1 = draw_unit(s), u2 = draw_perp(s, u1);
         double S = draw_uni(s, 0.5, 2), width = S * draw_log(s, 1e-12, 1e-4);
@@ -250,7 +254,7 @@ static void gen5(uint64_t *s, int fam, bool want_hit, Triangle *tr, Ray *ray)
         X = bary(tr, al, 1 - g - al, g);
     } else if (fam == 3) {                          /* grazing */
         *tr = random_triangle(s, draw_point(s, 3), draw_uni(s, 1, 10));
-        X = plane_point(s, tr, want_hit);
+        X = plane_point(s, tr, want_hit, beyond);
         Vec3 n = vec3_normalize(vec3_cross(vec3_sub(tr->b, tr->a), vec3_sub(tr->c, tr->a)));
         Vec3 w = draw_perp(s, n);
         double L = draw_uni(s, 1, 10) * vec3_length(vec3_sub(tr->b, tr->a));
@@ -259,6 +263,8 @@ static void gen5(uint64_t *s, int fam, bool want_hit, Triangle *tr, Ray *ray)
     } else {                                        /* near an edge */
         *tr = random_triangle(s, draw_point(s, 3), draw_uni(s, 0.5, 2));
         int e = draw_int(s, 0, 2);
+        if (!want_hit)
+            e = (beyond + 1) % 3;                   /* the edge opposite that vertex */
         Vec3 P = e == 0 ? tr->a : e == 1 ? tr->b : tr->c;
         Vec3 Q = e == 0 ? tr->b : e == 1 ? tr->c : tr->a;
         Vec3 R = e == 0 ? tr->c : e == 1 ? tr->a : tr->b;
@@ -309,7 +315,10 @@ int hard_part5(uint64_t seed, HardCase5 *cases, int max)
         HardCase5 *c = &cases[k];
         int fam = k % HARD_PART5_FAMILIES, round_k = k / (2 * HARD_PART5_FAMILIES);
         bool want_hit = (k / HARD_PART5_FAMILIES) % 2 == 0;
-        gen5(&s, fam, want_hit, &c->tri, &c->ray);
+        /* A miss lies beyond each edge in turn: beyond bc, where only
+         * beta + gamma <= 1 tells it, in the same families of a round
+         * whatever the seed (wind keeps a, so keeps that edge). */
+        gen5(&s, fam, want_hit, (fam + round_k) % 3, &c->tri, &c->ray);
         wind(&c->tri, &c->ray, (fam + round_k) % 2 == 0);
         draw_family(c->family, fam5[fam]);
         c->expect = oracle_triangle(&c->tri, &c->ray);

@@ -433,6 +433,43 @@ static void test_every_round_has_both_sides(void)
               in_doubt, 300 * HARD_PART5_FAMILIES);
 }
 
+/* Moller-Trumbore checking beta <= 1 but not beta + gamma <= 1
+ * (p5-no-sum-check): right but for a point beyond edge bc. */
+static bool mt_no_sum_check(const Triangle *T, const Ray *R, double *t)
+{
+    Vec3 e1 = vec3_sub(T->b, T->a), e2 = vec3_sub(T->c, T->a), q = vec3_cross(R->direction, e2);
+    double det = vec3_dot(e1, q);
+    if (det == 0)
+        return false;
+    Vec3 sv = vec3_sub(R->origin, T->a), r = vec3_cross(sv, e1);
+    double beta = vec3_dot(sv, q) / det, gamma = vec3_dot(R->direction, r) / det, tt = vec3_dot(e2, r) / det;
+    if (beta < 0 || beta > 1 || gamma < 0 || !(tt > 0))
+        return false;
+    *t = tt;
+    return true;
+}
+
+/* Whatever the seed, a round's misses lie beyond the same edges, so that
+ * a test without beta + gamma <= 1 fails the same families of it. */
+static void test_every_round_misses_beyond_the_same_edges(void)
+{
+    HardCase5 cases[2 * HARD_PART5_FAMILIES];
+    unsigned first = 0;
+    for (uint64_t seed = 1; seed <= 300; seed++) {
+        hard_part5(seed * 7919, cases, 2 * HARD_PART5_FAMILIES);
+        unsigned failed = 0;
+        for (int f = 0; f < HARD_PART5_FAMILIES; f++)
+            if (failures5(mt_no_sum_check, cases, 2 * HARD_PART5_FAMILIES, f) > 0)
+                failed |= 1u << f;
+        if (seed == 1)
+            first = failed;
+        CHECK_MSG(failed == first && failed != 0, "seed %llu: a test without beta + gamma <= 1 fails the "
+                  "families %#x of a round, with seed 7919 %#x", (unsigned long long)(seed * 7919), failed, first);
+        if (failed != first || failed == 0)
+            return;
+    }
+}
+
 /* Within a few units of roundoff of an edge the answer is in doubt; the
  * fair methods must still be within the band: rays aimed 2^-50 to 2^-58 of
  * the triangle's size from an edge, in or out. */
@@ -682,6 +719,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_every_round_catches_an_unchecked_division),
     CHECK_TEST(test_every_round_meets_both_sides_of_a_plane),
     CHECK_TEST(test_every_round_has_both_sides),
+    CHECK_TEST(test_every_round_misses_beyond_the_same_edges),
     CHECK_TEST(test_oracle_mesh),
 };
 
