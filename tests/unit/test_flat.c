@@ -404,6 +404,18 @@ static bool back_only(const Triangle *T, const Ray *R, double *t)
            triangle_intersect(T, R, t);
 }
 
+/* Family f of round 0 meets the front when f is even, the back when odd:
+ * a one-sided test of the side it meets fails none of its cases, one of
+ * the other side some. */
+static bool sides_right(uint64_t seed, const char *family, int f, int front_bad, int back_bad)
+{
+    bool ok = f % 2 == 0 ? front_bad == 0 && back_bad > 0 : back_bad == 0 && front_bad > 0;
+    CHECK_MSG(ok, "seed %llu, '%s': a test of the front side alone fails %d cases, of the back side alone %d "
+              "(the hit should meet the %s side)", (unsigned long long)seed, family, front_bad, back_bad,
+              f % 2 == 0 ? "front" : "back");
+    return ok;
+}
+
 /* The hidden tests hold one round of hard cases: whatever the seed, a
  * one-sided test fails the same families in it, those whose hit meets the
  * side it leaves out (the side is not drawn: hard_part5); but for a hit
@@ -421,11 +433,7 @@ static void test_every_round_has_both_sides(void)
             }
             int front_bad = failures5(front_only, cases, 2 * HARD_PART5_FAMILIES, f);
             int back_bad = failures5(back_only, cases, 2 * HARD_PART5_FAMILIES, f);
-            bool ok = f % 2 == 0 ? front_bad == 0 && back_bad > 0 : back_bad == 0 && front_bad > 0;
-            CHECK_MSG(ok, "seed %llu, '%s': a test of the front side alone fails %d cases, of the back side "
-                      "alone %d (the hit should meet the %s side)", (unsigned long long)(seed * 7919),
-                      cases[f].family, front_bad, back_bad, f % 2 == 0 ? "front" : "back");
-            if (!ok)
+            if (!sides_right(seed * 7919, cases[f].family, f, front_bad, back_bad))
                 return;
         }
     }
@@ -644,11 +652,7 @@ static void test_every_round_meets_both_sides_of_a_plane(void)
                 hit = plane_back_only(&cases[k].plane, &cases[k].ray, &t);
                 back_bad += !hard_check4(&cases[k], hit, t);
             }
-            bool ok = f % 2 == 0 ? front_bad == 0 && back_bad > 0 : back_bad == 0 && front_bad > 0;
-            CHECK_MSG(ok, "seed %llu, '%s': a test of the front side alone fails %d cases, of the back side "
-                      "alone %d (the hit should meet the %s side)", (unsigned long long)(seed * 7919),
-                      cases[f].family, front_bad, back_bad, f % 2 == 0 ? "front" : "back");
-            if (!ok)
+            if (!sides_right(seed * 7919, cases[f].family, f, front_bad, back_bad))
                 return;
         }
     }
