@@ -224,7 +224,8 @@ Test *tg_family_test(TestList *l, int first, int part, Kind kind, const char *fa
 /* Parts 1 and 2's cases cost nothing to run: a round holds four of each
  * family, so that no family is passed by the luck of one case (a square
  * image for i and j swapped, a middle row for rows counted from the
- * bottom).  Part 3a's rounds hold two, a hit and a miss. */
+ * bottom).  Parts 3a's and 3b's rounds hold two cases of each: a hit
+ * and a miss, or the family's two scenes. */
 #define SMALL_PER_ROUND 4
 
 void tg_hard(TestList *l, uint64_t seed, int first_round, int rounds, bool hidden)
@@ -246,10 +247,10 @@ void tg_hard(TestList *l, uint64_t seed, int first_round, int rounds, bool hidde
                  c2[k].i, c2[k].j, c2[k].nx, c2[k].ny, c2[k].w, c2[k].h, c2[k].d);
     free(c2);
 
-    int n3 = (first_round + 2 * rounds) * HARD_PART3A_FAMILIES;
+    int n3 = 2 * (first_round + rounds) * HARD_PART3A_FAMILIES;
     HardCase3a *c3 = calloc((size_t)n3, sizeof *c3);
     hard_part3a(seed, c3, n3);
-    for (int k = first_round * HARD_PART3A_FAMILIES; k < n3; k++) {
+    for (int k = 2 * first_round * HARD_PART3A_FAMILIES; k < n3; k++) {
         const Sphere *sp = &c3[k].sphere;
         const Ray *r = &c3[k].ray;
         double c[3] = { sp->center.x, sp->center.y, sp->center.z };

@@ -289,10 +289,10 @@ static bool has_certain_hit(const Test *t)
 void tg_hard_flat(TestList *l, uint64_t seed, int first_round, int rounds, bool hidden)
 {
     int first = l->n;
-    int n4 = (first_round + 2 * rounds) * HARD_PART4_FAMILIES;
+    int n4 = 2 * (first_round + rounds) * HARD_PART4_FAMILIES;
     HardCase4 *c4 = calloc((size_t)n4, sizeof *c4);
     hard_part4(seed, c4, n4);
-    for (int k = first_round * HARD_PART4_FAMILIES; k < n4; k++) {
+    for (int k = 2 * first_round * HARD_PART4_FAMILIES; k < n4; k++) {
         double p[3], n[3], e[3], r[3];
         put3(p, c4[k].plane.point);
         put3(n, c4[k].plane.normal);
@@ -302,10 +302,10 @@ void tg_hard_flat(TestList *l, uint64_t seed, int first_round, int rounds, bool 
     }
     free(c4);
 
-    int n5 = (first_round + 2 * rounds) * HARD_PART5_FAMILIES;
+    int n5 = 2 * (first_round + rounds) * HARD_PART5_FAMILIES;
     HardCase5 *c5 = calloc((size_t)n5, sizeof *c5);
     hard_part5(seed, c5, n5);
-    for (int k = first_round * HARD_PART5_FAMILIES; k < n5; k++) {
+    for (int k = 2 * first_round * HARD_PART5_FAMILIES; k < n5; k++) {
         double a[3], b[3], cc[3], e[3], r[3];
         put3(a, c5[k].tri.a);
         put3(b, c5[k].tri.b);
