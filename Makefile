@@ -428,7 +428,7 @@ UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
 # (Not the grader's units nor test_serve: their own rules are below.)
 GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers lmsname terminal
 UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) $(BUILD)/tests/test_serve \
-                         $(BUILD)/tests/test_hidden,$(UNIT_BIN))
+                         $(BUILD)/tests/test_hidden $(BUILD)/tests/test_figures,$(UNIT_BIN))
 $(UNIT_PLAIN:$(BUILD)/tests/%=$(BUILD)/tests/obj/%.o): $(BUILD)/tests/obj/%.o: tests/unit/%.c \
                           tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS) | $$(@D)/.
 	$(CC) $(CFLAGS) $(THREADS) -Ilabs -c $< -o $@
@@ -480,6 +480,17 @@ $(ASAN)/tests/test_hidden: tests/unit/test_hidden.c tests/unit/check.h $(ASAN)/g
                            $(ASAN)/tools/libtools.a \
                            $(ASAN)/kit/libkit.a | $$(@D)/.
 	$(CC) $(SAN_LINK) -DSEEDS=30 -DSEEDS_FLAT=100 -Ilabs $(filter-out %.h,$^) -o $@ $(LDLIBS)
+# The figures' unit test (instructor's kit only) draws every case of the
+# public tests and of some seeds' hidden tests with the grader's figures;
+# sanitized, one seed's.
+FIGURE_LIBS = $(BUILD)/grader/hidden.o $(BUILD)/oracle/liboracle.a $(BUILD)/grader/libgrader.a \
+              $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
+$(BUILD)/tests/test_figures: tests/unit/test_figures.c tests/unit/check.h $(FIGURE_LIBS) | $$(@D)/.
+	$(CC) $(CFLAGS) -Ilabs $(filter-out %.h,$^) -o $@ $(LDLIBS)
+$(ASAN)/tests/test_figures: tests/unit/test_figures.c tests/unit/check.h $(ASAN)/grader/hidden.o \
+                            $(ASAN)/oracle/liboracle.a $(GRADER_LIB_SRC:tests/grader/%.c=$(ASAN)/grader/%.o) \
+                            $(ASAN)/tools/libtools.a $(ASAN)/kit/libkit.a | $$(@D)/.
+	$(CC) $(SAN_LINK) -DSEEDS=1 -Ilabs $(filter-out %.h,$^) -o $@ $(LDLIBS)
 
 # ---- bench: speed against accuracy (tests/bench) ----------------------------
 # `make bench` writes out/bench/: results.csv, report.md, plot.svg and more
