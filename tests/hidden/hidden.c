@@ -200,7 +200,7 @@ void testgen_hidden(TestList *l, uint64_t seed)
     img->hidden = true;
 
     /* Hard cases drawn from this seed, beyond the public ones. */
-    tg_hard(l, seed, 0, 1, true);
+    tg_hard(l, seed, 1, true);
 }
 
 /* ---- Parts 4 and 5 -------------------------------------------------------- */
@@ -272,5 +272,5 @@ void testgen_hidden_flat(TestList *l, uint64_t seed)
 {
     testgen_hidden_flat_random(l, seed);
     /* Hard cases drawn from this seed, beyond the public ones. */
-    tg_hard_flat(l, seed, 0, 1, true);
+    tg_hard_flat(l, seed, 1, true);
 }

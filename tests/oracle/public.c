@@ -206,6 +206,6 @@ void testgen_public(TestList *list)
     part2(list);
     part3a(list);
     part3b(list);
-    tg_hard(list, PUBLIC_HARD_SEED, 0, 2, false);
+    tg_hard(list, PUBLIC_HARD_SEED, 2, false);
     testgen_public_flat(list);          /* Parts 4 and 5: public_flat.c */
 }

@@ -186,5 +186,5 @@ void testgen_public_flat(TestList *list)
 {
     part4(list);
     part5(list);
-    tg_hard_flat(list, 20261122u, 0, 2, false);
+    tg_hard_flat(list, 20261122u, 2, false);
 }

@@ -228,29 +228,29 @@ Test *tg_family_test(TestList *l, int first, int part, Kind kind, const char *fa
  * and a miss, or the family's two scenes. */
 #define SMALL_PER_ROUND 4
 
-void tg_hard(TestList *l, uint64_t seed, int first_round, int rounds, bool hidden)
+void tg_hard(TestList *l, uint64_t seed, int rounds, bool hidden)
 {
     int first = l->n;
-    int n1 = (first_round + rounds) * SMALL_PER_ROUND * HARD_PART1_FAMILIES;
+    int n1 = rounds * SMALL_PER_ROUND * HARD_PART1_FAMILIES;
     HardCase1 *c1 = calloc((size_t)n1, sizeof *c1);
     hard_part1(seed, c1, n1);
-    for (int k = first_round * SMALL_PER_ROUND * HARD_PART1_FAMILIES; k < n1; k++)
+    for (int k = 0; k < n1; k++)
         tg_plane(tg_family_test(l, first, PART1, KIND_PLANE, c1[k].family, hidden),
                  c1[k].fov_degrees, c1[k].aspect, c1[k].d);
     free(c1);
 
-    int n2 = (first_round + rounds) * SMALL_PER_ROUND * HARD_PART2_FAMILIES;
+    int n2 = rounds * SMALL_PER_ROUND * HARD_PART2_FAMILIES;
     HardCase2 *c2 = calloc((size_t)n2, sizeof *c2);
     hard_part2(seed, c2, n2);
-    for (int k = first_round * SMALL_PER_ROUND * HARD_PART2_FAMILIES; k < n2; k++)
+    for (int k = 0; k < n2; k++)
         tg_pixel(tg_family_test(l, first, PART2, KIND_PIXEL, c2[k].family, hidden),
                  c2[k].i, c2[k].j, c2[k].nx, c2[k].ny, c2[k].w, c2[k].h, c2[k].d);
     free(c2);
 
-    int n3 = 2 * (first_round + rounds) * HARD_PART3A_FAMILIES;
+    int n3 = 2 * rounds * HARD_PART3A_FAMILIES;
     HardCase3a *c3 = calloc((size_t)n3, sizeof *c3);
     hard_part3a(seed, c3, n3);
-    for (int k = 2 * first_round * HARD_PART3A_FAMILIES; k < n3; k++) {
+    for (int k = 0; k < n3; k++) {
         const Sphere *sp = &c3[k].sphere;
         const Ray *r = &c3[k].ray;
         double c[3] = { sp->center.x, sp->center.y, sp->center.z };
@@ -275,19 +275,19 @@ void tg_hard(TestList *l, uint64_t seed, int first_round, int rounds, bool hidde
      * scene, so its own test.  Two scenes a round, the family's two
      * variants (hard.c: even and odd), so that a hidden round holds both. */
     int scenes = 2 * rounds;
-    int n4 = 2 * (first_round + rounds) * HARD_PART3B_FAMILIES;
+    int n4 = 2 * rounds * HARD_PART3B_FAMILIES;
     HardCase3b *c4 = calloc((size_t)n4, sizeof *c4);
     hard_part3b(seed, c4, n4);
     /* By index: adding the colour tests may move the list. */
     int cam = l->n;
     tg_hard_test(l, PART3B, KIND_CAMERA, "camera rays through pixels of huge images", hidden);
-    for (int k = 2 * first_round * HARD_PART3B_FAMILIES; k < n4; k++) {
+    for (int k = 0; k < n4; k++) {
         double e[3] = { c4[k].eye.x, c4[k].eye.y, c4[k].eye.z };
         double p[3] = { c4[k].pixel.x, c4[k].pixel.y, c4[k].pixel.z };
         tg_camera(&l->tests[cam], e, p);
         /* Numbered, so that no two tests share a name. */
         char family[sizeof c4[k].family + 32];
-        int scene = k / HARD_PART3B_FAMILIES - 2 * first_round;
+        int scene = k / HARD_PART3B_FAMILIES;
         snprintf(family, sizeof family, "%s (scene %d of %d)", c4[k].family, scene + 1, scenes);
         Test *t = tg_hard_test(l, PART3B, KIND_COLOR, family, hidden);
         t->weight = 1.0 / scenes;

@@ -28,10 +28,10 @@ void tg_color(Test *t, const double e[3], const double r[3]);   /* t's scene */
 /* An image test of the scene file at nx x ny: one case per pixel. */
 Test *tg_image(TestList *list, const char *name, const char *scene_path, int nx, int ny);
 
-/* The hard cases of hard.c for rounds first_round .. first_round + rounds - 1
- * of every family (Parts 3a and 3b: two cases a round, Parts 1 and 2:
- * four), as tests tagged hard. */
-void tg_hard(TestList *list, uint64_t seed, int first_round, int rounds, bool hidden);
+/* The hard cases of hard.c, the first `rounds` rounds of every family
+ * (Parts 3a and 3b: two cases a round, Parts 1 and 2: four), as tests
+ * tagged hard. */
+void tg_hard(TestList *list, uint64_t seed, int rounds, bool hidden);
 
 /* A test of the hard-case group ("Part P: [hidden: ]hard: FAMILY"), and the
  * one of this family among the tests from index first on (made if none). */
@@ -55,7 +55,7 @@ void tg_mesh_ray(Test *t, const double e[3], const double r[3]);
 
 /* The hard cases of Parts 4 and 5 (hard_flat.c) as tests tagged hard, as
  * tg_hard does for the others. */
-void tg_hard_flat(TestList *list, uint64_t seed, int first_round, int rounds, bool hidden);
+void tg_hard_flat(TestList *list, uint64_t seed, int rounds, bool hidden);
 
 /* The random hidden cases' seeds: tests/weights.conf's seed, mixed with
  * the first constant for Parts 1-3b and the second for Parts 4-5.  Not

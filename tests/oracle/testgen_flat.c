@@ -286,13 +286,13 @@ static bool has_certain_hit(const Test *t)
     return false;
 }
 
-void tg_hard_flat(TestList *l, uint64_t seed, int first_round, int rounds, bool hidden)
+void tg_hard_flat(TestList *l, uint64_t seed, int rounds, bool hidden)
 {
     int first = l->n;
-    int n4 = 2 * (first_round + rounds) * HARD_PART4_FAMILIES;
+    int n4 = 2 * rounds * HARD_PART4_FAMILIES;
     HardCase4 *c4 = calloc((size_t)n4, sizeof *c4);
     hard_part4(seed, c4, n4);
-    for (int k = 2 * first_round * HARD_PART4_FAMILIES; k < n4; k++) {
+    for (int k = 0; k < n4; k++) {
         double p[3], n[3], e[3], r[3];
         put3(p, c4[k].plane.point);
         put3(n, c4[k].plane.normal);
@@ -302,10 +302,10 @@ void tg_hard_flat(TestList *l, uint64_t seed, int first_round, int rounds, bool 
     }
     free(c4);
 
-    int n5 = 2 * (first_round + rounds) * HARD_PART5_FAMILIES;
+    int n5 = 2 * rounds * HARD_PART5_FAMILIES;
     HardCase5 *c5 = calloc((size_t)n5, sizeof *c5);
     hard_part5(seed, c5, n5);
-    for (int k = 2 * first_round * HARD_PART5_FAMILIES; k < n5; k++) {
+    for (int k = 0; k < n5; k++) {
         double a[3], b[3], cc[3], e[3], r[3];
         put3(a, c5[k].tri.a);
         put3(b, c5[k].tri.b);
@@ -331,10 +331,10 @@ void tg_hard_flat(TestList *l, uint64_t seed, int first_round, int rounds, bool 
     /* Closed meshes: one test per mesh family, its mesh's rays as cases
      * (a test holds one mesh, so each round's mesh is a test of its own,
      * weighted so that a family counts once). */
-    int nm = (first_round + rounds) * HARD_MESH_FAMILIES;
+    int nm = rounds * HARD_MESH_FAMILIES;
     HardMesh *m = calloc((size_t)nm, sizeof *m);
     hard_meshes(seed, m, nm);
-    for (int k = first_round * HARD_MESH_FAMILIES; k < nm; k++) {
+    for (int k = 0; k < nm; k++) {
         char family[HARD_FAMILY_LEN + 32];
         snprintf(family, sizeof family, "%s (%s)", m[k].family,
                  m[k].ntris == 12 ? "a cube" : m[k].ntris == 8 ? "an octahedron" : "an icosahedron");

@@ -783,7 +783,7 @@ static void test_hard_camera_cases(void)
         TestList l = { 0 };
         for (int k = 0; k < n0; k++)
             test_add_case(testlist_add(&l, PART1, KIND_PLANE, "filler"));
-        tg_hard(&l, 1234, 0, 1, false);
+        tg_hard(&l, 1234, 1, false);
         int found = 0;
         for (int k = 0; k < l.n; k++)
             if (strstr(l.tests[k].name, "hard: camera rays")) {
