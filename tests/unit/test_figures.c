@@ -1,11 +1,13 @@
 /*
  * test_figures.c - the report page's figures of a failing case (tests/
- * grader/fig_*.c) show what they are about, for every case of the public
- * tests and of the hidden tests of SEEDS seeds, each drawn with several
- * wrong answers:
+ * grader/fig_*.c) show what they are about, for every case of Parts 2 to
+ * 5 in the public tests and in the hidden tests of SEEDS seeds, each drawn
+ * with several wrong answers:
  *
- *   - an expected hit is marked in the main window;
- *   - a returned hit is marked there too, or said to be off the figure;
+ *   - an expected hit (Part 2: the expected centre) is marked in the main
+ *     window;
+ *   - a returned one is marked there too, or said to be off the figure;
+ *   - Part 2: the expected centre is the middle of the pixel drawn as (i, j);
  *   - Parts 3a and 3b: the expected hit's mark lies on its sphere's circle;
  *   - Part 4: it lies on the plane's line;
  *   - Part 5: a triangle the ray hits is drawn with the ray's point in it.
@@ -57,8 +59,10 @@ typedef struct {
     double want_x, want_y, got_x, got_y;
     bool line;                  /* Part 4: the plane's line (its thick stroke)  */
     double lx1, ly1, lx2, ly2;
-    bool circle;                /* Part 3a: the sphere's circle, drawn whole    */
+    bool circle;                /* Parts 3a, 3b: the sphere's circle, drawn whole */
     double cx, cy, r;
+    bool pixel;                 /* Part 2: pixel (i, j), filled                 */
+    double px, py, pw, ph;
 } MainWindow;
 
 /* The first window of the figure in svg: false when it has none. */
@@ -79,6 +83,9 @@ static bool main_window(const char *svg, MainWindow *mw)
         } else if (strncmp(q, "<circle ", 8) == 0 && attr(q, "r") == 7.5 && attr_is(q, "stroke", COL_GOT)) {
             mw->got = true;
             mw->got_x = attr(q, "cx"), mw->got_y = attr(q, "cy");
+        } else if (strncmp(q, "<rect ", 6) == 0 && attr_is(q, "fill", "#fff1b8")) {
+            mw->pixel = true;
+            mw->px = attr(q, "x"), mw->py = attr(q, "y"), mw->pw = attr(q, "width"), mw->ph = attr(q, "height");
         } else if (strncmp(q, "<circle ", 8) == 0 && attr_is(q, "stroke-width", "1.6")) {
             mw->circle = true;
             mw->cx = attr(q, "cx"), mw->cy = attr(q, "cy"), mw->r = attr(q, "r");
@@ -105,7 +112,7 @@ static double off_line(const MainWindow *mw, double x, double y)
 /* ---- drawing every case with wrong answers ------------------------------------------ */
 
 typedef struct {
-    int figures, want_marks, got_marks, got_off, on_line, on_circle, crossed;
+    int figures, want_marks, got_marks, got_off, on_line, on_circle, crossed, centred;
     int failures;               /* reported; the first few are printed */
 } Tally;
 
@@ -142,14 +149,19 @@ static void check_figure(Tally *ty, const Test *t, int c, const double *got)
     ty->figures++;
     /* the expected hit: Parts 3a and 4 say so in the legend, Part 3b names
      * the sphere whose colour is expected */
-    bool want_hit = t->kind == KIND_COLOR ? strstr(svg, "expected: sphere ") != NULL : cs->want[0] != 0;
+    /* the expected hit (Part 2: the expected centre): Parts 3a, 4 and 5
+     * say so in the legend, Part 3b names the sphere whose colour is
+     * expected */
+    bool want_hit = t->kind == KIND_PIXEL ? true
+                    : t->kind == KIND_COLOR ? strstr(svg, "expected: sphere ") != NULL : cs->want[0] != 0;
     if (want_hit && !(mw.want && in_box(&mw, mw.want_x, mw.want_y)))
         fail(ty, t, c, got, nout, mw.want ? "the expected hit is marked outside the main window"
                                           : "the expected hit is not marked in the main window");
     ty->want_marks += want_hit && mw.want;
     /* the returned hit: marked, or said to be off the figure (or NaN) */
-    bool got_hit = got && (t->kind == KIND_COLOR ? strstr(svg, "your code: sphere ") && !strstr(svg, "does not see")
-                                                 : got[0] == 1);
+    bool got_hit = got && (t->kind == KIND_PIXEL ? isfinite(got[0]) && isfinite(got[1])
+                           : t->kind == KIND_COLOR ? strstr(svg, "your code: sphere ") && !strstr(svg, "does not see")
+                           : got[0] == 1);
     bool said_off = strstr(svg, "off the figure") || strstr(svg, "NaN: no point");
     if (got_hit && !(mw.got && in_box(&mw, mw.got_x, mw.got_y)) && !said_off)
         fail(ty, t, c, got, nout, "the returned hit is neither marked in the main window nor said to be off it");
@@ -175,6 +187,16 @@ static void check_figure(Tally *ty, const Test *t, int c, const double *got)
         }
         ty->on_circle += d <= 1.5;
     }
+    /* Part 2: the expected centre is the middle of the pixel drawn as (i, j) */
+    if (t->kind == KIND_PIXEL && mw.want && mw.pixel && mw.pw >= 4 && mw.ph >= 4) {
+        double d = hypot(mw.want_x - (mw.px + mw.pw / 2), mw.want_y - (mw.py + mw.ph / 2));
+        if (!(d <= 1)) {
+            char what[120];
+            snprintf(what, sizeof what, "the expected centre is %.3g px from the middle of pixel (i, j)", d);
+            fail(ty, t, c, got, nout, what);
+        }
+        ty->centred += d <= 1;
+    }
     /* Part 5: a triangle the ray hits is drawn with the ray's point in it
      * (a hit within rounding of an edge may be drawn either way) */
     bool crossed = t->kind == KIND_TRIANGLE ? strstr(svg, "inside or on the edge of") != NULL
@@ -189,17 +211,31 @@ static void check_figure(Tally *ty, const Test *t, int c, const double *got)
 
 /* Each case of each test drawn with answers that are wrong in the ways a
  * figure must show: a miss, no answer, a hit too far, too near, a hair
- * off, behind e, out of all proportion, not a number; for Part 3b, no
- * answer, the background and each sphere's colour. */
+ * off, behind e, out of all proportion, not a number; for Part 2, x and y
+ * swapped, y flipped, the pixel's corner, three pixels off, a hair off,
+ * 1e300 and NaN; for Part 3b, no answer, the background and each
+ * sphere's colour.  (Parts 1 and 3b's camera rays: figures with no marks
+ * to read back.) */
 static void check_list(Tally *ty, const TestList *l)
 {
     for (int i = 0; i < l->n; i++) {
         const Test *t = &l->tests[i];
-        if (t->kind == KIND_CAMERA || t->kind == KIND_PLANE || t->kind == KIND_PIXEL || t->kind == KIND_IMAGE)
+        if (t->kind == KIND_CAMERA || t->kind == KIND_PLANE || t->kind == KIND_IMAGE)
             continue;
         for (int c = 0; c < t->ncases; c++) {
             const Case *cs = &t->cases[c];
             check_figure(ty, t, c, NULL);
+            if (t->kind == KIND_PIXEL) {
+                const double *w = cs->want, pw = cs->in[4] / cs->in[2], ph = cs->in[5] / cs->in[3];
+                const double answers[][3] = {
+                    { w[1], w[0], w[2] }, { w[0], -w[1], w[2] }, { w[0] - pw / 2, w[1] + ph / 2, w[2] },
+                    { w[0] + 3 * pw, w[1], w[2] }, { w[0], w[1] * (1 + 1e-9), w[2] }, { 1e300, w[1], w[2] },
+                    { NAN, w[1], w[2] },
+                };
+                for (size_t k = 0; k < sizeof answers / sizeof answers[0]; k++)
+                    check_figure(ty, t, c, answers[k]);
+                continue;
+            }
             if (t->kind == KIND_COLOR) {
                 check_figure(ty, t, c, t->background);
                 for (int k = 0; k < t->nspheres && k < 4; k++)
@@ -238,10 +274,11 @@ static void test_figures_show_what_they_are_about(void)
     /* and the checks above met what they check, many times over */
     char said[400];
     snprintf(said, sizeof said, "%d figures: %d expected hits marked, %d returned hits marked and %d said "
-             "off the figure; %d hits on their sphere's circle, %d on the plane's line, %d in their triangle",
-             ty.figures, ty.want_marks, ty.got_marks, ty.got_off, ty.on_circle, ty.on_line, ty.crossed);
-    CHECK_MSG(ty.want_marks > 1000 && ty.got_marks > 1000 && ty.got_off > 100 && ty.on_circle > 1000 &&
-              ty.on_line > 100 && ty.crossed > 100, "%s", said);
+             "off the figure; %d pixel centres in their pixel, %d hits on their sphere's circle, %d on the "
+             "plane's line, %d in their triangle", ty.figures, ty.want_marks, ty.got_marks, ty.got_off,
+             ty.centred, ty.on_circle, ty.on_line, ty.crossed);
+    CHECK_MSG(ty.want_marks > 1000 && ty.got_marks > 1000 && ty.got_off > 100 && ty.centred > 100 &&
+              ty.on_circle > 1000 && ty.on_line > 100 && ty.crossed > 100, "%s", said);
     printf("%s\n", said);
 }
 
