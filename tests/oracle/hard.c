@@ -430,21 +430,28 @@ int hard_part3b(uint64_t seed, HardCase3b *cases, int max)
         double t0 = draw_uni(&s, 2, 20), R1 = draw_uni(&s, 0.5, 2);
         Vec3 p = vec3_scale(r, t0);                         /* a point ahead */
         switch (fam) {
-        case 0: {       /* both entered at p; odd: the second one 1e-6 later or sooner */
+        case 0: {       /* both entered at p; odd: the second one 1e-6 sooner (even rounds) or
+                           later (odd rounds); a third one on the ray beyond both */
             double R2 = R1 * draw_uni(&s, 1.2, 3);
-            double shift = even ? 0 : R2 * 1e-6 * (hard_rng_next(&s) % 2 ? 1 : -1);
+            int round = k / (2 * HARD_PART3B_FAMILIES);
+            double shift = even ? 0 : R2 * 1e-6 * (round % 2 ? 1 : -1);
             c->spheres[0] = make_sphere(vec3_add(p, vec3_scale(r, R1)), R1, 0);
             c->spheres[1] = make_sphere(vec3_add(p, vec3_scale(r, R2 + shift)), R2, 1);
-            c->spheres[2] = make_sphere(vec3_add(p, vec3_scale(draw_unit(&s), 8 * R2)), R1, 2);
+            Vec3 beyond = vec3_add(p, vec3_scale(r, 2 * R2 + draw_uni(&s, 2, 4) * R1));
+            c->spheres[2] = make_sphere(vec3_add(beyond, vec3_scale(draw_perp(&s, r), draw_uni(&s, 0, 0.9) * R1)),
+                                        R1, 2);
             c->nspheres = 3;
             break;
         }
-        case 1: {       /* a small sphere inside a big one */
+        case 1: {       /* a small sphere inside a big one, on the ray: listed first (even) or last */
             double R2 = R1 * draw_uni(&s, 2, 4);
             Vec3 cb = vec3_add(p, vec3_scale(r, R2));
-            Vec3 cs = vec3_add(cb, vec3_scale(draw_unit(&s), draw_uni(&s, 0, R2 - R1)));
-            c->spheres[0] = make_sphere(cs, R1, 0);
-            c->spheres[1] = make_sphere(cb, R2, 1);
+            /* at most (R2 - R1) / 2 along the ray and 0.8 R1 across it from
+             * cb: inside the big one (R1 <= R2 - R1), and hit */
+            Vec3 cs = vec3_add(vec3_add(cb, vec3_scale(r, draw_uni(&s, -0.5, 0.5) * (R2 - R1))),
+                               vec3_scale(draw_perp(&s, r), draw_uni(&s, 0, 0.8) * R1));
+            c->spheres[even ? 0 : 1] = make_sphere(cs, R1, even ? 0 : 1);
+            c->spheres[even ? 1 : 0] = make_sphere(cb, R2, even ? 1 : 0);
             c->nspheres = 2;
             break;
         }
