@@ -273,7 +273,9 @@ static bool hits_right(const PartSoFar *part)
  * that named none, with those judged after it too).  (Only then: a
  * mistake is a model of many ways to write it, the student's way may
  * differ from it elsewhere, and a test it alone explains names it
- * whatever the other tests say.)  NULL when none is confirmed. */
+ * whatever the other tests say.)  A test answered with misses alone
+ * names only a mistake named for another test and not ruled out.  NULL
+ * when none is confirmed. */
 static const char *flat_mistake(const Test *test, const double (*got)[CASE_MAX_OUT],
                                 const bool *ok, int answered, const PartSoFar *part)
 {
@@ -309,13 +311,21 @@ static const char *flat_mistake(const Test *test, const double (*got)[CASE_MAX_O
             }
         }
     }
-    if (nfit == 1)
+    /* A test answered with misses alone shows no more than that: every
+     * mistake that misses its hits fits it (an epsilon on det fits a test
+     * of tiny triangles answered by code that misses every hit, whatever
+     * the reason).  Its mistake is then the one another test named, where
+     * the answers held hits too, if one did. */
+    bool any_hit = false;
+    for (int c = 0; c < answered; c++)
+        any_hit = any_hit || got[c][0] == 1;
+    if (nfit == 1 && any_hit)
         return fit[0];
     int nleft = 0;
     for (int k = 0; k < nfit; k++)
         if (!ruled_out(fit[k], part))
             fit[nleft++] = fit[k];
-    if (nleft == 1)
+    if (nleft == 1 && any_hit)
         return fit[0];
     const char *named = NULL;
     for (int k = 0; k < nleft; k++) {

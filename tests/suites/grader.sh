@@ -378,6 +378,8 @@ while read -r class sname g1 g2 g3a g3b g4 g5; do
     while read -r key want; do
         if [ "$key" = output ]; then
             check "$sname: the report says '$want'" grep -q -e "$want" "$json"
+        elif [ "$key" = nooutput ]; then
+            check "$sname: the report never says '$want'" sh -c '! grep -q -e "$1" "$2"' sh "$want" "$json"
         fi
     done <"$expect"
     # The diagnosis: exactly the causes the expect file names, part by part.

@@ -97,11 +97,14 @@ static void hit_case(Test *t, const char *const *mistakes, int nmistakes)
         snprintf(case_add_hint(c)->text, sizeof c->hints[0].text, "%s", mistakes[k]);
 }
 
-/* Two mistakes, A and B, answer both cases of a test with misses, as the
- * code did: the test alone cannot tell them apart.  The part's other tests
- * can: a test passed where A would have failed rules A out, and a mistake
- * named for another failed test is the one named here.  Otherwise neither
- * is named. */
+/* Two mistakes, A and B, answer both hit cases of a test with misses, as
+ * the code did, and its third case right: the test alone cannot tell them
+ * apart.  The part's other tests can: a test passed where A would have
+ * failed rules A out, and a mistake named for another failed test is the
+ * one named here.  Otherwise neither is named.  A test whose cases the
+ * code answered with misses alone shows less: every mistake that misses
+ * hits would fit it, so it names only a mistake another test named and
+ * none ruled out, never one by elimination. */
 static void test_two_mistakes_fit(void)
 {
     static const char A[] = "mistake A", B[] = "mistake B";
@@ -110,37 +113,89 @@ static void test_two_mistakes_fit(void)
     Test *failed = testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: the test failed");
     hit_case(failed, both, 2);
     hit_case(failed, both, 2);
+    hit_case(failed, NULL, 0);     /* both mistakes answer it right, a hit */
     Test *hits = testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: a test of plain hits");
     hit_case(hits, NULL, 0);
     Test *rules_a_out = testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: a test A fails");
     hit_case(rules_a_out, a_only, 1);
-    const char answers[] = "0x0p+0 0x0p+0\n0x0p+0 0x0p+0\nend 2\n";
+    Test *failed_misses = testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: misses alone");
+    hit_case(failed_misses, both, 2);
+    hit_case(failed_misses, both, 2);
+    const char with_hit[] = "0x0p+0 0x0p+0\n0x0p+0 0x0p+0\n0x1p+0 0x1p+2\nend 3\n";
+    const char misses[] = "0x0p+0 0x0p+0\n0x0p+0 0x0p+0\nend 2\n";
 
     const Test *passed[2] = { &list.tests[1], &list.tests[2] };
     const char *named_a[] = { A }, *named_ab[] = { A, B };
     static const struct {
         int npassed, nnamed, ab;       /* ab: named_ab, not named_a */
-        const char *want;
+        const char *want, *want_misses;
     } cases[] = {
-        { 1, 0, 0, NULL },             /* nothing tells them apart   */
-        { 2, 0, 0, B },                /* a passed test rules A out  */
-        { 1, 1, 0, A },                /* A was named for a failed test */
-        { 1, 2, 1, NULL },             /* both were: name neither    */
-        { 2, 1, 0, B },                /* A ruled out, though named  */
+        { 1, 0, 0, NULL, NULL },       /* nothing tells them apart        */
+        { 2, 0, 0, B, NULL },          /* a passed test rules A out       */
+        { 1, 1, 0, A, A },             /* A was named for a failed test   */
+        { 1, 2, 1, NULL, NULL },       /* both were: name neither         */
+        { 2, 1, 0, B, NULL },          /* A ruled out, though named       */
+    };
+    for (int m = 0; m < 2; m++) {
+        const char *answers = m ? misses : with_hit;
+        for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+            PartSoFar part = { passed, cases[k].npassed, cases[k].ab ? named_ab : named_a, cases[k].nnamed };
+            const char *want = m ? cases[k].want_misses : cases[k].want;
+            char *out = NULL;
+            Answers a;
+            CHECK(!check_answers_in_part(&list.tests[m ? 3 : 0], answers, strlen(answers), &part, &out,
+                                         &a));
+            if (want) {
+                CHECK_MSG(a.named && strcmp(a.named, want) == 0, "%s, case %zu: named %s, not %s",
+                          m ? "misses alone" : "with a hit", k, a.named ? a.named : "nothing", want);
+                CHECK_STR_CONTAINS(out, want);
+            } else {
+                CHECK_MSG(!a.named, "%s, case %zu: named %s", m ? "misses alone" : "with a hit", k,
+                          a.named ? a.named : "");
+                CHECK_MSG(!strstr(out, A) && !strstr(out, B), "case %zu: %s", k, out);
+            }
+            free(out);
+            answers_free(&a);
+        }
+    }
+    testlist_free(&list);
+}
+
+/* One mistake alone explains a test: with a hit among the answers it is
+ * named whatever the other tests say; answered with misses alone, only if
+ * another test named it (code that misses nearly every hit, for a reason
+ * no model has, fits every mistake that misses these hits). */
+static void test_one_mistake_fits(void)
+{
+    static const char A[] = "mistake A";
+    const char *a_only[] = { A };
+    TestList list = { 0 };
+    Test *failed = testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: the test failed");
+    hit_case(failed, a_only, 1);
+    hit_case(failed, NULL, 0);
+    hit_case(testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: a test of plain hits"), NULL, 0);
+    const Test *passed[1] = { &list.tests[1] };
+    const char *named_a[] = { A };
+    static const struct {
+        const char *answers;
+        int nnamed;
+        bool names_a;
+    } cases[] = {
+        { "0x0p+0 0x0p+0\n0x1p+0 0x1p+2\nend 2\n", 0, true },
+        { "0x0p+0 0x0p+0\nend 1\n", 0, false },
+        { "0x0p+0 0x0p+0\nend 1\n", 1, true },
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
-        PartSoFar part = { passed, cases[k].npassed, cases[k].ab ? named_ab : named_a, cases[k].nnamed };
+        PartSoFar part = { passed, 1, named_a, cases[k].nnamed };
         char *out = NULL;
         Answers a;
-        CHECK(!check_answers_in_part(&list.tests[0], answers, sizeof answers - 1, &part, &out, &a));
-        if (cases[k].want) {
-            CHECK_MSG(a.named && strcmp(a.named, cases[k].want) == 0, "case %zu: named %s, not %s", k,
-                      a.named ? a.named : "nothing", cases[k].want);
-            CHECK_STR_CONTAINS(out, cases[k].want);
-        } else {
-            CHECK_MSG(!a.named, "case %zu: named %s", k, a.named ? a.named : "");
-            CHECK_MSG(!strstr(out, A) && !strstr(out, B), "case %zu: %s", k, out);
-        }
+        CHECK(!check_answers_in_part(&list.tests[0], cases[k].answers, strlen(cases[k].answers), &part,
+                                     &out, &a));
+        if (cases[k].names_a)
+            CHECK_MSG(a.named && strcmp(a.named, A) == 0, "case %zu: named %s", k,
+                      a.named ? a.named : "nothing");
+        else
+            CHECK_MSG(!a.named && !strstr(out, A), "case %zu: named %s", k, a.named ? a.named : "");
         free(out);
         answers_free(&a);
     }
@@ -161,7 +216,12 @@ static void test_part_again(void)
     hit_case(testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: plain hits"), NULL, 0);
     hit_case(testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: A alone"), a_only, 1);
     hit_case(testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: A or B again"), both, 2);
-    const char miss[] = "0x0p+0 0x0p+0\nend 1\n";
+    /* Each failed test's second case a hit that both mistakes get right:
+     * answers with a hit among them, which may name a mistake alone. */
+    for (int k = 0; k < 4; k++)
+        if (k != 1)
+            hit_case(&list.tests[k], NULL, 0);
+    const char miss[] = "0x0p+0 0x0p+0\n0x1p+0 0x1p+2\nend 2\n";
     const Test *passed[] = { &list.tests[1] };
     const char *named_a[] = { A };
 
@@ -246,6 +306,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_refused),
     CHECK_TEST(test_bytes),
     CHECK_TEST(test_two_mistakes_fit),
+    CHECK_TEST(test_one_mistake_fits),
     CHECK_TEST(test_part_again),
     CHECK_TEST(test_hit_not_ahead),
 };
