@@ -51,6 +51,13 @@ $(info or clone the repository again from a WSL (Linux) terminal.)
 $(error the kit's files have Windows line ends)
 endif
 
+# Quiet by default: the kit's own build commands are not echoed, and a
+# stage file (the file a student edits) is named as make render compiles
+# it.  V=1 echoes every command.  Warnings and errors print either way.
+V         ?=
+Q          = $(if $(filter 1,$(V)),,@)
+SAY_CC     = $(if $(Q),@echo "  CC      $<")
+
 # What the targets act on (all accept absolute paths).
 SUBMISSION ?= labs
 SCENE      ?= labs/scenes/default.scene
@@ -103,13 +110,13 @@ help:
 	@echo "make gradescope | prairielearn | student-kit | bench | fuzz | sanitize-grader | handouts | test | clean"
 
 $(BUILD)/kit/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
-	$(CC) $(CFLAGS) $(THREADS) -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) $(THREADS) -c $< -o $@
 $(ASAN)/kit/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
-	$(CC) $(SANFLAGS) $(THREADS) -c $< -o $@
+	$(Q)$(CC) $(SANFLAGS) $(THREADS) -c $< -o $@
 $(BUILD)/kit/libkit.a: $(KIT_OBJ)
-	rm -f $@ && $(KIT_AR) rcs $@ $^
+	$(Q)rm -f $@ && $(KIT_AR) rcs $@ $^
 $(ASAN)/kit/libkit.a: $(KIT_ASAN)
-	rm -f $@ && $(KIT_AR) rcs $@ $^
+	$(Q)rm -f $@ && $(KIT_AR) rcs $@ $^
 
 # ---- renderer and compare, per submission ----------------------------------
 # A submission's build lives in out/build/sub/<name>: labs and solutions by
@@ -127,9 +134,9 @@ SUB_BUILD  = $(BUILD)/sub/$(SUB_NAME)
 # The renderer's own objects (lto/) are built with link-time optimisation,
 # so the per-pixel calls into the stage files can be inlined.
 $(BUILD)/sub/labs/%.o: labs/%.c $(KIT_HDR) | $$(@D)/.
-	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/sub/solutions/%.o: solutions/%.c $(KIT_HDR) | $$(@D)/.
-	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 # A stage file the student edits: bin/stagecheck first refuses one the
 # grader would not build (a header of the student's own: it compiles each
 # stage file alone; tests/grader/own_headers.h).  One that does not compile:
@@ -139,15 +146,17 @@ STAGE_CC = $(BUILD)/bin/stagecheck $< && \
            { $(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@ || { $(BUILD)/bin/lookalike $<; exit 1; }; }
 STAGE_TOOLS = $(BUILD)/bin/stagecheck $(BUILD)/bin/lookalike
 $(BUILD)/sub/labs/lto/%.o: labs/%.c $(KIT_HDR) | $$(@D)/. $(STAGE_TOOLS)
-	$(STAGE_CC)
+	$(SAY_CC)
+	$(Q)$(STAGE_CC)
 $(BUILD)/sub/solutions/lto/%.o: solutions/%.c $(KIT_HDR) | $$(@D)/.
-	$(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@
 ifeq ($(filter labs solutions,$(SUB_NAME)),)
 $(SUB_BUILD)/lto/%.o: $$(call stage_src,$$*,$(SUB_DIR)) $(KIT_HDR) | $$(@D)/. $(STAGE_TOOLS)
-	$(STAGE_CC)
+	$(SAY_CC)
+	$(Q)$(STAGE_CC)
 endif
 $(BUILD)/kit/lto/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
-	$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) -c $< -o $@
 RENDER_OBJ = $(BUILD)/kit/lto/render_main.o $(BUILD)/kit/lto/render.o $(BUILD)/kit/lto/image.o \
              $(BUILD)/kit/lto/closest.o
 # A link that fails: bin/linkcheck then says what the linker's message
@@ -159,11 +168,11 @@ render_src = $(if $(filter labs solutions,$(1)),$(STAGES:%=$(1)/%.c),\
 $(BUILD)/sub/%/render: $(RENDER_OBJ) \
                        $$(addprefix $(BUILD)/sub/$$*/lto/,$$(addsuffix .o,$$(STAGES))) $(BUILD)/kit/libkit.a \
                        | $(BUILD)/bin/linkcheck
-	$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) $^ -o $@ $(LDLIBS) 2>$@.log || \
+	$(Q)$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) $^ -o $@ $(LDLIBS) 2>$@.log || \
 	    { cat $@.log >&2; $(BUILD)/bin/linkcheck $@.log $(call render_src,$*); rm -f $@.log; exit 1; }; \
 	    cat $@.log >&2; rm -f $@.log
 $(BUILD)/bin/compare: $(BUILD)/kit/compare_main.o $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 
 SCENE_NAME = $(basename $(notdir $(SCENE)))
 OUT_RENDER = $(if $(OUT),$(OUT),out/$(SCENE_NAME).png)
@@ -198,36 +207,36 @@ compare: submission-dir $(SUB_BUILD)/render $(BUILD)/bin/compare $(if $(HAVE_SOL
 ORACLE_SRC = $(filter-out %_main.c,$(wildcard tests/oracle/*.c))
 ORACLE_OBJ = $(ORACLE_SRC:tests/oracle/%.c=$(BUILD)/oracle/%.o)
 $(BUILD)/oracle/%.o: tests/oracle/%.c $(wildcard tests/oracle/*.h) $(KIT_HDR) | $$(@D)/.
-	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(ASAN)/oracle/%.o: tests/oracle/%.c $(wildcard tests/oracle/*.h) $(KIT_HDR) | $$(@D)/.
-	$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/oracle/liboracle.a: $(ORACLE_OBJ)
-	rm -f $@ && $(KIT_AR) rcs $@ $^
+	$(Q)rm -f $@ && $(KIT_AR) rcs $@ $^
 $(ASAN)/oracle/liboracle.a: $(ORACLE_SRC:tests/oracle/%.c=$(ASAN)/oracle/%.o)
-	rm -f $@ && $(KIT_AR) rcs $@ $^
+	$(Q)rm -f $@ && $(KIT_AR) rcs $@ $^
 
 # ---- instructor tools: archives (zip, tar.gz) and JSON (tests/tools) -------
 TOOLS_SRC  = $(filter-out %_main.c,$(wildcard tests/tools/*.c))
 TOOLS_OBJ  = $(TOOLS_SRC:tests/tools/%.c=$(BUILD)/tools/%.o)
 $(BUILD)/tools/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) $(KIT_HDR) | $$(@D)/.
-	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(ASAN)/tools/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) $(KIT_HDR) | $$(@D)/.
-	$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/tools/libtools.a: $(TOOLS_OBJ)
-	rm -f $@ && $(KIT_AR) rcs $@ $^
+	$(Q)rm -f $@ && $(KIT_AR) rcs $@ $^
 $(ASAN)/tools/libtools.a: $(TOOLS_SRC:tests/tools/%.c=$(ASAN)/tools/%.o)
-	rm -f $@ && $(KIT_AR) rcs $@ $^
+	$(Q)rm -f $@ && $(KIT_AR) rcs $@ $^
 $(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 # The report page's checker (tests/suites/report.sh).
 $(BUILD)/bin/htmlcheck: $(BUILD)/tools/htmlcheck_main.o | $$(@D)/.
-	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 all: $(BUILD)/bin/htmlcheck
 # The kit's own tests compile each distinct file once (tests/tools/ccmemo_main.c):
 # built as "cc", beside a marker that tells it its own directory on PATH.
 $(BUILD)/ccmemo/cc: $(BUILD)/tools/ccmemo_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(CC) $(CFLAGS) $^ -o $@
-	: >$(@D)/ccmemo.marker
+	$(Q)$(CC) $(CFLAGS) $^ -o $@
+	$(Q): >$(@D)/ccmemo.marker
 
 # ---- the autograder (tests/grader) ------------------------------------------
 # In the instructor's kit the grader also draws the hidden tests with the
@@ -253,14 +262,14 @@ GRADE_DEFS = $(if $(and $(HAVE_ORACLE),$(HAVE_HIDDEN)),-DGRADER_ORACLE)
 GRADE_EXTRA = $(if $(GRADE_DEFS),$(BUILD)/grader/hidden.o $(BUILD)/oracle/liboracle.a)
 
 $(BUILD)/grader/%.o: tests/grader/%.c $(GRADER_HDR) | $$(@D)/.
-	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/grader/harness_%.o: tests/grader/harness.c tests/grader/hexfloat.h $(KIT_HDR) | $$(@D)/.
-	$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -c $< -o $@
 # The report page's render program (build_render): harness_render.c draws a scene.
 $(BUILD)/grader/harness_render.o: tests/grader/harness_render.c $(KIT_HDR) | $$(@D)/.
-	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
-	cp $< $@
+	$(Q)cp $< $@
 # On Linux each part's program is also prebuilt as a runner (harness_load.c):
 # the grader then builds a student's file as a shared object, which costs a
 # fraction of linking a whole program, and the runner loads it (build.c).
@@ -272,13 +281,13 @@ RUNNER_DEFS = $(if $(HAVE_SOLUTIONS),-DHARNESS_REFS)
 $(BUILD)/grader/harness_load_%.o: tests/grader/harness.c tests/grader/harness_load.h \
                                   tests/grader/harness_serve.h tests/grader/hexfloat.h \
                                   $(KIT_HDR) | $$(@D)/.
-	$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -DHARNESS_LOAD $(RUNNER_DEFS) -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -DHARNESS_LOAD $(RUNNER_DEFS) -c $< -o $@
 $(BUILD)/grader/harness_load.o: tests/grader/harness_load.c tests/grader/harness_load.h \
                                 tests/grader/contract.h $(KIT_HDR) | $$(@D)/.
-	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/grader/harness_serve.o: tests/grader/harness_serve.c tests/grader/harness_serve.h \
                                  tests/grader/serve_protocol.h | $$(@D)/.
-	$(CC) $(CFLAGS) -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) -c $< -o $@
 # (runner_3, Part 3a's, leaves out Part 3b's reference too: it calls
 # sphere_intersect, which only the student's object defines.)
 runner_refs = $(if $(HAVE_SOLUTIONS),$(filter-out $(BUILD)/grader/ref_$(word $(1),$(STAGES)).o \
@@ -286,35 +295,35 @@ runner_refs = $(if $(HAVE_SOLUTIONS),$(filter-out $(BUILD)/grader/ref_$(word $(1
 define RUNNER_RULE
 $(BUILD)/grader/runner_$(1): $(BUILD)/grader/harness_load_$(1).o $(BUILD)/grader/harness_load.o \
                            $(BUILD)/grader/harness_serve.o $(call runner_refs,$(1))
-	$$(CC) $$(CFLAGS) -rdynamic $$^ -o $$@ $$(LDLIBS) -ldl
+	$(Q)$$(CC) $$(CFLAGS) -rdynamic $$^ -o $$@ $$(LDLIBS) -ldl
 endef
 $(foreach k,1 2 3 4 5 6,$(eval $(call RUNNER_RULE,$(k))))
 $(BUILD)/grader/hidden.o: tests/hidden/hidden.c $(GRADER_HDR) $(wildcard tests/oracle/*.h) | $$(@D)/.
-	$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/grader/libgrader.a: $(GRADER_OBJ)
-	rm -f $@ && $(KIT_AR) rcs $@ $^
+	$(Q)rm -f $@ && $(KIT_AR) rcs $@ $^
 $(BUILD)/grader/grade_main.o: tests/grader/grade_main.c $(GRADER_HDR) $(wildcard tests/oracle/*.h) | $$(@D)/.
-	$(CC) $(CFLAGS) $(GRADE_DEFS) -DGRADER_BUILD='"$(BUILD)"' -Ilabs -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) $(GRADE_DEFS) -DGRADER_BUILD='"$(BUILD)"' -Ilabs -c $< -o $@
 $(BUILD)/bin/grade: $(BUILD)/grader/grade_main.o $(GRADE_EXTRA) $(BUILD)/grader/libgrader.a \
                     $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $(HARNESS) $(GRADER_REF) $(RUNNERS) $$(@D)/.
-	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/lookalike: $(BUILD)/grader/lookalike_main.o $(BUILD)/grader/lookalike.o \
                         $(BUILD)/tools/utf8.o $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/linkcheck: $(BUILD)/grader/linkcheck_main.o $(BUILD)/grader/linkmsg.o \
                         $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/stagecheck: $(BUILD)/grader/stagecheck_main.o $(BUILD)/grader/include_scan.o \
                          $(BUILD)/grader/own_headers.o $(BUILD)/grader/lookalike.o \
                          $(BUILD)/tools/utf8.o $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/gentests: $(BUILD)/oracle/gentests_main.o $(BUILD)/oracle/liboracle.a \
                        $(BUILD)/grader/libgrader.a $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 # The reference solutions' accuracy on the hard cases (tables for the README).
 $(BUILD)/bin/accuracy: $(BUILD)/oracle/accuracy_main.o $(BUILD)/oracle/liboracle.a \
                        $(STAGES:%=$(BUILD)/sub/solutions/%.o) | $$(@D)/.
-	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 
 grader: $(BUILD)/bin/grade $(HARNESS) $(GRADER_REF) $(RUNNERS)
 
@@ -324,7 +333,7 @@ grader: $(BUILD)/bin/grade $(HARNESS) $(GRADER_REF) $(RUNNERS)
 # labs/reference/default.png (the grader takes the first that exists).
 REPORT_REF = $(if $(HAVE_SOLUTIONS),$(BUILD)/report/default.png)
 $(BUILD)/report/default.png: $(BUILD)/sub/solutions/render labs/scenes/default.scene | $$(@D)/.
-	$(BUILD)/sub/solutions/render labs/scenes/default.scene --quiet -o $@
+	$(Q)$(BUILD)/sub/solutions/render labs/scenes/default.scene --quiet -o $@
 all: $(REPORT_REF)
 grade: grader $(REPORT_REF)
 	@$(BUILD)/bin/grade --submission "$(SUBMISSION)" $(if $(PART),--part $(PART)) \
@@ -340,7 +349,7 @@ grade-all: grader $(REPORT_REF)
 # one folder per submission for grade-all (tests/grader/sortsubs_main.c).
 $(BUILD)/bin/sortsubs: $(BUILD)/grader/sortsubs_main.o $(BUILD)/grader/libgrader.a \
                        $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 grader: $(BUILD)/bin/sortsubs
 sort-submissions: $(BUILD)/bin/sortsubs
 	@test -n "$(FROM)" && test -n "$(TO)" || { echo "usage: make sort-submissions FROM=download.zip|dir TO=newdir"; exit 2; }
@@ -416,9 +425,9 @@ REF_OBJ    = $(STAGES:%=$(BUILD)/sub/$(REF_DIR)/%.o)
 REF_ASAN   = $(STAGES:%=$(ASAN)/sub/$(REF_DIR)/%.o)
 unit-tests: $(UNIT_BIN)
 $(ASAN)/sub/solutions/%.o: solutions/%.c $(KIT_HDR) | $$(@D)/.
-	$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
 $(ASAN)/sub/labs/%.o: labs/%.c $(KIT_HDR) | $$(@D)/.
-	$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
 UNIT_LIBS  = $(if $(HAVE_ORACLE),$(BUILD)/oracle/liboracle.a) $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
 UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
 # Compiled, then linked: the compile memo of `make test` keeps compiles and
@@ -431,11 +440,11 @@ UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) $(BUILD)/tests
                          $(BUILD)/tests/test_hidden $(BUILD)/tests/test_figures,$(UNIT_BIN))
 $(UNIT_PLAIN:$(BUILD)/tests/%=$(BUILD)/tests/obj/%.o): $(BUILD)/tests/obj/%.o: tests/unit/%.c \
                           tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS) | $$(@D)/.
-	$(CC) $(CFLAGS) $(THREADS) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) $(THREADS) -Ilabs -c $< -o $@
 $(UNIT_PLAIN): $(BUILD)/tests/%: $(BUILD)/tests/obj/%.o $(REF_OBJ) $(UNIT_LIBS) | $$(@D)/.
-	$(CC) $(CFLAGS) $(THREADS) $< $(REF_OBJ) $(UNIT_LIBS) -o $@ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) $(THREADS) $< $(REF_OBJ) $(UNIT_LIBS) -o $@ $(LDLIBS)
 $(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN) | $$(@D)/.
-	$(CC) $(SAN_LINK) $(THREADS) -Ilabs $< $(REF_ASAN) $(UNIT_LIBS_ASAN) -o $@ $(LDLIBS)
+	$(Q)$(CC) $(SAN_LINK) $(THREADS) -Ilabs $< $(REF_ASAN) $(UNIT_LIBS_ASAN) -o $@ $(LDLIBS)
 
 # test_hexfloat checks two headers of the grader's.
 $(BUILD)/tests/obj/test_hexfloat.o $(ASAN)/tests/test_hexfloat: tests/grader/hexfloat.h tests/grader/decimal.h
@@ -445,10 +454,10 @@ $(BUILD)/tests/obj/test_hexfloat.o $(ASAN)/tests/test_hexfloat: tests/grader/hex
 # and what it needs of another part (a prerequisite .c below).
 $(GRADER_UNITS:%=$(BUILD)/tests/test_%): $(BUILD)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
                                          tests/grader/%.c $(GRADER_HDR) $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(CC) $(CFLAGS) -Ilabs $(filter %.c,$^) $(BUILD)/kit/libkit.a -o $@ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) -Ilabs $(filter %.c,$^) $(BUILD)/kit/libkit.a -o $@ $(LDLIBS)
 $(GRADER_UNITS:%=$(ASAN)/tests/test_%): $(ASAN)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
                                         tests/grader/%.c $(GRADER_HDR) $(ASAN)/kit/libkit.a | $$(@D)/.
-	$(CC) $(SAN_LINK) -Ilabs $(filter %.c,$^) $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
+	$(Q)$(CC) $(SAN_LINK) -Ilabs $(filter %.c,$^) $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
 # check.c reads the kinds of cases from cases.c.
 $(BUILD)/tests/test_check $(ASAN)/tests/test_check: tests/grader/cases.c
 # terminal.c and lookalike.c read UTF-8 with tests/tools/utf8.c.
@@ -462,10 +471,10 @@ SERVE_SRC = tests/grader/sandbox.c $(if $(LOAD_RUNNERS),tests/grader/harness_ser
 SERVE_HDR = tests/grader/sandbox.h tests/grader/harness_serve.h tests/grader/serve_protocol.h
 $(BUILD)/tests/test_serve: tests/unit/test_serve.c tests/unit/check.h $(SERVE_SRC) $(SERVE_HDR) \
                            $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(CC) $(CFLAGS) -Ilabs $< $(SERVE_SRC) $(BUILD)/kit/libkit.a -o $@ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) -Ilabs $< $(SERVE_SRC) $(BUILD)/kit/libkit.a -o $@ $(LDLIBS)
 $(ASAN)/tests/test_serve: tests/unit/test_serve.c tests/unit/check.h $(SERVE_SRC) $(SERVE_HDR) \
                           $(ASAN)/kit/libkit.a | $$(@D)/.
-	$(CC) $(SAN_LINK) -Ilabs $< $(SERVE_SRC) $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
+	$(Q)$(CC) $(SAN_LINK) -Ilabs $< $(SERVE_SRC) $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
 
 # The hidden tests' unit test (instructor's kit only) links them, the
 # oracle, the grader's library (the tests' lists and their judge) and the
@@ -474,23 +483,23 @@ $(ASAN)/tests/test_serve: tests/unit/test_serve.c tests/unit/check.h $(SERVE_SRC
 $(BUILD)/tests/test_hidden: tests/unit/test_hidden.c tests/unit/check.h $(BUILD)/grader/hidden.o $(REF_OBJ) \
                             $(BUILD)/oracle/liboracle.a $(BUILD)/grader/libgrader.a $(BUILD)/tools/libtools.a \
                             $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(CC) $(CFLAGS) -Ilabs $(filter-out %.h,$^) -o $@ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) -Ilabs $(filter-out %.h,$^) -o $@ $(LDLIBS)
 $(ASAN)/tests/test_hidden: tests/unit/test_hidden.c tests/unit/check.h $(ASAN)/grader/hidden.o $(REF_ASAN) \
                            $(ASAN)/oracle/liboracle.a $(GRADER_LIB_SRC:tests/grader/%.c=$(ASAN)/grader/%.o) \
                            $(ASAN)/tools/libtools.a \
                            $(ASAN)/kit/libkit.a | $$(@D)/.
-	$(CC) $(SAN_LINK) -DSEEDS=30 -DSEEDS_FLAT=100 -Ilabs $(filter-out %.h,$^) -o $@ $(LDLIBS)
+	$(Q)$(CC) $(SAN_LINK) -DSEEDS=30 -DSEEDS_FLAT=100 -Ilabs $(filter-out %.h,$^) -o $@ $(LDLIBS)
 # The figures' unit test (instructor's kit only) draws every case of the
 # public tests and of some seeds' hidden tests with the grader's figures;
 # sanitized, one seed's.
 FIGURE_LIBS = $(BUILD)/grader/hidden.o $(BUILD)/oracle/liboracle.a $(BUILD)/grader/libgrader.a \
               $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
 $(BUILD)/tests/test_figures: tests/unit/test_figures.c tests/unit/check.h $(FIGURE_LIBS) | $$(@D)/.
-	$(CC) $(CFLAGS) -Ilabs $(filter-out %.h,$^) -o $@ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) -Ilabs $(filter-out %.h,$^) -o $@ $(LDLIBS)
 $(ASAN)/tests/test_figures: tests/unit/test_figures.c tests/unit/check.h $(ASAN)/grader/hidden.o \
                             $(ASAN)/oracle/liboracle.a $(GRADER_LIB_SRC:tests/grader/%.c=$(ASAN)/grader/%.o) \
                             $(ASAN)/tools/libtools.a $(ASAN)/kit/libkit.a | $$(@D)/.
-	$(CC) $(SAN_LINK) -DSEEDS=1 -Ilabs $(filter-out %.h,$^) -o $@ $(LDLIBS)
+	$(Q)$(CC) $(SAN_LINK) -DSEEDS=1 -Ilabs $(filter-out %.h,$^) -o $@ $(LDLIBS)
 
 # ---- bench: speed against accuracy (tests/bench) ----------------------------
 # `make bench` writes out/bench/: results.csv, report.md, plot.svg and more
@@ -508,14 +517,14 @@ HAVE_BENCH := $(and $(HAVE_SOLUTIONS),$(wildcard tests/oracle/hard.h),$(BENCH_SR
 # whose flags its figures depend on.
 BENCH_ALIGN = $(shell $(CC) -falign-functions=64 -falign-loops=64 -Werror -x c -c /dev/null -o /dev/null 2>/dev/null && echo -falign-functions=64 -falign-loops=64)
 $(BUILD)/bench/%.o: tests/bench/%.c $(wildcard tests/bench/*.h) $(wildcard tests/oracle/*.h) $(KIT_HDR) Makefile | $$(@D)/.
-	$(CC) $(CFLAGS) $(BENCH_ALIGN) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) $(BENCH_ALIGN) -Ilabs -c $< -o $@
 $(BUILD)/bench/solutions/%.o: solutions/%.c $(KIT_HDR) Makefile | $$(@D)/.
-	$(CC) $(CFLAGS) $(BENCH_ALIGN) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) $(BENCH_ALIGN) -Ilabs -c $< -o $@
 # The fast path's sqrt is vectorised only if it need not set errno (no result changes).
 $(BUILD)/bench/fastpath.o $(BUILD)/bench/measure.o: CFLAGS += -fno-math-errno
 $(BUILD)/bin/bench: $(BENCH_OBJ) $(STAGES:%=$(BUILD)/bench/solutions/%.o) \
                     $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 all: $(if $(HAVE_BENCH),$(BUILD)/bin/bench)
 # `make bench` also measures the ratio in bench-reordered, the same objects
 # linked in the reverse order, and bench's report gives both: the check
@@ -523,7 +532,7 @@ all: $(if $(HAVE_BENCH),$(BUILD)/bin/bench)
 reverse = $(if $(1),$(call reverse,$(wordlist 2,$(words $(1)),$(1))) $(firstword $(1)))
 $(BUILD)/bin/bench-reordered: $(BENCH_OBJ) $(STAGES:%=$(BUILD)/bench/solutions/%.o) \
                               $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(CC) $(CFLAGS) $(call reverse,$(filter %.o,$^)) $(filter %.a,$^) -o $@ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) $(call reverse,$(filter %.o,$^)) $(filter %.a,$^) -o $@ $(LDLIBS)
 bench: $(BUILD)/bin/bench $(BUILD)/bin/bench-reordered
 	@mkdir -p out/bench
 	$(BUILD)/bin/bench-reordered --ratio-only >out/bench/placement.txt.new && mv out/bench/placement.txt.new out/bench/placement.txt
@@ -532,7 +541,7 @@ bench: $(BUILD)/bin/bench $(BUILD)/bin/bench-reordered
 # ---- the kit's own tests ---------------------------------------------------
 # The renderer with the reference stages, sanitized (tests/suites/render_cli.sh).
 $(ASAN)/bin/render-solutions: $(ASAN)/kit/render_main.o $(REF_ASAN) $(ASAN)/kit/libkit.a | $$(@D)/.
-	$(CC) $(SAN_LINK) $(THREADS) $^ -o $@ $(LDLIBS)
+	$(Q)$(CC) $(SAN_LINK) $(THREADS) $^ -o $@ $(LDLIBS)
 
 # ---- fuzzing the readers of untrusted input (tests/fuzz) --------------------
 # `make fuzz [FUZZ="scene png ..."] [FUZZ_SECONDS=n]` builds each target
@@ -547,13 +556,13 @@ FUZZ_SRC    = $(filter-out labs/kit/render.c labs/kit/closest.c,$(KIT_SRC)) test
               tests/tools/base64.c tests/tools/utf8.c
 FUZZ_OBJ    = $(addprefix $(OUT_ROOT)/fuzz/obj/,$(notdir $(FUZZ_SRC:.c=.o)))
 $(OUT_ROOT)/fuzz/obj/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
-	$(FUZZ_CC) $(FUZZ_FLAGS) -c $< -o $@
+	$(Q)$(FUZZ_CC) $(FUZZ_FLAGS) -c $< -o $@
 $(OUT_ROOT)/fuzz/obj/%.o: tests/grader/%.c $(GRADER_HDR) | $$(@D)/.
-	$(FUZZ_CC) $(FUZZ_FLAGS) -Ilabs -c $< -o $@
+	$(Q)$(FUZZ_CC) $(FUZZ_FLAGS) -Ilabs -c $< -o $@
 $(OUT_ROOT)/fuzz/obj/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) | $$(@D)/.
-	$(FUZZ_CC) $(FUZZ_FLAGS) -c $< -o $@
+	$(Q)$(FUZZ_CC) $(FUZZ_FLAGS) -c $< -o $@
 $(OUT_ROOT)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz.h tests/fuzz/fuzz_public.h $(FUZZ_OBJ) | $$(@D)/.
-	$(FUZZ_CC) $(FUZZ_FLAGS) -Ilabs $< $(FUZZ_OBJ) -o $@ $(LDLIBS)
+	$(Q)$(FUZZ_CC) $(FUZZ_FLAGS) -Ilabs $< $(FUZZ_OBJ) -o $@ $(LDLIBS)
 fuzz:
 	@if [ -f tests/fuzz/run.sh ]; then FUZZ_OUT=$(OUT_ROOT)/fuzz FUZZ_CC=$(FUZZ_CC) sh tests/fuzz/run.sh $(FUZZ); \
 	 else echo "make fuzz: only the instructor's kit has the fuzz targets (tests/fuzz)"; exit 2; fi
@@ -569,17 +578,17 @@ fuzz:
 GRADER_ASAN_OBJ = $(GRADER_LIB_SRC:tests/grader/%.c=$(ASAN)/grader/%.o)
 GRADE_EXTRA_ASAN = $(if $(GRADE_DEFS),$(ASAN)/grader/hidden.o $(ASAN)/oracle/liboracle.a)
 $(ASAN)/grader/%.o: tests/grader/%.c $(GRADER_HDR) | $$(@D)/.
-	$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
 $(ASAN)/grader/grade_main.o: tests/grader/grade_main.c $(GRADER_HDR) $(wildcard tests/oracle/*.h) | $$(@D)/.
-	$(CC) $(SANFLAGS) $(GRADE_DEFS) -DGRADER_BUILD='"$(BUILD)"' -Ilabs -c $< -o $@
+	$(Q)$(CC) $(SANFLAGS) $(GRADE_DEFS) -DGRADER_BUILD='"$(BUILD)"' -Ilabs -c $< -o $@
 $(ASAN)/grader/hidden.o: tests/hidden/hidden.c $(GRADER_HDR) $(wildcard tests/oracle/*.h) | $$(@D)/.
-	$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
+	$(Q)$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
 $(ASAN)/bin/grade: $(ASAN)/grader/grade_main.o $(GRADE_EXTRA_ASAN) $(GRADER_ASAN_OBJ) \
                    $(ASAN)/tools/libtools.a $(ASAN)/kit/libkit.a | grader $$(@D)/.
-	$(CC) $(SAN_LINK) $^ -o $@ $(LDLIBS)
+	$(Q)$(CC) $(SAN_LINK) $^ -o $@ $(LDLIBS)
 $(ASAN)/bin/sortsubs: $(ASAN)/grader/sortsubs_main.o $(GRADER_ASAN_OBJ) $(ASAN)/tools/libtools.a \
                       $(ASAN)/kit/libkit.a | $$(@D)/.
-	$(CC) $(SAN_LINK) $^ -o $@ $(LDLIBS)
+	$(Q)$(CC) $(SAN_LINK) $^ -o $@ $(LDLIBS)
 SANITIZE_SUITES = grader.sh report.sh grade_store.sh limits.sh signals.sh sort_submissions.sh
 ifneq ($(wildcard tests/suites/grader.sh),)
 sanitize-grader: all $(ASAN)/bin/grade $(ASAN)/bin/sortsubs
