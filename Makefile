@@ -108,6 +108,7 @@ help:
 	@echo "make grade-all SUBMISSIONS=dir [OUT=dir] [JOBS=n]"
 	@echo "make sort-submissions FROM=download.zip|dir TO=newdir"
 	@echo "make gradescope | prairielearn | student-kit | bench | fuzz | sanitize-grader | handouts | test | clean"
+	@echo "V=1 after any of them echoes the build's compiler commands"
 
 $(BUILD)/kit/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $(THREADS) -c $< -o $@
