@@ -221,7 +221,7 @@ static void test_part_again(void)
     for (int k = 0; k < 4; k++)
         if (k != 1)
             hit_case(&list.tests[k], NULL, 0);
-    const char miss[] = "0x0p+0 0x0p+0\n0x1p+0 0x1p+2\nend 2\n";
+    const char answers[] = "0x0p+0 0x0p+0\n0x1p+0 0x1p+2\nend 2\n";
     const Test *passed[] = { &list.tests[1] };
     const char *named_a[] = { A };
 
@@ -234,7 +234,7 @@ static void test_part_again(void)
             continue;
         PartSoFar so_far = { passed, 1, named_a, k > 2 };
         char *v = NULL;
-        check_answers_in_part(&list.tests[k], miss, sizeof miss - 1, &so_far, &v, &r[k].answers);
+        check_answers_in_part(&list.tests[k], answers, sizeof answers - 1, &so_far, &v, &r[k].answers);
         r[k].ran = true;
         r[k].verdict_at = strlen("  about: a note\n");
         r[k].verdict_len = strlen(v);
@@ -265,7 +265,7 @@ static void test_part_again(void)
     r[1].ran = r[1].passed = true;
     PartSoFar alone = { passed, 1, NULL, 0 };
     char *v = NULL;
-    check_answers_in_part(&list.tests[0], miss, sizeof miss - 1, &alone, &v, &r[0].answers);
+    check_answers_in_part(&list.tests[0], answers, sizeof answers - 1, &alone, &v, &r[0].answers);
     r[0].ran = true;
     r[0].output = strdup(v);
     r[0].verdict_len = strlen(v);
