@@ -233,18 +233,13 @@ $(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)
 $(BUILD)/bin/htmlcheck: $(BUILD)/tools/htmlcheck_main.o | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 all: $(BUILD)/bin/htmlcheck
-# The kit's own tests compile each distinct file once (tests/tools/ccmemo_main.c):
-# built as "cc", beside a marker that tells it its own directory on PATH.
-$(BUILD)/ccmemo/cc: $(BUILD)/tools/ccmemo_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $^ -o $@
-	$(Q): >$(@D)/ccmemo.marker
 
 # ---- the autograder (tests/grader) ------------------------------------------
 # In the instructor's kit the grader also draws the hidden tests with the
 # oracle (tests/oracle, tests/hidden); the student kit has neither.
 HAVE_ORACLE := $(wildcard tests/oracle/oracle.h)
 HAVE_HIDDEN := $(wildcard tests/hidden/hidden.c)
-GRADER_LIB_SRC = tests/grader/cases.c tests/grader/check.c tests/grader/sandbox.c \
+GRADER_LIB_SRC = tests/grader/cases.c tests/grader/check.c tests/grader/sandbox.c tests/grader/jail.c \
                  tests/grader/build.c tests/grader/memo.c tests/grader/include_scan.c tests/grader/linkmsg.c tests/grader/lookalike.c \
                  tests/grader/own_headers.c tests/grader/config.c tests/grader/grade.c \
                  tests/grader/report_table.c tests/grader/report_json.c \
@@ -264,10 +259,12 @@ GRADE_EXTRA = $(if $(GRADE_DEFS),$(BUILD)/grader/hidden.o $(BUILD)/oracle/libora
 
 $(BUILD)/grader/%.o: tests/grader/%.c $(GRADER_HDR) | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/grader/harness_%.o: tests/grader/harness.c tests/grader/hexfloat.h $(KIT_HDR) | $$(@D)/.
+$(BUILD)/grader/harness_%.o: tests/grader/harness.c tests/grader/hexfloat.h tests/grader/harness_init.h \
+                             $(KIT_HDR) | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -c $< -o $@
 # The report page's render program (build_render): harness_render.c draws a scene.
-$(BUILD)/grader/harness_render.o: tests/grader/harness_render.c $(KIT_HDR) | $$(@D)/.
+$(BUILD)/grader/harness_render.o: tests/grader/harness_render.c tests/grader/harness_init.h \
+                                 $(KIT_HDR) | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 $(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
 	$(Q)cp $< $@
@@ -280,22 +277,19 @@ LOAD_RUNNERS := $(if $(filter Linux,$(SYSTEM)),1)
 RUNNERS    = $(if $(LOAD_RUNNERS),$(foreach k,1 2 3 4 5 6,$(BUILD)/grader/runner_$(k)))
 RUNNER_DEFS = $(if $(HAVE_SOLUTIONS),-DHARNESS_REFS)
 $(BUILD)/grader/harness_load_%.o: tests/grader/harness.c tests/grader/harness_load.h \
-                                  tests/grader/harness_serve.h tests/grader/hexfloat.h \
+                                  tests/grader/harness_init.h tests/grader/hexfloat.h \
                                   $(KIT_HDR) | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -DHARNESS_LOAD $(RUNNER_DEFS) -c $< -o $@
 $(BUILD)/grader/harness_load.o: tests/grader/harness_load.c tests/grader/harness_load.h \
                                 tests/grader/contract.h $(KIT_HDR) | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/grader/harness_serve.o: tests/grader/harness_serve.c tests/grader/harness_serve.h \
-                                 tests/grader/serve_protocol.h | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) -c $< -o $@
 # (runner_3, Part 3a's, leaves out Part 3b's reference too: it calls
 # sphere_intersect, which only the student's object defines.)
 runner_refs = $(if $(HAVE_SOLUTIONS),$(filter-out $(BUILD)/grader/ref_$(word $(1),$(STAGES)).o \
               $(if $(filter 3,$(1)),$(BUILD)/grader/ref_part3b_ray_color.o),$(GRADER_REF)))
 define RUNNER_RULE
 $(BUILD)/grader/runner_$(1): $(BUILD)/grader/harness_load_$(1).o $(BUILD)/grader/harness_load.o \
-                           $(BUILD)/grader/harness_serve.o $(call runner_refs,$(1))
+                           $(call runner_refs,$(1))
 	$(Q)$$(CC) $$(CFLAGS) -rdynamic $$^ -o $$@ $$(LDLIBS) -ldl
 endef
 $(foreach k,1 2 3 4 5 6,$(eval $(call RUNNER_RULE,$(k))))
@@ -431,24 +425,17 @@ $(ASAN)/sub/labs/%.o: labs/%.c $(KIT_HDR) | $$(@D)/.
 	$(Q)$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
 UNIT_LIBS  = $(if $(HAVE_ORACLE),$(BUILD)/oracle/liboracle.a) $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
 UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
-# Compiled, then linked: the compile memo of `make test` keeps compiles and
-# links, not commands that do both (tests/tools/ccmemo_main.c), and the
-# student kit builds three of these in every run of its suite.  The object
-# is made again whenever the libraries are, as the program was before.
-# (Not the grader's units nor test_serve: their own rules are below.)
+# (Not the grader's units: their own rules are below.)
 GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers lmsname terminal
-UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) $(BUILD)/tests/test_serve \
+UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) \
                          $(BUILD)/tests/test_hidden $(BUILD)/tests/test_figures,$(UNIT_BIN))
-$(UNIT_PLAIN:$(BUILD)/tests/%=$(BUILD)/tests/obj/%.o): $(BUILD)/tests/obj/%.o: tests/unit/%.c \
-                          tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $(THREADS) -Ilabs -c $< -o $@
-$(UNIT_PLAIN): $(BUILD)/tests/%: $(BUILD)/tests/obj/%.o $(REF_OBJ) $(UNIT_LIBS) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $(THREADS) $< $(REF_OBJ) $(UNIT_LIBS) -o $@ $(LDLIBS)
+$(UNIT_PLAIN): $(BUILD)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS) | $$(@D)/.
+	$(Q)$(CC) $(CFLAGS) $(THREADS) -Ilabs $< $(REF_OBJ) $(UNIT_LIBS) -o $@ $(LDLIBS)
 $(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN) | $$(@D)/.
 	$(Q)$(CC) $(SAN_LINK) $(THREADS) -Ilabs $< $(REF_ASAN) $(UNIT_LIBS_ASAN) -o $@ $(LDLIBS)
 
 # test_hexfloat checks two headers of the grader's.
-$(BUILD)/tests/obj/test_hexfloat.o $(ASAN)/tests/test_hexfloat: tests/grader/hexfloat.h tests/grader/decimal.h
+$(BUILD)/tests/test_hexfloat $(ASAN)/tests/test_hexfloat: tests/grader/hexfloat.h tests/grader/decimal.h
 
 # The unit tests of the grader's sandbox, include scan, memo, test files'
 # reader (cases.c) and judging of answers (check.c) link the part alone,
@@ -464,19 +451,16 @@ $(BUILD)/tests/test_check $(ASAN)/tests/test_check: tests/grader/cases.c
 # terminal.c and lookalike.c read UTF-8 with tests/tools/utf8.c.
 $(BUILD)/tests/test_terminal $(ASAN)/tests/test_terminal: tests/tools/utf8.c
 $(BUILD)/tests/test_lookalike $(ASAN)/tests/test_lookalike: tests/tools/utf8.c
+# The sandbox runs its children in the jail (jail.c), its shell scripts
+# through init_sh beside it (built plain in both builds: a sanitized
+# program does not fit a test's memory limit).
+$(BUILD)/tests/test_sandbox $(ASAN)/tests/test_sandbox: tests/grader/jail.c
+$(BUILD)/tests/test_sandbox: | $(BUILD)/tests/init_sh
+$(ASAN)/tests/test_sandbox: | $(ASAN)/tests/init_sh
+$(BUILD)/tests/init_sh $(ASAN)/tests/init_sh: tests/unit/init_sh.c tests/grader/harness_init.h | $$(@D)/.
+	$(Q)$(CC) $(CFLAGS) $< -o $@
 # own_headers.c reads the names with include_scan.c.
 $(BUILD)/tests/test_own_headers $(ASAN)/tests/test_own_headers: tests/grader/include_scan.c
-# The server of tests' unit test links the sandbox and, on Linux, the
-# runner's server side (test_serve is its own server).
-SERVE_SRC = tests/grader/sandbox.c $(if $(LOAD_RUNNERS),tests/grader/harness_serve.c)
-SERVE_HDR = tests/grader/sandbox.h tests/grader/harness_serve.h tests/grader/serve_protocol.h
-$(BUILD)/tests/test_serve: tests/unit/test_serve.c tests/unit/check.h $(SERVE_SRC) $(SERVE_HDR) \
-                           $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs $< $(SERVE_SRC) $(BUILD)/kit/libkit.a -o $@ $(LDLIBS)
-$(ASAN)/tests/test_serve: tests/unit/test_serve.c tests/unit/check.h $(SERVE_SRC) $(SERVE_HDR) \
-                          $(ASAN)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(SAN_LINK) -Ilabs $< $(SERVE_SRC) $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
-
 # The hidden tests' unit test (instructor's kit only) links them, the
 # oracle, the grader's library (the tests' lists and their judge) and the
 # reference, which it holds up against the mistakes; sanitized, it draws
@@ -590,7 +574,7 @@ $(ASAN)/bin/grade: $(ASAN)/grader/grade_main.o $(GRADE_EXTRA_ASAN) $(GRADER_ASAN
 $(ASAN)/bin/sortsubs: $(ASAN)/grader/sortsubs_main.o $(GRADER_ASAN_OBJ) $(ASAN)/tools/libtools.a \
                       $(ASAN)/kit/libkit.a | $$(@D)/.
 	$(Q)$(CC) $(SAN_LINK) $^ -o $@ $(LDLIBS)
-SANITIZE_SUITES = grader.sh report.sh grade_store.sh limits.sh signals.sh sort_submissions.sh
+SANITIZE_SUITES = grader.sh report.sh limits.sh signals.sh sort_submissions.sh
 ifneq ($(wildcard tests/suites/grader.sh),)
 sanitize-grader: all $(ASAN)/bin/grade $(ASAN)/bin/sortsubs
 	@echo "grading with $(ASAN)/bin/grade, sorting with $(ASAN)/bin/sortsubs (address, undefined-behaviour and leak sanitizers)"
@@ -601,7 +585,7 @@ sanitize-grader:
 endif
 
 # What the tests need built (`make -j2 test-build` builds it on two cores).
-test-build: all $(BUILD)/ccmemo/cc $(UNIT_ASAN) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)
+test-build: all $(UNIT_ASAN) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)
 test: test-build
 	@sh tests/run.sh
 

@@ -26,51 +26,23 @@ mkdir -p "$dir"
 : >"$failures"
 start=$(date +%s)
 
-# Builds in the suites compile each distinct file once, and link each
-# distinct program once (tests/tools/ccmemo_main.c): four suites build a
-# packaged kit from the same sources.  The memo is kept
-# from one run to the next while the compiler is the same one (its
-# --version and the size and time of its files); a run of every suite
-# then drops the entries it did not use (tests/tools/ccmemo_keep.sh).
-# The grader's own builds (its compiles of stage files and links of
-# programs, in the hundreds of gradings of the suites) are kept the same
-# way, by the grader itself (GRADE_KEEP_BUILDS,
-# tests/grader/memo.h; used as root only, in a directory no one else may
-# write in), for the same compiler.
-# NO_CC_MEMO=1: every compile is compiled (the memos are left as they are).
-memo=$PWD/out/tests/cc-memo
-gmemo=$PWD/out/tests/grade-memo
-# (Both are opened before the stand-in goes on PATH: the compiler they
-# are kept for is the real one.)
-if [ -x out/build/ccmemo/cc ] && [ -z "${NO_CC_MEMO:-}" ]; then
-    if sh tests/tools/ccmemo_keep.sh open "$gmemo" && chmod 700 "$gmemo"; then
-        GRADE_KEEP_BUILDS=$gmemo
-        export GRADE_KEEP_BUILDS
-    fi
-    if sh tests/tools/ccmemo_keep.sh open "$memo"; then
-        PATH=$PWD/out/build/ccmemo:$PATH
-        CC_MEMO=$memo
-        export PATH CC_MEMO
-    fi
-fi
-
-: >"$dir/started"
-
 # The items, in the order they are shown: "name|command".
 items=$dir/items
 : >"$items"
 for t in out/build/tests/test_*; do
     [ -x "$t" ] && printf 'unit: %s|%s\n' "${t##*/}" "$t" >>"$items"
 done
+# The sandbox's test again in the jail's fallback (jail.h), as where the
+# system refuses namespaces.
+[ -x out/build/tests/test_sandbox ] &&
+    printf 'unit: test_sandbox, fallback|GRADE_JAIL=fallback out/build/tests/test_sandbox\n' >>"$items"
 for t in out/asan/tests/test_*; do
     [ -x "$t" ] && printf 'unit, sanitizers: %s|%s\n' "${t##*/}" "$t" >>"$items"
 done
 for s in tests/suites/*.sh; do
     [ -f "$s" ] && printf '%s|sh %s\n' "${s##*/}" "$s" >>"$items"
 done
-every_suite=yes
 if [ $# -gt 0 ]; then
-    every_suite=no
     for want in "$@"; do
         grep "^$want|" "$items"
     done >"$items.only"
@@ -111,15 +83,12 @@ done <"$items"
 # A worker takes the first lane no other worker has claimed (mkdir claims
 # a lane at most once).  The longest, grader.sh, starts first; beside it
 # go the lanes that mostly compute (the unit tests, the benchmark, the
-# compile memo's real compiles, the second compiler's build, the renders)
-# rather than the other lanes that mostly start processes (the kit lane,
-# PrairieLearn, the report pages): on a 2-core virtual machine, making
-# and ending processes on both cores at once runs little faster than on
-# one (README, "Building").  Six runs each way, taken in turn: 59-74 s,
-# median 62.9, against 61-74 s, median 66.0, with grader.sh beside the kit
-# lane, as it was.
+# second compiler's build, the renders) rather than the other lanes that
+# mostly start processes (the kit lane, PrairieLearn, the report pages):
+# on a 2-core virtual machine, making and ending processes on both cores
+# at once runs little faster than on one.
 queue=$dir/queue
-first="grader.sh unit bench.sh cc_memo.sh portability.sh render_cli.sh kit prairielearn.sh report.sh gradescope.sh"
+first="grader.sh unit bench.sh portability.sh render_cli.sh kit prairielearn.sh report.sh gradescope.sh"
 for lane in $first; do
     [ -f "$dir/lane.$lane" ] && echo "$dir/lane.$lane"
 done >"$queue"
@@ -213,34 +182,6 @@ if [ -s "$failures" ]; then
     cat "$failures"
 fi
 lanes=$(wc -l <"$queue" | tr -d ' ')
-if [ -n "${CC_MEMO:-}" ] && [ -f "$memo/log" ]; then
-    made=$(grep -c '^compiled ' "$memo/log")
-    used=$(grep -c -e '^used ' -e '^used-direct ' "$memo/log")
-    direct=$(grep -c '^used-direct ' "$memo/log")
-    [ $((made + used)) -gt 0 ] &&
-        echo "compiles in the suites: $made compiled, $used served from the memo ($direct without preprocessing)"
-    linked=$(grep -c '^linked ' "$memo/log")
-    served=$(grep -c '^used-link ' "$memo/log")
-    [ $((linked + served)) -gt 0 ] &&
-        echo "links in the suites: $linked linked, $served served from the memo"
-    # Every suite ran: what none of them used (nor compiled) goes.
-    [ "$every_suite" = yes ] && sh tests/tools/ccmemo_keep.sh prune "$memo" "$dir/started"
-fi
-if [ -n "${GRADE_KEEP_BUILDS:-}" ]; then
-    # An entry's file "uses" is written whenever what it keeps is made or
-    # used, its file "source" (its key) whenever it is made, even for a
-    # build that failed.
-    find "$gmemo/." \( -name 'uses' -o -name 'source' \) -newer "$dir/started" |
-        awk -F/ '{ entry = $0; sub("/[^/]*$", "", entry); has[entry] = has[entry] " " $NF }
-            END {
-                for (e in has)
-                    if (has[e] ~ /uses/) { if (has[e] ~ /source/) made++; else used++ }
-                if (made + used)
-                    printf "the grader'"'"'s builds (stage files compiled, programs linked): " \
-                           "%d made, %d kept from an earlier run\n", made, used
-            }'
-    [ "$every_suite" = yes ] && sh tests/tools/ccmemo_keep.sh prune "$gmemo" "$dir/started"
-fi
 plural() { [ "$1" -eq 1 ] && echo "$1 $2" || echo "$1 ${2}s"; }
 echo "took $(($(date +%s) - start)) s ($(plural "$n" suite): $(plural "$lanes" lane) shared by $(plural "$workers" worker))"
 echo "$passed passed, $failed failed"

@@ -5,8 +5,8 @@
  * for Part k and, for the parts it may call, the reference (in the
  * instructor's kit) or the submission's own files (in the student kit).
  * It is built in a private temporary directory, by the compiler running in
- * the sandbox (as an unprivileged user when the grader is root), from copies of the
- * files it needs, so that nothing else of the kit is within its reach.
+ * the sandbox's jail (jail.h), from copies of the files it needs, which it
+ * may only read, so that nothing else of the kit is within its reach.
  */
 #ifndef BUILD_H
 #define BUILD_H
@@ -30,17 +30,16 @@ typedef struct {
                                   built as a shared object they load       */
     const char *memo;          /* NULL, or where grade --all keeps what each
                                   distinct stage file built into (memo.h)   */
-    const char *store;         /* NULL, or where the kit's own tests keep
-                                  what stage files and programs built, from
-                                  one run to the next (GRADE_KEEP_BUILDS,
-                                  memo.h)                                   */
 } BuildConfig;
 
 typedef struct {
     char dir[512];             /* the temporary directory                       */
+    char src[600];             /* dir/src: what the runs may read; only the
+                                  grader writes there                          */
+    const char *visible[2];    /* { src, NULL }: SandboxSpec.visible            */
     char runner[600];          /* the program, when ok                          */
     char object[600];          /* "" or the shared object it loads (its argument) */
-    char rundir[600];          /* the empty working directory for its runs      */
+    char rundir[600];          /* the working folder each run gets afresh       */
     bool ok;
     bool unchecked;            /* ok, but whether the object links is not
                                   known until the runner has loaded it once
@@ -120,7 +119,7 @@ int build_tempdir(char *dir, size_t len, char *err, size_t errlen);
  * descriptor, or -1 with errno ENOENT (none), ELOOP (a link) or EINVAL
  * (not a regular file). */
 int build_open_stage(const char *path);
-/* rm -rf path (no symlinks followed). */
+/* rm -rf path (no symlinks followed; any depth: jail_remove_tree). */
 void build_rmtree(const char *path);
 
 #endif

@@ -18,10 +18,6 @@
 #include <string.h>
 
 #define OUTPUT_SHOWN 1500     /* bytes of the student's own printing shown */
-/* A part's server of tests starts at its fourth run alone: its own start
- * costs about what three served runs save (README, "What grading costs"),
- * so a part with a few tests alone starts a runner for each, as before. */
-#define SERVE_START_AT 3
 #define TEST_MEMORY_MB 64     /* a test program needs 3 to 4 MiB of address space */
 #define MAX_BATCH 4096        /* tests of one part run together, at most     */
 
@@ -133,18 +129,17 @@ static SandboxSpec test_spec(const GradeOptions *opt, const Build *b, char **arg
     argv[1] = b->object[0] ? (char *)b->object : NULL;
     argv[2] = NULL;
     return (SandboxSpec){
-        .argv = argv, .workdir = b->rundir, .input = input, .input_len = len,
-        .timeout = opt->cfg->timeout,
+        .argv = argv, .workdir = b->rundir, .visible = b->visible, .input = input,
+        .input_len = len, .timeout = opt->cfg->timeout, .init = true,
         .output_stop = (size_t)ntests * ((size_t)opt->cfg->output_kib << 10),
         .memory_mb = TEST_MEMORY_MB, .max_procs = 0, .max_file_mb = 0,
     };
 }
 
-/* Runs test t in a fresh sandboxed child of the part's program (forked by
- * srv, the part's server, or started for it); 0 when it ran (res then
- * holds what it did), -1 with a reason in err. */
-static int run_child(const GradeOptions *opt, const Build *b, SandboxServer *srv, const Test *t,
-                     SandboxResult *res, char *err, size_t errlen)
+/* Runs test t in a fresh sandboxed child of the part's program; 0 when it
+ * ran (res then holds what it did), -1 with a reason in err. */
+static int run_child(const GradeOptions *opt, const Build *b, const Test *t, SandboxResult *res,
+                     char *err, size_t errlen)
 {
     size_t len = 0;
     char *input = test_input(t, &len);
@@ -156,20 +151,19 @@ static int run_child(const GradeOptions *opt, const Build *b, SandboxServer *srv
     SandboxSpec spec = test_spec(opt, b, argv, input, len, 1);
     spec.answer_max = 512 + (size_t)t->ncases * 160;
     spec.output_max = 64 * 1024;
-    int status = b->object[0] ? sandbox_serve_run(srv, &spec, res, err, errlen)
-                              : sandbox_run(&spec, res, err, errlen);
+    int status = sandbox_run(&spec, res, err, errlen);
     free(input);
     return status;
 }
 
 /* Runs one test in the sandbox and judges it, beside the other tests of
  * its part (check_answers_in_part). */
-static void run_test(const GradeOptions *opt, const Build *b, SandboxServer *srv, const Test *t,
-                     const PartSoFar *part, TestResult *r)
+static void run_test(const GradeOptions *opt, const Build *b, const Test *t, const PartSoFar *part,
+                     TestResult *r)
 {
     SandboxResult res;
     char err[256];
-    if (run_child(opt, b, srv, t, &res, err, sizeof err) != 0) {
+    if (run_child(opt, b, t, &res, err, sizeof err) != 0) {
         r->output = xasprintf("the grader could not run this test: %s", err);
         return;
     }
@@ -332,7 +326,6 @@ static void run_batch(const GradeOptions *opt, Build *b, const TestList *tests, 
 typedef struct {
     const GradeOptions *opt;
     const Build *b;
-    SandboxServer *srv;
     bool stopped;
 } ProbeContext;
 
@@ -341,7 +334,7 @@ static int run_probe(void *ctx, const Test *t, Answers *a)
     ProbeContext *pc = ctx;
     SandboxResult res;
     char err[256], *verdict = NULL;
-    if (pc->stopped || run_child(pc->opt, pc->b, pc->srv, t, &res, err, sizeof err) != 0)
+    if (pc->stopped || run_child(pc->opt, pc->b, t, &res, err, sizeof err) != 0)
         return -1;
     pc->stopped = res.timed_out || res.memory_exceeded || res.output_exceeded;
     check_answers(t, res.answer, res.answer_len, &verdict, a);
@@ -425,13 +418,7 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         b.messages = NULL;
         g->cpu_compile += b.cpu_compile;
         g->cpu_link += b.cpu_link;
-        /* The tests the batch did not pass, then the probes, through a
-         * server of the part's runner: one for the tests and another for
-         * the probes, as a server's children's CPU counts among the
-         * grader's when the server ends (cpu_tests, cpu_probes). */
-        SandboxServer srv;
-        int serve_at = opt->serve && b.object[0] ? SERVE_START_AT : -1;
-        sandbox_serve_init(&srv, b.runner, b.object, serve_at);
+        /* The tests the batch did not pass, each alone, then the probes. */
         for (int k = 0; k < tests->n; k++) {
             const Test *t = &tests->tests[k];
             TestResult *r = &g->results[k];
@@ -458,7 +445,7 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
                     else if (rj->ran && rj->answers.named)
                         named[part.nnamed++] = rj->answers.named;
                 }
-                run_test(opt, &b, &srv, t, &part, r);
+                run_test(opt, &b, t, &part, r);
                 if (!r->passed && r->seconds >= cfg->timeout)
                     timeouts++;
             }
@@ -468,20 +455,17 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         free(done);
         free(passed);
         free(named);
-        sandbox_serve_stop(&srv);
         g->cpu_tests += sandbox_cpu(false) - children;
         children = sandbox_cpu(false);
         if (b.ok) {
             /* After two tests out of time, a probe would be the third. */
-            sandbox_serve_init(&srv, b.runner, b.object, serve_at);
-            ProbeContext pc = { opt, &b, &srv, timeouts >= 2 };
+            ProbeContext pc = { opt, &b, timeouts >= 2 };
             Probes probes = { run_probe, &pc, p == PART3B && !opt->build->reference, false };
             for (int k = 0; k < tests->n; k++)
                 probes.part3a_failed = probes.part3a_failed ||
                     (tests->tests[k].part == PART3A && !tests->tests[k].hard && g->results[k].ran &&
                      !g->results[k].passed);
             diagnose_part(p, tests, g->results, &probes, &g->diagnosis[p], &g->causes[p]);
-            sandbox_serve_stop(&srv);
         }
         g->cpu_probes += sandbox_cpu(false) - children;
         if (opt->keep_objects && b.ok)

@@ -14,9 +14,6 @@ typedef struct {
     const GradeConfig *cfg;
     const BuildConfig *build;
     bool verbose;              /* progress on stderr                          */
-    bool serve;                /* the tests run alone and the probes go
-                                  through a server of the part's prebuilt
-                                  runner (sandbox.h), where there is one     */
     const char *keep_objects;  /* a directory that receives the student's
                                   compiled stage objects (build_keep_objects),
                                   for the report's render; NULL: none        */

@@ -28,6 +28,7 @@
 #include "config.h"
 #include "grade.h"
 #include "grader.h"
+#include "jail.h"
 #include "report.h"
 #include "report_classroom.h"
 #include "report_prairielearn.h"
@@ -55,6 +56,7 @@ static void usage(void)
             "             [--format gradescope|prairielearn] [--classroom FILE]\n"
             "             [--report DIR | --report-file FILE] [--cost] [--verbose]\n"
             "       grade --all DIR [--out DIR] [--jobs N]\n"
+            "       grade --jail    (says where the submissions' code runs)\n"
             "       either with --weights FILE (default tests/weights.conf)\n"
             "exit status: 0 full marks, 1 points lost, 2 the grader could not run\n");
     exit(2);
@@ -141,21 +143,6 @@ static void write_page(const char *page, const Grade *g, const GradeConfig *cfg,
 /* grade --all's directory of what identical stage files built (memo.h);
  * given to each submission's grading with --memo, and used only as root. */
 static const char *memo_dir;
-
-/* GRADE_KEEP_BUILDS=DIR: the kit's own tests (tests/run.sh) keep what the
- * grader builds (objects, shared objects, programs) in DIR from one run to
- * the next (memo.h).  As the memo,
- * as root only; and only when DIR is the grader's own user's and no one
- * else may write in it.  GRADE_NO_MEMO=1 turns it off too. */
-static const char *store_dir(void)
-{
-    const char *dir = getenv("GRADE_KEEP_BUILDS"), *no_memo = getenv("GRADE_NO_MEMO");
-    struct stat st;
-    if (!dir || !*dir || (no_memo && *no_memo) || !sandbox_drops_privileges() ||
-        stat(dir, &st) != 0 || !S_ISDIR(st.st_mode) || st.st_uid != geteuid() || (st.st_mode & 022))
-        return NULL;
-    return dir;
-}
 
 /* In the student kit, whose tests/grader/shipped holds the headers as the
  * kit shipped them: says on stderr which of labs/raytracer.h and
@@ -261,14 +248,9 @@ static int grade_one(const char *submission, const char *part, const char *resul
     const char *no_load = getenv("GRADE_NO_LOAD");
     BuildConfig bc = { .root = root, .cc = cc, .objdir = objdir, .reference = access(ref, R_OK) == 0,
                        .load = access(runner, X_OK) == 0 && !(no_load && *no_load),
-                       .memo = memo_dir && sandbox_drops_privileges() ? memo_dir : NULL,
-                       .store = store_dir() };
+                       .memo = memo_dir && sandbox_drops_privileges() ? memo_dir : NULL };
 
-    /* GRADE_NO_SERVE=1: every test alone in a runner of its own, as before
-     * the servers of tests (to measure them, or to rule them out). */
-    const char *no_serve = getenv("GRADE_NO_SERVE");
-    GradeOptions opt = { .submission = submission, .cfg = &cfg, .build = &bc, .verbose = verbose,
-                         .serve = !(no_serve && *no_serve) };
+    GradeOptions opt = { .submission = submission, .cfg = &cfg, .build = &bc, .verbose = verbose };
     /* The page's render reuses the objects the graded builds compiled. */
     char kept[PATH_MAX] = "";
     if (page && build_tempdir(kept, sizeof kept, err, sizeof err) == 0)
@@ -368,7 +350,7 @@ static void csv_field(FILE *f, const char *s)
 
 /* What a grade --all run's memo holds: entries with an object (distinct
  * files compiled) and files that used them (counted in "uses"). */
-static void count_memo(const char *memo, int *built, int *stored, int *files)
+static void count_memo(const char *memo, int *built, int *files)
 {
     DIR *d = opendir(memo);
     if (!d)
@@ -381,9 +363,6 @@ static void count_memo(const char *memo, int *built, int *stored, int *files)
         snprintf(path, sizeof path, "%s/%s/object.o", memo, e->d_name);
         if (access(path, F_OK) == 0)
             (*built)++;
-        snprintf(path, sizeof path, "%s/%s/from-store", memo, e->d_name);
-        if (access(path, F_OK) == 0)
-            (*stored)++;
         snprintf(path, sizeof path, "%s/%s/uses", memo, e->d_name);
         struct stat st;
         if (stat(path, &st) == 0)
@@ -690,17 +669,14 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     free(all);
     free(users);
     free(busy);
-    int built = 0, stored = 0, files = 0;
+    int built = 0, files = 0;
     if (memo[0]) {
-        count_memo(memo, &built, &stored, &files);
+        count_memo(memo, &built, &files);
         build_rmtree(memo);
     }
     if (fclose(f) != 0 || rename(tmp, csv) != 0)
         return fail(NULL, "%s: cannot write", csv);
-    if (built && stored)
-        printf("built %d distinct stage files once each (%d compiled, %d from the kept builds), "
-               "for %d files in all\n", built, built - stored, stored, files);
-    else if (built)
+    if (built)
         printf("compiled %d distinct stage files once each, for %d files in all\n", built, files);
     if (users && jobs > 1)
         printf("graded %d at a time, as root: each one's code ran as an unprivileged user of its "
@@ -769,6 +745,10 @@ int main(int argc, char **argv)
             summary = true;
         else if (!strcmp(a, "--cost"))
             show_cost = true;
+        else if (!strcmp(a, "--jail")) {
+            printf("%s\n", jail_describe());
+            return 0;
+        }
         else if (!strcmp(a, "--verbose"))
             verbose = true;
         else if (!strcmp(a, "--format") && v)
@@ -780,7 +760,7 @@ int main(int argc, char **argv)
             unsigned long id = strtoul(v, &end, 10);
             if (*end || id == 0 || id != (unsigned long)(uid_t)id || (uid_t)id == (uid_t)-1)
                 usage();
-            sandbox_set_user((uid_t)id);
+            sandbox_set_user((uid_t)id, true);     /* held by grade --all for this one */
             user_given = true;
             k++;
         }
@@ -817,7 +797,7 @@ int main(int argc, char **argv)
         uid_t id;
         const char *unclaimed = NULL;
         if (sandbox_spare_users(&id, 1, &unclaimed) == 1) {
-            sandbox_set_user(id);
+            sandbox_set_user(id, unclaimed == NULL);
             if (unclaimed && !quiet)
                 fprintf(stderr, "grade: %s, so another grading run as root at the same time may "
                                 "run its code as the same user\n", unclaimed);

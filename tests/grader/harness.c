@@ -14,8 +14,7 @@
  * Built with -DHARNESS_LOAD (Linux) it is a prebuilt runner instead, which
  * loads the student's file, built as a shared object, from its first
  * argument (harness_load.c); `runner --check OBJECT` only loads and checks
- * it, and writes "link-ok" or "link-error WHY" to fd 3; `runner --serve
- * OBJECT` serves the tests run alone, a fresh child each (harness_serve.c).
+ * it, and writes "link-ok" or "link-error WHY" to fd 3.
  * It knows nothing of the expected answers: the parent judges.  Several
  * tests in one process are only a shortcut for the parent (grade.c): it
  * takes from such a run nothing but passes, and only when the process ran
@@ -25,9 +24,9 @@
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "raytracer.h"
 #include "kit/scene.h"                  /* the guard sphere */
+#include "harness_init.h"
 #ifdef HARNESS_LOAD
 #include "harness_load.h"
-#include "harness_serve.h"
 #endif
 
 #include "hexfloat.h"
@@ -288,16 +287,7 @@ int main(int argc, char **argv)
 {
     char kind[16];
     int n, tests = 0;
-#ifdef HARNESS_LOAD
-    /* `runner --serve OBJECT`: fd 3 is the grader's socket; each test's
-     * child comes back here as `runner OBJECT` would start. */
-    if (argc == 3 && strcmp(argv[1], "--serve") == 0) {
-        harness_serve(3);
-        argv[1] = argv[2];
-        argv[2] = NULL;
-        argc = 2;
-    }
-#endif
+    harness_init();
     answers = fdopen(3, "w");
     if (!answers)
         return 3;

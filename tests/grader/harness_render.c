@@ -18,6 +18,7 @@
 #include "raytracer.h"
 #include "kit/scene.h"                  /* the guard sphere */
 #include "kit/image.h"
+#include "harness_init.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -33,6 +34,7 @@ static int read_numbers(double *v, int n)
 
 int main(void)
 {
+    harness_init();
     FILE *out = fdopen(3, "w");
     int nx, ny, m;
     double view[2], bg[3];

@@ -7,6 +7,7 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "report.h"
+#include "jail.h"
 #include "../tools/json.h"
 
 #include <stdio.h>
@@ -97,6 +98,9 @@ int report_json(const char *path, const Grade *g, const char *submission, char *
         json_string(&j, g->causes[p]);
     }
     json_end_object(&j);
+    /* Where the submission's code ran (jail.h), and what that guarantees. */
+    json_key(&j, "jail");
+    json_string(&j, jail_describe());
     json_end_object(&j);
     json_key(&j, "tests");
     json_begin_array(&j);

@@ -21,6 +21,8 @@
 /* The largest reference file whose bytes are kept; a larger one (or one
  * that is not a PNG) is read by image_read and encoded anew. */
 #define REFERENCE_PNG_MAX ((size_t)64 << 20)
+/* The render's memory: a test's (grade.c), with room for the picture. */
+#define REPORT_RENDER_MEMORY_MB 64
 
 /* The harness's input: the scene's size, view and spheres (hex floats, so
  * that the child reads exactly the scene's numbers).  malloc'd, or NULL. */
@@ -73,10 +75,11 @@ static int render_submission(const ReportRenderOptions *o, const Scene *scene, R
     char *input = scene_input(scene, &len);
     size_t want = (size_t)scene->nx * (size_t)scene->ny * 3;
     char *argv[] = { b.runner, NULL };
+    /* A test's limits, as the README says, and its jail. */
     SandboxSpec spec = {
-        .argv = argv, .workdir = b.rundir, .input = input, .input_len = len,
+        .argv = argv, .workdir = b.rundir, .visible = b.visible, .input = input, .input_len = len,
         .timeout = o->timeout, .answer_max = want, .output_max = 4096,
-        .memory_mb = 1024, .max_procs = 0, .max_file_mb = 0,
+        .memory_mb = REPORT_RENDER_MEMORY_MB, .max_procs = 0, .max_file_mb = 0, .init = true,
     };
     SandboxResult res;
     if (!input || sandbox_run(&spec, &res, err, errlen) != 0) {

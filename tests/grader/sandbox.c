@@ -1,28 +1,22 @@
 /*
  * sandbox.c - see sandbox.h.  POSIX: fork, setpgid, setrlimit, poll; vfork
- * on Linux (macOS deprecates it); and what each system offers to see a
+ * on Linux (macOS deprecates it), or the jail's clone (jail.c), which
+ * shares memory as vfork does; and what each system offers to see a
  * process's memory (/proc on Linux, libproc on macOS).
  *
- * On Linux vfork, not fork: the grader holds tens of megabytes of tests
- * and figures, and a fork copies its page tables and then makes every page
- * the grader writes fault once (copy on write).  Grading a submission whose
- * failing tests each run alone costs a third less CPU this way.  The child
- * borrows the parent's memory until it runs the program, so everything it
- * needs is prepared before (ChildPlan) and the child itself only calls the
- * system.
- *
- * sandbox_serve_run runs a test through a server of tests instead (a
- * prebuilt runner started with --serve, harness_serve.c): the test's pipes
- * go to the server over a socket (SCM_RIGHTS), the server forks the child,
- * and one watch (watch below) serves both ways; only how the child's end
- * is learnt (the grader's waitpid, or the server's message) and how it is
- * stopped (the grader's kill, or a word to the server) differ.
+ * On Linux the child shares the grader's memory until it runs the program
+ * (vfork, or clone with CLONE_VM | CLONE_VFORK): the grader holds tens of
+ * megabytes of tests and figures, and a fork copies its page tables and
+ * then makes every page the grader writes fault once (copy on write).  So
+ * everything the child needs is prepared before (ChildPlan, jail_prepare)
+ * and the child itself only calls the system.
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DEFAULT_SOURCE         /* setgroups, on glibc */
 #define _DARWIN_C_SOURCE        /* setgroups, on macOS */
 #include "sandbox.h"
-#include "serve_protocol.h"
+#include "harness_init.h"
+#include "jail.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -35,7 +29,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
-#include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <sys/wait.h>
@@ -76,12 +69,17 @@ static void lookup_nobody(uid_t *uid, gid_t *gid)
 
 /* The user the children run as when the grader is root: "nobody" (looked
  * up once), or the id sandbox_set_user gave, as user and as group. */
-static bool user_known;
+static bool user_known, user_held;
 static uid_t user_uid;
 static gid_t user_gid;
 
-static void child_ids(uid_t *uid, gid_t *gid)
+void sandbox_ids(uid_t *uid, gid_t *gid)
 {
+    if (!sandbox_drops_privileges()) {
+        *uid = geteuid();
+        *gid = getegid();
+        return;
+    }
     if (!user_known) {
         lookup_nobody(&user_uid, &user_gid);
         user_known = true;
@@ -90,11 +88,12 @@ static void child_ids(uid_t *uid, gid_t *gid)
     *gid = user_gid;
 }
 
-void sandbox_set_user(uid_t id)
+void sandbox_set_user(uid_t id, bool held)
 {
     user_uid = id;
     user_gid = (gid_t)id;
     user_known = id != 0;
+    user_held = id != 0 && held;
 }
 
 /* The file one byte of which, at the offset of an id, is locked by the
@@ -174,32 +173,42 @@ int sandbox_spare_users(uid_t *ids, int n, const char **unclaimed)
     return found;
 }
 
-int sandbox_give(const char *path)
-{
-    if (!sandbox_drops_privileges())
-        return 0;
-    uid_t uid;
-    gid_t gid;
-    child_ids(&uid, &gid);
-    return chown(path, uid, gid);
-}
-
 static void limit(int resource, rlim_t value)
 {
     struct rlimit rl = { value, value };
     setrlimit(resource, &rl);       /* best effort: macOS ignores some */
 }
 
-/* The memory the child's group holds, in bytes, or -1 where the system
- * does not say.  macOS: the physical footprint (resident and compressed
- * memory) of every process of the group.  Linux: the leader's resident
- * size, from /proc (tests cannot fork; each of the compiler's processes has
- * its own RLIMIT_AS). */
-static long long group_memory(pid_t pgid)
+/* The memory the run holds, in bytes, or -1 where the system does not say.
+ * macOS: the physical footprint (resident and compressed memory) of every
+ * process of the child's group.  Linux: the resident size of the child and
+ * of its own children (a test cannot fork; in the namespace jail its first
+ * process is the one that forks the test: harness_init.h), from /proc. */
+#if defined(__linux__)
+static long long resident(long pid)
+{
+    char path[64], text[128];
+    snprintf(path, sizeof path, "/proc/%ld/statm", pid);             /* portable: __linux__ */
+    int fd = open(path, O_RDONLY);
+    if (fd < 0)
+        return -1;
+    ssize_t n = read(fd, text, sizeof text - 1);
+    close(fd);
+    long size = 0, pages = 0, page = sysconf(_SC_PAGESIZE);
+    if (n <= 0 || page <= 0)
+        return -1;
+    text[n] = '\0';
+    if (sscanf(text, "%ld %ld", &size, &pages) != 2)
+        return -1;
+    return (long long)pages * page;
+}
+#endif
+
+static long long group_memory(pid_t pid)
 {
 #if defined(__APPLE__)
     pid_t pids[256];
-    int bytes = proc_listpids(PROC_PGRP_ONLY, (uint32_t)pgid, pids, (int)sizeof pids);
+    int bytes = proc_listpids(PROC_PGRP_ONLY, (uint32_t)pid, pids, (int)sizeof pids);
     if (bytes <= 0)
         return -1;
     long long total = 0;
@@ -210,23 +219,22 @@ static long long group_memory(pid_t pgid)
     }
     return total;
 #elif defined(__linux__)
-    char path[64], text[128];
-    snprintf(path, sizeof path, "/proc/%ld/statm", (long)pgid);    /* portable: __linux__ */
-    int fd = open(path, O_RDONLY);
-    if (fd < 0)
-        return -1;
-    ssize_t n = read(fd, text, sizeof text - 1);
-    close(fd);
-    long size = 0, resident = 0;
-    long page = sysconf(_SC_PAGESIZE);
-    if (n <= 0 || page <= 0)
-        return -1;
-    text[n] = '\0';
-    if (sscanf(text, "%ld %ld", &size, &resident) != 2)
-        return -1;
-    return (long long)resident * page;
+    long long total = resident((long)pid);
+    char path[96], text[256];
+    snprintf(path, sizeof path, "/proc/%ld/task/%ld/children", (long)pid, (long)pid);
+    int fd = total >= 0 ? open(path, O_RDONLY) : -1;
+    ssize_t n = fd >= 0 ? read(fd, text, sizeof text - 1) : 0;
+    if (fd >= 0)
+        close(fd);
+    text[n > 0 ? n : 0] = '\0';
+    char *at = text, *end;
+    for (long child = strtol(at, &end, 10); end != at; child = strtol(at = end, &end, 10)) {
+        long long more = resident(child);
+        total += more > 0 ? more : 0;
+    }
+    return total;
 #else
-    (void)pgid;
+    (void)pid;
     return -1;
 #endif
 }
@@ -242,7 +250,7 @@ bool sandbox_watches_memory(void)
 
 /* Asks Linux's out-of-memory killer to take this process (and what it
  * runs) before any other, so that the grader survives to report it.  Best
- * effort: other systems have no /proc. */
+ * effort: other systems have no /proc (nor has the namespace jail). */
 static void prefer_oom_kill(void)
 {
     int fd = open("/proc/self/oom_score_adj", O_WRONLY);      /* portable: none elsewhere */
@@ -254,17 +262,20 @@ static void prefer_oom_kill(void)
     close(fd);
 }
 
-/* What the child needs, prepared by the parent before it forks: the child
- * shares the parent's memory until it runs the program (vfork), so it
- * calls nothing that allocates or locks, only the system. */
+/* What the child needs, prepared by the parent before it starts: the child
+ * shares the parent's memory until it runs the program, so it calls
+ * nothing that allocates or locks, only the system. */
 typedef struct {
     const SandboxSpec *spec;
     int in_r, ans_w, out_w;
+    int status_w;              /* fd 4 of a jail's first process (init), or -1 */
     int close_fds[256];        /* the parent's descriptors from 4 up          */
     int nclose;                /* -1: more than fit; close them all blindly  */
+    bool jailed;               /* in the namespace jail (jail_enter first)   */
     bool drop;
     uid_t uid;
     gid_t gid;
+    long nproc;                /* RLIMIT_NPROC, or -1: none                  */
     char *envp[4];
     char path_env[4096];
     char tmp_env[4200];
@@ -297,47 +308,53 @@ static void plan_close(ChildPlan *cp, int low)
     closedir(d);
 }
 
-static void plan_child(ChildPlan *cp, const SandboxSpec *spec, int in_r, int ans_w, int out_w)
+static void plan_child(ChildPlan *cp, const SandboxSpec *spec, int in_r, int ans_w, int out_w,
+                       int status_w)
 {
     cp->spec = spec;
-    cp->in_r = in_r, cp->ans_w = ans_w, cp->out_w = out_w;
+    cp->in_r = in_r, cp->ans_w = ans_w, cp->out_w = out_w, cp->status_w = status_w;
     plan_close(cp, 4);
+    cp->jailed = jail_namespaces();
     cp->drop = sandbox_drops_privileges();
-    if (cp->drop)
-        child_ids(&cp->uid, &cp->gid);
-    const char *path = spec->inherit_path && getenv("PATH") ? getenv("PATH") : "/usr/bin:/bin";
+    sandbox_ids(&cp->uid, &cp->gid);
+    /* A jail's first process that forks the test (init) may make that one
+     * (it and the test count two); the test then takes 0 (harness_init.h). */
+    cp->nproc = spec->max_procs < 0 ? -1 : status_w >= 0 ? HARNESS_INIT_NPROC : 0;
+    const char *path = spec->compiler && getenv("PATH") ? getenv("PATH") : "/usr/bin:/bin";
     snprintf(cp->path_env, sizeof cp->path_env, "PATH=%s", path);
     cp->envp[0] = cp->path_env;
     cp->envp[1] = "LC_ALL=C";
     cp->envp[2] = "HOME=/nonexistent";
     cp->envp[3] = NULL;
-    if (spec->inherit_path) {      /* the compiler wants a TMPDIR it can write */
+    if (spec->compiler) {          /* the compiler wants a TMPDIR it can write */
         snprintf(cp->tmp_env, sizeof cp->tmp_env, "TMPDIR=%s", spec->workdir);
         cp->envp[2] = cp->tmp_env;
     }
 }
 
-/* In the child, after vfork (Linux) or fork: never returns. */
-static void child(const ChildPlan *cp)
+/* In the child, after vfork (Linux), fork, or in the jail: never returns. */
+JAIL_CHILD_CODE static void child(const ChildPlan *cp)
 {
     const SandboxSpec *spec = cp->spec;
     setpgid(0, 0);
     signal(SIGPIPE, SIG_DFL);
-    prefer_oom_kill();
+    if (!cp->jailed)
+        prefer_oom_kill();          /* the jail does it as it enters (jail.c) */
     if (dup2(cp->in_r, 0) < 0 || dup2(cp->out_w, 1) < 0 || dup2(cp->out_w, 2) < 0 ||
-        dup2(cp->ans_w, 3) < 0)
+        dup2(cp->ans_w, 3) < 0 || (cp->status_w >= 0 && dup2(cp->status_w, 4) < 0))
         _exit(126);
     if (cp->nclose >= 0) {
         for (int k = 0; k < cp->nclose; k++)
-            close(cp->close_fds[k]);
+            if (cp->close_fds[k] != 4 || cp->status_w < 0)
+                close(cp->close_fds[k]);
     } else {
         long maxfd = sysconf(_SC_OPEN_MAX);
         if (maxfd < 0 || maxfd > 65536)
             maxfd = 65536;
-        for (long fd = 4; fd < maxfd; fd++)
+        for (long fd = cp->status_w >= 0 ? 5 : 4; fd < maxfd; fd++)
             close((int)fd);
     }
-    if (chdir(spec->workdir) != 0)
+    if (!cp->jailed && chdir(spec->cwd ? spec->cwd : spec->workdir) != 0)
         _exit(126);
 
     limit(RLIMIT_CORE, 0);
@@ -346,14 +363,26 @@ static void child(const ChildPlan *cp)
     if (address_mb > 0)
         limit(RLIMIT_AS, (rlim_t)address_mb << 20);     /* macOS refuses it: see group_memory */
     limit(RLIMIT_FSIZE, (rlim_t)spec->max_file_mb << 20);
+    /* As root: the run's own id.  In a user namespace the child is the user
+     * already, and its capabilities go as it runs the program. */
     if (cp->drop) {
         if (setgroups(0, NULL) != 0 || setgid(cp->gid) != 0 || setuid(cp->uid) != 0 || setuid(0) == 0)
             _exit(126);
     }
-    if (spec->max_procs >= 0)
-        limit(RLIMIT_NPROC, (rlim_t)spec->max_procs);
+    if (cp->nproc >= 0)
+        limit(RLIMIT_NPROC, (rlim_t)cp->nproc);
     execve(spec->argv[0], spec->argv, cp->envp);
     _exit(127);
+}
+
+/* The namespace jail's child: the jail, then the rest as any child. */
+JAIL_CHILD_CODE static int jailed_child(void *arg)
+{
+    const ChildPlan *cp = arg;
+    if (jail_enter(cp->out_w) != 0)
+        _exit(125);
+    child(cp);
+    return 127;
 }
 
 /* Appends what fd has to (buf, len), keeping at most max bytes and adding
@@ -391,112 +420,28 @@ static int pump(int fd, char **buf, size_t *len, size_t *cap, size_t max, bool *
 
 /* ---- watching a run ----------------------------------------------------------- */
 
-/* The child being watched: the grader's own (vfork), or a server's. */
-typedef struct {
-    pid_t pid;                 /* the test's process, which leads its group  */
-    SandboxServer *server;     /* NULL: the child is the grader's own        */
-    int status;
-    bool ended;                /* reaped: status (and, served, cpu) known    */
-    bool server_failed;        /* the server died, stopped or fell silent    */
-    double cpu;                /* served: the child's CPU, from the server   */
-} Run;
-
-/* n bytes from fd (non-blocking) within seconds; 0, or -1 on end of file,
- * error or time out. */
-static int read_within(int fd, void *buf, size_t n, double seconds)
+/* Stops the child, whatever is left of its group and (the namespace jail)
+ * its PID namespace, and reaps it.  pid is the child's own: > 0, and its
+ * group is not the grader's (it made one of its own, setpgid on both
+ * sides), so this reaches no one else. */
+static void stop(pid_t pid, int *status, bool *ended)
 {
-    char *p = buf;
-    double deadline = sandbox_now() + seconds;
-    while (n > 0) {
-        ssize_t r = read(fd, p, n);
-        if (r > 0) {
-            p += r;
-            n -= (size_t)r;
+    if (pid <= 0 || pid == getpgrp())
+        return;
+    kill(-pid, SIGKILL);
+    if (!*ended) {
+        kill(pid, SIGKILL);
+        while (waitpid(pid, status, 0) < 0 && errno == EINTR)
             continue;
-        }
-        if (r == 0 || (errno != EAGAIN && errno != EINTR))
-            return -1;
-        double left = deadline - sandbox_now();
-        if (left <= 0)
-            return -1;
-        struct pollfd pf = { fd, POLLIN, 0 };
-        poll(&pf, 1, (int)(left * 1000) + 1);
-    }
-    return 0;
-}
-
-/* Whether the server is still there to report: not dead, not stopped. */
-static bool server_alive(SandboxServer *s)
-{
-    int st;
-    pid_t w = waitpid(s->pid, &st, WNOHANG | WUNTRACED);
-    if (w == s->pid && !WIFSTOPPED(st))
-        s->reaped = true;
-    return w == 0;
-}
-
-/* Has the child ended?  Served, readable says the socket has news. */
-static void check_ended(Run *r, bool readable)
-{
-    if (!r->server) {
-        if (waitpid(r->pid, &r->status, WNOHANG) == r->pid)
-            r->ended = true;
-        return;
-    }
-    ServeEnded en;
-    if (readable) {
-        if (read_within(r->server->sock, &en, sizeof en, 2) != 0) {
-            r->server_failed = true;
-            return;
-        }
-        r->status = en.status;
-        r->cpu = en.cpu_seconds;
-        r->ended = true;
-    } else if (!server_alive(r->server)) {
-        r->server_failed = true;
-    }
-}
-
-/* Stops the child and reaps it (the server reaps a served one). */
-static void stop(Run *r)
-{
-    if (!r->server) {
-        /* Whatever is left of the group too (its id stays reserved while any
-         * member lives, so this reaches no one else). */
-        kill(-r->pid, SIGKILL);
-        if (!r->ended) {
-            kill(r->pid, SIGKILL);
-            while (waitpid(r->pid, &r->status, 0) < 0 && errno == EINTR)
-                continue;
-            r->ended = true;
-        }
-        return;
-    }
-    if (!r->ended && !r->server_failed) {
-        char k = SERVE_KILL;
-        ServeEnded en;
-        if (write(r->server->sock, &k, 1) == 1 &&
-            read_within(r->server->sock, &en, sizeof en, 2) == 0) {
-            r->status = en.status;
-            r->cpu = en.cpu_seconds;
-            r->ended = true;
-        } else {
-            r->server_failed = true;
-        }
-    }
-    if (r->server_failed) {
-        /* No one reaps it in time: the child cannot have forked (no new
-         * processes), so it alone holds its group. */
-        kill(-r->pid, SIGKILL);
-        kill(r->pid, SIGKILL);
+        *ended = true;
     }
 }
 
 /* Feeds the child its input and collects what it writes until it ends or
  * breaks a limit (then stops it), then what is left in the pipes.  The
  * pipes are the grader's ends; each is closed here. */
-static void watch(const SandboxSpec *spec, Run *r, SandboxResult *res, int in_fd, int ans_fd,
-                  int out_fd, double start)
+static void watch(const SandboxSpec *spec, pid_t pid, int *status, SandboxResult *res, int in_fd,
+                  int ans_fd, int out_fd, double start)
 {
     fcntl(in_fd, F_SETFL, O_NONBLOCK);
     fcntl(ans_fd, F_SETFL, O_NONBLOCK);
@@ -506,25 +451,19 @@ static void watch(const SandboxSpec *spec, Run *r, SandboxResult *res, int in_fd
         close(in_fd);
         in_fd = -1;
     }
-    int sock = r->server ? r->server->sock : -1;
     double deadline = start + spec->timeout, next_watch = start;
-    bool over = false;
+    bool over = false, ended = false;
 
     while (!over) {
-        struct pollfd pf[4];
-        int n = 0, sock_at = -1;
+        struct pollfd pf[3];
+        int n = 0;
         if (in_fd >= 0)
             pf[n++] = (struct pollfd){ in_fd, POLLOUT, 0 };
         if (ans_fd >= 0)
             pf[n++] = (struct pollfd){ ans_fd, POLLIN, 0 };
         if (out_fd >= 0)
             pf[n++] = (struct pollfd){ out_fd, POLLIN, 0 };
-        if (sock >= 0) {
-            sock_at = n;
-            pf[n++] = (struct pollfd){ sock, POLLIN, 0 };
-        }
-        /* With the pipes closed only the child's exit is left to wait for
-         * (a served child's is news on the socket, which wakes the poll). */
+        /* With the pipes closed only the child's exit is left to wait for. */
         poll(pf, (nfds_t)n, n ? 20 : 1);
         if (in_fd >= 0) {
             ssize_t w = write(in_fd, spec->input + in_off, spec->input_len - in_off);
@@ -546,24 +485,19 @@ static void watch(const SandboxSpec *spec, Run *r, SandboxResult *res, int in_fd
             out_fd = -1;
         }
         /* Ended, out of time, over its output or its memory? */
-        check_ended(r, sock_at >= 0 && pf[sock_at].revents);
-        if (r->ended || r->server_failed) {
-            over = true;
+        if (waitpid(pid, status, WNOHANG) == pid) {
+            ended = over = true;
         } else if (spec->output_stop && out_total > spec->output_stop) {
-            res->output_exceeded = true;
-            over = true;
+            res->output_exceeded = over = true;
         } else if (sandbox_now() > deadline) {
-            res->timed_out = true;
-            over = true;
+            res->timed_out = over = true;
         } else if (spec->memory_mb > 0 && sandbox_now() >= next_watch) {
             next_watch = sandbox_now() + 0.02;
-            if (group_memory(r->pid) > (long long)spec->memory_mb << 20) {
-                res->memory_exceeded = true;
-                over = true;
-            }
+            if (group_memory(pid) > (long long)spec->memory_mb << 20)
+                res->memory_exceeded = over = true;
         }
     }
-    stop(r);
+    stop(pid, status, &ended);
     /* What is already in the pipes, without waiting for anyone to close them. */
     for (int round = 0; round < 64 && (ans_fd >= 0 || out_fd >= 0); round++) {
         if (ans_fd >= 0 && pump(ans_fd, &res->answer, &res->answer_len, &ans_cap,
@@ -591,12 +525,12 @@ static void watch(const SandboxSpec *spec, Run *r, SandboxResult *res, int in_fd
 }
 
 /* The result's last fields, from how the run ended; 0, or -1 out of memory. */
-static int finish(const Run *r, SandboxResult *res, double start)
+static int finish(int status, SandboxResult *res, double start)
 {
     res->seconds = sandbox_now() - start;
     bool killed = res->timed_out || res->memory_exceeded || res->output_exceeded;
-    res->exit_code = WIFEXITED(r->status) && !killed ? WEXITSTATUS(r->status) : -1;
-    res->signal = WIFSIGNALED(r->status) && !killed ? WTERMSIG(r->status) : 0;
+    res->exit_code = WIFEXITED(status) && !killed ? WEXITSTATUS(status) : -1;
+    res->signal = WIFSIGNALED(status) && !killed ? WTERMSIG(status) : 0;
     if (!res->answer && !(res->answer = calloc(1, 1)))
         return -1;
     if (!res->output && !(res->output = calloc(1, 1)))
@@ -606,11 +540,12 @@ static int finish(const Run *r, SandboxResult *res, double start)
     return 0;
 }
 
-/* The three pipes of a run: [0] the child's stdin, [1] its answers (fd 3),
- * [2] its stdout and stderr; each p[k][0] is read, p[k][1] written. */
-static int open_pipes(int p[3][2], char *err, size_t errlen)
+/* The pipes of a run: [0] the child's stdin, [1] its answers (fd 3), [2]
+ * its stdout and stderr, [3] the jail's first process's word of how the
+ * test ended (fd 4); each p[k][0] is read, p[k][1] written. */
+static int open_pipes(int p[4][2], int n, char *err, size_t errlen)
 {
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < n; k++)
         if (pipe(p[k]) != 0) {
             snprintf(err, errlen, "pipe: %s", strerror(errno));
             while (k-- > 0) {
@@ -619,205 +554,123 @@ static int open_pipes(int p[3][2], char *err, size_t errlen)
             }
             return -1;
         }
+    for (int k = n; k < 4; k++)
+        p[k][0] = p[k][1] = -1;
     return 0;
 }
 
-/* The server's own CPU limit: it only forks, once per test. */
-#define SERVE_CPU_SECONDS 600
-
-/* The plan of the child about to be forked (see ChildPlan). */
+/* The plan of the child about to start (see ChildPlan). */
 static ChildPlan plan;
 
-/* vfork (Linux) or fork, then the child runs spec's program; the child's
- * pid, or -1. */
-static pid_t spawn(const SandboxSpec *spec, int in_r, int ans_w, int out_w)
+/* Starts the child that runs spec's program: in the namespace jail, or
+ * by vfork (Linux) or fork.  The child's pid, or -1 with err. */
+static pid_t spawn(const SandboxSpec *spec, int in_r, int ans_w, int out_w, int status_w, char *err,
+                   size_t errlen)
 {
-    plan_child(&plan, spec, in_r, ans_w, out_w);
+    plan_child(&plan, spec, in_r, ans_w, out_w, status_w);
+    pid_t pid;
+    if (plan.jailed) {
+        JailPaths paths = { .workdir = spec->workdir, .workdir_shared = spec->keep != NULL,
+                            .cwd = spec->cwd, .visible = spec->visible, .pid_namespace = spec->init };
+        if (jail_prepare(&paths, plan.uid, plan.gid, err, errlen) != 0)
+            return -1;
+        pid = jail_clone(jailed_child, &plan);
+    } else {
 #if defined(__linux__)
-    pid_t pid = vfork();        /* portable: __linux__ (macOS deprecates vfork: fork there) */
+        pid = vfork();          /* portable: __linux__ (macOS deprecates vfork: fork there) */
 #else
-    pid_t pid = fork();
+        pid = fork();
 #endif
-    if (pid == 0)
-        child(&plan);
+        if (pid == 0)
+            child(&plan);
+    }
     if (pid > 0)
         setpgid(pid, pid);      /* also here, so killpg cannot race it */
+    else
+        snprintf(err, errlen, "%s: %s", plan.jailed ? "clone" : "fork", strerror(errno));
     return pid;
+}
+
+/* The run's working folder on the grader's side: in the fallback jail,
+ * and in the namespace jail when the grader reads back from it (keep).
+ * Made afresh, the run's own; 0, or -1 with err. */
+static int make_workdir(const SandboxSpec *spec, char *err, size_t errlen)
+{
+    if (jail_namespaces() && !spec->keep)
+        return 0;                   /* a tmpfs of the jail's own */
+    struct stat st;
+    if (lstat(spec->workdir, &st) == 0)
+        jail_remove_tree(spec->workdir);
+    uid_t uid;
+    gid_t gid;
+    sandbox_ids(&uid, &gid);
+    if (mkdir(spec->workdir, 0700) != 0 ||
+        (sandbox_drops_privileges() && chown(spec->workdir, uid, gid) != 0)) {
+        snprintf(err, errlen, "%s: %s", spec->workdir, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+/* After the run: what the grader keeps of its folder, then the folder
+ * gone; in the fallback jail as root, every process and file of the run's
+ * id too (when the id is this grader's alone). */
+static void clean_up(const SandboxSpec *spec)
+{
+    bool shared = !jail_namespaces() || spec->keep;
+    for (int k = 0; spec->keep && spec->keep[k]; k++) {
+        char to[4096], why[256];
+        snprintf(to, sizeof to, "%s/%s", spec->keep_to, spec->keep[k]);
+        unlink(to);
+        jail_take_file(spec->workdir, spec->keep[k], to, spec->keep_max, why, sizeof why);
+    }
+    if (!jail_namespaces() && sandbox_drops_privileges() && user_held)
+        jail_sweep(user_uid);
+    if (shared)
+        jail_remove_tree(spec->workdir);
 }
 
 int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t errlen)
 {
-    int p[3][2];
+    int p[4][2];
     memset(res, 0, sizeof *res);
     if (errlen)
         err[0] = '\0';
     signal(SIGPIPE, SIG_IGN);
-    if (open_pipes(p, err, errlen) != 0)
+    bool init = spec->init && jail_namespaces();
+    if (make_workdir(spec, err, errlen) != 0)
         return -1;
+    if (open_pipes(p, init ? 4 : 3, err, errlen) != 0) {
+        clean_up(spec);
+        return -1;
+    }
     double start = sandbox_now(), cpu_start = sandbox_cpu(false);
-    pid_t pid = spawn(spec, p[0][0], p[1][1], p[2][1]);
+    pid_t pid = spawn(spec, p[0][0], p[1][1], p[2][1], p[3][1], err, errlen);
+    /* The child's ends: stdin's read end, the others' write ends. */
+    for (int k = 0; k < 4; k++)
+        if (p[k][0] >= 0)
+            close(p[k][k == 0 ? 0 : 1]);
     if (pid < 0) {
-        snprintf(err, errlen, "fork: %s", strerror(errno));
-        for (int k = 0; k < 3; k++) {
-            close(p[k][0]);
-            close(p[k][1]);
-        }
+        for (int k = 0; k < 4; k++)
+            if (p[k][0] >= 0)
+                close(p[k][k == 0 ? 1 : 0]);
+        clean_up(spec);
         return -1;
     }
-    close(p[0][0]);
-    close(p[1][1]);
-    close(p[2][1]);
-    Run r = { .pid = pid };
-    watch(spec, &r, res, p[0][1], p[1][0], p[2][0], start);
+    int status = 0;
+    watch(spec, pid, &status, res, p[0][1], p[1][0], p[2][0], start);
+    if (init) {
+        /* The test's own end, as the jail's first process saw it. */
+        int told;
+        fcntl(p[3][0], F_SETFL, O_NONBLOCK);
+        if (read(p[3][0], &told, sizeof told) == (ssize_t)sizeof told && !res->timed_out &&
+            !res->memory_exceeded && !res->output_exceeded)
+            status = told;
+        close(p[3][0]);
+    }
     res->cpu_seconds = sandbox_cpu(false) - cpu_start;
-    return finish(&r, res, start);
-}
-
-/* ---- a server of tests -------------------------------------------------------- */
-
-void sandbox_serve_init(SandboxServer *s, const char *program, const char *object, int start_at)
-{
-    memset(s, 0, sizeof *s);
-    s->argv[0] = (char *)program;
-    s->argv[1] = "--serve";
-    s->argv[2] = (char *)object;
-    s->argv[3] = NULL;
-    s->sock = -1;
-    s->off = start_at < 0;
-    s->start_at = start_at;
-}
-
-/* Starts the server in the sandbox spec describes (its directory, user,
- * memory), with fd 3 its end of a socket and nothing to read or write. */
-static int serve_start(SandboxServer *s, const SandboxSpec *spec)
-{
-    int sv[2];
-    /* Packets: each message is read whole and alone (serve_protocol.h). */
-    if (socketpair(AF_UNIX, SOCK_SEQPACKET, 0, sv) != 0)
-        return -1;
-    int null_r = open("/dev/null", O_RDONLY), null_w = open("/dev/null", O_WRONLY);
-    SandboxSpec ss = *spec;
-    ss.argv = s->argv;
-    ss.cpu_seconds = SERVE_CPU_SECONDS;
-    ss.max_procs = -1;          /* it forks; each child sets the test's limits */
-    ss.memory_mb = 0;
-    ss.address_mb = -1;
-    pid_t pid = null_r >= 0 && null_w >= 0 ? spawn(&ss, null_r, sv[1], null_w) : -1;
-    if (null_r >= 0)
-        close(null_r);
-    if (null_w >= 0)
-        close(null_w);
-    close(sv[1]);
-    if (pid < 0) {
-        close(sv[0]);
-        return -1;
-    }
-    fcntl(sv[0], F_SETFD, FD_CLOEXEC);
-    fcntl(sv[0], F_SETFL, O_NONBLOCK);
-    s->pid = pid;
-    s->sock = sv[0];
-    s->reaped = false;
-    return 0;
-}
-
-void sandbox_serve_stop(SandboxServer *s)
-{
-    if (s->sock >= 0)
-        close(s->sock);
-    s->sock = -1;
-    if (s->pid > 0 && !s->reaped) {
-        /* It exits when it reads the end of the socket; it may be stopped. */
-        kill(s->pid, SIGKILL);
-        while (waitpid(s->pid, NULL, 0) < 0 && errno == EINTR)
-            continue;
-    }
-    s->pid = 0;
-    s->reaped = false;
-}
-
-#ifndef MSG_NOSIGNAL
-#define MSG_NOSIGNAL 0          /* macOS has none; SIGPIPE is ignored here anyway */
-#endif
-
-static int send_request(int sock, const ServeRequest *rq, const int fds[SERVE_FDS])
-{
-    char control[SERVE_CONTROL];
-    struct iovec iov;
-    struct msghdr msg;
-    serve_message(&msg, &iov, (void *)rq, control);
-    struct cmsghdr *c = CMSG_FIRSTHDR(&msg);
-    c->cmsg_level = SOL_SOCKET;
-    c->cmsg_type = SCM_RIGHTS;
-    c->cmsg_len = CMSG_LEN(SERVE_FDS * sizeof(int));
-    memcpy(CMSG_DATA(c), fds, SERVE_FDS * sizeof(int));
-    ssize_t n;
-    do
-        n = sendmsg(sock, &msg, MSG_NOSIGNAL);
-    while (n < 0 && errno == EINTR);
-    return n == (ssize_t)sizeof *rq ? 0 : -1;
-}
-
-/* One test through the server; 1 when the server failed (nothing of the
- * run is kept), else as sandbox_run. */
-static int served(SandboxServer *s, const SandboxSpec *spec, SandboxResult *res, char *err,
-                  size_t errlen)
-{
-    int p[3][2];
-    if (open_pipes(p, err, errlen) != 0)
-        return -1;
-    long address_mb = spec->address_mb ? spec->address_mb : spec->memory_mb;
-    ServeRequest rq = {
-        .cpu_seconds = spec->cpu_seconds > 0 ? spec->cpu_seconds : (int32_t)(spec->timeout + 2),
-        .max_procs = spec->max_procs,
-        .address_bytes = address_mb > 0 ? (int64_t)address_mb << 20 : 0,
-        .file_bytes = (int64_t)spec->max_file_mb << 20,
-    };
-    int fds[SERVE_FDS] = { p[0][0], p[2][1], p[1][1] };
-    double start = sandbox_now();
-    ServeStarted st;
-    bool sent = send_request(s->sock, &rq, fds) == 0;
-    close(p[0][0]);
-    close(p[1][1]);
-    close(p[2][1]);
-    if (!sent || read_within(s->sock, &st, sizeof st, 2) != 0 || st.pid <= 0) {
-        for (int k = 0; k < 3; k++)
-            close(p[k][k == 0 ? 1 : 0]);
-        return 1;
-    }
-    Run r = { .pid = (pid_t)st.pid, .server = s };
-    watch(spec, &r, res, p[0][1], p[1][0], p[2][0], start);
-    if (r.server_failed) {
-        sandbox_result_free(res);
-        return 1;
-    }
-    res->cpu_seconds = r.cpu;
-    return finish(&r, res, start);
-}
-
-int sandbox_serve_run(SandboxServer *s, const SandboxSpec *spec, SandboxResult *res, char *err,
-                      size_t errlen)
-{
-    memset(res, 0, sizeof *res);
-    if (errlen)
-        err[0] = '\0';
-    signal(SIGPIPE, SIG_IGN);
-    bool now = !s->off && s->runs++ >= s->start_at;
-    if (now && !s->pid && serve_start(s, spec) != 0)
-        s->off = true;
-    if (now && !s->off) {
-        int status = served(s, spec, res, err, errlen);
-        if (status != 1)
-            return status;
-        /* The server is gone or stuck: from here on, one runner per test;
-         * this test too runs again, in a process the grader started. */
-        sandbox_serve_stop(s);
-        s->off = true;
-        s->failed = true;
-    }
-    SandboxSpec own = *spec;
-    char *argv[3] = { s->argv[0], s->argv[2], NULL };
-    own.argv = argv;
-    return sandbox_run(&own, res, err, errlen);
+    clean_up(spec);
+    return finish(status, res, start);
 }
 
 void sandbox_result_free(SandboxResult *res)

@@ -1,21 +1,25 @@
 /*
  * sandbox.h - running untrusted student code in a child process.
  *
- * The child gets its own process group, an empty working directory, a small
- * environment, no file descriptors but stdin, stdout/stderr (one pipe) and
- * the answer pipe on fd 3, and resource limits: CPU time, memory, no new
- * processes, no file output, and, if asked, how much it may print.  When
- * the grader runs as root the child runs as an unprivileged user: "nobody",
- * or the spare id sandbox_set_user gave (grade_main.c asks for one).
- * The parent enforces the wall-clock and output limits by killing the whole
- * process group -- nothing the child does (alarm, signals, exit, fork,
- * closing descriptors) can stall it or forge a result.
+ * Every run (compiling a stage file, a part's tests, a test alone, a probe
+ * of the diagnosis, the report page's render) is a fresh child in a jail
+ * of its own (jail.h: namespaces where the system allows them, else a user
+ * id of its own that is swept after the run).  The child gets a fresh
+ * empty working folder, a small environment, no file descriptors but
+ * stdin, stdout/stderr (one pipe) and the answer pipe on fd 3, and
+ * resource limits: CPU time, memory, no new processes, no file output,
+ * and, if asked, how much it may print.  The parent enforces the
+ * wall-clock and output limits by killing the whole run -- nothing the
+ * child does (alarm, signals, exit, fork, closing descriptors) can stall
+ * it or forge a result.  What the grader reads back from a run's folder
+ * (a compiler's output: keep) it opens without following links, as plain
+ * files only, and copies into a folder of its own.
  *
  * Memory: the kernel enforces memory_mb as each process's address space
  * (RLIMIT_AS) on Linux.  macOS refuses so small an address space (every
  * process maps gigabytes of shared libraries), so there the parent watches
  * the physical footprint of the child's whole group every 20 ms and kills
- * the group over memory_mb; on Linux it watches the child's resident size
+ * the group over memory_mb; on Linux it watches the run's resident size
  * the same way, behind RLIMIT_AS.  On Linux the child also asks the
  * out-of-memory killer to take it, not the grader, should memory run out.
  */
@@ -28,14 +32,26 @@
 
 typedef struct {
     char *const *argv;         /* argv[0] is the program's path               */
-    const char *workdir;       /* the child's working directory               */
+    const char *workdir;       /* the run's working folder: made for it (it
+                                  must not exist), removed after           */
+    const char *cwd;           /* NULL: workdir; else a folder of visible
+                                  the program starts in                    */
+    const char *const *visible;/* NULL-terminated folders it may read; in
+                                  the namespace jail, the only ones besides
+                                  the system's programs                    */
+    const char *const *keep;   /* NULL-terminated names of plain files the
+                                  run writes in workdir, copied into keep_to
+                                  after it (at most keep_max bytes each); a
+                                  name the run did not write so is left out */
+    const char *keep_to;
+    size_t keep_max;
     const char *input;         /* bytes written to the child's stdin          */
     size_t input_len;
-    double timeout;            /* wall-clock seconds before the group is killed */
+    double timeout;            /* wall-clock seconds before the run is killed */
     size_t answer_max;         /* bytes kept from fd 3 (the rest is dropped)  */
     size_t output_max;         /* bytes kept from stdout and stderr           */
     size_t output_stop;        /* bytes of stdout and stderr after which the
-                                  group is stopped; 0: never (what is over
+                                  run is stopped; 0: never (what is over
                                   output_max is read and dropped)            */
     long memory_mb;            /* memory limit (see above); 0 = none          */
     long address_mb;           /* RLIMIT_AS when not memory_mb (0: memory_mb,
@@ -43,9 +59,18 @@ typedef struct {
                                   above memory_mb to reach the watch alone   */
     int cpu_seconds;           /* RLIMIT_CPU; 0: the timeout plus 2 s         */
     int max_procs;             /* -1: no limit (the compiler needs its own);
-                                  0: the child may not create processes       */
+                                  0: the child may not create processes
+                                  (nor any other value)                    */
     long max_file_mb;          /* largest file the child may write; 0 = none  */
-    bool inherit_path;         /* pass the caller's PATH (for the compiler)   */
+    bool compiler;             /* the caller's PATH, and TMPDIR the working
+                                  folder                                    */
+    bool init;                 /* student code: in the namespace jail, a PID
+                                  namespace of its own, whose first process
+                                  the program is; it knows the jail
+                                  (harness_init.h): it forks the one process
+                                  that runs the test, and reports that
+                                  one's end on fd 4.  Without (the
+                                  compiler), the system's PID namespace     */
 } SandboxSpec;
 
 typedef struct {
@@ -73,34 +98,6 @@ typedef struct {
 int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t errlen);
 void sandbox_result_free(SandboxResult *res);
 
-/* A part's prebuilt runner started once as a server of tests (Linux;
- * harness_serve.h): each test then runs in a child the server forks, in the
- * same sandbox and with the same limits as a runner started for it, at a
- * fraction of the cost.  Should the server die, stop or fall silent (its
- * children run as its user, so a test can signal it), the test runs again
- * in a runner the grader starts, and so does every later one. */
-typedef struct {
-    char *argv[4];             /* program, "--serve", object                 */
-    pid_t pid;                 /* 0: not started                             */
-    int sock;                  /* the grader's end of its socket             */
-    bool reaped;               /* waited for already: it died              */
-    bool off;                  /* every test runs in a runner of its own     */
-    bool failed;               /* it failed once (and so is off)             */
-    int start_at;              /* the run it starts at (0: the first)        */
-    int runs;                  /* runs so far                                */
-} SandboxServer;
-
-/* Readies s to serve the tests of program (a prebuilt runner) with object.
- * The server starts at run start_at (0: the first); the runs before it,
- * and every run when start_at < 0, start a runner of their own. */
-void sandbox_serve_init(SandboxServer *s, const char *program, const char *object, int start_at);
-/* As sandbox_run for `program object`, through the server. */
-int sandbox_serve_run(SandboxServer *s, const SandboxSpec *spec, SandboxResult *res, char *err,
-                      size_t errlen);
-/* Ends the server, if started; its children's CPU then counts among the
- * grader's children's (sandbox_cpu). */
-void sandbox_serve_stop(SandboxServer *s);
-
 /* True where the parent can see the child's memory (Linux, macOS), so that
  * memory_mb holds even where the kernel ignores RLIMIT_AS. */
 bool sandbox_watches_memory(void);
@@ -108,13 +105,16 @@ bool sandbox_watches_memory(void);
 /* True when the grader runs as root and so drops children to an
  * unprivileged user. */
 bool sandbox_drops_privileges(void);
-/* Makes path owned by the unprivileged user (when root); 0 on success. */
-int sandbox_give(const char *path);
+/* The user and group id runs take: as root, "nobody" or the id
+ * sandbox_set_user gave; else the grader's own. */
+void sandbox_ids(uid_t *uid, gid_t *gid);
 /* As root: the children of this process run as the user and group id
  * instead of "nobody" (grade --all gives each submission graded at once an
  * id of its own, and a submission graded alone takes one, so that one's
- * code cannot signal another's tests); 0: as "nobody" again. */
-void sandbox_set_user(uid_t id);
+ * code cannot signal another's tests); 0: as "nobody" again.  held: the
+ * id is this grader's alone (sandbox_spare_users), so that in the fallback
+ * jail every process and file of it is removed after each run. */
+void sandbox_set_user(uid_t id, bool held);
 /* As root: up to n ids, from 65533 down, that no user and no group has
  * (nor nobody), each checked by a child that takes it; stores them in
  * ids and returns how many it found.  Each is held until this process

@@ -231,25 +231,23 @@ for class in subs subs45; do
     check "the gradebook has a column per graded part ($header)" \
         grep -q "^$header\$" "$tmp/grades-$class/gradebook.csv"
     # As root each distinct stage file is built once per run (memo.h):
-    # here the reference's files are the same in every submission.  Built:
-    # compiled, or, with GRADE_KEEP_BUILDS (tests/run.sh), taken from the
-    # builds kept from an earlier run, which the line then counts apart.
+    # here the reference's files are the same in every submission.
     if [ "$(id -u)" = 0 ]; then
-        check "as root, grade --all builds identical files once ($(grep -e '^compiled ' -e '^built ' "$tmp/all.out"))" \
+        check "as root, grade --all builds identical files once ($(grep -e '^compiled ' "$tmp/all.out"))" \
             awk '/^compiled [0-9]+ distinct stage files once each, for [0-9]+ files in all$/ {
                      if ($2 > 0 && $2 < $9) ok = 1 }
-                 /^built [0-9]+ distinct stage files once each \([0-9]+ compiled, [0-9]+ from the kept builds\), for [0-9]+ files in all$/ {
-                     c = $8; sub(/^\(/, "", c)
-                     if ($2 > 0 && $2 < $16 && c + $10 == $2) ok = 1 }
                  END { exit !ok }' "$tmp/all.out"
     fi
     echo "   graded $(ls "$tmp/$class" | wc -l | tr -d ' ') submissions in ${elapsed} s ($conf)"
 done
 
 # Two gradings at once reaching the same file compile it once: the one that
-# finds the other's entry waits for its object.  A compiler made slow (each
-# compile logged, then a pause) makes sure they meet; the builds kept from
-# run to run are left out, so that each distinct file is compiled here.
+# finds the other's entry waits for its object.  A compiler made slow (a
+# pause before each compile) makes sure they meet.  Each compile says a
+# word drawn at random (the compiler runs in the jail, which lets it write
+# nowhere but its own folder), and the grader shows a stage file's
+# compiler messages with its results: a file compiled once shows the same
+# word in every submission that holds it, so the words count the compiles.
 if [ "$(id -u)" = 0 ]; then
     same=$tmp/same-files
     for s in a b c d; do
@@ -257,19 +255,19 @@ if [ "$(id -u)" = 0 ]; then
         cp solutions/part1_image_plane.c solutions/part2_pixel_coordinates.c \
             solutions/part3a_sphere_intersect.c solutions/part3b_ray_color.c "$same/$s/"
     done
-    : >"$tmp/cc-log"
-    chmod 666 "$tmp/cc-log"
     chmod -R a+rX "$same"
-    cat >"$tmp/slow-cc" <<EOF2
+    mkdir "$tmp/slow-bin"
+    cat >"$tmp/slow-bin/slow-cc" <<EOF2
 #!/bin/sh
-case " \$* " in *" -c "*) echo compile >>"$tmp/cc-log"; sleep 0.3 2>/dev/null || sleep 1 ;; esac
+case " \$* " in *" -c "*) echo "compiled-\$(od -An -N8 -tx8 /dev/urandom | tr -d ' ')" >&2; sleep 0.3 2>/dev/null || sleep 1 ;; esac
 exec cc "\$@"
 EOF2
-    chmod 755 "$tmp/slow-cc"
-    CC=$tmp/slow-cc GRADE_KEEP_BUILDS='' $grade --all "$same" --out "$tmp/grades-same" \
+    chmod 755 "$tmp/slow-bin" "$tmp/slow-bin/slow-cc"
+    CC=$tmp/slow-bin/slow-cc $grade --all "$same" --out "$tmp/grades-same" \
         --weights "$core" --jobs 2 >"$tmp/same.out" 2>&1
-    check "four identical submissions graded two at a time: each of the 4 files compiled once ($(wc -l <"$tmp/cc-log" | tr -d ' ') compiles; $(head -n 1 "$tmp/same.out"))" \
-        sh -c "[ \$(wc -l <'$tmp/cc-log') -eq 4 ] && grep -qx 'compiled 4 distinct stage files once each, for 16 files in all' '$tmp/same.out'"
+    cat "$tmp/grades-same"/*.json | grep -o 'compiled-[0-9a-f]*' | sort >"$tmp/cc-words"
+    check "four identical submissions graded two at a time: each of the 4 files compiled once ($(sort -u "$tmp/cc-words" | wc -l | tr -d ' ') compiles, their words shown $(wc -l <"$tmp/cc-words" | tr -d ' ') times; $(head -n 1 "$tmp/same.out"))" \
+        sh -c "[ \$(sort -u '$tmp/cc-words' | wc -l) -eq 4 ] && [ \$(sort '$tmp/cc-words' | uniq -c | awk '\$1 >= 4' | wc -l) -eq 4 ] && grep -qx 'compiled 4 distinct stage files once each, for 16 files in all' '$tmp/same.out'"
     check "... and each got full marks" \
         sh -c "[ \$(grep -c ',full marks\$' '$tmp/grades-same/gradebook.csv') -eq 4 ]"
 fi
@@ -430,9 +428,7 @@ check "a failing case's input reads n.x = 0.48, n.y = 0.6, n.z = 0.64, not 17 di
 # reference itself is graded whole on every part.  Identical files: as root
 # the classes above compiled each distinct file once (memo.h) and graded
 # the reference's files from that one object; here the reference's are
-# compiled for the reference alone, and must keep full marks.  (As in the
-# rest of the suites, what was built in an earlier run of the tests is
-# served from the grader's store, tests/suites/grade_store.sh.)
+# compiled for the reference alone, and must keep full marks.
 if [ -x out/build/grader/runner_1 ]; then
     # parity PART SUBMISSION...: grades them on PART alone, linked whole.
     parity() {

@@ -1,33 +1,57 @@
 /*
- * The grader's sandbox (tests/grader/sandbox.c) on small shell programs:
- * each limit stops what it is for, and says so.  The programs are /bin/sh
- * builtins only, so they run the same on Linux and macOS; what only Linux
- * has (/proc, oom_score_adj) is checked there and said to be skipped
- * elsewhere.
+ * The grader's sandbox (tests/grader/sandbox.c) and its jail (jail.c) on
+ * small shell programs: each limit stops what it is for, and says so; a
+ * run sees nothing of the grader's, nothing of another run's, and leaves
+ * nothing behind.  The programs are /bin/sh builtins only, so they run the
+ * same on Linux and macOS, started as the grader starts its tests (through
+ * init_sh, beside this program: harness_init.h); what only Linux has
+ * (/proc, oom_score_adj) is checked there and said to be skipped
+ * elsewhere.  Run in the mode the system allows, and again with
+ * GRADE_JAIL=fallback (tests/run.sh).
  */
 #include "check.h"            /* first: it sets the POSIX feature level */
 #include <stdbool.h>
+#include <dirent.h>
+#include <errno.h>
 #include <fcntl.h>
 #include <pwd.h>
+#include <time.h>
 #include <sys/stat.h>
+#include "../grader/jail.h"
 #include "../grader/sandbox.h"
 
-/* Runs sh -c script in a fresh directory with spec's limits; 0 if it ran. */
+/* init_sh, found beside this program (main). */
+static char init_sh[4096];
+
+/* Runs sh -c script with spec's limits, its working folder made in a
+ * fresh directory, through a copy of init_sh there (a folder it may read,
+ * whatever folder the kit is in); 0 if it ran. */
 static int run_sh(const char *script, SandboxSpec spec, SandboxResult *res)
 {
-    char dir[512];
+    char dir[512], work[600], bin[600], program[700], err[256];
     if (check_temp_dir(dir, sizeof dir, "sandbox") != 0)
         return -1;
-    chmod(dir, 0755);
-    sandbox_give(dir);
-    char *argv[] = { "/bin/sh", "-c", (char *)script, NULL };
+    chmod(dir, 0711);
+    snprintf(work, sizeof work, "%s/run", dir);
+    snprintf(bin, sizeof bin, "%s/bin", dir);
+    snprintf(program, sizeof program, "%s/init_sh", bin);
+    if (mkdir(bin, 0755) != 0 || chmod(bin, 0755) != 0 ||
+        jail_take_file(init_sh[0] ? init_sh : "/", "init_sh", program, 16 << 20, err, sizeof err) != 0 ||
+        chmod(program, 0755) != 0) {
+        CHECK_MSG(0, "cannot copy init_sh (%s): %s", init_sh, err);
+        check_remove_tree(dir);
+        return -1;
+    }
+    const char *visible[] = { bin, NULL };
+    char *argv[] = { program, "-c", (char *)script, NULL };
     spec.argv = argv;
-    spec.workdir = dir;
+    spec.workdir = work;
+    spec.visible = visible;
+    spec.init = true;
     if (!spec.timeout)
         spec.timeout = 10;
     spec.answer_max = 4096;
     spec.output_max = 4096;
-    char err[256];
     int rc = sandbox_run(&spec, res, err, sizeof err);
     CHECK_MSG(rc == 0, "sandbox_run: %s", err);
     if (check_remove_tree(dir) != 0)
@@ -92,7 +116,54 @@ static void test_small_program_runs(void)
     sandbox_result_free(&res);
 }
 
-/* On Linux the child asks the out-of-memory killer to take it first. */
+/* The process of a run whose command line ends in word, seen from here
+ * (/proc): its pid, or 0 when none is there within seconds. */
+static long find_process(const char *word, double seconds)
+{
+    for (double waited = 0; waited < seconds; waited += 0.01) {
+        DIR *d = opendir("/proc");                               /* portable: Linux only, guarded */
+        struct dirent *e;
+        long found = 0;
+        while (d && !found && (e = readdir(d))) {
+            char path[300], cmd[256];
+            snprintf(path, sizeof path, "/proc/%s/cmdline", e->d_name);     /* portable: as above */
+            FILE *f = e->d_name[0] >= '1' && e->d_name[0] <= '9' ? fopen(path, "r") : NULL;
+            size_t n = f ? fread(cmd, 1, sizeof cmd - 1, f) : 0;
+            if (f)
+                fclose(f);
+            cmd[n] = '\0';
+            size_t last = n > 1 ? n - 1 : 0;              /* the last argument, after its NUL */
+            while (last > 0 && cmd[last - 1] != '\0')
+                last--;
+            if (n > 0 && strcmp(cmd + last, word) == 0)
+                found = strtol(e->d_name, NULL, 10);
+        }
+        if (d)
+            closedir(d);
+        if (found)
+            return found;
+        nanosleep(&(struct timespec){ 0, 10000000 }, NULL);
+    }
+    return 0;
+}
+
+/* The line of /proc/PID/status that starts with key, or "". */
+static void status_line(long pid, const char *key, char *out, size_t n)
+{
+    char path[64], line[256];
+    snprintf(path, sizeof path, "/proc/%ld/status", pid);                  /* portable: Linux only */
+    FILE *f = fopen(path, "r");
+    out[0] = '\0';
+    while (f && fgets(line, sizeof line, f))
+        if (strncmp(line, key, strlen(key)) == 0)
+            snprintf(out, n, "%s", line + strlen(key));
+    if (f)
+        fclose(f);
+}
+
+/* On Linux the child asks the out-of-memory killer to take it first.  In
+ * the namespace jail, which has no /proc, that is seen from here, with the
+ * process's other namespace: a PID of its own (two numbers on NSpid). */
 static void test_oom_score_adj(void)
 {
     struct stat st;
@@ -102,10 +173,37 @@ static void test_oom_score_adj(void)
     }
     SandboxResult res;
     SandboxSpec spec = { .memory_mb = 48, .max_procs = 0 };
-    if (run_sh("read v </proc/self/oom_score_adj; echo \"adj $v\" >&3", spec, &res) != 0)
+    if (!jail_namespaces()) {
+        if (run_sh("read v </proc/self/oom_score_adj; echo \"adj $v\" >&3", spec, &res) != 0)
+            return;
+        CHECK_STR_CONTAINS(res.answer, "adj 1000");
+        sandbox_result_free(&res);
         return;
-    CHECK_STR_CONTAINS(res.answer, "adj 1000");
-    sandbox_result_free(&res);
+    }
+    pid_t pid = fork();
+    if (pid == 0) {
+        if (run_sh("exec /bin/sleep 0.718281", spec, &res) == 0)
+            sandbox_result_free(&res);
+        _exit(0);
+    }
+    long seen = find_process("0.718281", 5);
+    CHECK_MSG(seen > 0, "the jailed sleep was not found in /proc");
+    if (seen > 0) {
+        char path[64], adj[32] = "", nspid[256];
+        snprintf(path, sizeof path, "/proc/%ld/oom_score_adj", seen);     /* portable: Linux only */
+        FILE *f = fopen(path, "r");
+        if (f && !fgets(adj, sizeof adj, f))
+            adj[0] = '\0';
+        if (f)
+            fclose(f);
+        CHECK_MSG(strncmp(adj, "1000", 4) == 0, "oom_score_adj %s", adj);
+        status_line(seen, "NSpid:", nspid, sizeof nspid);
+        long outer = 0, inner = 0;
+        CHECK_MSG(sscanf(nspid, "%ld %ld", &outer, &inner) == 2 && inner == 2,
+                  "NSpid:%s (want this pid and 2: the second process of a PID namespace of its own)", nspid);
+    }
+    while (pid > 0 && waitpid(pid, NULL, 0) < 0 && errno == EINTR)
+        continue;
 }
 
 /* A child killed from outside (as by the out-of-memory killer) is reported
@@ -241,30 +339,15 @@ static void test_spare_users(void)
         for (int j = 0; j < k; j++)
             CHECK(ids[j] != ids[k]);
     }
-    char dir[512], file[600];
-    if (check_temp_dir(dir, sizeof dir, "spare") != 0)
-        return;
-    chmod(dir, 0755);
-    sandbox_set_user(ids[0]);
-    CHECK_EQ_INT(sandbox_give(dir), 0);
-    char *argv[] = { "/bin/sh", "-c", ": >mine; echo made >&3", NULL };
-    SandboxSpec spec = { .argv = argv, .workdir = dir, .timeout = 10, .memory_mb = 48,
-                         .max_procs = 0, .answer_max = 4096, .output_max = 4096 };
+    sandbox_set_user(ids[0], false);
     SandboxResult res;
-    char err[256];
-    if (sandbox_run(&spec, &res, err, sizeof err) == 0) {
-        CHECK_STR_CONTAINS(res.answer, "made");
-        struct stat st;
-        snprintf(file, sizeof file, "%s/mine", dir);
-        CHECK_MSG(stat(file, &st) == 0, "the child made no file");
-        CHECK_MSG(st.st_uid == ids[0] && st.st_gid == (gid_t)ids[0], "made by %lu:%lu, not %lu",
-                  (unsigned long)st.st_uid, (unsigned long)st.st_gid, (unsigned long)ids[0]);
+    if (run_sh("exec /usr/bin/id -u >&3", (SandboxSpec){ .memory_mb = 48, .max_procs = 0 }, &res) == 0) {
+        char want[64];
+        snprintf(want, sizeof want, "%lu\n", (unsigned long)ids[0]);
+        CHECK_MSG(strcmp(res.answer, want) == 0, "ran as %s, not %lu", res.answer, (unsigned long)ids[0]);
         sandbox_result_free(&res);
-    } else {
-        CHECK_MSG(0, "sandbox_run: %s", err);
     }
-    sandbox_set_user(0);
-    check_remove_tree(dir);
+    sandbox_set_user(0, false);
 }
 
 /* max_procs 0: the child itself runs (RLIMIT_NPROC is checked at fork, and
@@ -356,5 +439,12 @@ static const CheckTest tests[] = {
 
 int main(int argc, char **argv)
 {
+    char exe[4096], self[4096];
+    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);         /* portable: argv[0] else */
+    snprintf(self, sizeof self, "%.*s", n > 0 ? (int)n : (int)strlen(argv[0]), n > 0 ? exe : argv[0]);
+    char *slash = strrchr(self, '/');
+    if (slash)
+        snprintf(init_sh, sizeof init_sh, "%.*s", (int)(slash - self), self);
+    printf("    jail: %s\n", jail_describe());
     return check_main(argc, argv, tests, CHECK_COUNT(tests));
 }
