@@ -106,7 +106,7 @@ help:
 	@echo "make grade   [SUBMISSION=dir] [PART=1|2|3a|3b|4|5] [RESULTS=file]"
 	@echo "             [FORMAT=gradescope|prairielearn] [CLASSROOM=file]"
 	@echo "make grade-all SUBMISSIONS=dir [OUT=dir] [JOBS=n]"
-	@echo "make sort-submissions FROM=download.zip|dir TO=newdir"
+	@echo "make sort-submissions FROM=download.zip|dir TO=newdir [MAX_MB=n] [MAX_RATIO=n]"
 	@echo "make gradescope | prairielearn | student-kit | bench | fuzz | sanitize-grader | handouts | test | clean"
 	@echo "V=1 after any of them echoes the build's compiler commands"
 
@@ -347,8 +347,8 @@ $(BUILD)/bin/sortsubs: $(BUILD)/grader/sortsubs_main.o $(BUILD)/grader/libgrader
 	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 grader: $(BUILD)/bin/sortsubs
 sort-submissions: $(BUILD)/bin/sortsubs
-	@test -n "$(FROM)" && test -n "$(TO)" || { echo "usage: make sort-submissions FROM=download.zip|dir TO=newdir"; exit 2; }
-	@$(BUILD)/bin/sortsubs "$(FROM)" "$(TO)"
+	@test -n "$(FROM)" && test -n "$(TO)" || { echo "usage: make sort-submissions FROM=download.zip|dir TO=newdir [MAX_MB=n] [MAX_RATIO=n]"; exit 2; }
+	@$(BUILD)/bin/sortsubs $(if $(MAX_MB),--max-mb "$(MAX_MB)") $(if $(MAX_RATIO),--max-ratio "$(MAX_RATIO)") "$(FROM)" "$(TO)"
 
 # The public tests' expected values, from the oracle (commit the result).
 public-tests: $(BUILD)/bin/gentests

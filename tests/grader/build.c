@@ -45,10 +45,30 @@
 
 const char *const stage_names[NPARTS] = { CONTRACT_STAGE_NAMES };
 
+/* Whether every folder from the root down to path (included) lets anyone
+ * pass (o+x): where the fallback jail's user must reach its run's folders. */
+static bool reachable(const char *path)
+{
+    char part[PATH_MAX];
+    snprintf(part, sizeof part, "%s", path);
+    for (;;) {
+        struct stat st;
+        if (stat(part[0] ? part : "/", &st) != 0 || !(st.st_mode & S_IXOTH))
+            return false;
+        char *slash = strrchr(part, '/');
+        if (!slash || !part[0])
+            return true;
+        *slash = '\0';
+    }
+}
+
 int build_tempdir(char *dir, size_t len, char *err, size_t errlen)
 {
     const char *base = getenv("TMPDIR");
-    if (!base || !*base || access(base, W_OK) != 0)
+    /* As root in the fallback jail, the runs' user reaches its folders
+     * through it: a TMPDIR in a private folder gives way to /tmp. */
+    bool fallback = sandbox_drops_privileges() && !jail_namespaces();
+    if (!base || !*base || access(base, W_OK) != 0 || base[0] != '/' || (fallback && !reachable(base)))
         base = "/tmp";
     snprintf(dir, len, "%s/rtgrade.XXXXXX", base);
     if (!mkdtemp(dir)) {
@@ -634,7 +654,14 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
     b->visible[1] = NULL;
     const char *src = b->src;
     char path[PATH_MAX];
-    if (chmod(b->dir, 0711) || mkdir(src, 0755) || chmod(src, 0755)) {
+    /* src: the run's user may read it (its group), and no one else: in the
+     * fallback jail the runs of another submission graded at once run as
+     * another user. */
+    uid_t uid;
+    gid_t gid;
+    sandbox_ids(&uid, &gid);
+    if (chmod(b->dir, 0711) || mkdir(src, 0750) || chmod(src, 0750) ||
+        (sandbox_drops_privileges() && chown(src, 0, gid))) {
         snprintf(err, errlen, "%s: %s", b->dir, strerror(errno));
         return -1;
     }

@@ -20,6 +20,10 @@
 #define OUTPUT_SHOWN 1500     /* bytes of the student's own printing shown */
 #define TEST_MEMORY_MB 64     /* a test program needs 3 to 4 MiB of address space */
 #define MAX_BATCH 4096        /* tests of one part run together, at most     */
+/* A part's runs (its tests together, each alone, the probes) start only
+ * while they can end within this many seconds of the part's first: code
+ * whose every test sleeps just under the limit costs at most this. */
+#define PART_SECONDS 30
 
 static const char *kind_word[NKINDS] = { "plane", "pixel", "sphere", "camera", "color", "image",
                                          "planehit", "triangle", "mesh" };
@@ -327,6 +331,7 @@ typedef struct {
     const GradeOptions *opt;
     const Build *b;
     bool stopped;
+    double deadline;           /* the part's time (PART_SECONDS)             */
 } ProbeContext;
 
 static int run_probe(void *ctx, const Test *t, Answers *a)
@@ -334,7 +339,8 @@ static int run_probe(void *ctx, const Test *t, Answers *a)
     ProbeContext *pc = ctx;
     SandboxResult res;
     char err[256], *verdict = NULL;
-    if (pc->stopped || run_child(pc->opt, pc->b, t, &res, err, sizeof err) != 0)
+    if (pc->stopped || sandbox_now() + pc->opt->cfg->timeout > pc->deadline ||
+        run_child(pc->opt, pc->b, t, &res, err, sizeof err) != 0)
         return -1;
     pc->stopped = res.timed_out || res.memory_exceeded || res.output_exceeded;
     check_answers(t, res.answer, res.answer_len, &verdict, a);
@@ -377,7 +383,7 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
             build_remove(&b);
             return -1;
         }
-        double children = sandbox_cpu(false);
+        double children = sandbox_cpu(false), deadline = sandbox_now() + PART_SECONDS;
         int timeouts = 0;
         bool first = true;
         bool *done = calloc((size_t)tests->n + 1, sizeof *done);
@@ -432,6 +438,10 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
                                       why, first ? g->build_messages[p] : "");
             } else if (timeouts >= 2) {
                 r->output = xasprintf("  not run: two earlier tests of this part did not finish in time");
+            } else if (sandbox_now() + cfg->timeout > deadline) {
+                r->output = xasprintf("  not run: this part's tests took %d s in all, the most a part may "
+                                      "take (its tests each took long: does the code sleep or loop?)",
+                                      PART_SECONDS);
             } else {
                 if (opt->verbose)
                     fprintf(stderr, "  %s\n", t->name);
@@ -459,7 +469,7 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         children = sandbox_cpu(false);
         if (b.ok) {
             /* After two tests out of time, a probe would be the third. */
-            ProbeContext pc = { opt, &b, timeouts >= 2 };
+            ProbeContext pc = { opt, &b, timeouts >= 2, deadline };
             Probes probes = { run_probe, &pc, p == PART3B && !opt->build->reference, false };
             for (int k = 0; k < tests->n; k++)
                 probes.part3a_failed = probes.part3a_failed ||

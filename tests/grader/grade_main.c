@@ -212,6 +212,8 @@ static int grade_one(const char *submission, const char *part, const char *resul
     char root[PATH_MAX];
     if (!getcwd(root, sizeof root))
         return fail(results, "getcwd: %s", strerror(errno));
+    if (jail_make_private(root, err, sizeof err) != 0)
+        return fail(results, "%s", err);
     warn_changed_headers(root);
     const char *cc = getenv("CC") && *getenv("CC") ? getenv("CC") : "cc";
     char ccpath[PATH_MAX];
@@ -325,27 +327,28 @@ static int by_name(const void *a, const void *b)
     return strcmp(*(char *const *)a, *(char *const *)b);
 }
 
-/* One field of the gradebook, quoted when it holds a comma, a quote or a
- * line break.  A field that starts with =, +, -, @, a tab or a carriage
- * return is written after an apostrophe, quoted: a spreadsheet would
- * otherwise take a folder named "=HYPERLINK(...)" for a formula (OWASP's
- * advice on CSV injection).  The .json and .html keep the name as it is. */
+/* One field of the gradebook, quoted when it holds a comma or a quote.  A
+ * field that starts with =, +, -, @, a tab or a carriage return is written
+ * after an apostrophe, quoted: a spreadsheet would otherwise take a folder
+ * named "=HYPERLINK(...)" for a formula (OWASP's advice on CSV injection).
+ * Control bytes (a line break, an escape that would drive the terminal
+ * that shows the file) are written as \xHH.  The .json and .html keep the
+ * name as it is. */
 static void csv_field(FILE *f, const char *s)
 {
     bool formula = s[0] && strchr("=+-@\t\r", s[0]);
-    if (formula || strpbrk(s, ",\"\n\r")) {
-        fputc('"', f);
-        if (formula)
-            fputc('\'', f);
-        for (; *s; s++) {
-            if (*s == '"')
-                fputc('"', f);
-            fputc(*s, f);
-        }
-        fputc('"', f);
-    } else {
-        fputs(s, f);
+    bool quoted = formula || strpbrk(s, ",\"");
+    if (quoted)
+        fputs(formula ? "\"'" : "\"", f);
+    for (; *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c < 0x20 || c == 0x7f)
+            fprintf(f, "\\x%02x", c);
+        else
+            fputs(c == '"' ? "\"\"" : (char[]){ (char)c, 0 }, f);
     }
+    if (quoted)
+        fputc('"', f);
 }
 
 /* What a grade --all run's memo holds: entries with an object (distinct
@@ -508,6 +511,10 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     qsort(names, (size_t)n, sizeof *names, by_name);
     if (mkdir(out, 0755) != 0 && errno != EEXIST)
         return fail(NULL, "%s: cannot make the output directory", out);
+    char here[PATH_MAX];
+    if (!getcwd(here, sizeof here) || jail_make_private(here, err, sizeof err) != 0 ||
+        jail_make_private(dir, err, sizeof err) != 0 || jail_make_private(out, err, sizeof err) != 0)
+        return fail(NULL, "%s", err);
 
     /* As root, each distinct stage file is compiled once (memo.h), in a
      * directory only root may enter; as another user every file is
@@ -681,10 +688,13 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     if (users && jobs > 1)
         printf("graded %d at a time, as root: each one's code ran as an unprivileged user of its "
                "own\n", jobs);
-    if (!sandbox_drops_privileges())
-        printf("graded as yourself, not as root: each submission's code ran as you, and could read and "
-               "change your files and stop your processes; grade code you do not trust as root "
-               "(README, \"Grading a class\")\n");
+    if (!sandbox_drops_privileges() && jail_namespaces())
+        printf("graded as yourself, not as root: each submission's code ran in a jail of its own "
+               "(a user namespace), which showed it none of your files and none of your processes\n");
+    else if (!sandbox_drops_privileges())
+        printf("graded as yourself, not as root, where this system gives no namespaces: each "
+               "submission's code ran as you, and could read and change your files and stop your "
+               "processes; grade code you do not trust as root (README, \"Grading a class\")\n");
     if (ndots)
         printf("left out %d folder%s of the system's own (a name starting with \".\", or macOS's __MACOSX), "
                "not taken for a submission: %s\n", ndots, ndots == 1 ? "" : "s", hidden);

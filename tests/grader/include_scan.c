@@ -6,6 +6,7 @@
 #include "include_scan.h"
 #include "kit/textfile.h"
 
+#include <ctype.h>
 #include <limits.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -23,6 +24,9 @@ typedef struct {
     int refused;
     IncludeJudge judge;        /* one more judgement of each name, or NULL */
     void *ctx;
+    char joined[16];           /* the end of the string literals just read,
+                                  decoded and joined as the compiler joins
+                                  adjacent ones ("" after any other token) */
 } Scan;
 
 /* True for /dev, /proc, /sys and anything under them. */
@@ -177,21 +181,64 @@ static void header_name(Scan *sc)
     }
 }
 
-/* Skips a string or character literal at sc->i; refuses .incbin inside. */
+/* The byte an escape sequence at s[*k] (just after its backslash) stands
+ * for, as the compiler reads it; *k moves past the sequence. */
+static char escaped(const char *s, size_t n, size_t *k)
+{
+    unsigned value = 0;
+    int digits = 0;
+    if (s[*k] >= '0' && s[*k] <= '7') {
+        while (*k < n && digits < 3 && s[*k] >= '0' && s[*k] <= '7')
+            value = value * 8 + (unsigned)(s[(*k)++] - '0'), digits++;
+        return (char)value;
+    }
+    if (s[*k] == 'x') {
+        for ((*k)++; *k < n && isxdigit((unsigned char)s[*k]); (*k)++)
+            value = value * 16 + (unsigned)(isdigit((unsigned char)s[*k]) ? s[*k] - '0'
+                                            : tolower((unsigned char)s[*k]) - 'a' + 10);
+        return (char)value;
+    }
+    return s[(*k)++];           /* \n and the like spell no letter of a directive */
+}
+
+/* Skips a string or character literal at sc->i.  A string's text, escapes
+ * decoded and joined to the strings just before it (".inc" "bin" is one
+ * string to the compiler), is refused when it holds an assembler directive
+ * that reads a file: .incbin, .include. */
 static void literal(Scan *sc)
 {
     char q = sc->s[sc->i++];
-    size_t start = sc->i;
+    size_t keep = strlen(sc->joined);
+    char text[16 + 256];
+    memcpy(text, sc->joined, keep);
+    size_t m = keep;
     while (sc->i < sc->n && sc->s[sc->i] != q && sc->s[sc->i] != '\n') {
-        if (sc->s[sc->i] == '\\' && sc->i + 1 < sc->n)
-            sc->i++;
-        sc->i++;
-    }
-    for (size_t k = start; k + 7 <= sc->i && !sc->refused; k++)
-        if (memcmp(sc->s + k, ".incbin", 7) == 0) {
-            snprintf(sc->why, sc->whylen, "the file uses the assembler's .incbin, which reads a file into the program");
-            sc->refused = 1;
+        char c = sc->s[sc->i++];
+        if (c == '\\' && sc->i < sc->n)
+            c = escaped(sc->s, sc->n, &sc->i);
+        if (q != '"')
+            continue;
+        text[m++] = c;
+        if (m == sizeof text - 1 || sc->i >= sc->n || sc->s[sc->i] == q || sc->s[sc->i] == '\n') {
+            text[m] = '\0';
+            for (size_t k = 0; k < m && !sc->refused; k++)
+                if ((m - k >= 7 && memcmp(text + k, ".incbin", 7) == 0) ||
+                    (m - k >= 8 && memcmp(text + k, ".include", 8) == 0)) {
+                    snprintf(sc->why, sc->whylen, "the file uses the assembler's %s, which reads a "
+                             "file into the program", text[k + 4] == 'b' ? ".incbin" : ".include");
+                    sc->refused = 1;
+                }
+            keep = m < 15 ? m : 15;     /* the end, for the next piece */
+            memmove(text, text + m - keep, keep);
+            m = keep;
         }
+    }
+    if (q == '"') {
+        memcpy(sc->joined, text, m);
+        sc->joined[m] = '\0';
+    } else {
+        sc->joined[0] = '\0';
+    }
     if (sc->i < sc->n && sc->s[sc->i] == q)
         sc->i++;
 }
@@ -231,7 +278,7 @@ static void destringize_pragma(Scan *sc)
             k++;
         text[m++] = sc->s[k];
     }
-    Scan inner = { text, m, 0, sc->dir, sc->real_dir, sc->why, sc->whylen, sc->refused, sc->judge, sc->ctx };
+    Scan inner = { text, m, 0, sc->dir, sc->real_dir, sc->why, sc->whylen, sc->refused, sc->judge, sc->ctx, "" };
     pragma(&inner);
     sc->refused = inner.refused;
     free(text);
@@ -300,7 +347,7 @@ int include_scan_judged(const char *text, size_t len, const char *dir, IncludeJu
     char real_dir[PATH_MAX];
     if (!realpath(dir, real_dir))
         real_dir[0] = '\0';
-    Scan sc = { s, n, 0, dir, real_dir, why, whylen, 0, judge, ctx };
+    Scan sc = { s, n, 0, dir, real_dir, why, whylen, 0, judge, ctx, "" };
     /* A byte-order mark is skipped, as gcc and clang skip it: what
      * follows starts the line. */
     sc.i = text_bom_length(s, n);
@@ -314,6 +361,7 @@ int include_scan_judged(const char *text, size_t len, const char *dir, IncludeJu
                    (c == '/' && sc.i + 1 < n && (s[sc.i + 1] == '*' || s[sc.i + 1] == '/'))) {
             skip_blank(&sc);
         } else if (line_start && (c == '#' || (c == '%' && sc.i + 1 < n && s[sc.i + 1] == ':'))) {
+            sc.joined[0] = '\0';
             sc.i += c == '#' ? 1 : 2;
             line_start = false;
             char word[32];
@@ -332,6 +380,11 @@ int include_scan_judged(const char *text, size_t len, const char *dir, IncludeJu
             line_start = false;
             char word[32];
             read_ident(&sc, word, sizeof word);
+            /* A string's prefix (L"", u8"") keeps it joined to the last. */
+            bool prefix = sc.i < n && s[sc.i] == '"' && (!strcmp(word, "L") || !strcmp(word, "u") ||
+                                                         !strcmp(word, "U") || !strcmp(word, "u8"));
+            if (!prefix)
+                sc.joined[0] = '\0';
             if (!strcmp(word, "_Pragma"))
                 destringize_pragma(&sc);
             else if (!strcmp(word, "__has_include") || !strcmp(word, "__has_include_next") ||
@@ -339,6 +392,7 @@ int include_scan_judged(const char *text, size_t len, const char *dir, IncludeJu
                 has_include(&sc);
         } else {
             line_start = false;
+            sc.joined[0] = '\0';
             sc.i++;
         }
     }

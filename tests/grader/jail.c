@@ -430,6 +430,22 @@ const char *jail_describe(void)
     return "";
 }
 
+int jail_make_private(const char *path, char *why, size_t whylen)
+{
+    struct stat st;
+    if (jail_mode() != JAIL_FALLBACK_ROOT || stat(path, &st) != 0 || !(st.st_mode & 007))
+        return 0;
+    if (chmod(path, st.st_mode & 07770) != 0) {
+        snprintf(why, whylen, "%s: the submissions' code runs as a user of its own here (no "
+                 "namespaces), which could read this folder; chmod o-rwx failed: %s", path,
+                 strerror(errno));
+        return -1;
+    }
+    fprintf(stderr, "grade: %s made private (chmod o-rwx): without namespaces here, the "
+            "submissions' code runs as a user of its own, which must not read it\n", path);
+    return 0;
+}
+
 /* ---- removing a tree ---------------------------------------------------------- */
 
 /* Removes name in the folder dfd, and all in it.  Descends one folder at

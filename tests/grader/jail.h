@@ -99,6 +99,13 @@ int jail_enter(int fd);
  * V IPC objects.  Only for an id this grader holds alone. */
 void jail_sweep(uid_t id);
 
+/* As root in the fallback jail: makes the folder path unreadable and
+ * impassable to others (chmod o-rwx), where the runs' user could reach
+ * it: the kit (the reference, the hidden tests' seed), a class's
+ * submissions, the grades.  Says so on stderr, once per folder; 0, or -1
+ * when it could not (then the grader refuses to grade: why says so). */
+int jail_make_private(const char *path, char *why, size_t whylen);
+
 /* rm -rf path: links are removed, never followed; no recursion, so a
  * folder of any depth is removed.  0, or -1 when something is left. */
 int jail_remove_tree(const char *path);

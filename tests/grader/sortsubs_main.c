@@ -3,7 +3,7 @@
  * class's download from Canvas, Moodle or Blackboard, sorted into one
  * folder per submission, as grade --all takes them.
  *
- *     sortsubs FROM TO
+ *     sortsubs [--max-mb N] [--max-ratio N] FROM TO
  *
  * FROM is the download: the .zip the platform gave, or the folder it was
  * unpacked into.  Each file is read by its name (lmsname.h): whose
@@ -17,7 +17,11 @@
  * or an empty folder): the sorted folders are written into a temporary
  * folder beside it, renamed to TO when all is written, so a run that fails
  * leaves nothing.  FROM is only read.  TO/sorted.txt lists where each file
- * came from.
+ * came from.  A zip that would unpack to more than --max-mb MiB in all
+ * (256 by default), or any file of which unpacks to more than
+ * --max-ratio times its packed size (100; 1 MiB is always allowed), is
+ * refused before it is unpacked: a small download cannot fill the memory
+ * or the disk.
  *
  * Files of the system's own (names starting with ".", macOS's __MACOSX)
  * are left out; any other file not named as the platforms name a
@@ -58,11 +62,13 @@ static void put_name(const char *name)
 
 static int usage(void)
 {
-    fprintf(stderr, "usage: sortsubs FROM TO\n"
+    fprintf(stderr, "usage: sortsubs [--max-mb N] [--max-ratio N] FROM TO\n"
                     "  FROM  a class's download from Canvas, Moodle or Blackboard: the .zip, or the "
                     "folder it was "
                     "unpacked into\n"
-                    "  TO    a new folder (missing or empty), to hold one folder per submission\n");
+                    "  TO    a new folder (missing or empty), to hold one folder per submission\n"
+                    "  --max-mb N     refuse a download that unpacks to more than N MiB (256)\n"
+                    "  --max-ratio N  refuse a file that unpacks to more than N times its size (100)\n");
     return 2;
 }
 
@@ -121,11 +127,32 @@ static int by_who_then_name(const void *a, const void *b)
     return c ? c : (x->n.again > y->n.again) - (x->n.again < y->n.again);
 }
 
+/* A whole number from 1 to max, or 0. */
+static unsigned long bound(const char *text, unsigned long max)
+{
+    char *end;
+    errno = 0;
+    unsigned long v = strtoul(text, &end, 10);
+    return *text >= '0' && *text <= '9' && !*end && !errno && v >= 1 && v <= max ? v : 0;
+}
+
 int main(int argc, char **argv)
 {
-    if (argc != 3 || !*argv[1] || !*argv[2])
+    ArchiveLimits lim = { (size_t)256 << 20, 100 };
+    int arg = 1;
+    for (; arg + 1 < argc && strncmp(argv[arg], "--max-", 6) == 0; arg += 2) {
+        bool mb = strcmp(argv[arg], "--max-mb") == 0;
+        unsigned long v = bound(argv[arg + 1], mb ? ARCHIVE_MAX_SIZE >> 20 : 1000000);
+        if (mb && v)
+            lim.max_unpacked = (size_t)v << 20;
+        else if (strcmp(argv[arg], "--max-ratio") == 0 && v)
+            lim.max_ratio = (unsigned)v;
+        else
+            return usage();
+    }
+    if (argc - arg != 2 || !*argv[arg] || !*argv[arg + 1])
         return usage();
-    const char *from = argv[1], *to = argv[2];
+    const char *from = argv[arg], *to = argv[arg + 1];
     char err[ERR_MAX], why[ERR_MAX];
     bool exists;
     if (!new_destination(to, &exists, why, sizeof why)) {
@@ -142,7 +169,7 @@ int main(int argc, char **argv)
     Archive in;
     archive_init(&in, ARCHIVE_ZIP);
     int status = S_ISDIR(st.st_mode) ? archive_add_tree(&in, from, NULL, why, sizeof why)
-                                     : archive_load(&in, from, why, sizeof why);
+                                     : archive_load_within(&in, from, &lim, why, sizeof why);
     if (status != 0) {
         archive_free(&in);
         return fail(S_ISDIR(st.st_mode) ? "the download's folder could not be read" : "the download could not be read",

@@ -487,7 +487,9 @@ check "forged results: nothing written beside the submissions" \
 # comma, are written so that it reads them as text; folders whose names
 # start with "." are not submissions: left out, and named.
 names=$tmp/names
-for d in '=SUM(A1)' '-rf' '@me' '+1' 'a,b' plain .git .github; do
+esc=$(printf 'esc\033[31mred')
+nl=$(printf 'two\nlines')
+for d in '=SUM(A1)' '-rf' '@me' '+1' 'a,b' plain .git .github "$esc" "$nl"; do
     mkdir -p "$names/$d"
     cp solutions/part1_image_plane.c "$names/$d/"
 done
@@ -501,14 +503,18 @@ done
 check "a folder named a,b is quoted in the gradebook" \
     grep -qxF '"a,b",20,2.5,22.5,full marks' "$tmp/grades-names/gradebook.csv"
 check "a plain name is written as it is" grep -qxF 'plain,20,2.5,22.5,full marks' "$tmp/grades-names/gradebook.csv"
-check "the gradebook has a row for each of the 6 submissions and no more" \
-    [ "$(wc -l <"$tmp/grades-names/gradebook.csv")" -eq 7 ]
+check "control bytes of a folder's name (an escape, a line break) are written as \\xHH in the gradebook" \
+    sh -c "grep -qxF 'esc\\x1b[31mred,20,2.5,22.5,full marks' '$tmp/grades-names/gradebook.csv' &&
+           grep -qxF 'two\\x0alines,20,2.5,22.5,full marks' '$tmp/grades-names/gradebook.csv' &&
+           ! grep -q \"\$(printf '\\033')\" '$tmp/grades-names/gradebook.csv'"
+check "the gradebook has a row for each of the 8 submissions and no more" \
+    [ "$(wc -l <"$tmp/grades-names/gradebook.csv")" -eq 9 ]
 check "the results files keep the names as they are" \
     sh -c "[ -f '$tmp/grades-names/=SUM(A1).json' ] && [ -f '$tmp/grades-names/-rf.html' ]"
 check "folders whose names start with . are left out, and the run names them, in order" \
     sh -c "grep -q '^left out 2 folders of the system.s own (a name starting with \".\", or macOS.s __MACOSX), not taken for a submission: ' '$tmp/names.out' &&
            grep -q ': \.git, \.github\$' '$tmp/names.out' &&
-           grep -q '^graded 6 submissions' '$tmp/names.out'"
+           grep -q '^graded 8 submissions' '$tmp/names.out'"
 [ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/names.out" "$tmp/grades-names/gradebook.csv"
 # Folder names with escape sequences, in the lists the run prints (the
 # folders left out, those with no stage file): shown as ^[ and ^G, and no
@@ -591,21 +597,32 @@ check "a stage file saved as UTF-16 is refused with what to do, not the compiler
 check "a labs folder that is a link (to the reference) is not graded: 0 points, no stage file" \
     grep -q '^labs-link,0,0,0,0,0,no stage file$' "$tmp/grades-links/gradebook.csv"
 [ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/links.out" "$tmp/grades-links/gradebook.csv"
-# Graded as another user than root, grade --all says what that means.
+# Graded as another user than root, grade --all says what that means: in
+# the namespace jail the code saw none of that user's files, else it ran
+# as that user.
 if [ "$(id -u)" != 0 ]; then
     $grade --all "$names" --out "$tmp/grades-self" --weights "$tmp/part1.conf" --jobs 1 >"$tmp/self.out" 2>&1
-elif command -v setpriv >/dev/null 2>&1 && id nobody >/dev/null 2>&1; then
+elif ! command -v setpriv >/dev/null 2>&1 || ! id nobody >/dev/null 2>&1; then
+    echo "   skipped: no setpriv here, so grade --all was not run as another user than root"
+    : >"$tmp/self.out"
+elif ! setpriv --reuid=nobody --regid="$(id -g nobody)" --clear-groups test -x "$grade"; then   # portable: guarded
+    echo "   skipped: nobody cannot reach the kit here (made private for the fallback jail), so grade --all was not run as another user than root"
+    : >"$tmp/self.out"
+else
     # as nobody, with an output folder nobody may write in  # portable: guarded
     mkdir -m 777 "$tmp/self"
     setpriv --reuid=nobody --regid="$(id -g nobody)" --clear-groups \
         $grade --all "$names" --out "$tmp/self/grades" --weights "$tmp/part1.conf" --jobs 1 >"$tmp/self.out" 2>&1
-else
-    echo "   skipped: no setpriv here, so grade --all was not run as another user than root"
-    : >"$tmp/self.out"
 fi
 if [ -s "$tmp/self.out" ]; then
-    check "graded as another user than root, grade --all says each one's code ran as that user" \
-        grep -q '^graded as yourself, not as root: each submission.s code ran as you' "$tmp/self.out"
+    case $(setpriv --reuid=nobody --regid="$(id -g nobody)" --clear-groups $grade --jail 2>/dev/null) in   # portable: guarded
+    namespaces*)
+        check "graded as another user than root, in the namespace jail, grade --all says their code saw none of that user's files" \
+            grep -q '^graded as yourself, not as root: each submission.s code ran in a jail of its own (a user namespace)' "$tmp/self.out" ;;
+    *)
+        check "graded as another user than root, without namespaces, grade --all says each one's code ran as that user" \
+            grep -q '^graded as yourself, not as root, where this system gives no namespaces: each submission.s code ran as you' "$tmp/self.out" ;;
+    esac
 fi
 # A folder that holds no submission (the wrong one, most likely).
 mkdir -p "$tmp/no-class/.git"

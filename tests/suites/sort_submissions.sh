@@ -176,6 +176,31 @@ make -s --no-print-directory sort-submissions FROM="$tmp/canvas.zip" >"$tmp/out"
 status=$?
 check "make sort-submissions without TO: its usage (exit 2)" sh -c "[ $status -eq 2 ] && grep -q 'usage: make sort-submissions' '$tmp/out'"
 
+# ---- a download that would unpack to too much: refused before it is unpacked ----
+# A zip bomb of 8 MiB of zeros (a few KiB packed): its ratio is refused at
+# the default limits; with the ratio allowed, a total over MAX_MB is refused;
+# with both allowed, it is sorted.
+bomb=$tmp/bomb
+mkdir "$bomb"
+dd if=/dev/zero of="$bomb/smithbob_340934_208490284_part1_image_plane.c" bs=1048576 count=8 2>/dev/null
+$pack zip "$tmp/bomb.zip" "$bomb" >/dev/null 2>&1
+sort_subs "$tmp/bomb.zip" "$tmp/none"
+status=$?
+check "a zip whose file unpacks to over 100 times its size: refused (exit 1), nothing written" \
+    sh -c "[ $status -eq 1 ] && grep -q 'more than 100 times as many (a zip bomb?); nothing written' '$tmp/out' && [ ! -e '$tmp/none' ]"
+make -s --no-print-directory sort-submissions FROM="$tmp/bomb.zip" TO="$tmp/none" MAX_RATIO=100000 MAX_MB=4 >"$tmp/out" 2>&1
+status=$?
+check "with MAX_RATIO raised, a zip over MAX_MB=4: refused (make fails), nothing written" \
+    sh -c "[ $status -ne 0 ] && grep -q 'unpacks to more than 4 MiB' '$tmp/out' && [ ! -e '$tmp/none' ]"
+make -s --no-print-directory sort-submissions FROM="$tmp/bomb.zip" TO="$tmp/none" MAX_RATIO=100000 MAX_MB=16 >"$tmp/out" 2>&1
+status=$?
+check "with both raised, the same zip is sorted (exit $status, want 0)" \
+    sh -c "[ $status -eq 0 ] && [ \$(wc -c <'$tmp/none/smithbob_340934/part1_image_plane.c') -eq 8388608 ]"
+rm -rf "$tmp/none"
+make -s --no-print-directory sort-submissions FROM="$tmp/bomb.zip" TO="$tmp/none" MAX_MB=lots >"$tmp/out" 2>&1
+status=$?
+check "MAX_MB that is not a number: the usage (make fails)" sh -c "[ $status -ne 0 ] && grep -q 'max-mb' '$tmp/out' && [ ! -e '$tmp/none' ]"
+
 # ---- grade-all given the download itself names the sorter ------------------
 $grade --all "$dl" --out "$tmp/g2" >"$tmp/out" 2>&1
 check "grade-all on a Canvas download's folder (its __MACOSX left out, not graded): names make sort-submissions" \

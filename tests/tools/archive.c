@@ -590,7 +590,8 @@ static int zip_entry_mode(unsigned made_by, uint32_t external, bool *is_dir, uns
  * its fixed part), its data before data_end; adds it to a and counts its
  * size into *total.  Returns the record's length, or -1 with a reason. */
 static long long zip_read_entry(Archive *a, const unsigned char *p, size_t cd, size_t cd_end,
-                                size_t data_end, size_t *total, char *err, size_t errlen)
+                                size_t data_end, size_t *total, const ArchiveLimits *lim,
+                                char *err, size_t errlen)
 {
     const unsigned char *c = p + cd;
     if (arc_get32(c) != ZIP_CENTRAL_SIG)
@@ -621,9 +622,12 @@ static long long zip_read_entry(Archive *a, const unsigned char *p, size_t cd, s
         rc = arc_fail(err, errlen, "%s: encrypted (not supported)", name);
     else if (csize == ZIP_MAX32 || usize == ZIP_MAX32 || local == ZIP_MAX32)
         rc = arc_fail(err, errlen, "%s: ZIP64 entries are not supported", name);
-    else if (usize > ARCHIVE_MAX_SIZE - *total)
-        rc = arc_fail(err, errlen, "%s: the archive unpacks to more than %zu bytes", name,
-                      ARCHIVE_MAX_SIZE);
+    else if (usize > lim->max_unpacked - *total)
+        rc = arc_fail(err, errlen, "%s: the archive unpacks to more than %zu MiB", name,
+                      lim->max_unpacked >> 20);
+    else if (usize > ARCHIVE_RATIO_FREE && usize / lim->max_ratio > csize)
+        rc = arc_fail(err, errlen, "%s: unpacks to %lu bytes from %lu, more than %u times as many "
+                      "(a zip bomb?)", name, (unsigned long)usize, (unsigned long)csize, lim->max_ratio);
     else if (local > data_end || data_end - local < ZIP_LOCAL_SIZE ||
              arc_get32(p + local) != ZIP_LOCAL_SIG)
         rc = arc_fail(err, errlen, "%s: ZIP local header missing or corrupt", name);
@@ -660,7 +664,8 @@ static long long zip_read_entry(Archive *a, const unsigned char *p, size_t cd, s
 
 /* Reads the end record, then every entry of the central directory.
  * Returns 0, or -1 with a reason. */
-static int zip_decode(Archive *a, const unsigned char *p, size_t n, char *err, size_t errlen)
+static int zip_decode(Archive *a, const unsigned char *p, size_t n, const ArchiveLimits *lim,
+                      char *err, size_t errlen)
 {
     long long end = zip_find_end(p, n);
     if (end < 0)
@@ -678,7 +683,7 @@ static int zip_decode(Archive *a, const unsigned char *p, size_t n, char *err, s
     for (unsigned k = 0; k < count; k++) {
         if (cd_end - at < ZIP_CENTRAL_SIZE)
             return arc_fail(err, errlen, "ZIP central directory is truncated");
-        long long len = zip_read_entry(a, p, at, cd_end, cd_off, &total, err, errlen);
+        long long len = zip_read_entry(a, p, at, cd_end, cd_off, &total, lim, err, errlen);
         if (len < 0)
             return -1;
         at += (size_t)len;
@@ -889,10 +894,14 @@ static long long tar_read_entry(Archive *a, const unsigned char *tar, size_t len
 
 /* Unzips, then reads headers up to the first zero block.  Returns 0, or -1
  * with a reason. */
-static int targz_decode(Archive *a, const unsigned char *p, size_t n, char *err, size_t errlen)
+static int targz_decode(Archive *a, const unsigned char *p, size_t n, const ArchiveLimits *lim,
+                        char *err, size_t errlen)
 {
     KitBuf tar = {0};
-    if (archive_gunzip(p, n, ARCHIVE_MAX_SIZE, &tar, err, errlen) != 0) {
+    /* The whole tar, bounded by the size and the ratio at once. */
+    size_t most = n > (lim->max_unpacked - ARCHIVE_RATIO_FREE) / lim->max_ratio
+                      ? lim->max_unpacked : n * lim->max_ratio + ARCHIVE_RATIO_FREE;
+    if (archive_gunzip(p, n, most, &tar, err, errlen) != 0) {
         kit_buf_free(&tar);             /* its length restored, but not its memory */
         return -1;
     }
@@ -945,18 +954,26 @@ int archive_save(const Archive *a, const char *path, char *err, size_t errlen)
     return status;
 }
 
+const ArchiveLimits archive_no_limits = { ARCHIVE_MAX_SIZE, ARCHIVE_MAX_SIZE };
+
 /* Tells the format by the first bytes and decodes.  Returns 0, or -1 with
  * a reason (a left empty). */
-int archive_decode(Archive *a, const void *data, size_t n, char *err, size_t errlen)
+int archive_decode_within(Archive *a, const void *data, size_t n, const ArchiveLimits *lim,
+                          char *err, size_t errlen)
 {
     const unsigned char *p = data;
+    ArchiveLimits within = *lim;
+    if (within.max_unpacked > ARCHIVE_MAX_SIZE || within.max_unpacked < ARCHIVE_RATIO_FREE)
+        within.max_unpacked = ARCHIVE_MAX_SIZE;
+    if (within.max_ratio < 1)
+        within.max_ratio = 1;
     int rc;
     if (n >= 4 && p[0] == 'P' && p[1] == 'K' && ((p[2] == 3 && p[3] == 4) || (p[2] == 5 && p[3] == 6))) {
         archive_init(a, ARCHIVE_ZIP);
-        rc = zip_decode(a, p, n, err, errlen);
+        rc = zip_decode(a, p, n, &within, err, errlen);
     } else if (n >= 2 && p[0] == 0x1F && p[1] == 0x8B) {
         archive_init(a, ARCHIVE_TARGZ);
-        rc = targz_decode(a, p, n, err, errlen);
+        rc = targz_decode(a, p, n, &within, err, errlen);
     } else {
         archive_init(a, ARCHIVE_ZIP);
         rc = arc_fail(err, errlen, "not a ZIP or .tar.gz archive");
@@ -966,8 +983,18 @@ int archive_decode(Archive *a, const void *data, size_t n, char *err, size_t err
     return rc;
 }
 
-/* Reads the file, then decodes it.  Returns 0, or -1 with "path: reason". */
+int archive_decode(Archive *a, const void *data, size_t n, char *err, size_t errlen)
+{
+    return archive_decode_within(a, data, n, &archive_no_limits, err, errlen);
+}
+
 int archive_load(Archive *a, const char *path, char *err, size_t errlen)
+{
+    return archive_load_within(a, path, &archive_no_limits, err, errlen);
+}
+
+/* Reads the file, then decodes it.  Returns 0, or -1 with "path: reason". */
+int archive_load_within(Archive *a, const char *path, const ArchiveLimits *lim, char *err, size_t errlen)
 {
     KitBuf bytes = {0};
     char why[512];
@@ -976,7 +1003,7 @@ int archive_load(Archive *a, const char *path, char *err, size_t errlen)
         kit_buf_free(&bytes);
         return -1;
     }
-    int rc = archive_decode(a, bytes.data, bytes.len, why, sizeof why);
+    int rc = archive_decode_within(a, bytes.data, bytes.len, lim, why, sizeof why);
     if (rc != 0)
         arc_fail(err, errlen, "%s: %s", path, why);
     kit_buf_free(&bytes);

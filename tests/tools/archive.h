@@ -35,6 +35,18 @@
 
 #define ARCHIVE_MTIME 1577836800L              /* 2020-01-01 00:00:00 UTC */
 #define ARCHIVE_MAX_SIZE ((size_t)1 << 30)     /* the most bytes read or unpacked */
+#define ARCHIVE_RATIO_FREE ((size_t)1 << 20)   /* bytes any entry may unpack to,
+                                                  whatever its ratio           */
+
+/* What reading an archive may unpack: at most max_unpacked bytes in all
+ * (up to ARCHIVE_MAX_SIZE), and no entry (and no .tar.gz) more than
+ * max_ratio times its packed size beyond ARCHIVE_RATIO_FREE: a small
+ * archive that would fill the memory or the disk is refused. */
+typedef struct {
+    size_t max_unpacked;
+    unsigned max_ratio;
+} ArchiveLimits;
+extern const ArchiveLimits archive_no_limits;   /* ARCHIVE_MAX_SIZE, any ratio */
 
 typedef enum { ARCHIVE_ZIP, ARCHIVE_TARGZ } ArchiveFormat;
 
@@ -89,10 +101,15 @@ int archive_save(const Archive *a, const char *path, char *err, size_t errlen);
  * data[0 .. n-1] into a, which is initialised here.  Every CRC and size is
  * checked.  Returns 0, or -1 with a reason in err (a is then empty). */
 int archive_decode(Archive *a, const void *data, size_t n, char *err, size_t errlen);
+/* The same within limits (ArchiveLimits). */
+int archive_decode_within(Archive *a, const void *data, size_t n, const ArchiveLimits *lim,
+                          char *err, size_t errlen);
 
 /* archive_decode on the contents of the file at path.  Returns 0, or -1
  * with "path: reason" in err. */
 int archive_load(Archive *a, const char *path, char *err, size_t errlen);
+int archive_load_within(Archive *a, const char *path, const ArchiveLimits *lim, char *err,
+                        size_t errlen);
 
 /* Writes every entry below destdir (created if missing), files with
  * their modes; existing files are replaced.  Refuses to write through a

@@ -145,6 +145,15 @@ static void test_directive_spellings(void)
     REFUSED("#pragma GCC dependency \"fifo\"\n");
     REFUSED("_Pragma(\"GCC dependency \\\"fifo\\\"\")\n");
     REFUSED("__asm__(\".incbin \\\"/dev/zero\\\"\");\n");
+    /* The assembler's directives that read a file, however the strings
+     * spell them: split in adjacent literals (over lines and comments, with
+     * a prefix), spelt with escapes, and .include. */
+    REFUSED("__asm__(\".inc\" \"bin \\\"/etc/passwd\\\"\");\n");
+    REFUSED("__asm__(\".i\"\n /* x */ \"ncb\" u8\"in \\\"/etc/passwd\\\"\");\n");
+    REFUSED("__asm__(\"\\x2eincbin \\\"/etc/passwd\\\"\");\n");
+    REFUSED("__asm__(\"\\056inc\\142in \\\"/etc/passwd\\\"\");\n");
+    REFUSED("__asm__(\".include \\\"/etc/passwd\\\"\");\n");
+    REFUSED("__asm__(\".incl\" \"ude \\\"/etc/passwd\\\"\");\n");
     teardown();
 }
 
@@ -158,6 +167,9 @@ static void test_passes(void)
     PASSED("const char *s = \"#include \\\"/dev/zero\\\"\";\n");
     PASSED("#define Z \"/dev/zero\"\n");                /* names only in #include are read */
     PASSED("#error \"/dev/zero\"\n");
+    /* Strings that are not joined (a token between them) spell nothing. */
+    PASSED("const char *a = \".inc\", *b = \"bin\";\n");
+    PASSED("const char *a[] = { \".incl\", \"ude\" };\n");
     PASSED("#include \"no-such-header.h\"\n");          /* the compiler says it is missing */
     PASSED("#include Z\n");                             /* a macro: left to the compiler's limits */
     PASSED("char c = '\"'; /* \" */\n#include \"raytracer.h\"\n");
