@@ -41,6 +41,7 @@ int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
     memset(cfg, 0, sizeof *cfg);
     cfg->hard_is_bonus = true;
     cfg->timeout = 2;
+    cfg->part_time = 30;
     cfg->output_kib = CONFIG_OUTPUT_KIB;
     for (int p = 0; p < NCORE_PARTS; p++)
         cfg->parts[p] = true;
@@ -101,6 +102,12 @@ int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
                 cfg->timeout = core;
             else
                 want = "'timeout S': S seconds, more than 0 and at most 600";
+        } else if (strcmp(word, "part-time") == 0) {
+            if (sscanf(line, " part-time %lf %n", &core, &used) == 1 && used > 0 && !line[used] &&
+                core > 0 && core <= 3600)
+                cfg->part_time = core;
+            else
+                want = "'part-time S': S seconds, more than 0 and at most 3600";
         } else if (strcmp(word, "output") == 0) {
             if (sscanf(line, " output %ld %n", &kib, &used) == 1 && used > 0 && !line[used] &&
                 kib >= 1 && kib <= CONFIG_OUTPUT_KIB_MAX)

@@ -22,6 +22,7 @@ typedef struct {
     double hard[NPARTS];       /* points of each part's hard-case tests */
     bool hard_is_bonus;        /* hard points on top of the total        */
     double timeout;            /* seconds per test                       */
+    double part_time;          /* seconds a part's runs may take in all   */
     long output_kib;           /* KiB a test may print before it is stopped */
     uint64_t seed;
 } GradeConfig;

@@ -20,10 +20,6 @@
 #define OUTPUT_SHOWN 1500     /* bytes of the student's own printing shown */
 #define TEST_MEMORY_MB 64     /* a test program needs 3 to 4 MiB of address space */
 #define MAX_BATCH 4096        /* tests of one part run together, at most     */
-/* A part's runs (its tests together, each alone, the probes) start only
- * while they can end within this many seconds of the part's first: code
- * whose every test sleeps just under the limit costs at most this. */
-#define PART_SECONDS 30
 
 static const char *kind_word[NKINDS] = { "plane", "pixel", "sphere", "camera", "color", "image",
                                          "planehit", "triangle", "mesh" };
@@ -331,7 +327,7 @@ typedef struct {
     const GradeOptions *opt;
     const Build *b;
     bool stopped;
-    double deadline;           /* the part's time (PART_SECONDS)             */
+    double deadline;           /* the end of the part's time                  */
 } ProbeContext;
 
 static int run_probe(void *ctx, const Test *t, Answers *a)
@@ -383,7 +379,11 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
             build_remove(&b);
             return -1;
         }
-        double children = sandbox_cpu(false), deadline = sandbox_now() + PART_SECONDS;
+        /* A part's runs (its tests together, each alone, the probes) start
+         * only while they can end within its time (weights.conf's
+         * part-time): code whose every test sleeps just under the limit
+         * costs at most that. */
+        double children = sandbox_cpu(false), deadline = sandbox_now() + cfg->part_time;
         int timeouts = 0;
         bool first = true;
         bool *done = calloc((size_t)tests->n + 1, sizeof *done);
@@ -439,9 +439,9 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
             } else if (timeouts >= 2) {
                 r->output = xasprintf("  not run: two earlier tests of this part did not finish in time");
             } else if (sandbox_now() + cfg->timeout > deadline) {
-                r->output = xasprintf("  not run: this part's tests took %d s in all, the most a part may "
+                r->output = xasprintf("  not run: this part's tests took %g s in all, the most a part may "
                                       "take (its tests each took long: does the code sleep or loop?)",
-                                      PART_SECONDS);
+                                      cfg->part_time);
             } else {
                 if (opt->verbose)
                     fprintf(stderr, "  %s\n", t->name);
