@@ -35,7 +35,8 @@ else
     work=$(mktemp -d "${TMPDIR:-/tmp}/raytracer.XXXXXX") || { results_error "no temporary directory"; exit 0; }
     trap 'rm -rf "$work"' EXIT
 fi
-# The kit, out of reach of student code (which the grader runs as "nobody").
+# The kit, out of reach of student code (which the grader runs in its jail:
+# in a container that refuses namespaces, as a user id of its own).
 if [ ! -f "$work/kit/Makefile" ]; then
     rm -rf "$work/kit"
     cp -R "$root/tests/kit" "$work/kit" || { results_error "cannot copy the kit"; exit 0; }

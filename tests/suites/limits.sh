@@ -141,4 +141,22 @@ for where in "$PWD/out/tests/tmpdir-in-kit" /dev/shm; do
     rm -rf "$t"
 done
 
+# -- a compiler the jail cannot start --------------------------------------------
+# A compiler inside the kit: the jail shows it none of the kit (and, in the
+# fallback, the kit is private), so it cannot be started.  That is the
+# kit's error, not the student's: the grader says so, with the command and
+# its exit status, exits 2, and the results file scores nothing as the
+# submission's fault.
+mkdir -p out/tests/cc-in-kit
+printf '#!/bin/sh\nexec cc "$@"\n' >out/tests/cc-in-kit/cc
+chmod 755 out/tests/cc-in-kit/cc
+CC=$PWD/out/tests/cc-in-kit/cc $grade --submission solutions --part 1 --results "$tmp/no-cc.json" \
+    >"$tmp/no-cc.out" 2>&1
+status=$?
+check "a compiler that cannot be started: the grader's error (exit $status, want 2)" [ "$status" -eq 2 ]
+check "... named with the command and its exit status, as the kit's error" \
+    grep -q "the compiler could not be started ($PWD/out/tests/cc-in-kit/cc, exit status 12[5-7].*the kit's error, not the submission's" "$tmp/no-cc.out"
+check "... and the results file says so, with no test failed as the student's" \
+    sh -c "grep -q 'the compiler could not be started' '$tmp/no-cc.json' && grep -q '\"tests\": \\[\\]' '$tmp/no-cc.json'"
+
 finish
