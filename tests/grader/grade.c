@@ -221,7 +221,7 @@ static void run_test(const GradeOptions *opt, const Build *b, const Test *t, con
  * (run_test), so that its verdict and what the student reads come from a
  * process of its own.  Marks in done[] the tests passed here. */
 static void run_batch(const GradeOptions *opt, Build *b, const TestList *tests, int part,
-                      TestResult *results, bool *done)
+                      TestResult *results, bool *done, double *spent)
 {
     size_t len = 0, cap = 0, answer_max = 0;
     char *input = NULL;
@@ -263,6 +263,7 @@ static void run_batch(const GradeOptions *opt, Build *b, const TestList *tests, 
     free(input);
     if (status != 0)
         return;
+    *spent += res.seconds;
     if (b->unchecked && build_link_verdict(b, &res)) {      /* it does not link */
         sandbox_result_free(&res);
         return;
@@ -327,7 +328,7 @@ typedef struct {
     const GradeOptions *opt;
     const Build *b;
     bool stopped;
-    double deadline;           /* the end of the part's time                  */
+    double *spent;             /* the seconds the part's runs took so far     */
 } ProbeContext;
 
 static int run_probe(void *ctx, const Test *t, Answers *a)
@@ -335,9 +336,10 @@ static int run_probe(void *ctx, const Test *t, Answers *a)
     ProbeContext *pc = ctx;
     SandboxResult res;
     char err[256], *verdict = NULL;
-    if (pc->stopped || sandbox_now() + pc->opt->cfg->timeout > pc->deadline ||
+    if (pc->stopped || *pc->spent + pc->opt->cfg->timeout > pc->opt->cfg->part_time ||
         run_child(pc->opt, pc->b, t, &res, err, sizeof err) != 0)
         return -1;
+    *pc->spent += res.seconds;
     pc->stopped = res.timed_out || res.memory_exceeded || res.output_exceeded;
     check_answers(t, res.answer, res.answer_len, &verdict, a);
     free(verdict);
@@ -381,9 +383,9 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         }
         /* A part's runs (its tests together, each alone, the probes) start
          * only while they can end within its time (weights.conf's
-         * part-time): code whose every test sleeps just under the limit
-         * costs at most that. */
-        double children = sandbox_cpu(false), deadline = sandbox_now() + cfg->part_time;
+         * part-time), counted as the seconds its runs took: code whose
+         * every test sleeps just under the limit costs at most that. */
+        double children = sandbox_cpu(false), spent = 0;
         int timeouts = 0;
         bool first = true;
         bool *done = calloc((size_t)tests->n + 1, sizeof *done);
@@ -401,7 +403,7 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
          * object links; when it cannot (no batch, or it crashed), a run that
          * only loads it does, as the build's. */
         if (b.ok)
-            run_batch(opt, &b, tests, p, g->results, done);
+            run_batch(opt, &b, tests, p, g->results, done, &spent);
         if (b.ok && b.unchecked) {
             double before = sandbox_cpu(false);
             int rc = build_check(&b, err, errlen);
@@ -438,7 +440,7 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
                                       why, first ? g->build_messages[p] : "");
             } else if (timeouts >= 2) {
                 r->output = xasprintf("  not run: two earlier tests of this part did not finish in time");
-            } else if (sandbox_now() + cfg->timeout > deadline) {
+            } else if (spent + cfg->timeout > cfg->part_time) {
                 r->output = xasprintf("  not run: this part's tests took %g s in all, the most a part may "
                                       "take (its tests each took long: does the code sleep or loop?)",
                                       cfg->part_time);
@@ -456,6 +458,7 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
                         named[part.nnamed++] = rj->answers.named;
                 }
                 run_test(opt, &b, t, &part, r);
+                spent += r->seconds;
                 if (!r->passed && r->seconds >= cfg->timeout)
                     timeouts++;
             }
@@ -469,7 +472,7 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         children = sandbox_cpu(false);
         if (b.ok) {
             /* After two tests out of time, a probe would be the third. */
-            ProbeContext pc = { opt, &b, timeouts >= 2, deadline };
+            ProbeContext pc = { opt, &b, timeouts >= 2, &spent };
             Probes probes = { run_probe, &pc, p == PART3B && !opt->build->reference, false };
             for (int k = 0; k < tests->n; k++)
                 probes.part3a_failed = probes.part3a_failed ||

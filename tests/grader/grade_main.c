@@ -280,6 +280,11 @@ static int grade_one(const char *submission, const char *part, const char *resul
                "the grader %.3f; total %.3f = %.2f x compiling\n", g.cpu_compile, g.cpu_link,
                g.cpu_tests, g.cpu_probes, self, total,
                g.cpu_compile > 0 ? total / g.cpu_compile : 0);
+        int nruns;
+        double jail;
+        sandbox_jail_cost(&nruns, &jail);
+        printf("the jail: %d runs, %.3f s building their namespaces (%s)\n", nruns, jail,
+               jail_namespaces() ? "counted in the runs above" : "none: the fallback");
     }
     int status = g.total < g.total_max || g.bonus < g.bonus_max ? 1 : 0;
     if (results && (results_prairielearn ? report_prairielearn(results, &g, err, sizeof err)

@@ -221,7 +221,7 @@ static long long group_memory(pid_t pid)
 #elif defined(__linux__)
     long long total = resident((long)pid);
     char path[96], text[256];
-    snprintf(path, sizeof path, "/proc/%ld/task/%ld/children", (long)pid, (long)pid);
+    snprintf(path, sizeof path, "/proc/%ld/task/%ld/children", (long)pid, (long)pid);  /* portable: __linux__ */
     int fd = total >= 0 ? open(path, O_RDONLY) : -1;
     ssize_t n = fd >= 0 ? read(fd, text, sizeof text - 1) : 0;
     if (fd >= 0)
@@ -276,6 +276,8 @@ typedef struct {
     uid_t uid;
     gid_t gid;
     long nproc;                /* RLIMIT_NPROC, or -1: none                  */
+    double entered;            /* set by the jailed child: when its jail was
+                                  built (it shares this memory)             */
     char *envp[4];
     char path_env[4096];
     char tmp_env[4200];
@@ -378,9 +380,10 @@ JAIL_CHILD_CODE static void child(const ChildPlan *cp)
 /* The namespace jail's child: the jail, then the rest as any child. */
 JAIL_CHILD_CODE static int jailed_child(void *arg)
 {
-    const ChildPlan *cp = arg;
+    ChildPlan *cp = arg;
     if (jail_enter(cp->out_w) != 0)
         _exit(125);
+    cp->entered = sandbox_now();
     child(cp);
     return 127;
 }
@@ -562,6 +565,17 @@ static int open_pipes(int p[4][2], int n, char *err, size_t errlen)
 /* The plan of the child about to start (see ChildPlan). */
 static ChildPlan plan;
 
+/* The runs started, and the seconds spent building their jails (the
+ * child's, while the grader waits for it: sandbox_jail_cost). */
+static int runs;
+static double jail_seconds;
+
+void sandbox_jail_cost(int *nruns, double *seconds)
+{
+    *nruns = runs;
+    *seconds = jail_seconds;
+}
+
 /* Starts the child that runs spec's program: in the namespace jail, or
  * by vfork (Linux) or fork.  The child's pid, or -1 with err. */
 static pid_t spawn(const SandboxSpec *spec, int in_r, int ans_w, int out_w, int status_w, char *err,
@@ -574,7 +588,11 @@ static pid_t spawn(const SandboxSpec *spec, int in_r, int ans_w, int out_w, int 
                             .cwd = spec->cwd, .visible = spec->visible, .pid_namespace = spec->init };
         if (jail_prepare(&paths, plan.uid, plan.gid, err, errlen) != 0)
             return -1;
+        double start = sandbox_now();
+        plan.entered = 0;
         pid = jail_clone(jailed_child, &plan);
+        if (pid > 0 && plan.entered > start)
+            jail_seconds += plan.entered - start;
     } else {
 #if defined(__linux__)
         pid = vfork();          /* portable: __linux__ (macOS deprecates vfork: fork there) */
@@ -584,9 +602,10 @@ static pid_t spawn(const SandboxSpec *spec, int in_r, int ans_w, int out_w, int 
         if (pid == 0)
             child(&plan);
     }
-    if (pid > 0)
+    if (pid > 0) {
         setpgid(pid, pid);      /* also here, so killpg cannot race it */
-    else
+        runs++;
+    } else
         snprintf(err, errlen, "%s: %s", plan.jailed ? "clone" : "fork", strerror(errno));
     return pid;
 }

@@ -124,6 +124,10 @@ void sandbox_set_user(uid_t id, bool held);
  * found all the same, but another grader may be given them too). */
 int sandbox_spare_users(uid_t *ids, int n, const char **unclaimed);
 
+/* The runs this process started, and the seconds their namespace jails
+ * took to build (0 in the fallback), for grade --cost. */
+void sandbox_jail_cost(int *runs, double *seconds);
+
 /* Seconds on a monotonic clock. */
 double sandbox_now(void);
 /* CPU seconds (user and system) used so far by this process (self) or by

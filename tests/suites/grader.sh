@@ -605,7 +605,7 @@ if [ "$(id -u)" != 0 ]; then
 elif ! command -v setpriv >/dev/null 2>&1 || ! id nobody >/dev/null 2>&1; then
     echo "   skipped: no setpriv here, so grade --all was not run as another user than root"
     : >"$tmp/self.out"
-elif ! setpriv --reuid=nobody --regid="$(id -g nobody)" --clear-groups test -x "$grade"; then   # portable: guarded
+elif ! setpriv --reuid=nobody --regid="$(id -g nobody)" --clear-groups test -x "$(cd "$(dirname "$grade")" && pwd)/${grade##*/}"; then   # portable: guarded
     echo "   skipped: nobody cannot reach the kit here (made private for the fallback jail), so grade --all was not run as another user than root"
     : >"$tmp/self.out"
 else
