@@ -11,17 +11,26 @@
 set -u
 grade_built=${GRADE:-out/build/bin/grade}
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtjail.XXXXXX") || { echo "0 passed, 1 failed"; exit 1; }
-trap 'rm -rf "$tmp"' EXIT
+trap '[ -n "${KEEP_TMP:-}" ] || rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
 . tests/lib/checks.sh
 need_built "$grade_built"
 
+# What an attack must not read, marked as this run's alone (other suites
+# running beside this one have the kit's files in folders anyone may read,
+# which the fallback's user may read too): the copies' seed, and a line of
+# their reference.
+mark=$$-$(date +%s)
+seed_line="seed     7$$"
+reference_line="REFERENCE-MARKER-$mark"
 # copy_kit DIR: the grader and what it reads (not the kit's own tests' builds).
 copy_kit() {
     mkdir -p "$1/out/build"
     cp -R Makefile labs solutions tests "$1/" &&
         cp -R out/build/grader out/build/bin "$1/out/build/" &&
-        { [ ! -d out/build/report ] || cp -R out/build/report "$1/out/build/"; }
+        { [ ! -d out/build/report ] || cp -R out/build/report "$1/out/build/"; } &&
+        sed "s/^seed .*/$seed_line/" tests/weights.conf >"$1/tests/weights.conf" &&
+        echo "/* $reference_line */" >>"$1/solutions/part1_image_plane.c"
     [ -z "${GRADE:-}" ] || cp "$GRADE" "$1/out/build/bin/grade"     # make sanitize-grader's
 }
 mkdir -m 700 "$tmp/private"
@@ -32,8 +41,6 @@ copy_kit "$tmp/open-kit" && chmod -R a+rX "$tmp/open-kit"
 secret=$tmp/private/secret
 echo "ROOT-ONLY-SECRET-$$-e41b" >"$secret"
 chmod 600 "$secret"
-seed_line=$(grep '^seed' tests/weights.conf)
-reference_line='keeps all its digits instead of losing five'      # solutions/part1_image_plane.c
 
 # attacks KIT DIR: the attacks as submissions in DIR, their placeholders
 # filled in for the kit at KIT; readable by all (the grader copies them).
@@ -127,7 +134,7 @@ run_attacks() {
     as_grader --all "$subs/class-read" --out "$out/read" --weights "$out/part1.conf" --jobs 1 \
         >"$out/read.out" 2>&1
     check "$mode: the reference, the hidden tests' seed and a classmate's file appear nowhere in its results" \
-        sh -c "[ -s '$out/read/a-read-kit.json' ] && ! grep -q -e '$seed_line' -e '$reference_line' -e CLASSMATE-WORK '$out/read/a-read-kit.json'"
+        sh -c "[ -s '$out/read/a-read-kit.json' ] && ! grep -q -e '$seed_line' -e '$reference_line' -e CLASSMATE-WORK-7f3a9c '$out/read/a-read-kit.json'"
 
     # A folder 20,000 deep.
     as_grader --all "$subs/class-deep" --out "$out/deep" --weights "$out/part1.conf" --jobs 1 >"$out/deep.out" 2>&1
