@@ -585,7 +585,7 @@ static pid_t spawn(const SandboxSpec *spec, int in_r, int ans_w, int out_w, int 
     pid_t pid;
     if (plan.jailed) {
         JailPaths paths = { .workdir = spec->workdir, .workdir_shared = spec->keep != NULL,
-                            .cwd = spec->cwd, .visible = spec->visible, .pid_namespace = spec->init };
+                            .cwd = spec->cwd, .visible = spec->visible, .pid_namespace = status_w >= 0 };
         if (jail_prepare(&paths, plan.uid, plan.gid, err, errlen) != 0)
             return -1;
         double start = sandbox_now();
@@ -656,7 +656,10 @@ int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t e
     if (errlen)
         err[0] = '\0';
     signal(SIGPIPE, SIG_IGN);
-    bool init = spec->init && jail_namespaces();
+    /* A PID namespace of its own, whose first process (init) forks the
+     * test: not as root with "nobody", whose processes elsewhere count
+     * against the one process the jail's limit lets init make. */
+    bool init = spec->init && jail_namespaces() && (!sandbox_drops_privileges() || user_held);
     if (make_workdir(spec, err, errlen) != 0)
         return -1;
     if (open_pipes(p, init ? 4 : 3, err, errlen) != 0) {

@@ -18,6 +18,7 @@
 #include <time.h>
 #include <sys/stat.h>
 #include "../grader/jail.h"
+#include "kit/savefile.h"
 #include "../grader/sandbox.h"
 
 /* init_sh, found beside this program (main). */
@@ -339,6 +340,9 @@ static void test_spare_users(void)
         for (int j = 0; j < k; j++)
             CHECK(ids[j] != ids[k]);
     }
+    uid_t held_uid;
+    gid_t held_gid;
+    sandbox_ids(&held_uid, &held_gid);
     sandbox_set_user(ids[0], false);
     SandboxResult res;
     if (run_sh("exec /usr/bin/id -u >&3", (SandboxSpec){ .memory_mb = 48, .max_procs = 0 }, &res) == 0) {
@@ -347,7 +351,7 @@ static void test_spare_users(void)
         CHECK_MSG(strcmp(res.answer, want) == 0, "ran as %s, not %lu", res.answer, (unsigned long)ids[0]);
         sandbox_result_free(&res);
     }
-    sandbox_set_user(0, false);
+    sandbox_set_user(held_uid, true);
 }
 
 /* max_procs 0: the child itself runs (RLIMIT_NPROC is checked at fork, and
@@ -430,7 +434,79 @@ static void test_output_stop(void)
     sandbox_result_free(&res);
 }
 
+/* jail_remove_tree removes a folder 20,000 deep (deeper than a path may
+ * be long), with links in it that it does not follow, and a folder made
+ * unreadable; without recursion, so it cannot run out of stack. */
+static void test_remove_deep_tree(void)
+{
+    char dir[512], top[600], keep[600];
+    if (check_temp_dir(dir, sizeof dir, "deep") != 0)
+        return;
+    snprintf(top, sizeof top, "%s/tree", dir);
+    snprintf(keep, sizeof keep, "%s/kept", dir);
+    int fd = open(keep, O_WRONLY | O_CREAT, 0600);
+    CHECK(fd >= 0 && close(fd) == 0);
+    CHECK(mkdir(top, 0700) == 0);
+    int at = open(top, O_RDONLY | O_DIRECTORY);
+    for (int k = 0; k < 20000 && at >= 0; k++) {
+        if (k % 1000 == 0) {
+            CHECK(symlinkat(keep, at, "link") == 0);
+            CHECK(symlinkat(dir, at, "up") == 0);
+        }
+        int down = mkdirat(at, "d", k == 19999 ? 0 : 0700) == 0 ? openat(at, "d", O_RDONLY | O_DIRECTORY) : -1;
+        close(at);
+        at = down;
+    }
+    if (at >= 0)
+        close(at);
+    CHECK_EQ_INT(jail_remove_tree(top), 0);
+    struct stat st;
+    CHECK_MSG(lstat(top, &st) != 0, "the tree is still there");
+    CHECK_MSG(stat(keep, &st) == 0, "a file a link pointed at was removed");
+    check_remove_tree(dir);
+}
+
+/* jail_take_file copies a plain file back and refuses anything else a run
+ * could have put in its place: a link (to a file only the grader may
+ * read), a second link to a file, a pipe, a folder, a file over its size. */
+static void test_take_file(void)
+{
+    char dir[512], path[700], secret[700], to[700], why[256];
+    if (check_temp_dir(dir, sizeof dir, "take") != 0)
+        return;
+    snprintf(secret, sizeof secret, "%s/secret", dir);
+    snprintf(to, sizeof to, "%s/copy", dir);
+    FILE *f = fopen(secret, "w");
+    CHECK(f && fputs("not for the run\n", f) >= 0 && fclose(f) == 0);
+    snprintf(path, sizeof path, "%s/plain", dir);
+    f = fopen(path, "w");
+    CHECK(f && fputs("object\n", f) >= 0 && fclose(f) == 0);
+    CHECK_EQ_INT(jail_take_file(dir, "plain", to, 100, why, sizeof why), 0);
+    size_t n = 0;
+    char *copied = kit_load_file(to, 100, &n);
+    CHECK_MSG(copied && n == 7 && memcmp(copied, "object\n", 7) == 0, "copied %zu bytes", n);
+    free(copied);
+    CHECK_MSG(jail_take_file(dir, "plain", to, 6, why, sizeof why) != 0, "a file over its size taken");
+    snprintf(path, sizeof path, "%s/link", dir);
+    CHECK(symlink(secret, path) == 0);
+    CHECK_MSG(jail_take_file(dir, "link", to, 100, why, sizeof why) != 0, "a link followed");
+    snprintf(path, sizeof path, "%s/hard", dir);
+    CHECK(link(secret, path) == 0);
+    CHECK_MSG(jail_take_file(dir, "hard", to, 100, why, sizeof why) != 0, "a second link to a file taken");
+    snprintf(path, sizeof path, "%s/pipe", dir);
+    CHECK(mkfifo(path, 0600) == 0);
+    CHECK_MSG(jail_take_file(dir, "pipe", to, 100, why, sizeof why) != 0, "a pipe taken");
+    snprintf(path, sizeof path, "%s/folder", dir);
+    CHECK(mkdir(path, 0700) == 0);
+    CHECK_MSG(jail_take_file(dir, "folder", to, 100, why, sizeof why) != 0, "a folder taken");
+    copied = kit_load_file(to, 100, &n);
+    CHECK_MSG(!copied || !strstr(copied, "not for the run"), "the secret was copied");
+    free(copied);
+    check_remove_tree(dir);
+}
+
 static const CheckTest tests[] = {
+    CHECK_TEST(test_remove_deep_tree), CHECK_TEST(test_take_file),
     CHECK_TEST(test_memory_watch),     CHECK_TEST(test_memory_stops_hog), CHECK_TEST(test_small_program_runs),
     CHECK_TEST(test_oom_score_adj),    CHECK_TEST(test_killed_reported),  CHECK_TEST(test_cpu_limit),
     CHECK_TEST(test_wall_clock),       CHECK_TEST(test_no_file_output),   CHECK_TEST(test_no_processes),
@@ -445,6 +521,12 @@ int main(int argc, char **argv)
     char *slash = strrchr(self, '/');
     if (slash)
         snprintf(init_sh, sizeof init_sh, "%.*s", (int)(slash - self), self);
+    /* As root, the children run as a spare id held here, as the grader's
+     * do (with "nobody" they get no PID namespace of their own). */
+    uid_t id;
+    const char *unclaimed = NULL;
+    if (sandbox_drops_privileges() && sandbox_spare_users(&id, 1, &unclaimed) == 1)
+        sandbox_set_user(id, unclaimed == NULL);
     printf("    jail: %s\n", jail_describe());
     return check_main(argc, argv, tests, CHECK_COUNT(tests));
 }
