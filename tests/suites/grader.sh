@@ -600,8 +600,10 @@ check "a labs folder that is a link (to the reference) is not graded: 0 points, 
 # Graded as another user than root, grade --all says what that means: in
 # the namespace jail the code saw none of that user's files, else it ran
 # as that user.
+self_jail=""
 if [ "$(id -u)" != 0 ]; then
     $grade --all "$names" --out "$tmp/grades-self" --weights "$tmp/part1.conf" --jobs 1 >"$tmp/self.out" 2>&1
+    self_jail=$($grade --jail)
 elif ! command -v setpriv >/dev/null 2>&1 || ! id nobody >/dev/null 2>&1; then
     echo "   skipped: no setpriv here, so grade --all was not run as another user than root"
     : >"$tmp/self.out"
@@ -613,9 +615,10 @@ else
     mkdir -m 777 "$tmp/self"
     setpriv --reuid=nobody --regid="$(id -g nobody)" --clear-groups \
         $grade --all "$names" --out "$tmp/self/grades" --weights "$tmp/part1.conf" --jobs 1 >"$tmp/self.out" 2>&1
+    self_jail=$(setpriv --reuid=nobody --regid="$(id -g nobody)" --clear-groups $grade --jail 2>/dev/null)   # portable: guarded
 fi
 if [ -s "$tmp/self.out" ]; then
-    case $(setpriv --reuid=nobody --regid="$(id -g nobody)" --clear-groups $grade --jail 2>/dev/null) in   # portable: guarded
+    case $self_jail in
     namespaces*)
         check "graded as another user than root, in the namespace jail, grade --all says their code saw none of that user's files" \
             grep -q '^graded as yourself, not as root: each submission.s code ran in a jail of its own (a user namespace)' "$tmp/self.out" ;;
