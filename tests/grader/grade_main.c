@@ -672,6 +672,15 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
             snprintf(why, sizeof why, "grader error (see %s.json)", j->name);
             csv_field(f, why);
             fputc('\n', f);
+            /* A grading that ended without its results (the grader killed,
+             * say) gets a results file that says so, as the row does. */
+            char res[PATH_MAX], said[200], werr[256];
+            struct stat rst;
+            snprintf(res, sizeof res, "%s/%s.json", out, j->name);
+            snprintf(said, sizeof said, "The grader stopped (status %d) before it wrote this "
+                     "submission's results: please tell the course staff.", j->status);
+            if (lstat(res, &rst) != 0)
+                report_json_error(res, said, werr, sizeof werr);
         }
         if (!ok)
             worst = 2;
