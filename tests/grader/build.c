@@ -113,33 +113,22 @@ static int copy_file(const char *src, const char *dst, size_t max, char *err, si
     return copy_fd(in, src, dst, max, err, errlen);
 }
 
-/* copy_file from the open descriptor in, which it closes. */
+/* copy_file from the open descriptor in, which it closes; the copy is
+ * readable by all who may enter its folder (a run's user reads src/). */
 static int copy_fd(int in, const char *src, const char *dst, size_t max, char *err, size_t errlen)
 {
-    struct stat st;
-    if (fstat(in, &st) != 0 || !S_ISREG(st.st_mode) || (size_t)st.st_size > max) {
+    FILE *f = fdopen(in, "rb");
+    size_t n = 0;
+    char *bytes = f ? kit_load_stream(f, max, &n) : NULL;
+    if (!f)
+        close(in);
+    if (!bytes) {
         snprintf(err, errlen, "%s: not a regular file of at most %zu bytes", src, max);
-        close(in);
         return -1;
     }
-    int out = open(dst, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (out < 0) {
-        snprintf(err, errlen, "%s: %s", dst, strerror(errno));
-        close(in);
-        return -1;
-    }
-    char buf[65536];
-    ssize_t n;
-    int status = 0;
-    while ((n = read(in, buf, sizeof buf)) > 0)
-        if (write(out, buf, (size_t)n) != n)
-            status = -1;
-    if (n < 0 || close(out) != 0)
-        status = -1;
-    close(in);
-    if (status)
-        snprintf(err, errlen, "copying %s: %s", src, strerror(errno));
-    return status;
+    int status = kit_save_file(dst, bytes, n, err, errlen);
+    free(bytes);
+    return status == 0 ? chmod(dst, 0644) : status;
 }
 
 /* Appends text to b->messages (nothing if out of memory). */

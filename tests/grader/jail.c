@@ -6,6 +6,7 @@
 #define _GNU_SOURCE             /* clone and the mount flags (Linux) */
 #define _DARWIN_C_SOURCE        /* macOS: the rest */
 #include "jail.h"
+#include "kit/savefile.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -673,25 +674,14 @@ int jail_take_file(const char *dir, const char *name, const char *to, size_t max
             close(in);
         return -1;
     }
-    int out = open(to, O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
-    if (out < 0) {
-        snprintf(why, whylen, "%s: %s", to, strerror(errno));
+    FILE *f = fdopen(in, "rb");
+    size_t n = 0;
+    char *bytes = f ? kit_load_stream(f, max, &n) : NULL;
+    if (!f)
         close(in);
-        return -1;
-    }
-    char buf[65536];
-    ssize_t n;
-    size_t total = 0;
-    int status = 0;
-    while ((n = read(in, buf, sizeof buf)) > 0 && status == 0) {
-        total += (size_t)n;
-        if (total > max || write(out, buf, (size_t)n) != n)
-            status = -1;
-    }
-    if (n < 0 || close(out) != 0)
-        status = -1;
-    close(in);
-    if (status != 0)
-        snprintf(why, whylen, "copying %s back: %s", name, total > max ? "too large" : strerror(errno));
+    int status = bytes ? kit_save_file(to, bytes, n, why, whylen) : -1;
+    if (!bytes)
+        snprintf(why, whylen, "%s could not be read back", name);
+    free(bytes);
     return status;
 }
