@@ -505,7 +505,41 @@ static void test_take_file(void)
     check_remove_tree(dir);
 }
 
+/* A program that cannot be started (no such file), and a jail that cannot
+ * be built (a folder to show it that is not there): each is reported as the
+ * run's exit status (127, and 125 in the namespace jail), and nothing is
+ * signalled but the run's own process: this test, and its suite, go on. */
+static void test_cannot_start(void)
+{
+    char dir[512], work[600], missing[600], err[256];
+    if (check_temp_dir(dir, sizeof dir, "nostart") != 0)
+        return;
+    chmod(dir, 0711);
+    snprintf(work, sizeof work, "%s/run", dir);
+    snprintf(missing, sizeof missing, "%s/not-there", dir);
+    char *argv[] = { missing, NULL };
+    SandboxSpec spec = { .argv = argv, .workdir = work, .timeout = 5, .answer_max = 64,
+                         .output_max = 4096, .memory_mb = 48, .max_procs = 0, .init = true };
+    SandboxResult res;
+    CHECK_EQ_INT(sandbox_run(&spec, &res, err, sizeof err), 0);
+    CHECK_EQ_INT(res.exit_code, 127);
+    CHECK(!res.timed_out && res.signal == 0);
+    sandbox_result_free(&res);
+    if (jail_namespaces()) {
+        const char *visible[] = { missing, NULL };
+        char *sh[] = { "/bin/sh", "-c", "exit 0", NULL };
+        spec.argv = sh;
+        spec.visible = visible;
+        CHECK_EQ_INT(sandbox_run(&spec, &res, err, sizeof err), 0);
+        CHECK_EQ_INT(res.exit_code, 125);
+        CHECK_STR_CONTAINS(res.output, "jail: ");
+        sandbox_result_free(&res);
+    }
+    check_remove_tree(dir);
+}
+
 static const CheckTest tests[] = {
+    CHECK_TEST(test_cannot_start),
     CHECK_TEST(test_remove_deep_tree), CHECK_TEST(test_take_file),
     CHECK_TEST(test_memory_watch),     CHECK_TEST(test_memory_stops_hog), CHECK_TEST(test_small_program_runs),
     CHECK_TEST(test_oom_score_adj),    CHECK_TEST(test_killed_reported),  CHECK_TEST(test_cpu_limit),
