@@ -68,6 +68,7 @@ FORMAT     ?=
 CLASSROOM  ?=
 SUBMISSIONS ?=
 JOBS       ?=
+PREVIOUS   ?=
 
 # Where the builds go: OUT_ROOT=dir builds into dir/build and dir/asan (the
 # portability suite builds with a second compiler beside the first).
@@ -105,7 +106,7 @@ help:
 	@echo "make compare [SUBMISSION=dir] [SCENE=file]"
 	@echo "make grade   [SUBMISSION=dir] [PART=1|2|3a|3b|4|5] [RESULTS=file]"
 	@echo "             [FORMAT=gradescope|prairielearn] [CLASSROOM=file]"
-	@echo "make grade-all SUBMISSIONS=dir [OUT=dir] [JOBS=n]"
+	@echo "make grade-all SUBMISSIONS=dir [OUT=dir] [JOBS=n] [PREVIOUS=dir]"
 	@echo "make sort-submissions FROM=download.zip|dir TO=newdir"
 	@echo "make gradescope | prairielearn | student-kit | bench | fuzz | sanitize-grader | handouts | test | clean"
 	@echo "V=1 after any of them echoes the build's compiler commands"
@@ -252,6 +253,8 @@ GRADER_LIB_SRC = tests/grader/cases.c tests/grader/check.c tests/grader/sandbox.
                  tests/grader/report_render.c tests/grader/report_html.c tests/grader/markup.c \
                  $(wildcard tests/grader/fig*.c)
 GRADER_LIB_SRC += tests/grader/report_classroom.c tests/grader/report_prairielearn.c
+# The class page of grade --all (report_class.h) and the CSV files' fields.
+GRADER_LIB_SRC += tests/grader/report_class.c $(wildcard tests/grader/class_*.c) tests/grader/csv.c
 GRADER_HDR = $(wildcard tests/grader/*.h) $(KIT_HDR)
 GRADER_OBJ = $(GRADER_LIB_SRC:tests/grader/%.c=$(BUILD)/grader/%.o)
 HARNESS    = $(BUILD)/grader/harness_1.o $(BUILD)/grader/harness_2.o \
@@ -342,8 +345,9 @@ grade: grader $(REPORT_REF)
 	    $(if $(CLASSROOM),--classroom "$(CLASSROOM)") --report out/report
 
 grade-all: grader $(REPORT_REF)
-	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade-all SUBMISSIONS=dir [OUT=dir]"; exit 2; }
-	@$(BUILD)/bin/grade --all "$(SUBMISSIONS)" --out "$(if $(OUT),$(OUT),out/grades)" $(if $(JOBS),--jobs $(JOBS))
+	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade-all SUBMISSIONS=dir [OUT=dir] [PREVIOUS=dir]"; exit 2; }
+	@$(BUILD)/bin/grade --all "$(SUBMISSIONS)" --out "$(if $(OUT),$(OUT),out/grades)" $(if $(JOBS),--jobs $(JOBS)) \
+	    $(if $(PREVIOUS),--previous "$(PREVIOUS)")
 
 # A class's download from Canvas, Moodle or Blackboard (one zip, or folder,
 # of every student's files, each name carrying its student), sorted into
