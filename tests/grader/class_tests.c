@@ -29,13 +29,18 @@ static void answer_figure(Markup *m, const Test *t, int c, const double *got)
 static void common_answer(Markup *m, const ClassView *v, const ClassTestRow *row, const Test *t)
 {
     const ClassFail *f = row->common;
-    mk_printf(m, "<p>The wrong answer most of them gave, to case %d of %d", f->c + 1, t->ncases);
+    char which[64] = "";
     if (t->kind == KIND_IMAGE && t->image_nx > 0)
-        mk_printf(m, " (pixel i = %d, j = %d)", f->c % t->image_nx, f->c / t->image_nx);
-    if (row->ncommon == 1)
-        mk_printf(m, ": no two gave the same (%d different), so this is the first's, ", row->answers);
+        snprintf(which, sizeof which, " (pixel i = %d, j = %d)", f->c % t->image_nx, f->c / t->image_nx);
+    if (row->answers == 1)
+        mk_printf(m, "<p>The one wrong answer given, to case %d of %d%s, by %d of them: ", f->c + 1,
+                  t->ncases, which, row->ncommon);
+    else if (row->ncommon > 1)
+        mk_printf(m, "<p>The most common wrong answer, to case %d of %d%s, given by %d of them (of %d "
+                     "different ones): ", f->c + 1, t->ncases, which, row->ncommon, row->answers);
     else
-        mk_printf(m, ", given by %d (of %d different wrong answers): ", row->ncommon, row->answers);
+        mk_printf(m, "<p>No two gave the same wrong answer (%d different); drawn, the first's, to "
+                     "case %d of %d%s: ", row->answers, f->c + 1, t->ncases, which);
     class_links(m, v, row->common_subs, row->ncommon, 12);
     mk_printf(m, ".</p>\n<figure class=\"case\">\n");
     answer_figure(m, t, f->c, f->got);

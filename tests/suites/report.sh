@@ -65,6 +65,7 @@ a data URI that is not base64|iVBORw0KGgo=|not base64!
 a PNG data URI that is not a PNG|iVBORw0KGgo=|AAAAAAAAAAA=
 a bare ampersand|x &amp; y|x \& y
 a link to a missing id|href="#a"|href="#nowhere"
+an address with a % not followed by two hex digits|href="#a"|href="a%2.html"
 a style sheet that loads a file|p{color:red}|p{background:url(a.png)}
 no doctype|<!DOCTYPE html>|
 a div closed with />|<figure class|<div/><figure class
