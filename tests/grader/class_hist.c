@@ -88,12 +88,14 @@ static double value_x(const Scores *s, double x)
     return HX0 + (x > 0 ? x / s->max : 0) * NBINS * HBAR;
 }
 
+/* Under the bars, a box from the first quartile to the third with a tick
+ * at the median (a box plot), and the three numbers above the bars. */
 static void quartile_marks(Markup *m, const Scores *s, double q1, double med, double q3)
 {
-    double bottom = HTOP + HPLOT;
-    svg_line(m, value_x(s, q1), HTOP - 4, value_x(s, q1), bottom, COL_GOT, 1.5, "4 3");
-    svg_line(m, value_x(s, q3), HTOP - 4, value_x(s, q3), bottom, COL_GOT, 1.5, "4 3");
-    svg_line(m, value_x(s, med), HTOP - 8, value_x(s, med), bottom, COL_GOT, 2.5, NULL);
+    double y = HTOP + HPLOT + 5, x1 = value_x(s, q1), x3 = value_x(s, q3);
+    svg_line(m, HX0, y + 5, value_x(s, s->max), y + 5, COL_GRID, 1, NULL);
+    svg_rect(m, x1, y, x3 - x1 > 2 ? x3 - x1 : 2, 10, "#fde2d2", COL_GOT, 1.2);
+    svg_line(m, value_x(s, med), y - 2, value_x(s, med), y + 12, COL_GOT, 3, NULL);
     svg_text(m, HX0, 14, "start", 12, COL_TEXT, false, "median %s, quartiles %s and %s",
              points_text(med).s, points_text(q1).s, points_text(q3).s);
 }
@@ -118,8 +120,8 @@ static void histogram(Markup *m, const Scores *s)
         most = bins[b] > most ? bins[b] : most;
     char title[200];
     snprintf(title, sizeof title, "%s: how many submissions scored how many points", s->title);
-    double width = HX0 + (NBINS + 1) * HBAR + HGAP + 14, bottom = HTOP + HPLOT;
-    fig_begin(m, width, bottom + 34, title);
+    double width = HX0 + (NBINS + 1) * HBAR + HGAP + 14, bottom = HTOP + HPLOT, labels = bottom + 30;
+    fig_begin(m, width, labels + 20, title);
     for (int b = 0; b <= NBINS; b++) {
         double h = HPLOT * bins[b] / most, x = HX0 + b * HBAR + (b == NBINS ? HGAP : 0);
         if (bins[b] > 0)
@@ -129,12 +131,12 @@ static void histogram(Markup *m, const Scores *s)
     }
     svg_line(m, HX0, bottom, HX0 + NBINS * HBAR, bottom, COL_AXIS, 1, NULL);
     svg_line(m, HX0 + NBINS * HBAR + HGAP, bottom, width - 14, bottom, COL_AXIS, 1, NULL);
-    svg_text(m, HX0, bottom + 14, "middle", 11, COL_NOTE, false, "0");
-    svg_text(m, HX0 + NBINS * HBAR / 2, bottom + 14, "middle", 11, COL_NOTE, false, "%s",
+    svg_text(m, HX0, labels, "middle", 11, COL_NOTE, false, "0");
+    svg_text(m, HX0 + NBINS * HBAR / 2, labels, "middle", 11, COL_NOTE, false, "%s",
              points_text(s->max / 2).s);
-    svg_text(m, value_x(s, s->max), bottom + 14, "middle", 11, "#1a7f37", true, "%s",
+    svg_text(m, value_x(s, s->max), labels, "middle", 11, "#1a7f37", true, "%s",
              points_text(s->max).s);
-    svg_text(m, HX0 + NBINS * HBAR / 2, bottom + 29, "middle", 11, COL_NOTE, false,
+    svg_text(m, HX0 + NBINS * HBAR / 2, labels + 14, "middle", 11, COL_NOTE, false,
              "points (the green bar: full points)");
     svg_text(m, HX0 - 4, HTOP + 4, "end", 10, COL_NOTE, false, "%d", most);
     if (s->n > 0)
@@ -175,9 +177,10 @@ void class_scores(Markup *m, const ClassView *v)
         if (have[p])
             table_row(m, &all[p]);
     mk_printf(m, "</table>\n<p class=\"note\">Each histogram counts the submissions by their "
-                 "points, in tenths of the part's points; the green bar is full points. The solid "
-                 "line is the median, the dashed lines the quartiles (a quarter of the submissions "
-                 "scored less than the first, a quarter more than the third).</p>\n"
+                 "points, in tenths of the part's points; the green bar is full points. Under the "
+                 "bars, the orange box spans the quartiles (a quarter of the submissions scored "
+                 "less than its left end, a quarter more than its right end) and its tick is the "
+                 "median.</p>\n"
                  "<div class=\"hists\">\n");
     for (int p = 0; p <= NPARTS; p++) {
         if (!have[p])

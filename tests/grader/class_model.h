@@ -116,6 +116,7 @@ typedef struct {
     ClassBuilds builds;
     int compiled;              /* files handed to the compiler (records)  */
     double seconds, cpu;       /* the run's wall-clock and CPU time       */
+    double page_start;         /* when the page began to be counted       */
 } ClassView;
 
 /* The tests most failed that the page shows. */

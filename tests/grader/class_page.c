@@ -17,6 +17,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "class_model.h"
 #include "report.h"
+#include "sandbox.h"
 
 #include <string.h>
 #include <sys/stat.h>
@@ -30,7 +31,9 @@ static const char class_style[] =
     "table.causes td:first-child{text-align:right;font-weight:bold;width:4em}\n"
     "p.said{margin:0}p.handout{margin:.3em 0 0;color:#1a7f37;font-size:.9em}\n"
     "p.key{margin:.2em 0 0;color:#666;font-size:.85em}.note,.nocause{color:#555;font-size:.92em}\n"
-    "nav{margin:.4em 0 1em}nav a{margin-right:1.2em}\n";
+    "nav{margin:.4em 0 1em}nav a{margin-right:1.2em}\n"
+    ".tests{display:grid;grid-template-columns:repeat(auto-fill,minmax(540px,1fr));gap:0 16px}\n"
+    ".tests article.test{margin:.6em 0}.tests svg.fig{width:100%}\n";
 
 /* Whether submission s needs a person (class_sections.c lists why). */
 static bool needs_person(const ClassSub *s)
@@ -137,7 +140,9 @@ static void cost(Markup *m, const ClassView *v)
     else
         mk_printf(m, "<tr><td>compiled</td><td class=\"num\">%d</td><td>stage files, each for "
                      "itself</td></tr>\n", v->compiled);
-    mk_printf(m, "</table>\n");
+    mk_printf(m, "<tr><td>this page</td><td class=\"num\">%.2f s</td><td>reading what each "
+                 "grading found, counting it and drawing it (after the time above)</td></tr>\n"
+                 "</table>\n", sandbox_now() - v->page_start);
 }
 
 int class_page_write(const char *path, const ClassView *v, char *err, size_t errlen)

@@ -86,6 +86,8 @@ void class_tests(Markup *m, const ClassView *v)
                  "test's part built (the others could run no test). The figure is drawn as the "
                  "students' pages draw a failure, for the wrong answer most of them gave.</p>\n",
               v->nworst, v->nworst == 1 ? "" : "s");
+    mk_printf(m, "<div class=\"tests\">\n");
     for (int r = 0; r < v->nworst; r++)
         test_article(m, v, &v->worst[r], r);
+    mk_printf(m, "</div>\n");
 }

@@ -8,20 +8,13 @@
 #include "class_model.h"
 #include "build.h"
 #include "csv.h"
+#include "sandbox.h"
 
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
-#include <time.h>
 #include <unistd.h>
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
-}
 
 ClassRun *class_begin(const char *out, const char *previous)
 {
@@ -38,7 +31,7 @@ ClassRun *class_begin(const char *out, const char *previous)
     }
     snprintf(run->out, sizeof run->out, "%s", out);
     snprintf(run->previous, sizeof run->previous, "%s", previous ? previous : "");
-    run->start = now();
+    run->start = sandbox_now();
     return run;
 }
 
@@ -371,8 +364,8 @@ int class_finish(ClassRun *run, const GradeConfig *cfg, const ClassBuilds *build
 {
     if (!run)
         return -1;
-    ClassView v = { .run = run, .cfg = cfg, .builds = *builds };
-    v.seconds = now() - run->start;
+    ClassView v = { .run = run, .cfg = cfg, .builds = *builds, .page_start = sandbox_now() };
+    v.seconds = v.page_start - run->start;
     v.cpu = cpu_seconds();
     TestList tests = { 0 };
     bool failures = false;

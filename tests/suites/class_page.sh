@@ -360,7 +360,7 @@ awk "$csv_awk"'NR == 2 { n = parse($0); F[4]++; line = ""    # every field writt
         $0 = line }
     { print }' "$csv" >"$tmp/bad-count.csv"
 csv_causes "$tmp/bad-count.csv" >"$tmp/bad.got"
-check "a count changed in causes.csv is seen" sh -c "! cmp -s '$tmp/causes.want' '$tmp/bad.got'"
+check "a count changed in causes.csv is seen" grep -q '^count 1 ' "$tmp/bad.got"
 sed 's/href="p1-degrees-to-tan.html">p1-degrees-to-tan/href="p1-float.html">p1-degrees-to-tan/' \
     "$page" >"$tmp/bad-link.html"
 page_causes "$tmp/bad-link.html" >"$tmp/bad.got"
@@ -368,11 +368,11 @@ check "a link to another submission's page is seen" sh -c "! cmp -s '$tmp/causes
 sed 's/href="p1-degrees-to-tan.html">p1-degrees-to-tan</href="p1-degrees-to-tan.html">p1-degrees-to-tax</' \
     "$page" >"$tmp/bad-name.html"
 page_causes "$tmp/bad-name.html" >"$tmp/bad.got"
-check "a name written wrong is seen" sh -c "! cmp -s '$tmp/causes.want' '$tmp/bad.got'"
+check "a name written wrong is seen" grep -q '^name 1 degrees-as-radians: p1-degrees-to-tax ' "$tmp/bad.got"
 sed 's/\(data-cause="degrees-as-radians" data-count="\)\([0-9]*\)"><td class="num">[0-9]*</\1\2"><td class="num">99</' \
     "$page" >"$tmp/bad-shown.html"
 page_causes "$tmp/bad-shown.html" >"$tmp/bad.got"
-check "a count shown wrong on the page is seen" sh -c "! cmp -s '$tmp/causes.want' '$tmp/bad.got'"
+check "a count shown wrong on the page is seen" grep -q '^count 1 degrees-as-radians [0-9]* 99 ' "$tmp/bad.got"
 awk '/data-failed="/ && !done { sub(/data-failed="[0-9]*"/, "data-failed=\"0\""); done = 1 } { print }' \
     "$page" >"$tmp/bad-tests.html"
 page_tests "$tmp/bad-tests.html" >"$tmp/bad.tests"
