@@ -64,8 +64,6 @@ void class_add(ClassRun *run, int k, const char *name, const double *values, int
         s->hard = values[NPARTS];
         s->total = values[NPARTS + 1];
     }
-    char path[PATH_MAX + 32];
-    s->record = class_record_read(class_record_path(run, k, path, sizeof path), s);
 }
 
 /* ---- the causes ------------------------------------------------------------- */
@@ -370,6 +368,9 @@ int class_finish(ClassRun *run, const GradeConfig *cfg, const ClassBuilds *build
     TestList tests = { 0 };
     bool failures = false;
     for (int s = 0; s < run->n; s++) {
+        char path[PATH_MAX + 32];
+        class_record_path(run, s, path, sizeof path);
+        run->subs[s].record = class_record_read(path, &run->subs[s]);
         failures = failures || run->subs[s].nfails > 0;
         for (int p = 0; p < NPARTS; p++)
             v.compiled += run->subs[s].part[p].graded && !run->subs[s].part[p].refused;
