@@ -440,7 +440,7 @@ UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
 # student kit builds three of these in every run of its suite.  The object
 # is made again whenever the libraries are, as the program was before.
 # (Not the grader's units nor test_serve: their own rules are below.)
-GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers lmsname terminal
+GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers lmsname terminal csv
 UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) $(BUILD)/tests/test_serve \
                          $(BUILD)/tests/test_hidden $(BUILD)/tests/test_figures,$(UNIT_BIN))
 $(UNIT_PLAIN:$(BUILD)/tests/%=$(BUILD)/tests/obj/%.o): $(BUILD)/tests/obj/%.o: tests/unit/%.c \
