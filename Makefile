@@ -594,7 +594,7 @@ $(ASAN)/bin/grade: $(ASAN)/grader/grade_main.o $(GRADE_EXTRA_ASAN) $(GRADER_ASAN
 $(ASAN)/bin/sortsubs: $(ASAN)/grader/sortsubs_main.o $(GRADER_ASAN_OBJ) $(ASAN)/tools/libtools.a \
                       $(ASAN)/kit/libkit.a | $$(@D)/.
 	$(Q)$(CC) $(SAN_LINK) $^ -o $@ $(LDLIBS)
-SANITIZE_SUITES = grader.sh report.sh grade_store.sh limits.sh signals.sh sort_submissions.sh
+SANITIZE_SUITES = grader.sh report.sh class_page.sh grade_store.sh limits.sh signals.sh sort_submissions.sh
 ifneq ($(wildcard tests/suites/grader.sh),)
 sanitize-grader: all $(ASAN)/bin/grade $(ASAN)/bin/sortsubs
 	@echo "grading with $(ASAN)/bin/grade, sorting with $(ASAN)/bin/sortsubs (address, undefined-behaviour and leak sanitizers)"

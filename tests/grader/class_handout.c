@@ -45,7 +45,7 @@ static bool cell_begins(const char *cell, size_t n, const char *text)
 }
 
 /* The row at line, when it is a mistake's and its last cell begins text:
- * its first cell, less " (above)", into mistake. */
+ * its first cell, less " (above)" and its backquotes, into mistake. */
 static bool row_lists(const char *line, const char *text, char *mistake, size_t n)
 {
     const char *s = line + 1, *first = NULL, *last = NULL;
@@ -68,7 +68,12 @@ static bool row_lists(const char *line, const char *text, char *mistake, size_t 
         nfirst--;
     if (nfirst > 8 && strncmp(first + nfirst - 8, " (above)", 8) == 0)
         nfirst -= 8;
-    snprintf(mistake, n, "%.*s", (int)nfirst, first);
+    size_t used = 0;                    /* the cell as it reads: no backquotes */
+    for (size_t k = 0; k < nfirst && used + 1 < n; k++)
+        if (first[k] != '`')
+            mistake[used++] = first[k];
+    if (n > 0)
+        mistake[used] = '\0';
     return true;
 }
 

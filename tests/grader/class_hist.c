@@ -138,7 +138,6 @@ static void histogram(Markup *m, const Scores *s)
              points_text(s->max).s);
     svg_text(m, HX0 + NBINS * HBAR / 2, labels + 14, "middle", 11, COL_NOTE, false,
              "points (the green bar: full points)");
-    svg_text(m, HX0 - 4, HTOP + 4, "end", 10, COL_NOTE, false, "%d", most);
     if (s->n > 0)
         quartile_marks(m, s, class_quantile(s->x, s->n, 0.25), class_quantile(s->x, s->n, 0.5),
                        class_quantile(s->x, s->n, 0.75));

@@ -80,6 +80,18 @@ void class_links(Markup *m, const ClassView *v, const int *subs, int n, int max)
         mk_printf(m, " and %d more", n - max);
 }
 
+/* The length of a cause's first clause: its sentence up to the first
+ * colon, bracket, semicolon or full stop (what it is, before the evidence). */
+static size_t clause_length(const char *text)
+{
+    size_t n = 0;
+    while (text[n] && !strchr(":(;\n", text[n]) && !(text[n] == '.' && (text[n + 1] == ' ' || !text[n + 1])))
+        n++;
+    while (n > 0 && text[n - 1] == ' ')
+        n--;
+    return n;
+}
+
 /* The class in one paragraph: how many, full core marks, points lost, a
  * person needed, and the most common cause. */
 static void summary(Markup *m, const ClassView *v)
@@ -115,9 +127,10 @@ static void summary(Markup *m, const ClassView *v)
     for (int r = 0; r < v->ncauses; r++)
         top = top < 0 || v->causes[r].count > v->causes[top].count ? r : top;
     if (top >= 0) {
+        const char *text = v->causes[top].text;
         mk_printf(m, " The most common cause, in %d: Part %s, &ldquo;", v->causes[top].count,
                   part_label(v->causes[top].part));
-        mk_textf(m, "%.*s", (int)strcspn(v->causes[top].text, ":\n"), v->causes[top].text);
+        mk_textf(m, "%.*s", (int)clause_length(text), text);
         mk_printf(m, "&rdquo;.");
     }
     mk_printf(m, "</p>\n");
