@@ -61,6 +61,9 @@ void class_sub_free(ClassSub *s);
 struct ClassRun {
     char out[PATH_MAX];
     char previous[PATH_MAX];   /* "" when none                           */
+    char *previous_csv;        /* its gradebook.csv as it was when the run
+                                  began (OUT may be the same folder), or
+                                  NULL when it could not be read          */
     char records[PATH_MAX];
     double start;              /* monotonic seconds at class_begin       */
     int n;

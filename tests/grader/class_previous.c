@@ -3,12 +3,13 @@
  * previous grade-all's OUT): its gradebook.csv read back, each submission's
  * points then and now, and the submissions whose score changed (a regrade
  * after changing tests/weights.conf or the tests), largest change first.
- * A submission is the same one when its folder has the same name.
+ * A submission is the same one when its folder has the same name.  The
+ * gradebook is read as it was when the run began (report_class.c), so that
+ * the previous run's OUT may be this one's.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "class_model.h"
 #include "csv.h"
-#include "kit/savefile.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -79,17 +80,13 @@ static void take_value(void *ctx, int k, char *field)
     free(field);
 }
 
-/* The previous gradebook's rows; -1 when it cannot be read. */
-static int read_before(const char *path, Before **rows, int *n)
+/* The rows of the previous gradebook, text; -1 when it is not one. */
+static int read_before(const char *text, Before **rows, int *n)
 {
-    size_t len;
-    char *text = kit_load_file(path, 64u << 20, &len);
     const char *p = text;
     Reading r = { .ncolumns = 0 };
-    if (!text || !read_line(&p, take_header, &r) || r.ncolumns < 2 || r.column[0] != -1) {
-        free(text);
+    if (!text || !read_line(&p, take_header, &r) || r.ncolumns < 2 || r.column[0] != -1)
         return -1;
-    }
     *rows = NULL;
     *n = 0;
     while (*p) {
@@ -105,7 +102,6 @@ static int read_before(const char *path, Before **rows, int *n)
         }
         (*rows)[(*n)++] = r.row;
     }
-    free(text);
     return 0;
 }
 
@@ -183,7 +179,7 @@ void class_previous_read(ClassView *v)
     snprintf(path, sizeof path, "%s/gradebook.csv", v->run->previous);
     Before *rows = NULL;
     int n = 0;
-    if (read_before(path, &rows, &n) != 0) {
+    if (read_before(v->run->previous_csv, &rows, &n) != 0) {
         snprintf(pr->note, sizeof pr->note, "%s could not be read as a gradebook: nothing was "
                  "compared", path);
         return;

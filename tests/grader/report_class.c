@@ -9,6 +9,7 @@
 #include "build.h"
 #include "csv.h"
 #include "sandbox.h"
+#include "kit/savefile.h"
 
 #include <errno.h>
 #include <stdlib.h>
@@ -31,6 +32,12 @@ ClassRun *class_begin(const char *out, const char *previous)
     }
     snprintf(run->out, sizeof run->out, "%s", out);
     snprintf(run->previous, sizeof run->previous, "%s", previous ? previous : "");
+    if (previous) {
+        char path[PATH_MAX + 16];
+        size_t len;
+        snprintf(path, sizeof path, "%s/gradebook.csv", previous);
+        run->previous_csv = kit_load_file(path, 64u << 20, &len);
+    }
     run->start = sandbox_now();
     return run;
 }
@@ -399,6 +406,7 @@ int class_finish(ClassRun *run, const GradeConfig *cfg, const ClassBuilds *build
     for (int s = 0; s < run->n; s++)
         class_sub_free(&run->subs[s]);
     free(run->subs);
+    free(run->previous_csv);
     build_rmtree(run->records);
     free(run);
     return status;

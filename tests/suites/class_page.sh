@@ -426,6 +426,13 @@ check "with --previous: each score that changed, from what to what, as the two g
 check "with --previous: the folder renamed is counted new, and the one gone named" \
     sh -c "grep -q ' 1 is new\. 1 graded then is not here now: <code>p1-float</code>' '$tmp/after/index.html'"
 check "with --previous: the page passes htmlcheck" sh -c "'$check_html' '$tmp/after/index.html' >/dev/null 2>&1"
+# A regrade into the previous run's own folder compares with its gradebook
+# as it was before the regrade wrote over it.
+cp -R "$tmp/before" "$tmp/inplace"
+$grade --all "$small" --out "$tmp/inplace" --weights "$tmp/p1x2.conf" --jobs 2 --previous "$tmp/inplace" \
+    >"$tmp/inplace.out" 2>&1
+check "with --previous the output folder itself: the changes from the gradebook it held" \
+    changes_agree "$tmp/before/gradebook.csv" "$tmp/inplace/gradebook.csv" "$tmp/inplace/index.html"
 $grade --all "$small" --out "$tmp/nowhere-prev" --weights "$tmp/p1.conf" --jobs 2 --previous "$tmp/no-such" \
     >"$tmp/noprev.out" 2>&1
 check "with a --previous that holds no gradebook, the page says so and compares nothing" \
