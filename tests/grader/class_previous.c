@@ -257,8 +257,12 @@ void class_changes(Markup *m, const ClassView *v)
     }
     mk_printf(m, "Compared with <code>");
     mk_text(m, v->run->previous);
-    mk_printf(m, "</code>: %d submission%s graded in both runs; the score of %d changed.",
-              pr->compared, pr->compared == 1 ? "" : "s", pr->nchanges);
+    mk_printf(m, "</code>: %d submission%s graded in both runs; ", pr->compared,
+              pr->compared == 1 ? "" : "s");
+    if (pr->nchanges == 0)
+        mk_printf(m, "no score changed.");
+    else
+        mk_printf(m, "the score of %d changed.", pr->nchanges);
     if (pr->nnew)
         mk_printf(m, " %d %s new.", pr->nnew, pr->nnew == 1 ? "is" : "are");
     if (pr->ngone) {
