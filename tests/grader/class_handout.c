@@ -10,6 +10,7 @@
  * A cause whose sentence begins with one of those is that row's mistake.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "class_model.h"
 #include "build.h"
 #include "kit/savefile.h"

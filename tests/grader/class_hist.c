@@ -9,6 +9,7 @@
  * grader error).
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "class_model.h"
 #include "figures.h"
 

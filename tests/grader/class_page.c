@@ -15,6 +15,7 @@
  * a link to a submission's page has its name percent-encoded.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "class_model.h"
 #include "report.h"
 #include "sandbox.h"

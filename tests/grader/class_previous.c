@@ -8,6 +8,7 @@
  * the previous run's OUT may be this one's.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "class_model.h"
 #include "csv.h"
 

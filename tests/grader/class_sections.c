@@ -5,6 +5,7 @@
  * build, was refused or is missing, tests out of time), with the reason.
  */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "class_model.h"
 #include "build.h"
 #include "../tools/json_read.h"
