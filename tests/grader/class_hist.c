@@ -153,10 +153,11 @@ static void table_row(Markup *m, const Scores *s)
            q3 = class_quantile(s->x, s->n, 0.75);
     int full = full_count(s);
     mk_printf(m, "<tr data-scores=\"%s\" data-n=\"%d\" data-median=\"%.10g\" data-q1=\"%.10g\" "
-                 "data-q3=\"%.10g\" data-full=\"%d\"><td><a href=\"#hist-%s\">", s->id, s->n, med, q1,
-              q3, full, s->id);
+                 "data-q3=\"%.10g\" data-full=\"%d\"><td>", s->id, s->n, med, q1, q3, full);
+    if (s->n > 0)                       /* its histogram, drawn below */
+        mk_printf(m, "<a href=\"#hist-%s\">", s->id);
     mk_text(m, s->title);
-    mk_printf(m, "</a></td><td class=\"num\">%s</td>", points_text(s->max).s);
+    mk_printf(m, "%s</td><td class=\"num\">%s</td>", s->n > 0 ? "</a>" : "", points_text(s->max).s);
     if (s->n == 0)
         mk_printf(m, "<td colspan=\"3\">no scores</td></tr>\n");
     else
@@ -176,14 +177,18 @@ void class_scores(Markup *m, const ClassView *v)
     for (int p = 0; p <= NPARTS; p++)
         if (have[p])
             table_row(m, &all[p]);
-    mk_printf(m, "</table>\n<p class=\"note\">Each histogram counts the submissions by their "
+    int drawn = 0;
+    for (int p = 0; p <= NPARTS; p++)
+        drawn += have[p] && all[p].n > 0;
+    mk_printf(m, "</table>\n");
+    if (drawn > 0)
+        mk_printf(m, "<p class=\"note\">Each histogram counts the submissions by their "
                  "points, in tenths of the part's points; the green bar is full points. Under the "
                  "bars, the orange box spans the quartiles (a quarter of the submissions scored "
                  "less than its left end, a quarter more than its right end) and its tick is the "
-                 "median.</p>\n"
-                 "<div class=\"hists\">\n");
+                 "median.</p>\n<div class=\"hists\">\n");
     for (int p = 0; p <= NPARTS; p++) {
-        if (!have[p])
+        if (!have[p] || all[p].n == 0)
             continue;
         mk_printf(m, "<figure class=\"hist\" id=\"hist-%s\">\n", all[p].id);
         histogram(m, &all[p]);
@@ -191,7 +196,8 @@ void class_scores(Markup *m, const ClassView *v)
         mk_text(m, all[p].title);
         mk_printf(m, "</figcaption></figure>\n");
     }
-    mk_printf(m, "</div>\n");
+    if (drawn > 0)
+        mk_printf(m, "</div>\n");
     for (int p = 0; p <= NPARTS; p++)
         free(have[p] ? all[p].x : NULL);
 }

@@ -461,6 +461,17 @@ check "a class with no points lost: the page says there is nothing to diagnose, 
            grep -q 'None: every submission.s files were there and built' '$tmp/allfull-out/index.html' &&
            [ \$(wc -l <'$tmp/allfull-out/causes.csv') -eq 1 ]"
 
+# A class the grader could not grade at all (no compiler on PATH): each
+# submission needs a person, with the grader's own message, and the page
+# still passes.
+CC=no-such-cc $grade --all "$tmp/allfull" --out "$tmp/nocc-out" --weights "$tmp/p1.conf" --jobs 2 \
+    >"$tmp/nocc.out" 2>&1
+check "a class with grader errors: each submission needs a person, with the grader's message" \
+    sh -c "[ \$(grep -c 'data-need=\"grader error\"><td>.*no C compiler: no-such-cc is not on PATH' \
+               '$tmp/nocc-out/index.html') -eq 2 ]"
+check "a class with grader errors: the page passes htmlcheck" \
+    sh -c "'$check_html' '$tmp/nocc-out/index.html' >/dev/null 2>&1"
+
 # ---- in a browser, when one is installed -------------------------------------------------------------
 page_renders "$page" "the class page" "$tmp"
 
