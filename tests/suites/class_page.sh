@@ -240,11 +240,11 @@ page_tests() {
     awk "$csv_awk"'
         /<article class="test" id="most-/ { b = $0; sub(/.*data-built="/, "", b); sub(/".*/, "", b)
                                             f = $0; sub(/.*data-failed="/, "", f); sub(/".*/, "", f); next }
-        /^<h4>/ && b != "" { t = $0; sub(/^<h4>/, "", t); sub(/<(span|\/h4).*/, "", t)
+        /^<h4>/ && b != "" { t = $0; sub(/^<h4>/, "", t); sub(/<span.*|<\/h4>.*/, "", t)
             gsub(/&lt;/, "<", t); gsub(/&gt;/, ">", t); gsub(/&quot;/, "\"", t); gsub(/&#39;/, "\047", t); gsub(/&amp;/, "\\&", t) }
         /^<p>Passed by <strong>/ && b != "" { s = $0; sub(/^<p>Passed by <strong>/, "", s); split(s, w, " ")
             printf "%s\t%s\t%s\t%s\t%s\n", t, b, f, w[1], w[3] }
-        /^<p>(The|No two)/ && b != "" { s = $0
+        /^<p>The |^<p>No two / && b != "" { s = $0
             while (match(s, /<a href="[^"]*">/)) { h = substr(s, RSTART + 9, RLENGTH - 11); s = substr(s, RSTART + RLENGTH)
                 h = unpercent(h); sub(/\.html$/, "", h); printf "C\t%s\t%s\n", t, h } }
         /^<\/article>/ { b = "" }' "$1"
