@@ -28,9 +28,10 @@
 typedef struct ClassRun ClassRun;
 
 /* Starts a class in the output directory out; previous is a previous run's
- * output directory to compare with, or NULL.  Makes a private directory
- * for the records.  NULL (said on stderr) when it cannot: grading goes on
- * without a class page. */
+ * output directory to compare with, or NULL: its gradebook.csv is read now,
+ * before this run writes over it when out is the same folder.  Makes a
+ * private directory for the records.  NULL (said on stderr) when it
+ * cannot: grading goes on without a class page. */
 ClassRun *class_begin(const char *out, const char *previous);
 
 /* Where submission k's grading writes its record (buf, n bytes). */
