@@ -68,6 +68,7 @@ FORMAT     ?=
 CLASSROOM  ?=
 SUBMISSIONS ?=
 JOBS       ?=
+PREVIOUS   ?=
 
 # Where the builds go: OUT_ROOT=dir builds into dir/build and dir/asan (the
 # portability suite builds with a second compiler beside the first).
@@ -105,7 +106,7 @@ help:
 	@echo "make compare [SUBMISSION=dir] [SCENE=file]"
 	@echo "make grade   [SUBMISSION=dir] [PART=1|2|3a|3b|4|5] [RESULTS=file]"
 	@echo "             [FORMAT=gradescope|prairielearn] [CLASSROOM=file]"
-	@echo "make grade-all SUBMISSIONS=dir [OUT=dir] [JOBS=n]"
+	@echo "make grade-all SUBMISSIONS=dir [OUT=dir] [JOBS=n] [PREVIOUS=dir]"
 	@echo "make sort-submissions FROM=download.zip|dir TO=newdir [MAX_MB=n] [MAX_RATIO=n]"
 	@echo "make gradescope | prairielearn | student-kit | bench | fuzz | sanitize-grader | handouts | test | clean"
 	@echo "V=1 after any of them echoes the build's compiler commands"
@@ -247,6 +248,8 @@ GRADER_LIB_SRC = tests/grader/cases.c tests/grader/check.c tests/grader/sandbox.
                  tests/grader/report_render.c tests/grader/report_html.c tests/grader/markup.c \
                  $(wildcard tests/grader/fig*.c)
 GRADER_LIB_SRC += tests/grader/report_classroom.c tests/grader/report_prairielearn.c
+# The class page of grade --all (report_class.h) and the CSV files' fields.
+GRADER_LIB_SRC += tests/grader/report_class.c $(wildcard tests/grader/class_*.c) tests/grader/csv.c
 GRADER_HDR = $(wildcard tests/grader/*.h) $(KIT_HDR)
 GRADER_OBJ = $(GRADER_LIB_SRC:tests/grader/%.c=$(BUILD)/grader/%.o)
 HARNESS    = $(BUILD)/grader/harness_1.o $(BUILD)/grader/harness_2.o \
@@ -336,8 +339,9 @@ grade: grader $(REPORT_REF)
 	    $(if $(CLASSROOM),--classroom "$(CLASSROOM)") --report out/report
 
 grade-all: grader $(REPORT_REF)
-	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade-all SUBMISSIONS=dir [OUT=dir]"; exit 2; }
-	@$(BUILD)/bin/grade --all "$(SUBMISSIONS)" --out "$(if $(OUT),$(OUT),out/grades)" $(if $(JOBS),--jobs $(JOBS))
+	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade-all SUBMISSIONS=dir [OUT=dir] [PREVIOUS=dir]"; exit 2; }
+	@$(BUILD)/bin/grade --all "$(SUBMISSIONS)" --out "$(if $(OUT),$(OUT),out/grades)" $(if $(JOBS),--jobs $(JOBS)) \
+	    $(if $(PREVIOUS),--previous "$(PREVIOUS)")
 
 # A class's download from Canvas, Moodle or Blackboard (one zip, or folder,
 # of every student's files, each name carrying its student), sorted into
@@ -426,7 +430,7 @@ $(ASAN)/sub/labs/%.o: labs/%.c $(KIT_HDR) | $$(@D)/.
 UNIT_LIBS  = $(if $(HAVE_ORACLE),$(BUILD)/oracle/liboracle.a) $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
 UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
 # (Not the grader's units: their own rules are below.)
-GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers lmsname terminal
+GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers lmsname terminal csv
 UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) \
                          $(BUILD)/tests/test_hidden $(BUILD)/tests/test_figures,$(UNIT_BIN))
 $(UNIT_PLAIN): $(BUILD)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS) | $$(@D)/.
@@ -574,7 +578,7 @@ $(ASAN)/bin/grade: $(ASAN)/grader/grade_main.o $(GRADE_EXTRA_ASAN) $(GRADER_ASAN
 $(ASAN)/bin/sortsubs: $(ASAN)/grader/sortsubs_main.o $(GRADER_ASAN_OBJ) $(ASAN)/tools/libtools.a \
                       $(ASAN)/kit/libkit.a | $$(@D)/.
 	$(Q)$(CC) $(SAN_LINK) $^ -o $@ $(LDLIBS)
-SANITIZE_SUITES = grader.sh report.sh limits.sh signals.sh jail.sh sort_submissions.sh
+SANITIZE_SUITES = grader.sh report.sh class_page.sh limits.sh signals.sh jail.sh sort_submissions.sh
 ifneq ($(wildcard tests/suites/grader.sh),)
 sanitize-grader: all $(ASAN)/bin/grade $(ASAN)/bin/sortsubs
 	@echo "grading with $(ASAN)/bin/grade, sorting with $(ASAN)/bin/sortsubs (address, undefined-behaviour and leak sanitizers)"

@@ -8,9 +8,11 @@
  *       are lost, 2 when the grader itself could not run.  --report also
  *       writes the page with pictures, DIR/index.html (--report-file: FILE);
  *       a page that cannot be written is reported and changes nothing else.
- *   grade --all DIR [--out DIR] [--jobs N]
+ *   grade --all DIR [--out DIR] [--jobs N] [--previous DIR]
  *       grades every subdirectory of DIR, in parallel; writes
- *       OUT/gradebook.csv, OUT/<submission>.json and OUT/<submission>.html.
+ *       OUT/gradebook.csv, OUT/<submission>.json and OUT/<submission>.html,
+ *       then the class page, OUT/index.html, and OUT/causes.csv
+ *       (report_class.h), comparing with the run whose OUT was --previous.
  *   --weights FILE reads the points and parts from FILE instead of
  *       tests/weights.conf (either form).
  *   --format gradescope|prairielearn: the form of the --results file
@@ -26,10 +28,12 @@
 #include "build.h"
 #include "lmsname.h"
 #include "config.h"
+#include "csv.h"
 #include "grade.h"
 #include "grader.h"
 #include "jail.h"
 #include "report.h"
+#include "report_class.h"
 #include "report_classroom.h"
 #include "report_prairielearn.h"
 #include "sandbox.h"
@@ -55,7 +59,7 @@ static void usage(void)
             "usage: grade [--submission DIR] [--part 1|2|3a|3b|4|5] [--results FILE] [--quiet]\n"
             "             [--format gradescope|prairielearn] [--classroom FILE]\n"
             "             [--report DIR | --report-file FILE] [--cost] [--verbose]\n"
-            "       grade --all DIR [--out DIR] [--jobs N]\n"
+            "       grade --all DIR [--out DIR] [--jobs N] [--previous DIR]\n"
             "       grade --jail    (says where the submissions' code runs)\n"
             "       either with --weights FILE (default tests/weights.conf)\n"
             "exit status: 0 full marks, 1 points lost, 2 the grader could not run\n");
@@ -66,6 +70,10 @@ static void usage(void)
 static bool results_prairielearn;
 static const char *classroom_path;
 static bool show_cost;             /* --cost: where grading's CPU time went */
+/* The class page (report_class.h): where grade --all's child writes its
+ * record (--class-record), and the previous run's OUT (--previous). */
+static const char *class_record;
+static const char *previous_out;
 static bool verbose;               /* --verbose: progress on stderr           */
 
 static int fail(const char *results, const char *fmt, const char *what)
@@ -298,6 +306,8 @@ static int grade_one(const char *submission, const char *part, const char *resul
     }
     if (page)
         write_page(page, &g, &cfg, &bc, submission, kept[0] ? kept : NULL, quiet);
+    if (class_record && class_record_write(class_record, &g, cfg.timeout, err, sizeof err) != 0)
+        fprintf(stderr, "grade: %s\n", err);          /* the class page lacks it; nothing else */
     if (kept[0])
         build_rmtree(kept);
     if (summary) {                  /* every part's core points, for grade --all */
@@ -330,30 +340,6 @@ typedef struct {
 static int by_name(const void *a, const void *b)
 {
     return strcmp(*(char *const *)a, *(char *const *)b);
-}
-
-/* One field of the gradebook, quoted when it holds a comma or a quote.  A
- * field that starts with =, +, -, @, a tab or a carriage return is written
- * after an apostrophe, quoted: a spreadsheet would otherwise take a folder
- * named "=HYPERLINK(...)" for a formula (OWASP's advice on CSV injection).
- * Control bytes (a line break, an escape that would drive the terminal
- * that shows the file) are written as \xHH.  The .json and .html keep the
- * name as it is. */
-static void csv_field(FILE *f, const char *s)
-{
-    bool formula = s[0] && strchr("=+-@\t\r", s[0]);
-    bool quoted = formula || strpbrk(s, ",\"");
-    if (quoted)
-        fputs(formula ? "\"'" : "\"", f);
-    for (; *s; s++) {
-        unsigned char c = (unsigned char)*s;
-        if (c < 0x20 || c == 0x7f)
-            fprintf(f, "\\x%02x", c);
-        else
-            fputs(c == '"' ? "\"\"" : (char[]){ (char)c, 0 }, f);
-    }
-    if (quoted)
-        fputc('"', f);
 }
 
 /* What a grade --all run's memo holds: entries with an object (distinct
@@ -520,6 +506,7 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     if (!getcwd(here, sizeof here) || jail_make_private(here, err, sizeof err) != 0 ||
         jail_make_private(dir, err, sizeof err) != 0 || jail_make_private(out, err, sizeof err) != 0)
         return fail(NULL, "%s", err);
+    ClassRun *class_run = class_begin(out, previous_out);      /* the class page */
 
     /* As root, each distinct stage file is compiled once (memo.h), in a
      * directory only root may enter; as another user every file is
@@ -553,6 +540,9 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
             snprintf(sub, sizeof sub, "%s/%s", dir, names[next]);
             snprintf(res, sizeof res, "%s/%s.json", out, names[next]);
             snprintf(page, sizeof page, "%s/%s.html", out, names[next]);
+            char record[PATH_MAX];
+            if (class_run)
+                class_record_path(class_run, next, record, sizeof record);
             /* As root, a free place, and with it the id the code runs as. */
             j->slot = 0;
             while (busy && busy[j->slot])
@@ -579,6 +569,10 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
                 if (user[0]) {
                     argv[argc++] = "--sandbox-user";
                     argv[argc++] = (char *)user;
+                }
+                if (class_run) {
+                    argv[argc++] = "--class-record";
+                    argv[argc++] = record;
                 }
                 argv[argc] = NULL;
                 execv(self, argv);
@@ -653,6 +647,7 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
             s += used;
         }
         ok = ok && sscanf(s, "%d", &st) == 1;
+        class_add(class_run, k, j->name, ok ? v : NULL, ok ? st : j->status, none);
         csv_field(f, j->name);
         if (ok) {
             for (int p = 0; p < NPARTS; p++)
@@ -723,6 +718,7 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
                nempty == 1 ? "its" : "each one's", empty, nempty > 4 ? ", ..." : "");
     printf("graded %d submission%s: wrote %s, and one .json and one .html (the report page) %s\n",
            n, n == 1 ? "" : "s", csv, n == 1 ? "for it" : "each");
+    class_finish(class_run, &cfg, &(ClassBuilds){ built, files }, load_tests);
     return worst;
 }
 
@@ -779,6 +775,10 @@ int main(int argc, char **argv)
             format = v, k++;
         else if (!strcmp(a, "--memo") && v)
             memo_dir = v, k++;
+        else if (!strcmp(a, "--class-record") && v)        /* from grade --all */
+            class_record = v, k++;
+        else if (!strcmp(a, "--previous") && v)
+            previous_out = *v ? v : NULL, k++;
         else if (!strcmp(a, "--sandbox-user") && v) {      /* from grade --all, as root */
             char *end;
             unsigned long id = strtoul(v, &end, 10);

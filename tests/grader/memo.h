@@ -9,12 +9,7 @@
  * loaded, its shared object are kept there after they built, and a later
  * file of the same stage with the same bytes (compared whole, not by a
  * hash) uses them instead of compiling again.  Not as another user: there
- * the students' code runs as that user and could change what is kept.
- *
- * The kit's own tests keep such a directory from one run to the next
- * (GRADE_KEEP_BUILDS, set by tests/run.sh; as root only, and only when no
- * one else may write in it).  Its entries are keyed by everything that
- * decides the object, not by the file alone (build.c, store_find).
+ * the students' code may run as that user and could change what is kept.
  */
 #ifndef MEMO_H
 #define MEMO_H
@@ -51,9 +46,7 @@ int memo_keep(const MemoEntry *e, const char *name, const char *file);
 /* Keeps text as name in the entry; 0 on success. */
 int memo_keep_text(const MemoEntry *e, const char *name, const char *text);
 
-/* Counts a use of the entry: a byte more in its file "uses", and the
- * entry's time set to now (a memo kept from run to run drops the entries
- * a whole run did not use: tests/tools/ccmemo_keep.sh). */
+/* Counts a use of the entry: a byte more in its file "uses". */
 void memo_use(const MemoEntry *e);
 
 /* The text kept as name (malloc'd), or NULL. */

@@ -62,4 +62,12 @@ void report_renders_free(ReportRenders *rr);
 int report_html(const char *path, const Grade *g, const GradeConfig *cfg, const char *submission,
                 const ReportRenders *rr, char *err, size_t errlen);
 
+/* The style sheet of the pages (this one and the class page's). */
+extern const char report_style[];
+
+/* The case a failing test's figure shows, and the answer drawn: the first
+ * wrong case, else the case where the answers stopped (no answer: *got is
+ * NULL), else -1 (nothing to draw). */
+int report_figure_case(const Test *t, const TestResult *r, const double **got);
+
 #endif

@@ -29,7 +29,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-static const char *const style =
+const char report_style[] =
     "body{font-family:Helvetica,Arial,sans-serif;color:#222;background:#fff;margin:0 auto;"
     "max-width:1180px;padding:0 20px 40px;line-height:1.45}\n"
     "h1{font-size:1.7em;margin:.8em 0 .2em}h2{font-size:1.35em;margin:1.6em 0 .5em;"
@@ -269,10 +269,7 @@ static void renders(Markup *m, const ReportRenders *rr)
         mk_printf(m, "<p>Your picture is exactly the reference's.</p>\n");
 }
 
-/* The case a failing test's figure shows, and the answer drawn: the first
- * wrong case, else the case where the answers stopped (no answer), else -1
- * (nothing to draw). */
-static int figure_case_index(const Test *t, const TestResult *r, const double **got)
+int report_figure_case(const Test *t, const TestResult *r, const double **got)
 {
     const Answers *a = &r->answers;
     *got = NULL;
@@ -300,7 +297,7 @@ static void failing_test(Markup *m, const Test *t, const TestResult *r, int inde
         mk_printf(m, "<span class=\"tag\">hidden test</span>");
     mk_printf(m, "</h4>\n<figure class=\"case\">\n");
     const double *got = NULL;
-    int c = figure_case_index(t, r, &got);
+    int c = report_figure_case(t, r, &got);
     if (c >= 0) {
         figure_case(m, t, r, c, got);
         mk_printf(m, "<figcaption>Case %d of %d", c + 1, t->ncases);
@@ -451,7 +448,7 @@ int report_html(const char *path, const Grade *g, const GradeConfig *cfg, const 
                   "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
                   "<title>Grade report: ");
     mk_text(&m, submission);
-    mk_printf(&m, "</title>\n<style>\n%s</style>\n</head>\n<body>\n", style);
+    mk_printf(&m, "</title>\n<style>\n%s</style>\n</head>\n<body>\n", report_style);
     mk_printf(&m, "<h1>Your grade, with pictures</h1>\n<p>Submission <code>");
     mk_text(&m, submission);
     mk_printf(&m, "</code>, graded by <code>make grade</code>. This page is for you to read on "

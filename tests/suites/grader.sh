@@ -479,9 +479,10 @@ check "the table marks a failed hard case [hard]" grep -q "FAIL  Part 1: .*\[har
 check "forged results: the grader's own score stands" \
     grep -q '"score": *[0-9.]*,' "$tmp/grades-subs/hostile-forge-results.json"
 check "forged results: no score of 1000 anywhere" sh -c "! grep -rq '\"score\": 1000' '$tmp/grades-subs'"
-# grade --all writes gradebook.csv and, per submission, NAME.json and NAME.html (the report page).
+# grade --all writes gradebook.csv, the class page and causes.csv, and, per
+# submission, NAME.json and NAME.html (the report page).
 check "forged results: nothing written beside the submissions" \
-    sh -c "[ \$(ls '$tmp/grades-subs' | wc -l) -eq \$(( 2 * \$(ls '$tmp/subs' | wc -l) + 1 )) ]"
+    sh -c "[ \$(ls '$tmp/grades-subs' | wc -l) -eq \$(( 2 * \$(ls '$tmp/subs' | wc -l) + 3 )) ]"
 
 # Folder names a spreadsheet would take for a formula, or that hold a
 # comma, are written so that it reads them as text; folders whose names

@@ -23,6 +23,7 @@ tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtreport.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
 . tests/lib/checks.sh
+. tests/lib/browser.sh
 
 need_built "$grade" "$check_html" "$compare"
 if [ ! -d solutions ]; then
@@ -65,6 +66,7 @@ a data URI that is not base64|iVBORw0KGgo=|not base64!
 a PNG data URI that is not a PNG|iVBORw0KGgo=|AAAAAAAAAAA=
 a bare ampersand|x &amp; y|x \& y
 a link to a missing id|href="#a"|href="#nowhere"
+an address with a % not followed by two hex digits|href="#a"|href="a%2.html"
 a style sheet that loads a file|p{color:red}|p{background:url(a.png)}
 no doctype|<!DOCTYPE html>|
 a div closed with />|<figure class|<div/><figure class
@@ -412,34 +414,6 @@ check "an unwritable page: it says so" grep -q 'report page was not written' "$t
 check "an unwritable page: the same results file" sh -c "[ \"\$(grep -v execution_time '$tmp/plain.json')\" = \"\$(grep -v execution_time '$tmp/paged.json')\" ]"
 
 # ---- the page renders in a browser, when one is installed --------------------
-browser=
-for b in chromium chromium-browser google-chrome; do
-    if command -v "$b" >/dev/null 2>&1; then browser=$b; break; fi
-done
-if [ -z "$browser" ]; then
-    echo "   skipped: no headless browser (chromium) installed, so the page was not rendered"
-else
-    limited() {     # limited COMMAND...: at most 120 s where timeout(1) exists
-        if command -v timeout >/dev/null 2>&1; then timeout 120 "$@"; else "$@"; fi  # portable: guarded
-    }
-    shot() {    # shot URL PNG: a screenshot with a fresh profile
-        profile=$(mktemp -d "$tmp/profile.XXXXXX")
-        quiet="--disable-background-networking --disable-component-update --disable-sync"  # portable: chromium's flags
-        limited "$browser" --headless --no-sandbox --disable-gpu --no-first-run $quiet \
-            --user-data-dir="$profile" --hide-scrollbars --window-size=1280,1600 \
-            --screenshot="$2" "$1" >/dev/null 2>&1
-    }
-    printf '<!DOCTYPE html>\n<html><head><title>blank</title></head><body></body></html>\n' >"$tmp/blank.html"
-    shot "file://$tmp/blank.html" "$tmp/blank.png"
-    shot "file://$page/p3a-far-root.html" "$tmp/page.png"
-    if [ ! -s "$tmp/blank.png" ] || [ ! -s "$tmp/page.png" ]; then
-        fail "$browser made no screenshot"
-    else
-        differ=$("$compare" "$tmp/page.png" "$tmp/blank.png" 2>&1 |
-            sed -n 's/^ *pixels that differ: *\([0-9.]*\)%.*/\1/p')
-        check "the page renders in $browser: ${differ:-?}% of its screenshot differs from a blank page's" \
-            awk -v d="${differ:-0}" 'BEGIN { exit !(d >= 10) }'
-    fi
-fi
+page_renders "$page/p3a-far-root.html" "the page" "$tmp"
 
 finish

@@ -15,7 +15,8 @@
  *   - no <script>, no on... event attribute, no javascript: address;
  *   - every src and href is a data: URI (base64 that decodes; a PNG one
  *     must start with the PNG signature), a #fragment naming an id of the
- *     page, or a relative path to a file that exists beside the page --
+ *     page, or a relative path to a file that exists beside the page (its
+ *     %XX read as the byte XX, as a browser reads them) --
  *     never an address on the network (a scheme such as http: or https:,
  *     or one starting with //); the style sheet loads nothing (no url(),
  *     no @import).
@@ -120,6 +121,31 @@ static char *frags[MAX_IDS];
 static size_t frag_at[MAX_IDS];
 static int nfrags;
 
+/* The path v[0 .. n) with each %XX turned into its byte, as a browser
+ * reads an address, into out (n + 1 bytes); false when a % is not
+ * followed by two hexadecimal digits, or stands for a NUL. */
+static bool percent_decoded(const char *v, size_t n, char *out)
+{
+    for (size_t k = 0; k < n; k++) {
+        if (v[k] != '%') {
+            *out++ = v[k];
+            continue;
+        }
+        if (k + 2 >= n)
+            return false;
+        if (!isxdigit((unsigned char)v[k + 1]) || !isxdigit((unsigned char)v[k + 2]))
+            return false;
+        char hex[3] = { v[k + 1], v[k + 2], '\0' };
+        long byte = strtol(hex, NULL, 16);
+        if (byte == 0)
+            return false;
+        *out++ = (char)byte;
+        k += 2;
+    }
+    *out = '\0';
+    return true;
+}
+
 /* Checks the address v of a src or href attribute: a data: URI that
  * decodes, a #fragment (checked at the end), or a file beside the page. */
 static void check_address(const char *attr, const char *v, size_t at)
@@ -162,8 +188,10 @@ static void check_address(const char *attr, const char *v, size_t at)
     }
     char file[8192];
     size_t n = strcspn(v, "?#");
-    snprintf(file, sizeof file, "%s/%.*s", dir, (int)n, v);
-    if (access(file, R_OK) != 0)
+    int at_name = snprintf(file, sizeof file, "%s/", dir);
+    if (at_name < 0 || (size_t)at_name + n >= sizeof file || !percent_decoded(v, n, file + at_name))
+        problem(at, "an address with a % not followed by two hexadecimal digits", v);
+    else if (access(file, R_OK) != 0)
         problem(at, "a file the page refers to is missing", v);
 }
 

@@ -1,0 +1,413 @@
+/*
+ * report_class.c - the class at a glance (report_class.h): the run's
+ * submissions, what the page counts over them (the causes, the tests most
+ * failed), OUT/causes.csv, and the two files written privately.
+ */
+#define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
+#include "class_model.h"
+#include "build.h"
+#include "csv.h"
+#include "sandbox.h"
+#include "kit/savefile.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+ClassRun *class_begin(const char *out, const char *previous)
+{
+    ClassRun *run = calloc(1, sizeof *run);
+    char err[256];
+    if (!run) {
+        fprintf(stderr, "grade: no class page: out of memory\n");
+        return NULL;
+    }
+    if (build_tempdir(run->records, sizeof run->records, err, sizeof err) != 0) {
+        fprintf(stderr, "grade: no class page: %s\n", err);
+        free(run);
+        return NULL;
+    }
+    snprintf(run->out, sizeof run->out, "%s", out);
+    snprintf(run->previous, sizeof run->previous, "%s", previous ? previous : "");
+    if (previous) {
+        char path[PATH_MAX + 16];
+        size_t len;
+        snprintf(path, sizeof path, "%s/gradebook.csv", previous);
+        run->previous_csv = kit_load_file(path, 64u << 20, &len);
+    }
+    run->start = sandbox_now();
+    return run;
+}
+
+const char *class_record_path(const ClassRun *run, int k, char *buf, size_t n)
+{
+    snprintf(buf, n, "%s/%d", run->records, k);
+    return buf;
+}
+
+void class_add(ClassRun *run, int k, const char *name, const double *values, int status,
+               bool no_stage_file)
+{
+    if (!run || k != run->n)
+        return;
+    ClassSub *grown = realloc(run->subs, (size_t)(k + 1) * sizeof *grown);
+    if (!grown)
+        return;
+    run->subs = grown;
+    char *copy = strdup(name);
+    if (!copy)
+        return;
+    ClassSub *s = &run->subs[run->n++];
+    memset(s, 0, sizeof *s);
+    s->name = copy;
+    s->status = status;
+    s->no_stage_file = no_stage_file;
+    if (values) {
+        s->summary = true;
+        memcpy(s->core, values, sizeof s->core);
+        s->hard = values[NPARTS];
+        s->total = values[NPARTS + 1];
+    }
+}
+
+/* ---- the causes ------------------------------------------------------------- */
+
+static int by_count(const void *a, const void *b)
+{
+    const ClassCauseRow *x = a, *y = b;
+    if (x->part != y->part)
+        return x->part - y->part;
+    if (x->count != y->count)
+        return y->count - x->count;
+    return strcmp(x->key, y->key);
+}
+
+/* The row of (part, key), added when new; NULL when memory runs out. */
+static ClassCauseRow *cause_row(ClassView *v, int part, const char *key, int nsubs)
+{
+    for (int r = 0; r < v->ncauses; r++)
+        if (v->causes[r].part == part && strcmp(v->causes[r].key, key) == 0)
+            return &v->causes[r];
+    ClassCauseRow *grown = realloc(v->causes, (size_t)(v->ncauses + 1) * sizeof *grown);
+    int *subs = malloc((size_t)nsubs * sizeof *subs);
+    if (!grown || !subs) {
+        if (grown)
+            v->causes = grown;
+        free(subs);
+        return NULL;
+    }
+    v->causes = grown;
+    v->causes[v->ncauses] = (ClassCauseRow){ .part = part, .key = key, .subs = subs };
+    return &v->causes[v->ncauses++];
+}
+
+/* The wording of row's cause that most of its submissions read (the first
+ * such, in the gradebook's order). */
+static const char *common_text(const ClassView *v, const ClassCauseRow *row)
+{
+    const char *best = "";
+    int most = 0;
+    for (int i = 0; i < row->count; i++) {
+        const char *text = "";
+        const ClassPart *cp = &v->run->subs[row->subs[i]].part[row->part];
+        for (int c = 0; c < cp->ncauses; c++)
+            if (strcmp(cp->causes[c].key, row->key) == 0)
+                text = cp->causes[c].text;
+        int same = 0;
+        for (int j = 0; j < row->count; j++) {
+            const ClassPart *o = &v->run->subs[row->subs[j]].part[row->part];
+            for (int c = 0; c < o->ncauses; c++)
+                same += strcmp(o->causes[c].key, row->key) == 0 && strcmp(o->causes[c].text, text) == 0;
+        }
+        if (same > most) {
+            most = same;
+            best = text;
+        }
+    }
+    return best;
+}
+
+/* Every cause of every record, with the submissions that have it. */
+static void count_causes(ClassView *v)
+{
+    const ClassRun *run = v->run;
+    for (int s = 0; s < run->n; s++)
+        for (int p = 0; p < NPARTS; p++)
+            for (int c = 0; c < run->subs[s].part[p].ncauses; c++) {
+                ClassCauseRow *row = cause_row(v, p, run->subs[s].part[p].causes[c].key, run->n);
+                if (row && (row->count == 0 || row->subs[row->count - 1] != s))
+                    row->subs[row->count++] = s;
+            }
+    for (int r = 0; r < v->ncauses; r++)
+        v->causes[r].text = common_text(v, &v->causes[r]);
+    if (v->ncauses > 1)
+        qsort(v->causes, (size_t)v->ncauses, sizeof *v->causes, by_count);
+}
+
+/* ---- the tests most failed ---------------------------------------------------- */
+
+typedef struct {
+    int sub;
+    const ClassFail *f;
+} Wrong;
+
+/* Orders answers: by the case, then by the numbers' bits. */
+static int answer_order(const ClassFail *x, const ClassFail *y)
+{
+    if (x->c != y->c)
+        return x->c < y->c ? -1 : 1;
+    if (x->nout != y->nout)
+        return x->nout - y->nout;
+    return memcmp(x->got, y->got, (size_t)x->nout * sizeof x->got[0]);
+}
+
+static int by_answer(const void *a, const void *b)
+{
+    const Wrong *x = a, *y = b;
+    int d = answer_order(x->f, y->f);
+    return d ? d : x->sub - y->sub;
+}
+
+/* Row's distinct wrong answers and the most common one (of two as common,
+ * the one given first in the gradebook's order), from its n answers w. */
+static void common_answer(ClassTestRow *row, Wrong *w, int n)
+{
+    qsort(w, (size_t)n, sizeof *w, by_answer);
+    int best = 0, most = 0;
+    for (int i = 0, j; i < n; i = j) {
+        for (j = i + 1; j < n && answer_order(w[i].f, w[j].f) == 0; j++)
+            ;
+        row->answers++;
+        if (j - i > most || (j - i == most && w[i].sub < w[best].sub)) {
+            most = j - i;
+            best = i;
+        }
+    }
+    if (most == 0 || !(row->common_subs = malloc((size_t)most * sizeof *row->common_subs)))
+        return;
+    row->common = w[best].f;
+    row->ncommon = most;
+    for (int k = 0; k < most; k++)
+        row->common_subs[k] = w[best + k].sub;
+}
+
+static double fail_rate(const ClassTestRow *r)
+{
+    return r->built > 0 ? (double)r->failed / r->built : 0;
+}
+
+static int by_failures(const void *a, const void *b)
+{
+    const ClassTestRow *x = a, *y = b;
+    if (x->failed != y->failed)
+        return y->failed - x->failed;
+    double rx = fail_rate(x), ry = fail_rate(y);
+    if (rx != ry)
+        return rx > ry ? -1 : 1;
+    return x->test - y->test;
+}
+
+/* Each test's failures among the submissions whose file of its part
+ * built; the most failed kept, with their most common wrong answers. */
+static void count_tests(ClassView *v)
+{
+    const ClassRun *run = v->run;
+    int n = v->tests->n, built[NPARTS] = { 0 };
+    ClassTestRow *rows = calloc((size_t)n, sizeof *rows);
+    Wrong *w = malloc(((size_t)run->n + 1) * sizeof *w);
+    if (!rows || !w) {
+        free(rows);
+        free(w);
+        return;
+    }
+    for (int s = 0; s < run->n; s++)
+        for (int p = 0; p < NPARTS; p++)
+            built[p] += run->subs[s].record && run->subs[s].part[p].built;
+    for (int k = 0; k < n; k++) {
+        rows[k].test = k;
+        rows[k].built = built[v->tests->tests[k].part];
+    }
+    for (int s = 0; s < run->n; s++)
+        for (int i = 0; i < run->subs[s].nfails; i++) {
+            const ClassFail *f = &run->subs[s].fails[i];
+            if (f->test < n && run->subs[s].part[v->tests->tests[f->test].part].built)
+                rows[f->test].failed++;
+        }
+    qsort(rows, (size_t)n, sizeof *rows, by_failures);
+    int keep = 0;
+    while (keep < n && keep < CLASS_MAX_TESTS && rows[keep].failed > 0)
+        keep++;
+    for (int r = 0; r < keep; r++) {
+        int nw = 0;
+        for (int s = 0; s < run->n; s++)
+            for (int i = 0; i < run->subs[s].nfails; i++) {
+                const ClassFail *f = &run->subs[s].fails[i];
+                if (f->test == rows[r].test && f->c >= 0 && f->nout > 0 &&
+                    run->subs[s].part[v->tests->tests[f->test].part].built)
+                    w[nw++] = (Wrong){ s, f };
+            }
+        common_answer(&rows[r], w, nw);
+    }
+    free(w);
+    v->worst = rows;
+    v->nworst = keep;
+}
+
+/* ---- the files ------------------------------------------------------------------ */
+
+FILE *class_private_open(const char *path, char *tmp, size_t n)
+{
+    const char *slash = strrchr(path, '/');
+    int dirlen = slash ? (int)(slash - path) + 1 : 0;
+    snprintf(tmp, n, "%.*s.class-XXXXXX", dirlen, path);
+    int fd = mkstemp(tmp);          /* mode 0600: the owner's alone */
+    FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+    if (!f && fd >= 0) {
+        close(fd);
+        unlink(tmp);
+    }
+    return f;
+}
+
+int class_private_close(FILE *f, const char *tmp, const char *path, char *err, size_t errlen)
+{
+    bool failed = ferror(f) != 0;
+    failed = fclose(f) != 0 || failed;
+    if (failed || rename(tmp, path) != 0) {
+        snprintf(err, errlen, "%s: %s", path, strerror(failed ? EIO : errno));
+        unlink(tmp);
+        return -1;
+    }
+    return 0;
+}
+
+/* The names of row's submissions, as causes.csv lists them: separated by
+ * a space, each name's spaces and percent signs written %20 and %25. */
+static void list_names(Markup *m, const ClassView *v, const ClassCauseRow *row)
+{
+    for (int i = 0; i < row->count; i++) {
+        if (i)
+            mk_raw(m, " ", 1);
+        for (const char *c = v->run->subs[row->subs[i]].name; *c; c++) {
+            if (*c == ' ' || *c == '%')
+                mk_printf(m, "%%%02X", (unsigned char)*c);
+            else
+                mk_raw(m, c, 1);
+        }
+    }
+    mk_raw(m, "", 1);
+}
+
+/* OUT/causes.csv: part,cause,text,count,submissions, a row per part and
+ * cause, in the page's order; the text is its sentence's first line. */
+static int write_causes_csv(const ClassView *v, char *err, size_t errlen)
+{
+    char path[PATH_MAX + 16], tmp[PATH_MAX + 32];
+    snprintf(path, sizeof path, "%s/causes.csv", v->run->out);
+    FILE *f = class_private_open(path, tmp, sizeof tmp);
+    if (!f) {
+        snprintf(err, errlen, "%s: cannot write: %s", path, strerror(errno));
+        return -1;
+    }
+    fprintf(f, "part,cause,text,count,submissions\n");
+    bool ok = true;
+    for (int r = 0; r < v->ncauses && ok; r++) {
+        const ClassCauseRow *row = &v->causes[r];
+        Markup names;
+        mk_init(&names);
+        list_names(&names, v, row);
+        char *line = strndup(row->text, strcspn(row->text, "\n"));
+        ok = line && mk_ok(&names);
+        if (ok) {
+            fprintf(f, "%s,%s,", part_label(row->part), row->key);
+            csv_field(f, line);
+            fprintf(f, ",%d,", row->count);
+            csv_field(f, (const char *)names.b.data);
+            fputc('\n', f);
+        }
+        free(line);
+        mk_free(&names);
+    }
+    if (!ok) {
+        fclose(f);
+        unlink(tmp);
+        snprintf(err, errlen, "%s: out of memory", path);
+        return -1;
+    }
+    return class_private_close(f, tmp, path, err, errlen);
+}
+
+/* ---- the end of the run ------------------------------------------------------------ */
+
+static double cpu_seconds(void)
+{
+    struct rusage self, children;
+    getrusage(RUSAGE_SELF, &self);
+    getrusage(RUSAGE_CHILDREN, &children);
+    return (double)(self.ru_utime.tv_sec + self.ru_stime.tv_sec + children.ru_utime.tv_sec +
+                    children.ru_stime.tv_sec) +
+           1e-6 * (double)(self.ru_utime.tv_usec + self.ru_stime.tv_usec + children.ru_utime.tv_usec +
+                           children.ru_stime.tv_usec);
+}
+
+static void view_free(ClassView *v)
+{
+    for (int r = 0; r < v->ncauses; r++)
+        free(v->causes[r].subs);
+    free(v->causes);
+    for (int r = 0; r < v->nworst; r++)
+        free(v->worst[r].common_subs);
+    free(v->worst);
+    class_previous_free(&v->previous);
+}
+
+int class_finish(ClassRun *run, const GradeConfig *cfg, const ClassBuilds *builds,
+                 ClassLoadTests load_tests)
+{
+    if (!run)
+        return -1;
+    ClassView v = { .run = run, .cfg = cfg, .builds = *builds, .page_start = sandbox_now() };
+    v.seconds = v.page_start - run->start;
+    v.cpu = cpu_seconds();
+    TestList tests = { 0 };
+    bool failures = false;
+    for (int s = 0; s < run->n; s++) {
+        char path[PATH_MAX + 32];
+        class_record_path(run, s, path, sizeof path);
+        run->subs[s].record = class_record_read(path, &run->subs[s]);
+        failures = failures || run->subs[s].nfails > 0;
+        for (int p = 0; p < NPARTS; p++)
+            v.compiled += run->subs[s].part[p].graded && !run->subs[s].part[p].refused;
+    }
+    char err[PATH_MAX + 300];
+    if (failures && load_tests(&tests, cfg, cfg->parts, err, sizeof err) == 0)
+        v.tests = &tests;
+    else if (failures)
+        snprintf(v.tests_note, sizeof v.tests_note, "%.250s", err);
+    count_causes(&v);
+    if (v.tests)
+        count_tests(&v);
+    class_previous_read(&v);
+    char page[PATH_MAX + 16];
+    snprintf(page, sizeof page, "%s/index.html", run->out);
+    int status = write_causes_csv(&v, err, sizeof err);
+    if (status == 0)
+        status = class_page_write(page, &v, err, sizeof err);
+    if (status == 0)
+        printf("the class at a glance: %s (for you alone: it names every student), and each part's "
+               "causes in %s/causes.csv\n", page, run->out);
+    else
+        fprintf(stderr, "grade: the class page was not written: %s\n", err);
+    view_free(&v);
+    testlist_free(&tests);
+    for (int s = 0; s < run->n; s++)
+        class_sub_free(&run->subs[s]);
+    free(run->subs);
+    free(run->previous_csv);
+    build_rmtree(run->records);
+    free(run);
+    return status;
+}
