@@ -92,11 +92,16 @@ function parse(line,   i, c, f, q, n) {
         else if (q && c == "\"") q = 0
         else if (q) f = f c
         else if (c == "\"") { q = 1; Q[n + 1] = 1 }
-        else if (c == ",") { F[++n] = f; f = ""; Q[n + 1] = 0 }
+        else if (c == ",") { F[++n] = unx(f); f = ""; Q[n + 1] = 0 }
         else f = f c
     }
-    F[++n] = f
+    F[++n] = unx(f)
     return n
+}
+function unx(s,   out, i) {  # the kit writes control bytes and the backslash as \xHH
+    out = ""
+    while ((i = index(s, "\\x")) > 0) { out = out substr(s, 1, i - 1) chr[toupper(substr(s, i + 2, 2))]; s = substr(s, i + 4) }
+    return out s
 }
 function unguard(k) {     # the apostrophe the kit writes before a formula
     if (Q[k] && F[k] ~ /^\047[-=+@\t\r]/) F[k] = substr(F[k], 2)
@@ -176,8 +181,8 @@ check "the page's causes: the same, each name linked to its page and escaped" \
 [ "$failed" -eq 0 ] || diff "$tmp/causes.want" "$tmp/causes.page.got" | head -n 20
 check "causes.csv's text is each cause's sentence, as the results file words it" \
     sh -c "grep -q '^1,degrees-as-radians,\"tan was given the angle in degrees: ' '$csv'"
-check "a hostile name is in causes.csv as it is (quoted, its space written %20)" \
-    grep -qF -e "$(printf '%s' "$hostile1" | sed 's/"/""/g; s/ /%20/g')" "$csv"
+check "a hostile name is in causes.csv as it is (quoted, its space written %20, its control byte \\x01)" \
+    grep -qF -e "$(printf '%s' "$hostile1" | sed 's/"/""/g; s/ /%20/g' | tr '\001' '@' | sed 's/@/\\x01/')" "$csv"
 check "a name that starts like a formula is in causes.csv after an apostrophe, its percent sign written %25" \
     grep -qF -e "\"'=50%25%20<i> " "$csv"
 
