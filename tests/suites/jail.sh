@@ -139,7 +139,7 @@ run_attacks() {
     # A folder 20,000 deep.
     as_grader --all "$subs/class-deep" --out "$out/deep" --weights "$out/part1.conf" --jobs 1 >"$out/deep.out" 2>&1
     check "$mode: a folder 20,000 deep: its results written, its row graded, and the next submission graded" \
-        sh -c "grep -q '^deep-folder,[0-9.]*,[0-9.]*,[0-9.]*,\(full marks\|points lost\)\$' '$out/deep/gradebook.csv' &&
+        sh -c "grep -q -e '^deep-folder,[0-9.]*,[0-9.]*,[0-9.]*,full marks\$' -e '^deep-folder,[0-9.]*,[0-9.]*,[0-9.]*,points lost\$' '$out/deep/gradebook.csv' &&
                grep -q '\"tests\": \\[\$' '$out/deep/deep-folder.json' &&
                grep -q '^plain,20,' '$out/deep/gradebook.csv' && [ -s '$out/deep/plain.json' ]"
 
