@@ -81,7 +81,7 @@ HAVE_SOLUTIONS := $(wildcard solutions/part1_image_plane.c)
 # ---- the framework students use (labs/kit) ---------------------------------
 KIT_SRC    = labs/kit/image.c labs/kit/png.c labs/kit/zlib.c labs/kit/scene.c labs/kit/render.c \
              labs/kit/numtext.c labs/kit/savefile.c labs/kit/textfile.c labs/kit/obj.c \
-             labs/kit/closest.c labs/kit/compare.c
+             labs/kit/bvh.c labs/kit/closest.c labs/kit/compare.c
 KIT_HDR    = $(wildcard labs/*.h labs/kit/*.h)
 KIT_OBJ    = $(KIT_SRC:labs/kit/%.c=$(BUILD)/kit/%.o)
 KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
@@ -159,7 +159,7 @@ endif
 $(BUILD)/kit/lto/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) -c $< -o $@
 RENDER_OBJ = $(BUILD)/kit/lto/render_main.o $(BUILD)/kit/lto/render.o $(BUILD)/kit/lto/image.o \
-             $(BUILD)/kit/lto/closest.o
+             $(BUILD)/kit/lto/closest.o $(BUILD)/kit/lto/bvh.o
 # A link that fails: bin/linkcheck then says what the linker's message
 # means for the stage files (tests/grader/linkcheck_main.c): a helper
 # defined in two of them, most often, which make render cannot link and the
