@@ -8,9 +8,10 @@
  * The heuristic: a ray that passes through a box passes through a box
  * inside it with a probability of about the ratio of their surface areas.
  * A node of n objects made a leaf costs n object tests; split into L and
- * R, it costs one more box test and, weighted by those ratios, the tests
- * of L's and R's objects.  The candidate splits are the 15 planes between
- * 16 equal bins of the objects' centres, along each axis.
+ * R, it costs the two box tests of its children and, weighted by those
+ * ratios, the tests of L's and R's objects.  The candidate splits are the 15 planes between
+ * 16 equal bins of the objects' centres (n - 1 between n bins for a node
+ * of n < 16 objects), along each axis.
  */
 #include "bvh.h"
 
@@ -21,7 +22,7 @@
 #define BVH_BINS      16
 #define BVH_LEAF_MAX  8        /* a leaf holds at most this many objects */
 #define BVH_SAH_DEPTH 40       /* deeper, halve the range: depth <= 40 + log2(n) */
-#define BVH_COST_BOX  1.0      /* a box test, in units of an object test */
+#define BVH_COST_BOX  2.0      /* an inner node's two box tests, in object tests */
 
 /* An object while the hierarchy is built: its box, rounded outward to
  * float, and its number. */
@@ -61,8 +62,11 @@ void bvh_object_box(const Scene *scene, int nspheres, int32_t k, double lo[3], d
     const double v[3][3] = { { t->a.x, t->a.y, t->a.z }, { t->b.x, t->b.y, t->b.z },
                              { t->c.x, t->c.y, t->c.z } };
     for (int a = 0; a < 3; a++) {
-        lo[a] = fmin(v[0][a], fmin(v[1][a], v[2][a]));
-        hi[a] = fmax(v[0][a], fmax(v[1][a], v[2][a]));
+        lo[a] = hi[a] = v[0][a];
+        for (int k = 1; k < 3; k++) {
+            lo[a] = v[k][a] < lo[a] ? v[k][a] : lo[a];
+            hi[a] = v[k][a] > hi[a] ? v[k][a] : hi[a];
+        }
     }
 }
 
@@ -106,19 +110,33 @@ static float centre(const BvhObject *o, int a)
     return c > FLT_MAX ? FLT_MAX : c < -FLT_MAX ? -FLT_MAX : c;
 }
 
-/* The bin, 0 .. BVH_BINS - 1, of o's centre along axis a, the centres
- * spanning cb and scale being BVH_BINS over that span (0 if it is none). */
-static int bin_of(const BvhObject *o, int a, const BvhBox *cb, double scale)
+/* How a node's objects are binned: nbins equal slices of the span of
+ * their centres along each axis, the first at lo; scale is nbins over the
+ * span (0 where the centres all lie at one place). */
+typedef struct {
+    float lo[3];
+    double scale[3];
+    int nbins;
+} BvhBins;
+
+/* The bins of n objects whose centres lie in cb: BVH_BINS, or n when
+ * fewer (more bins than objects would only cost). */
+static BvhBins bins_for(const BvhBox *cb, int n)
 {
-    int k = (int)(((double)centre(o, a) - cb->lo[a]) * scale);
-    return k < BVH_BINS ? k : BVH_BINS - 1;
+    BvhBins g;
+    g.nbins = n < BVH_BINS ? n : BVH_BINS;
+    for (int a = 0; a < 3; a++) {
+        g.lo[a] = cb->lo[a];
+        g.scale[a] = cb->hi[a] > cb->lo[a] ? g.nbins / ((double)cb->hi[a] - cb->lo[a]) : 0;
+    }
+    return g;
 }
 
-/* BVH_BINS over the span of the centres along axis a, or 0 if they all
- * lie at one place. */
-static double bin_scale(const BvhBox *cb, int a)
+/* The bin, 0 .. g->nbins - 1, of o's centre along axis a. */
+static int bin_of(const BvhObject *o, int a, const BvhBins *g)
 {
-    return cb->hi[a] > cb->lo[a] ? BVH_BINS / ((double)cb->hi[a] - cb->lo[a]) : 0;
+    int k = (int)(((double)centre(o, a) - g->lo[a]) * g->scale[a]);
+    return k < g->nbins ? k : g->nbins - 1;
 }
 
 /* What the build shares: the objects and the nodes made so far. */
@@ -128,42 +146,42 @@ typedef struct {
     int nnodes;
 } BvhBuild;
 
-/* The best split of objs[0 .. n-1], whose centres lie in cb: sets *axis and
- * *bin (left: the objects whose centres fall in bins 0 .. *bin along
- * *axis) and returns its cost, in object tests per ray through the node;
- * INFINITY when no bin split leaves objects on both sides. */
-static double bvh_best_split(const BvhObject *objs, int n, const BvhBox *cb, double area,
+/* The best split of objs[0 .. n-1], binned by g: sets *axis and *bin
+ * (left: the objects in bins 0 .. *bin along *axis) and returns its cost,
+ * in object tests per ray through the node's box, of area area; INFINITY
+ * when no split between bins leaves objects on both sides. */
+static double bvh_best_split(const BvhObject *objs, int n, const BvhBins *g, double area,
                              int *axis, int *bin)
 {
+    const int nb = g->nbins;
     BvhBox box[3][BVH_BINS];
     int count[3][BVH_BINS] = { { 0 } };
     for (int a = 0; a < 3; a++)
-        for (int k = 0; k < BVH_BINS; k++)
+        for (int k = 0; k < nb; k++)
             box_empty(&box[a][k]);
-    double scale[3] = { bin_scale(cb, 0), bin_scale(cb, 1), bin_scale(cb, 2) };
     for (int i = 0; i < n; i++)
         for (int a = 0; a < 3; a++) {
-            int k = bin_of(&objs[i], a, cb, scale[a]);
+            int k = bin_of(&objs[i], a, g);
             count[a][k]++;
             box_add(&box[a][k], objs[i].lo, objs[i].hi);
         }
     double best = INFINITY;
     for (int a = 0; a < 3; a++) {
-        if (scale[a] == 0)
+        if (g->scale[a] == 0)
             continue;
         /* right[k]: the cost of the bins above k, swept from the top */
         double right[BVH_BINS];
         BvhBox grow;
         box_empty(&grow);
         int m = 0;
-        for (int k = BVH_BINS - 1; k > 0; k--) {
+        for (int k = nb - 1; k > 0; k--) {
             box_add(&grow, box[a][k].lo, box[a][k].hi);
             m += count[a][k];
             right[k - 1] = m * box_area(&grow);
         }
         box_empty(&grow);
         m = 0;
-        for (int k = 0; k < BVH_BINS - 1; k++) {
+        for (int k = 0; k < nb - 1; k++) {
             box_add(&grow, box[a][k].lo, box[a][k].hi);
             m += count[a][k];
             if (m == 0 || m == n)
@@ -181,14 +199,13 @@ static double bvh_best_split(const BvhObject *objs, int n, const BvhBox *cb, dou
 
 /* Reorders objs[0 .. n-1] so that those in bins 0 .. bin along axis come
  * first.  Returns how many they are. */
-static int bvh_partition(BvhObject *objs, int n, const BvhBox *cb, int axis, int bin)
+static int bvh_partition(BvhObject *objs, int n, const BvhBins *g, int axis, int bin)
 {
-    double scale = bin_scale(cb, axis);
     int i = 0, j = n - 1;
     for (;;) {
-        while (i <= j && bin_of(&objs[i], axis, cb, scale) <= bin)
+        while (i <= j && bin_of(&objs[i], axis, g) <= bin)
             i++;
-        while (i <= j && bin_of(&objs[j], axis, cb, scale) > bin)
+        while (i <= j && bin_of(&objs[j], axis, g) > bin)
             j--;
         if (i >= j)
             return i;
@@ -221,11 +238,12 @@ static void bvh_node(BvhBuild *b, int node, int first, int n, int depth)
     int left = n / 2;                   /* past BVH_SAH_DEPTH: halves */
     if (depth < BVH_SAH_DEPTH) {
         int axis = 0, bin = 0;
-        double cost = bvh_best_split(objs, n, &cb, box_area(&box), &axis, &bin);
+        BvhBins g = bins_for(&cb, n);
+        double cost = bvh_best_split(objs, n, &g, box_area(&box), &axis, &bin);
         if (n <= BVH_LEAF_MAX && !(cost < n))
             return;                     /* a leaf is cheaper */
         if (cost < INFINITY)
-            left = bvh_partition(objs, n, &cb, axis, bin);
+            left = bvh_partition(objs, n, &g, axis, bin);
         else if (n <= BVH_LEAF_MAX)
             return;                     /* every centre in one bin: a leaf */
     }
