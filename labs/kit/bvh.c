@@ -63,9 +63,9 @@ void bvh_object_box(const Scene *scene, int nspheres, int32_t k, double lo[3], d
                              { t->c.x, t->c.y, t->c.z } };
     for (int a = 0; a < 3; a++) {
         lo[a] = hi[a] = v[0][a];
-        for (int k = 1; k < 3; k++) {
-            lo[a] = v[k][a] < lo[a] ? v[k][a] : lo[a];
-            hi[a] = v[k][a] > hi[a] ? v[k][a] : hi[a];
+        for (int i = 1; i < 3; i++) {
+            lo[a] = v[i][a] < lo[a] ? v[i][a] : lo[a];
+            hi[a] = v[i][a] > hi[a] ? v[i][a] : hi[a];
         }
     }
 }
