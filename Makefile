@@ -438,7 +438,8 @@ UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
 # (Not the grader's units nor test_serve: their own rules are below.)
 GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers lmsname terminal
 UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) $(BUILD)/tests/test_serve \
-                         $(BUILD)/tests/test_hidden $(BUILD)/tests/test_figures,$(UNIT_BIN))
+                         $(BUILD)/tests/test_hidden $(BUILD)/tests/test_figures $(BUILD)/tests/test_bvh,\
+                         $(UNIT_BIN))
 $(UNIT_PLAIN:$(BUILD)/tests/%=$(BUILD)/tests/obj/%.o): $(BUILD)/tests/obj/%.o: tests/unit/%.c \
                           tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS) | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $(THREADS) -Ilabs -c $< -o $@
@@ -446,6 +447,26 @@ $(UNIT_PLAIN): $(BUILD)/tests/%: $(BUILD)/tests/obj/%.o $(REF_OBJ) $(UNIT_LIBS) 
 	$(Q)$(CC) $(CFLAGS) $(THREADS) $< $(REF_OBJ) $(UNIT_LIBS) -o $@ $(LDLIBS)
 $(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN) | $$(@D)/.
 	$(Q)$(CC) $(SAN_LINK) $(THREADS) -Ilabs $< $(REF_ASAN) $(UNIT_LIBS_ASAN) -o $@ $(LDLIBS)
+
+# test_bvh links its own sphere_intersect and triangle_intersect, which
+# pass each call on to the reference's (compiled under other names) or to
+# deliberately wrong ones; the other parts are the reference's.
+BVH_RENAME = -Dsphere_intersect=reference_sphere_intersect -Dtriangle_intersect=reference_triangle_intersect
+BVH_OWN    = part3a_sphere_intersect part5_triangle_intersect
+BVH_REF    = $(BVH_OWN:%=$(BUILD)/tests/obj/renamed_%.o) \
+             $(filter-out $(BVH_OWN:%=$(BUILD)/sub/$(REF_DIR)/%.o),$(REF_OBJ))
+BVH_REF_ASAN = $(BVH_OWN:%=$(ASAN)/tests/obj/renamed_%.o) \
+               $(filter-out $(BVH_OWN:%=$(ASAN)/sub/$(REF_DIR)/%.o),$(REF_ASAN))
+$(BUILD)/tests/obj/renamed_%.o: $(REF_DIR)/%.c $(KIT_HDR) | $$(@D)/.
+	$(Q)$(CC) $(CFLAGS) $(BVH_RENAME) -Ilabs -c $< -o $@
+$(ASAN)/tests/obj/renamed_%.o: $(REF_DIR)/%.c $(KIT_HDR) | $$(@D)/.
+	$(Q)$(CC) $(SANFLAGS) $(BVH_RENAME) -Ilabs -c $< -o $@
+$(BUILD)/tests/obj/test_bvh.o: tests/unit/test_bvh.c tests/unit/check.h $(KIT_HDR) | $$(@D)/.
+	$(Q)$(CC) $(CFLAGS) $(THREADS) -Ilabs -c $< -o $@
+$(BUILD)/tests/test_bvh: $(BUILD)/tests/obj/test_bvh.o $(BVH_REF) $(UNIT_LIBS) | $$(@D)/.
+	$(Q)$(CC) $(CFLAGS) $(THREADS) $^ -o $@ $(LDLIBS)
+$(ASAN)/tests/test_bvh: tests/unit/test_bvh.c tests/unit/check.h $(BVH_REF_ASAN) $(UNIT_LIBS_ASAN) | $$(@D)/.
+	$(Q)$(CC) $(SAN_LINK) $(THREADS) -Ilabs $< $(BVH_REF_ASAN) $(UNIT_LIBS_ASAN) -o $@ $(LDLIBS)
 
 # test_hexfloat checks two headers of the grader's.
 $(BUILD)/tests/obj/test_hexfloat.o $(ASAN)/tests/test_hexfloat: tests/grader/hexfloat.h tests/grader/decimal.h

@@ -174,12 +174,17 @@ Vec3 closest_color_bvh(const Scene *scene, const Bvh *bvh, const Ray *ray, bool 
 }
 
 /* Where closest_probe aims, as weights of a triangle's vertices a, b, c:
- * its centroid, then points in its plane outside it, near and far: each
- * vertex mirrored through the opposite edge and through the other
- * vertices, and points far beyond each edge and vertex.  A sphere's
- * points are its centre and six points 2 R from it along the axes. */
+ * its centroid, then points in its plane outside it, near and far: just
+ * outside each edge and just beyond each vertex, each vertex mirrored
+ * through the opposite edge and through the other vertices, and points far
+ * beyond each edge and vertex.  A sphere's points are its centre and six
+ * points 2 R from it along the axes. */
 static const double closest_probe_weights[][3] = {
     { 1.0 / 3, 1.0 / 3, 1.0 / 3 },
+    { -0.1, 0.55, 0.55 }, { 0.55, -0.1, 0.55 }, { 0.55, 0.55, -0.1 },
+    { -0.5, 0.75, 0.75 }, { 0.75, -0.5, 0.75 }, { 0.75, 0.75, -0.5 },
+    { 1.2, -0.1, -0.1 }, { -0.1, 1.2, -0.1 }, { -0.1, -0.1, 1.2 },
+    { 1.6, -0.3, -0.3 }, { -0.3, 1.6, -0.3 }, { -0.3, -0.3, 1.6 },
     { -1, 1, 1 }, { 1, -1, 1 }, { 1, 1, -1 },
     { 2, 0, -1 }, { 2, -1, 0 }, { 0, 2, -1 }, { -1, 2, 0 }, { 0, -1, 2 }, { -1, 0, 2 },
     { -8, 0.5, 8.5 }, { -8, 8.5, 0.5 }, { 0.5, -8, 8.5 }, { 8.5, -8, 0.5 },
@@ -210,7 +215,7 @@ static bool closest_probe_point(const Scene *scene, int nspheres, int32_t k, int
 bool closest_probe(const Scene *scene, const Bvh *bvh)
 {
     const int n = bvh->nitems, ns = bvh->nspheres;
-    const int step = n > CLOSEST_PROBE_OBJECTS ? n / CLOSEST_PROBE_OBJECTS : 1;
+    const int step = (n + CLOSEST_PROBE_OBJECTS - 1) / CLOSEST_PROBE_OBJECTS;
     for (int32_t k = 0; k < n; k += step) {
         Vec3 point;
         for (int p = 0; closest_probe_point(scene, ns, k, p, &point); p++) {
