@@ -555,7 +555,7 @@ reverse = $(if $(1),$(call reverse,$(wordlist 2,$(words $(1)),$(1))) $(firstword
 $(BUILD)/bin/bench-reordered: $(BENCH_OBJ) $(STAGES:%=$(BUILD)/bench/solutions/%.o) \
                               $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $(call reverse,$(filter %.o,$^)) $(filter %.a,$^) -o $@ $(LDLIBS)
-bench: $(BUILD)/bin/bench $(BUILD)/bin/bench-reordered
+bench: $(BUILD)/bin/bench $(BUILD)/bin/bench-reordered $(BUILD)/sub/solutions/render
 	@mkdir -p out/bench
 	$(BUILD)/bin/bench-reordered --ratio-only >out/bench/placement.txt.new && mv out/bench/placement.txt.new out/bench/placement.txt
 	$(BUILD)/bin/bench --out out/bench --placement out/bench/placement.txt

@@ -673,6 +673,7 @@ static int write_md(const BenchResults *br, const char *dir, char *err, size_t e
     md_ceiling(f, br);
 
     triangles_md(f, &br->tri);
+    scaling_md(f, &br->scale);
 
     fprintf(f, "\n## How it is measured\n\n");
     fprintf(f, "- Every method is timed in the same run: each round times every method once "
@@ -689,8 +690,9 @@ static int write_md(const BenchResults *br, const char *dir, char *err, size_t e
     fprintf(f, "- Float methods get the double inputs rounded to float, as a float renderer "
                "would: that rounding is part of their error.\n");
     fprintf(f, "- Files: results.csv (the table above), results_by_family.csv, renders.csv, "
-               "plot.svg; for Part 5, results_triangles.csv and plot_triangles.svg. Source: "
-               "tests/bench (bench.h lists the files).\n");
+               "plot.svg; for Part 5, results_triangles.csv and plot_triangles.svg, and at "
+               "scale results_scaling.csv and plot_scaling.svg. Source: tests/bench (bench.h "
+               "lists the files).\n");
     return close_out(f, "report.md", err, errlen);
 }
 
@@ -707,6 +709,15 @@ int report_write(const BenchResults *br, const char *dir, char *err, size_t errl
                  "(small sizes): " : "", br->cpu, br->tri.tp_rays, br->tri.tp_triangles,
                  br->tri.hard[0].cases);
         if (triangles_write(&br->tri, dir, sub, err, errlen) != 0)
+            return -1;
+    }
+    if (br->scale.ran) {
+        char sub[400];
+        snprintf(sub, sizeof sub, "%s%s, %d threads, the reference; closed knots in knot.scene's "
+                                  "view, %dx%d with the hierarchy", br->quick ? "QUICK RUN "
+                 "(small sizes): " : "", br->cpu, br->scale.rows[0].threads, br->scale.nx,
+                 br->scale.ny);
+        if (scaling_write(&br->scale, dir, sub, err, errlen) != 0)
             return -1;
     }
     return write_md(br, dir, err, errlen);
