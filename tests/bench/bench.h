@@ -268,16 +268,20 @@ typedef struct {
     int n, nx, ny;                  /* meshes; the size rendered with the hierarchy */
     int reps;                       /* renders of each, the median taken        */
     double budget;                  /* tests a render without the hierarchy     */
+    char paths[SCALE_MAX][1100];    /* each mesh's scene                        */
     ScaleRow rows[SCALE_MAX];
     double e2e_seconds, e2e_bytes;  /* the render program on the largest mesh:
                                        wall time, peak resident memory          */
 } ScaleResults;
 
-/* Writes the meshes into dir and measures (scenes: the directory of
- * knot.scene; render: the render program).  Returns 0, or -1 with a reason
- * in err. */
-int scaling_bench(const char *dir, const char *scenes, const char *render, bool quick,
-                  ScaleResults *sr, char *err, size_t errlen);
+/* Writes the meshes and their scenes into dir (scenes: the directory of
+ * knot.scene) and runs render, the render program, on the largest: to be
+ * called before the bench has grown (scaling.c).  Returns 0, or -1 with a
+ * reason in err. */
+int scaling_prepare(const char *dir, const char *scenes, const char *render, bool quick,
+                    ScaleResults *sr, char *err, size_t errlen);
+/* Measures each mesh.  Returns 0, or -1 with a reason in err. */
+int scaling_bench(bool quick, ScaleResults *sr, char *err, size_t errlen);
 /* results_scaling.csv and plot_scaling.svg in dir; 0, or -1 with err. */
 int scaling_write(const ScaleResults *sr, const char *dir, const char *subtitle, char *err,
                   size_t errlen);

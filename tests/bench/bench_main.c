@@ -16,8 +16,9 @@
  *   5. Part 5: the ray/triangle formulations' speed, errors and cracks
  *      (triangles.c)
  *   6. Part 5 at scale: rays per second against triangles, with and
- *      without the kit's hierarchy, and the render program (RENDER,
- *      default out/build/sub/solutions/render) on 10^6 of them (scaling.c)
+ *      without the kit's hierarchy; and first of all, before the bench
+ *      grows, the render program (RENDER, default
+ *      out/build/sub/solutions/render) on 10^6 of them (scaling.c)
  *   7. the report: results.csv, results_by_family.csv, renders.csv,
  *      results_triangles.csv, results_scaling.csv, report.md, plot.svg,
  *      plot_triangles.svg, plot_scaling.svg in DIR (default out/bench)
@@ -525,7 +526,9 @@ int main(int argc, char **argv)
         return 1;
     }
 
-    int status = stage_throughput(&o, &br, err, sizeof err);
+    int status = scaling_prepare(o.out, o.scenes, o.render, o.quick, &br.scale, err, sizeof err);
+    if (status == 0)
+        status = stage_throughput(&o, &br, err, sizeof err);
     if (status == 0) {
         progress("ceiling", 0, 1);
         /* the clock read between throughput rounds is the one that counts */
@@ -539,7 +542,7 @@ int main(int argc, char **argv)
     if (status == 0)
         status = triangle_bench(o.scenes, o.quick, o.seed, &br.tri, err, sizeof err);
     if (status == 0)
-        status = scaling_bench(o.out, o.scenes, o.render, o.quick, &br.scale, err, sizeof err);
+        status = scaling_bench(o.quick, &br.scale, err, sizeof err);
     br.load_after = load_average();
     br.seconds_total = now_seconds() - start_time;
     if (status == 0) {

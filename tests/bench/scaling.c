@@ -12,7 +12,8 @@
  * triangles are the first ones of the 100-triangle knot.  Without the
  * hierarchy a render makes nx ny n tests: its image is made smaller (the
  * same view, fewer pixels) so that it makes about SCALE_BUDGET.  Medians
- * of three renders (one in --quick).
+ * of three renders (one in --quick).  scaling_prepare writes the meshes
+ * and runs the render program, first thing; scaling_bench measures.
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
@@ -29,6 +30,7 @@
 #include "svg.h"
 
 #define SCALE_BUDGET 5e7        /* tests per render without the hierarchy */
+#define SCALE_SIZE   "640x480"  /* the render program's image */
 
 /* The meshes: n triangles, the first n of the knot of u rings of v. */
 static const struct { int n, u, v; } scale_meshes[SCALE_MAX] = {
@@ -80,7 +82,10 @@ static double scale_render(Scene *scene, int nx, int ny, RenderHierarchy h, int 
 }
 
 /* Runs render (the program) on the scene at path, to dir/end-to-end.png:
- * its wall time and peak memory into sr.  Returns 0, or -1. */
+ * its wall time and peak memory into sr.  Returns 0, or -1.  The peak is
+ * the largest of the waited-for children's, and a child's counts what it
+ * held before exec, a copy of this process: so this runs before the
+ * bench has grown. */
 static int scale_end_to_end(const char *render, const char *path, const char *dir,
                             ScaleResults *sr, char *err, size_t errlen)
 {
@@ -89,7 +94,7 @@ static int scale_end_to_end(const char *render, const char *path, const char *di
     double t0 = now_seconds();
     pid_t pid = fork();
     if (pid == 0) {
-        execl(render, render, path, "--quiet", "-o", out, (char *)NULL);
+        execl(render, render, path, "--size", SCALE_SIZE, "--quiet", "-o", out, (char *)NULL);
         _exit(127);
     }
     int status;
@@ -108,25 +113,34 @@ static int scale_end_to_end(const char *render, const char *path, const char *di
     return 0;
 }
 
-int scaling_bench(const char *dir, const char *scenes, const char *render, bool quick,
-                  ScaleResults *sr, char *err, size_t errlen)
+int scaling_prepare(const char *dir, const char *scenes, const char *render, bool quick,
+                    ScaleResults *sr, char *err, size_t errlen)
 {
     memset(sr, 0, sizeof *sr);
-    const int nmeshes = quick ? 4 : SCALE_MAX, reps = quick ? 1 : 3;
-    const int nx = quick ? 160 : 640, ny = quick ? 120 : 480;
+    sr->n = quick ? 4 : SCALE_MAX;
+    for (int k = 0; k < sr->n; k++) {
+        progress("scaling: the meshes", k, sr->n);
+        if (k > 0 && scale_meshes[k].u == scale_meshes[k - 1].u)
+            snprintf(sr->paths[k], sizeof sr->paths[k], "%s", sr->paths[k - 1]);
+        else if (scale_write_mesh(dir, scenes, scale_meshes[k].u, scale_meshes[k].v, sr->paths[k],
+                                  sizeof sr->paths[k], err, errlen) != 0)
+            return -1;
+    }
+    progress("scaling: the render program", 0, 1);
+    return scale_end_to_end(render, sr->paths[sr->n - 1], dir, sr, err, errlen);
+}
+
+int scaling_bench(bool quick, ScaleResults *sr, char *err, size_t errlen)
+{
+    const int reps = quick ? 1 : 3, nx = quick ? 160 : 640, ny = quick ? 120 : 480;
     const double budget = quick ? SCALE_BUDGET / 10 : SCALE_BUDGET;
-    char path[1100] = "";
-    for (int k = 0; k < nmeshes; k++) {
-        progress("scaling", k, nmeshes);
+    for (int k = 0; k < sr->n; k++) {
+        progress("scaling", k, sr->n);
         ScaleRow *row = &sr->rows[k];
         row->triangles = scale_meshes[k].n;
-        if ((k == 0 || scale_meshes[k].u != scale_meshes[k - 1].u)
-            && scale_write_mesh(dir, scenes, scale_meshes[k].u, scale_meshes[k].v, path,
-                                sizeof path, err, errlen) != 0)
-            return -1;
         Scene scene;
         double t0 = now_seconds();
-        if (scene_load(&scene, path, err, errlen) != 0)
+        if (scene_load(&scene, sr->paths[k], err, errlen) != 0)
             return -1;
         row->read_seconds = now_seconds() - t0;
         scene.ntriangles = row->triangles;
@@ -148,14 +162,10 @@ int scaling_bench(const char *dir, const char *scenes, const char *render, bool 
         if (row->seconds_without < 0)
             return -1;
     }
-    sr->n = nmeshes;
     sr->nx = nx;
     sr->ny = ny;
     sr->budget = budget;
     sr->reps = reps;
-    progress("scaling: the render program", 0, 1);
-    if (scale_end_to_end(render, path, dir, sr, err, errlen) != 0)
-        return -1;
     sr->ran = true;
     return 0;
 }
@@ -251,10 +261,10 @@ void scaling_md(FILE *f, const ScaleResults *sr)
 
     const ScaleRow *big = &sr->rows[sr->n - 1];
     int mid = scale_find(sr, 10000);
-    fprintf(f, "The render program on the largest mesh (%d triangles) at %dx%d, end to end "
+    fprintf(f, "The render program on the largest mesh (%d triangles) at %s, end to end "
                "(starting, reading the OBJ file, building, rendering, writing the PNG): %.2f s, "
                "peak memory %.0f MB, %.0f bytes per triangle.",
-            big->triangles, sr->nx, sr->ny, sr->e2e_seconds, sr->e2e_bytes / 1e6,
+            big->triangles, SCALE_SIZE, sr->e2e_seconds, sr->e2e_bytes / 1e6,
             sr->e2e_bytes / big->triangles);
     if (mid >= 0 && big->triangles == 1000000)
         fprintf(f, " Rendering it took %.2f times as long as rendering the mesh of 10,000 "

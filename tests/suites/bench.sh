@@ -166,7 +166,7 @@ check "plot_scaling.svg draws the two lines" \
     sh -c "grep -q '>with the hierarchy<' '$dir/plot_scaling.svg' && [ \"\$(grep -c '<path fill=\"none\"' '$dir/plot_scaling.svg')\" -eq 2 ]"
 check "report.md has the section on meshes at scale, with the render program's run" \
     sh -c "grep -qx '## Part 5 at scale: rays per second against triangles' '$md' &&
-           grep -q 'The render program on the largest mesh (1000 triangles) at 160x120, end to end' '$md'"
+           grep -q 'The render program on the largest mesh (1000 triangles) at 640x480, end to end' '$md'"
 
 # The ratio under a second placement of the code (make bench): --ratio-only
 # prints its one line, and --placement puts that line in the report; a
