@@ -83,7 +83,7 @@ static void box_empty(BvhBox *b)
     }
 }
 
-static void box_add(BvhBox *b, const float lo[3], const float hi[3])
+static inline void box_add(BvhBox *b, const float lo[3], const float hi[3])
 {
     for (int a = 0; a < 3; a++) {
         b->lo[a] = lo[a] < b->lo[a] ? lo[a] : b->lo[a];
@@ -92,7 +92,7 @@ static void box_add(BvhBox *b, const float lo[3], const float hi[3])
 }
 
 /* Half the surface area of b (the heuristic needs only ratios); 0 when empty. */
-static double box_area(const BvhBox *b)
+static inline double box_area(const BvhBox *b)
 {
     double d[3];
     for (int a = 0; a < 3; a++)
@@ -102,7 +102,7 @@ static double box_area(const BvhBox *b)
 
 /* The centre of o's box along axis a, within float's finite range (a box
  * that reaches past it has an infinite side). */
-static float centre(const BvhObject *o, int a)
+static inline float centre(const BvhObject *o, int a)
 {
     float c = 0.5f * o->lo[a] + 0.5f * o->hi[a];
     if (!(c == c))
@@ -133,7 +133,7 @@ static BvhBins bins_for(const BvhBox *cb, int n)
 }
 
 /* The bin, 0 .. g->nbins - 1, of o's centre along axis a. */
-static int bin_of(const BvhObject *o, int a, const BvhBins *g)
+static inline int bin_of(const BvhObject *o, int a, const BvhBins *g)
 {
     int k = (int)(((double)centre(o, a) - g->lo[a]) * g->scale[a]);
     return k < g->nbins ? k : g->nbins - 1;
@@ -308,7 +308,7 @@ bool bvh_ray(BvhRay *br, const Ray *ray)
         if (!(fabs(o[k]) <= 0x1p500) || !(m == 0 || (m >= 0x1p-500 && m <= 0x1p500)))
             return false;
         br->o[k] = o[k];
-        br->inv[k] = 1 / r[k];          /* 1 / -0 = -infinity: the slab is all or nothing */
+        br->inv[k] = 1 / r[k];          /* infinite for r[k] = 0 (bvh_slab looks) */
     }
     return true;
 }

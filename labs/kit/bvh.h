@@ -92,14 +92,18 @@ static inline bool bvh_slab(const BvhRay *br, const double lo[3], const double h
     const double widen = BVH_SLACK + 0x1p-40;
     double near = -INFINITY, far = INFINITY;
     for (int k = 0; k < 3; k++) {
+        if (br->inv[k] == INFINITY || br->inv[k] == -INFINITY) {
+            /* r has no component k: the line keeps e's coordinate k */
+            if (lo[k] > br->o[k] || hi[k] < br->o[k])
+                return false;
+            continue;
+        }
         double a = (lo[k] - br->o[k]) * br->inv[k], b = (hi[k] - br->o[k]) * br->inv[k];
         if (br->inv[k] < 0) {
             double swap = a;
             a = b;
             b = swap;
         }
-        /* NaN (0 times an infinite 1/r: the line lies in the slab's face)
-         * bounds nothing */
         near = a > near ? a : near;
         far = b < far ? b : far;
     }

@@ -143,7 +143,7 @@ Vec3 closest_color_bvh(const Scene *scene, const Bvh *bvh, const Ray *ray, bool 
         const BvhNode *node = &bvh->nodes[stack[top].node];
         while (node && node->count == 0) {
             int32_t near = node->first, far = node->first + 1;
-            double tn, tf;
+            double tn = 0, tf = 0;
             bool in_near = closest_enter(&br, &bvh->nodes[near], &tn) && !(tn > best.t);
             bool in_far = closest_enter(&br, &bvh->nodes[far], &tf) && !(tf > best.t);
             if (in_near && in_far && tf < tn) {

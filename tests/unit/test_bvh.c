@@ -337,15 +337,19 @@ static void test_slab_exact_cases(void)
         { { 0, 2, 1 }, { 1, -1, 0 } },            /* the same corner, in the face z = 1 */
         { { 0.5, 0.5, 0.5 }, { 0.3, -0.7, 0.1 } },/* from inside: t0 < 0 < t1 */
         { { 0.5, 0.5, 9 }, { 0, 0, 1 } },         /* wholly behind: t in [-9, -8] */
+        { { 0.5, 0.5, 0.5 }, { 0, 0, 0 } },       /* no direction, from inside: every t */
+        { { 0.5, 1, 0.5 }, { 0, -0.0, 0 } },      /* no direction, on a face */
+        { { 0.5, 1.5, 0.5 }, { 0, 0, 0 } },       /* no direction, outside: no t */
         { { 2, 0.5, 0.5 }, { -1e-300, 1, 0 } },   /* not 0, below 2^-500: bvh_ray refuses it */
     };
-    for (size_t k = 0; k + 1 < sizeof cases / sizeof cases[0]; k++) {
+    const size_t last = sizeof cases / sizeof cases[0] - 1;
+    for (size_t k = 0; k < last; k++) {
         char what[64];
         snprintf(what, sizeof what, "exact case %zu", k);
         check_slab(lo, hi, &cases[k], what);
     }
     BvhRay br;
-    CHECK_MSG(!bvh_ray(&br, &cases[7]), "bvh_ray takes a direction component of 1e-300");
+    CHECK_MSG(!bvh_ray(&br, &cases[last]), "bvh_ray takes a direction component of 1e-300");
     const Ray nan_ray = { { 0, 0, 0 }, { NAN, 0, 1 } }, big_origin = { { 0x1p501, 0, 0 }, { 0, 0, 1 } };
     CHECK(!bvh_ray(&br, &nan_ray));
     CHECK(!bvh_ray(&br, &big_origin));
