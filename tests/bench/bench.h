@@ -14,7 +14,8 @@
  *   measure.c    timing (interleaved medians), the clock, the ceiling
  *   accuracy.c   errors against the exact answers of tests/oracle
  *   renders.c    the lab's scenes rendered at full HD, against exact renders
- *   svg.c        the plot, drawn directly as SVG (svg.h)
+ *   svg.c        the plots, drawn directly as SVG (svg.h)
+ *   outfile.c    every output file written whole, then renamed (outfile.h)
  *   report.c     results.csv, results_by_family.csv, renders.csv, report.md
  *   tri_methods.c  Part 5: the ray/triangle formulations (Moller-Trumbore's
  *                body in tri_methods_body.h, for double and float)

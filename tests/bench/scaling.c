@@ -27,6 +27,7 @@
 #include "kit/render.h"
 #include "kit/scene.h"
 #include "bench.h"
+#include "outfile.h"
 #include "svg.h"
 
 #define SCALE_BUDGET 5e7        /* tests per render without the hierarchy */
@@ -39,17 +40,19 @@ static const struct { int n, u, v; } scale_meshes[SCALE_MAX] = {
 };
 
 /* Writes the knot of u x v and its scene into dir (knot-U-V.obj and
- * knot-U-V.scene, the scene a copy of scenes/knot.scene naming that mesh),
- * and the scene's path into path.  Returns 0, or -1 with a reason. */
+ * knot-U-V.scene, the scene a copy of scenes/knot.scene naming that mesh;
+ * each through a temporary file, renamed), and the scene's path into
+ * path.  Returns 0, or -1 with a reason. */
 static int scale_write_mesh(const char *dir, const char *scenes, int u, int v, char *path,
                             size_t len, char *err, size_t errlen)
 {
-    char cmd[3 * 1024 + 200];
+    char cmd[8 * 1100];
     snprintf(path, len, "%s/knot-%d-%d.scene", dir, u, v);
     snprintf(cmd, sizeof cmd,
-             "sh tests/tools/knot-mesh.sh %d %d >'%s/knot-%d-%d.obj' && "
-             "sed 's/knot\\.obj/knot-%d-%d.obj/' '%s/knot.scene' >'%s'",
-             u, v, dir, u, v, u, v, scenes, path);
+             "sh tests/tools/knot-mesh.sh %d %d >'%s/knot-%d-%d.obj.tmp' && "
+             "mv '%s/knot-%d-%d.obj.tmp' '%s/knot-%d-%d.obj' && "
+             "sed 's/knot\\.obj/knot-%d-%d.obj/' '%s/knot.scene' >'%s.tmp' && mv '%s.tmp' '%s'",
+             u, v, dir, u, v, dir, u, v, dir, u, v, u, v, scenes, path, path, path);
     if (system(cmd) != 0) {
         snprintf(err, errlen, "cannot write the knot of %d x %d into %s (%s)", u, v, dir, cmd);
         return -1;
@@ -175,7 +178,7 @@ static double mrays(int pixels, double seconds)
     return seconds > 0 ? pixels / seconds / 1e6 : 0;
 }
 
-/* The row of 10^4 triangles, or -1. */
+/* The row of n triangles, or -1. */
 static int scale_find(const ScaleResults *sr, int n)
 {
     for (int k = 0; k < sr->n; k++)
@@ -189,11 +192,9 @@ int scaling_write(const ScaleResults *sr, const char *dir, const char *subtitle,
 {
     char path[1024];
     snprintf(path, sizeof path, "%s/results_scaling.csv", dir);
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        snprintf(err, errlen, "%s: cannot write", path);
+    FILE *f = out_open(path, err, errlen);
+    if (!f)
         return -1;
-    }
     fprintf(f, "triangles,nodes,read_s,build_s,mrays_per_s_with,mrays_per_s_without,"
                "pixels_with,pixels_without,threads\n");
     for (int k = 0; k < sr->n; k++) {
@@ -203,10 +204,8 @@ int scaling_write(const ScaleResults *sr, const char *dir, const char *subtitle,
                 mrays(r->pixels_without, r->seconds_without), r->pixels_with, r->pixels_without,
                 r->threads);
     }
-    if (fclose(f) != 0) {
-        snprintf(err, errlen, "%s: write failed", path);
+    if (out_close(f, path, err, errlen) != 0)
         return -1;
-    }
     static PlotPoint with[SCALE_MAX], without[SCALE_MAX];
     for (int k = 0; k < sr->n; k++) {
         const ScaleRow *r = &sr->rows[k];

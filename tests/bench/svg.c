@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "outfile.h"
 #include "svg.h"
 
 void pareto_front(const PlotPoint *pts, int n, bool *on)
@@ -281,16 +282,14 @@ static void draw_panel(FILE *f, const PlotPanel *p, double top)
     }
 }
 
-/* Opens path and writes the document's start, its title and subtitle, for
+/* Opens path (outfile.h) and writes the document's start, its title and subtitle, for
  * a picture height pixels high.  Returns the file, or NULL with err. */
 static FILE *svg_begin(const char *path, int height, const char *title, const char *subtitle,
                        char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        snprintf(err, errlen, "%s: cannot write", path);
+    FILE *f = out_open(path, err, errlen);
+    if (!f)
         return NULL;
-    }
     fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
                "viewBox=\"0 0 %d %d\" font-family=\"Helvetica, Arial, sans-serif\" "
@@ -304,15 +303,11 @@ static FILE *svg_begin(const char *path, int height, const char *title, const ch
     return f;
 }
 
-/* Ends the document and closes f.  Returns 0, or -1 with err. */
+/* Ends the document and closes f into path.  Returns 0, or -1 with err. */
 static int svg_end(FILE *f, const char *path, char *err, size_t errlen)
 {
     fprintf(f, "</svg>\n");
-    if (fclose(f) != 0) {
-        snprintf(err, errlen, "%s: write failed", path);
-        return -1;
-    }
-    return 0;
+    return out_close(f, path, err, errlen);
 }
 
 int svg_plot(const char *path, const char *title, const char *subtitle,

@@ -287,6 +287,15 @@ static void check_same(const Scene *scene, const char *what, bool *stray)
     image_free(&with);
 }
 
+/* Loads the scene at path into scene.  Returns 0, or -1 after a failed check. */
+static int load(const char *path, Scene *scene)
+{
+    char err[512];
+    int status = scene_load(scene, path, err, sizeof err);
+    CHECK_MSG(status == 0, "%s", err);
+    return status == 0 ? 0 : -1;
+}
+
 /* ---- the box test ------------------------------------------------------ */
 
 /* Checks bvh_slab on one box and ray against line_in_box: where the exact
@@ -487,11 +496,8 @@ static void test_shipped_scenes_reference(void)
         char path[128];
         snprintf(path, sizeof path, "labs/scenes/%s.scene", names[k]);
         Scene scene;
-        char err[512];
-        if (scene_load(&scene, path, err, sizeof err) < 0) {
-            CHECK_MSG(0, "%s", err);
+        if (load(path, &scene) < 0)
             continue;
-        }
         if (strcmp(names[k], "cracks") != 0 || CHECK_SANITIZED) {
             bool big = strcmp(names[k], "knot") == 0 || CHECK_SANITIZED;  /* 10,000 triangles a ray */
             scene.nx = big ? 64 : 160;
@@ -513,11 +519,8 @@ static void test_shipped_scenes_reference(void)
 static void test_cracks_watertight(void)
 {
     Scene scene;
-    char err[512];
-    if (scene_load(&scene, "labs/scenes/cracks.scene", err, sizeof err) < 0) {
-        CHECK_MSG(0, "%s", err);
+    if (load("labs/scenes/cracks.scene", &scene) < 0)
         return;
-    }
     Image img;
     RenderStats stats;
     if (render_as(&scene, RENDER_HIERARCHY_ON, 2, &img, &stats) == 0) {
@@ -618,11 +621,9 @@ static void test_probe_finds_what_rays_do_not(void)
 static void test_prunes(void)
 {
     Scene scene;
-    char err[512];
-    if (scene_load(&scene, "labs/scenes/knot.scene", err, sizeof err) < 0) {
-        CHECK_MSG(0, "%s", err);
+    char err[128];
+    if (load("labs/scenes/knot.scene", &scene) < 0)
         return;
-    }
     Bvh bvh;
     CHECK(bvh_build(&bvh, &scene, err, sizeof err) == 0);
     const int nx = 64, ny = 48;
