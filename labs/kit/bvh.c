@@ -9,9 +9,13 @@
  * inside it with a probability of about the ratio of their surface areas.
  * A node of n objects made a leaf costs n object tests; split into L and
  * R, it costs the two box tests of its children and, weighted by those
- * ratios, the tests of L's and R's objects.  The candidate splits are the 15 planes between
- * 16 equal bins of the objects' centres (n - 1 between n bins for a node
- * of n < 16 objects), along each axis.
+ * ratios, the tests of L's and R's objects.  The candidate splits are the
+ * 15 planes between 16 equal bins of the objects' centres (n - 1 between n
+ * bins for a node of n < 16 objects), along each axis.
+ *
+ * Depth: below BVH_SAH_DEPTH a node's range is halved, so no path is
+ * longer than 40 + log2(n), and a scene holds fewer than 2^21 objects
+ * (scene.h): under BVH_MAX_DEPTH, the walk's stack.
  */
 #include "bvh.h"
 
@@ -21,7 +25,7 @@
 
 #define BVH_BINS      16
 #define BVH_LEAF_MAX  8        /* a leaf holds at most this many objects */
-#define BVH_SAH_DEPTH 40       /* deeper, halve the range: depth <= 40 + log2(n) */
+#define BVH_SAH_DEPTH 40       /* deeper, halve the range */
 #define BVH_COST_BOX  2.0      /* an inner node's two box tests, in object tests */
 
 /* An object while the hierarchy is built: its box, rounded outward to
