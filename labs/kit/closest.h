@@ -22,15 +22,19 @@
  * the plain loop's, ties and all, for functions that depend on their
  * arguments alone (no state kept from call to call, nothing written through
  * their pointers) and that are honest: every hit they report at a t < +inf
- * is at a point in the box of the object they were given, or within a
- * relative 2^-20 of its t there (bvh_slab).  A correct function always is,
- * up to its rounding.  Any function is, given anything: a hit at a wrong t
- * in the box, at t <= 0, at t = NaN, at t = +infinity, or a miss where the
- * ray hits, is drawn as the plain loop draws it.  A hit reported outside
- * the box (a stray hit) would be lost where a box test skips the object, so
- * the kit looks for them: closest_probe tries each object (or a sample of
- * thousands) with rays aimed around it, and every hit the hierarchy takes
- * is checked; one stray hit, and the picture is drawn with the plain loop.
+ * is in the box of the object they were given, that is, t is in the
+ * interval over which the line x(t) = e + t r is in the box, widened at
+ * each end by 2^-20 of the end (bvh_slab).  A correct function is honest:
+ * its t errs by far less.  An honest function may be wrong in every other
+ * way: hits at a wrong t inside the box, at t <= 0, at NaN or +infinity,
+ * misses where the ray hits, are all drawn as the plain loop draws them.
+ * A hit outside the box (a stray hit) would be lost where a box test skips
+ * the object, so the kit looks for them: closest_probe tries each object
+ * (or thousands of them) with rays aimed around it, and every hit the
+ * hierarchy takes is checked; at one stray hit the picture is drawn with
+ * the plain loop.  (Moller-Trumbore's t for a ray in its triangle's plane
+ * is any number: cracks.scene's side walls, whose planes hold the eye,
+ * give it stray hits.)
  */
 #ifndef KIT_CLOSEST_H
 #define KIT_CLOSEST_H
