@@ -257,7 +257,7 @@ void triangles_md(FILE *f, const TriResults *tr);
 
 /* One mesh, rendered with the hierarchy and without. */
 typedef struct {
-    int triangles, nodes, threads;
+    int triangles, nodes;
     double read_seconds;            /* scene_load, the OBJ file included        */
     double build_seconds;           /* the hierarchy, and its probe             */
     double seconds_with, seconds_without;   /* median render times              */

@@ -710,10 +710,9 @@ int report_write(const BenchResults *br, const char *dir, char *err, size_t errl
     }
     if (br->scale.ran) {
         char sub[400];
-        snprintf(sub, sizeof sub, "%s%s, %d threads, the reference; closed knots in knot.scene's "
+        snprintf(sub, sizeof sub, "%s%s, one thread, the reference; closed knots in knot.scene's "
                                   "view, %dx%d with the hierarchy", br->quick ? "QUICK RUN "
-                 "(small sizes): " : "", br->cpu, br->scale.rows[0].threads, br->scale.nx,
-                 br->scale.ny);
+                 "(small sizes): " : "", br->cpu, br->scale.nx, br->scale.ny);
         if (scaling_write(&br->scale, dir, sub, err, errlen) != 0)
             return -1;
     }

@@ -2,9 +2,9 @@
  * scaling.c - Part 5 at scale in `make bench`: rays per second against the
  * number of triangles, 1 to 10^6, with the kit's bounding volume hierarchy
  * (labs/kit/bvh.h) and without it (every triangle for every ray), through
- * the renderer itself (render_scene, one thread per core); and the render
- * program end to end on the largest mesh, reading included, with its peak
- * memory.
+ * the renderer itself (render_scene, on one thread, as the bench's other
+ * timings); and the render program end to end on the largest mesh, on
+ * every core, reading included, with its peak memory.
  *
  * The meshes are closed tubes around a trefoil knot, written by
  * tests/tools/knot-mesh.sh into the output directory and drawn in
@@ -71,7 +71,7 @@ static double scale_render(Scene *scene, int nx, int ny, RenderHierarchy h, int 
     scene->ny = ny;
     if (image_alloc(&img, nx, ny, err, errlen) != 0)
         return -1;
-    RenderOptions opt = { 0, false, h };
+    RenderOptions opt = { 1, false, h };
     for (int r = 0; r < reps; r++) {
         if (render_scene(scene, &img, &opt, last, err, errlen) != 0) {
             image_free(&img);
@@ -160,7 +160,6 @@ int scaling_bench(bool quick, ScaleResults *sr, char *err, size_t errlen)
         row->seconds_without = row->seconds_with < 0 ? -1
                                : scale_render(&scene, bx, by, RENDER_HIERARCHY_OFF, reps, &st, err, errlen);
         row->pixels_without = bx * by;
-        row->threads = st.threads;
         scene_free(&scene);
         if (row->seconds_without < 0)
             return -1;
@@ -196,13 +195,12 @@ int scaling_write(const ScaleResults *sr, const char *dir, const char *subtitle,
     if (!f)
         return -1;
     fprintf(f, "triangles,nodes,read_s,build_s,mrays_per_s_with,mrays_per_s_without,"
-               "pixels_with,pixels_without,threads\n");
+               "pixels_with,pixels_without\n");
     for (int k = 0; k < sr->n; k++) {
         const ScaleRow *r = &sr->rows[k];
-        fprintf(f, "%d,%d,%.4f,%.4f,%.4g,%.4g,%d,%d,%d\n", r->triangles, r->nodes, r->read_seconds,
+        fprintf(f, "%d,%d,%.4f,%.4f,%.4g,%.4g,%d,%d\n", r->triangles, r->nodes, r->read_seconds,
                 r->build_seconds, mrays(r->pixels_with, r->seconds_with),
-                mrays(r->pixels_without, r->seconds_without), r->pixels_with, r->pixels_without,
-                r->threads);
+                mrays(r->pixels_without, r->seconds_without), r->pixels_with, r->pixels_without);
     }
     if (out_close(f, path, err, errlen) != 0)
         return -1;
@@ -227,14 +225,13 @@ void scaling_md(FILE *f, const ScaleResults *sr)
     if (!sr->ran)
         return;
     fprintf(f, "\n## Part 5 at scale: rays per second against triangles\n\n");
-    fprintf(f, "The renderer (render_scene, %d threads) with the reference, on closed tubes "
+    fprintf(f, "The renderer (render_scene, one thread) with the reference, on closed tubes "
                "around a trefoil knot (tests/tools/knot-mesh.sh) in knot.scene's view: with the "
                "bounding volume hierarchy at %dx%d; without it, every triangle for every ray, "
-               "at fewer pixels of the same view (about %.0f million tests a render). Million rays per "
-               "second, the median of %s; reading is the scene reader's time for the OBJ file, "
-               "building the hierarchy's (and its probe for stray hits).\n\n",
-            sr->rows[0].threads, sr->nx, sr->ny, sr->budget / 1e6,
-            sr->reps == 1 ? "one render" : "three renders");
+               "at fewer pixels of the same view (about %.0f million tests a render). Million "
+               "rays per second, the median of %s; reading is the scene reader's time for the "
+               "OBJ file, building the hierarchy's (and its probe for stray hits).\n\n",
+            sr->nx, sr->ny, sr->budget / 1e6, sr->reps == 1 ? "one render" : "three renders");
     fprintf(f, "| triangles |");
     for (int k = 0; k < sr->n; k++)
         fprintf(f, " %d |", sr->rows[k].triangles);
