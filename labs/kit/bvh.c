@@ -241,6 +241,8 @@ static void bvh_node(BvhBuild *b, int node, int first, int n, int depth)
 
     int left = n / 2;                   /* past BVH_SAH_DEPTH: halves */
     if (depth < BVH_SAH_DEPTH) {
+        if (n <= BVH_COST_BOX)
+            return;                     /* a split costs no less: a leaf */
         int axis = 0, bin = 0;
         BvhBins g = bins_for(&cb, n);
         double cost = bvh_best_split(objs, n, &g, box_area(&box), &axis, &bin);
