@@ -273,6 +273,8 @@ typedef struct {
     ScaleRow rows[SCALE_MAX];
     double e2e_seconds, e2e_bytes;  /* the render program on the largest mesh:
                                        wall time, peak resident memory          */
+    double ratio_big, ratio_small;  /* render times of 10^6 and 10^4 triangles,
+                                       taken in turn (0: not measured)          */
 } ScaleResults;
 
 /* Writes the meshes and their scenes into dir (scenes: the directory of
