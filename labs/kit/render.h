@@ -27,8 +27,9 @@ typedef enum {
     RENDER_HIERARCHY_ON      /* always                                       */
 } RenderHierarchy;
 
-/* Below this many spheres and triangles, testing them all costs a ray no
- * more than walking a hierarchy would (tests/bench/README.md). */
+/* Below this many spheres and triangles, testing them all is cheap, and
+ * for a scene whose objects fill the view, cheaper than walking a
+ * hierarchy (tests/bench/README.md, "Part 5 at scale"). */
 #define RENDER_HIERARCHY_MIN 16
 
 typedef struct {
