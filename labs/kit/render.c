@@ -82,8 +82,7 @@ static void render_error(char *err, size_t errlen, const char *fmt, ...)
     va_end(ap);
 }
 
-/* The monotonic clock in seconds (its origin is arbitrary). */
-static double render_now(void)
+double render_now(void)
 {
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
@@ -273,7 +272,10 @@ static const Bvh *render_hierarchy(const Scene *scene, Bvh *bvh, const RenderOpt
     stats->nodes = bvh->nnodes;
     stats->stray = closest_probe(scene, bvh);
     stats->build_seconds = render_now() - start;
-    return stats->stray ? NULL : bvh;
+    if (!stats->stray)
+        return bvh;
+    bvh_free(bvh);                      /* the plain loop needs none of it */
+    return NULL;
 }
 
 /* Says, when the progress line may show, why a big scene may now be slow. */

@@ -59,6 +59,10 @@ typedef struct {
  * render.  Reads only the thread's own variables: safe in a signal handler. */
 int render_crash_rows(int *j0, int *j1);
 
+/* The monotonic clock in seconds, whose origin is arbitrary: the render's
+ * own clock, for timing what comes before it (reading the scene). */
+double render_now(void);
+
 /* Renders scene into img, which must be scene->nx x scene->ny.  A NULL
  * opt means one thread per core, no progress and RENDER_HIERARCHY_AUTO.
  * Returns 0, or -1 with a reason in err (e.g. threads could not start). */

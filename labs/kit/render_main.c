@@ -19,7 +19,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "image.h"
@@ -319,14 +318,6 @@ static void render_main_suggest_scene(const char *path)
         fprintf(stderr, "render: the kit's scenes are in labs/scenes: SCENE=%s\n", guess);
 }
 
-/* The monotonic clock in seconds (its origin is arbitrary). */
-static double render_main_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 /* Prints what the render did before its "rendered" line: for a scene with
  * triangles, how long reading it took, and the hierarchy built, if any. */
 static void render_main_report(const char *name, const Scene *scene, double read_seconds,
@@ -355,13 +346,13 @@ int main(int argc, char **argv)
 
     char err[512], default_out[4096];
     Scene scene;
-    double read_start = render_main_now();
+    double read_start = render_now();
     if (scene_load(&scene, args.scene_path, err, sizeof err) < 0) {
         fprintf(stderr, "render: %s\n", err);
         render_main_suggest_scene(args.scene_path);
         return 1;
     }
-    double read_seconds = render_main_now() - read_start;
+    double read_seconds = render_now() - read_start;
     if (args.nx > 0) {
         scene.nx = args.nx;
         scene.ny = args.ny;
