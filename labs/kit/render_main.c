@@ -41,7 +41,8 @@ typedef struct {
 static void render_usage(FILE *f)
 {
     fprintf(f,
-            "usage: render SCENE [--size WxH] [-o OUT] [--threads N] [--hierarchy auto|on|off] [--quiet]\n"
+            "usage: render SCENE [--size WxH] [-o OUT] [--threads N] [--hierarchy auto|on|off]"
+            " [--quiet]\n"
             "  renders the scene file SCENE with the stage files built in\n"
             "  --size WxH   image size instead of the scene's, 1..%d each side\n"
             "  -o OUT       output image, .png or .ppm (default out/<scene name>.png)\n"
@@ -129,12 +130,14 @@ static int render_main_args(int argc, char **argv, RenderArgs *args)
                 }
                 args->out_path = value;
             } else if (strcmp(a, "--hierarchy") == 0) {
-                static const char *const modes[] = { "auto", "off", "on" };   /* RenderHierarchy's order */
+                /* in RenderHierarchy's order */
+                static const char *const modes[] = { "auto", "off", "on" };
                 int m = 0;
                 while (m < 3 && strcmp(value, modes[m]) != 0)
                     m++;
                 if (m == 3) {
-                    fprintf(stderr, "render: --hierarchy wants auto, on or off, got '%.40s'\n", value);
+                    fprintf(stderr, "render: --hierarchy wants auto, on or off, got '%.40s'\n",
+                            value);
                     goto usage;
                 }
                 args->hierarchy = (RenderHierarchy)m;
@@ -328,7 +331,8 @@ static void render_main_report(const char *name, const Scene *scene, double read
                scene->ntriangles == 1 ? "" : "s");
     if (stats->objects == 0)
         return;
-    printf("built a hierarchy of %d triangle%s", scene->ntriangles, scene->ntriangles == 1 ? "" : "s");
+    printf("built a hierarchy of %d triangle%s", scene->ntriangles,
+           scene->ntriangles == 1 ? "" : "s");
     if (scene->nspheres > 0)
         printf(" and %d sphere%s", scene->nspheres, scene->nspheres == 1 ? "" : "s");
     printf(" in %d nodes in %.3f s%s\n", stats->nodes, stats->build_seconds,
