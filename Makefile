@@ -82,7 +82,7 @@ HAVE_SOLUTIONS := $(wildcard solutions/part1_image_plane.c)
 # ---- the framework students use (labs/kit) ---------------------------------
 KIT_SRC    = labs/kit/image.c labs/kit/png.c labs/kit/zlib.c labs/kit/scene.c labs/kit/render.c \
              labs/kit/numtext.c labs/kit/savefile.c labs/kit/textfile.c labs/kit/obj.c \
-             labs/kit/closest.c labs/kit/compare.c
+             labs/kit/bvh.c labs/kit/closest.c labs/kit/compare.c
 KIT_HDR    = $(wildcard labs/*.h labs/kit/*.h)
 KIT_OBJ    = $(KIT_SRC:labs/kit/%.c=$(BUILD)/kit/%.o)
 KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
@@ -160,7 +160,7 @@ endif
 $(BUILD)/kit/lto/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) -c $< -o $@
 RENDER_OBJ = $(BUILD)/kit/lto/render_main.o $(BUILD)/kit/lto/render.o $(BUILD)/kit/lto/image.o \
-             $(BUILD)/kit/lto/closest.o
+             $(BUILD)/kit/lto/closest.o $(BUILD)/kit/lto/bvh.o
 # A link that fails: bin/linkcheck then says what the linker's message
 # means for the stage files (tests/grader/linkcheck_main.c): a helper
 # defined in two of them, most often, which make render cannot link and the
@@ -432,11 +432,32 @@ UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
 # (Not the grader's units: their own rules are below.)
 GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers lmsname terminal csv
 UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) \
-                         $(BUILD)/tests/test_hidden $(BUILD)/tests/test_figures,$(UNIT_BIN))
+                         $(BUILD)/tests/test_hidden $(BUILD)/tests/test_figures $(BUILD)/tests/test_bvh,\
+                         $(UNIT_BIN))
 $(UNIT_PLAIN): $(BUILD)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS) | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $(THREADS) -Ilabs $< $(REF_OBJ) $(UNIT_LIBS) -o $@ $(LDLIBS)
 $(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN) | $$(@D)/.
 	$(Q)$(CC) $(SAN_LINK) $(THREADS) -Ilabs $< $(REF_ASAN) $(UNIT_LIBS_ASAN) -o $@ $(LDLIBS)
+
+# test_bvh links its own sphere_intersect and triangle_intersect, which
+# pass each call on to the reference's (compiled under other names) or to
+# deliberately wrong ones; the other parts are the reference's.
+BVH_RENAME = -Dsphere_intersect=reference_sphere_intersect -Dtriangle_intersect=reference_triangle_intersect
+BVH_OWN    = part3a_sphere_intersect part5_triangle_intersect
+BVH_REF    = $(BVH_OWN:%=$(BUILD)/tests/obj/renamed_%.o) \
+             $(filter-out $(BVH_OWN:%=$(BUILD)/sub/$(REF_DIR)/%.o),$(REF_OBJ))
+BVH_REF_ASAN = $(BVH_OWN:%=$(ASAN)/tests/obj/renamed_%.o) \
+               $(filter-out $(BVH_OWN:%=$(ASAN)/sub/$(REF_DIR)/%.o),$(REF_ASAN))
+$(BUILD)/tests/obj/renamed_%.o: $(REF_DIR)/%.c $(KIT_HDR) | $$(@D)/.
+	$(Q)$(CC) $(CFLAGS) $(BVH_RENAME) -Ilabs -c $< -o $@
+$(ASAN)/tests/obj/renamed_%.o: $(REF_DIR)/%.c $(KIT_HDR) | $$(@D)/.
+	$(Q)$(CC) $(SANFLAGS) $(BVH_RENAME) -Ilabs -c $< -o $@
+$(BUILD)/tests/obj/test_bvh.o: tests/unit/test_bvh.c tests/unit/check.h $(KIT_HDR) | $$(@D)/.
+	$(Q)$(CC) $(CFLAGS) $(THREADS) -Ilabs -c $< -o $@
+$(BUILD)/tests/test_bvh: $(BUILD)/tests/obj/test_bvh.o $(BVH_REF) $(UNIT_LIBS) | $$(@D)/.
+	$(Q)$(CC) $(CFLAGS) $(THREADS) $^ -o $@ $(LDLIBS)
+$(ASAN)/tests/test_bvh: tests/unit/test_bvh.c tests/unit/check.h $(BVH_REF_ASAN) $(UNIT_LIBS_ASAN) | $$(@D)/.
+	$(Q)$(CC) $(SAN_LINK) $(THREADS) -Ilabs $< $(BVH_REF_ASAN) $(UNIT_LIBS_ASAN) -o $@ $(LDLIBS)
 
 # test_hexfloat checks two headers of the grader's.
 $(BUILD)/tests/test_hexfloat $(ASAN)/tests/test_hexfloat: tests/grader/hexfloat.h tests/grader/decimal.h
@@ -522,7 +543,7 @@ reverse = $(if $(1),$(call reverse,$(wordlist 2,$(words $(1)),$(1))) $(firstword
 $(BUILD)/bin/bench-reordered: $(BENCH_OBJ) $(STAGES:%=$(BUILD)/bench/solutions/%.o) \
                               $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $(call reverse,$(filter %.o,$^)) $(filter %.a,$^) -o $@ $(LDLIBS)
-bench: $(BUILD)/bin/bench $(BUILD)/bin/bench-reordered
+bench: $(BUILD)/bin/bench $(BUILD)/bin/bench-reordered $(BUILD)/sub/solutions/render
 	@mkdir -p out/bench
 	$(BUILD)/bin/bench-reordered --ratio-only >out/bench/placement.txt.new && mv out/bench/placement.txt.new out/bench/placement.txt
 	$(BUILD)/bin/bench --out out/bench --placement out/bench/placement.txt

@@ -87,6 +87,7 @@ reference far     256x256
 reference ground  320x240
 reference cracks  320x240      # its own size: the pixel rays run along its edges
 reference triangles 320x240
+reference knot    320x240
 
 # ---- common mistakes, one faulty stage file each -------------------------
 mistake mistake-degrees-to-tan  p1-degrees-to-tan  flip    240x240   # Part 1

@@ -7,6 +7,11 @@
  * Every pixel depends only on (i, j), so the image is the same whatever the
  * number of threads.  The calling thread waits, and in a terminal shows how
  * far the render has got once it has taken more than a second.
+ *
+ * A scene drawn by closest.h with enough spheres and triangles gets a
+ * hierarchy first (bvh.h), probed for stray hits (closest_probe).  When a
+ * thread meets a stray hit during the render, every thread stops and the
+ * whole image is drawn again without it.
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
@@ -36,6 +41,9 @@ typedef struct {
     const Scene *scene;
     Image *img;
     double w, h;                 /* the image plane's size (Part 1)           */
+    bool closest;                /* drawn by closest.h, not by ray_color      */
+    const Bvh *bvh;              /* closest.h's hierarchy, or NULL            */
+    atomic_bool stray;           /* a thread met a stray hit (closest.h)      */
     int rows_per_chunk;
     atomic_int next_row;         /* the first row no thread has taken yet     */
     atomic_int rows_done;        /* rows drawn, for the progress line         */
@@ -74,8 +82,7 @@ static void render_error(char *err, size_t errlen, const char *fmt, ...)
     va_end(ap);
 }
 
-/* The monotonic clock in seconds (its origin is arbitrary). */
-static double render_now(void)
+double render_now(void)
 {
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
@@ -142,18 +149,17 @@ static void *render_worker(void *arg)
 {
     RenderJob *job = arg;
     const int ny = job->scene->ny;
-    const bool closest = job->scene->nplanes > 0 || job->scene->ntriangles > 0;
-    for (;;) {
+    while (!atomic_load(&job->stray)) {
         int j0 = atomic_fetch_add(&job->next_row, job->rows_per_chunk);
         if (j0 >= ny)
             break;
         int j1 = ny - j0 < job->rows_per_chunk ? ny : j0 + job->rows_per_chunk;
         crash_j1 = j1;
         crash_j0 = j0;
-        if (closest)
-            closest_rows(job->scene, job->img, job->w, job->h, j0, j1);
-        else
+        if (!job->closest)
             render_rows(job, j0, j1);
+        else if (!closest_rows(job->scene, job->bvh, job->img, job->w, job->h, j0, j1))
+            atomic_store(&job->stray, true);
         atomic_fetch_add(&job->rows_done, j1 - j0);
     }
     pthread_mutex_lock(&job->lock);
@@ -217,6 +223,72 @@ static void render_wait(RenderJob *job, bool show, double start)
     }
 }
 
+/* Starts nthreads workers on job from its first row and waits for them
+ * (with show set, with a progress line from start on).  Returns the
+ * number of threads started: 0 when none could start, with the reason in
+ * err. */
+static int render_pass(RenderJob *job, int nthreads, bool show, double start,
+                       char *err, size_t errlen)
+{
+    pthread_t threads[RENDER_MAX_THREADS];
+    int started = 0, status = 0;
+    atomic_store(&job->next_row, 0);
+    atomic_store(&job->rows_done, 0);
+    pthread_mutex_lock(&job->lock);
+    for (; started < nthreads; started++) {
+        status = pthread_create(&threads[started], NULL, render_worker, job);
+        if (status != 0)
+            break;                    /* the threads already started share the rows */
+        job->running++;
+    }
+    pthread_mutex_unlock(&job->lock);
+    if (started == 0) {
+        render_error(err, errlen, "render: cannot start a thread: %s", strerror(status));
+        return 0;
+    }
+    render_wait(job, show, start);
+    for (int k = 0; k < started; k++)
+        pthread_join(threads[k], NULL);
+    return started;
+}
+
+/* Builds the hierarchy of a scene that closest.h draws, when opt asks for
+ * one, and probes it for stray hits (closest_probe).  Returns it, or NULL
+ * when there is none to use; fills in the hierarchy's part of stats.  A
+ * hierarchy that cannot be built (no memory) only makes the render slower. */
+static const Bvh *render_hierarchy(const Scene *scene, Bvh *bvh, const RenderOptions *opt,
+                                   RenderStats *stats)
+{
+    int objects = scene->nspheres + scene->ntriangles;
+    RenderHierarchy want = opt ? opt->hierarchy : RENDER_HIERARCHY_AUTO;
+    if (want == RENDER_HIERARCHY_OFF || objects == 0
+        || (want == RENDER_HIERARCHY_AUTO && objects < RENDER_HIERARCHY_MIN))
+        return NULL;
+    double start = render_now();
+    char err[128];
+    if (bvh_build(bvh, scene, err, sizeof err) < 0)
+        return NULL;
+    stats->objects = objects;
+    stats->nodes = bvh->nnodes;
+    stats->stray = closest_probe(scene, bvh);
+    stats->build_seconds = render_now() - start;
+    if (!stats->stray)
+        return bvh;
+    bvh_free(bvh);                      /* the plain loop needs none of it */
+    return NULL;
+}
+
+/* Says, when the progress line may show, why a big scene may now be slow. */
+static void render_stray_note(const RenderOptions *opt)
+{
+    if (opt && opt->progress)
+        fprintf(stderr, "render: note: sphere_intersect or triangle_intersect said a ray hit an "
+                        "object at a point outside the object's box, which the hierarchy that "
+                        "speeds up big scenes may skip: every object is tested for every ray "
+                        "instead, so that the picture is the one your code makes (it takes "
+                        "longer)\n");
+}
+
 /* Renders scene into img (see render.h).  Returns 0, or -1 with a reason
  * in err when the image does not match the scene or no thread could start. */
 int render_scene(const Scene *scene, Image *img, const RenderOptions *opt,
@@ -228,11 +300,21 @@ int render_scene(const Scene *scene, Image *img, const RenderOptions *opt,
                      img->width, img->height, nx, ny);
         return -1;
     }
-    double start = render_now();
+    RenderStats unused;
+    if (!stats)
+        stats = &unused;
+    memset(stats, 0, sizeof *stats);
 
     RenderJob job;
+    Bvh bvh = { 0 };
     job.scene = scene;
     job.img = img;
+    job.closest = scene->nplanes > 0 || scene->ntriangles > 0;
+    job.bvh = job.closest ? render_hierarchy(scene, &bvh, opt, stats) : NULL;
+    if (stats->stray)
+        render_stray_note(opt);
+    atomic_init(&job.stray, false);
+    double start = render_now();
     crash_j0 = -2;
     image_plane_size(scene->fov_degrees, (double)nx / ny, scene->d, &job.w, &job.h);
     crash_j0 = -1;
@@ -249,45 +331,36 @@ int render_scene(const Scene *scene, Image *img, const RenderOptions *opt,
         nthreads = chunks;            /* a thread with no rows would only cost */
 
     if (pthread_mutex_init(&job.lock, NULL) != 0) {
+        bvh_free(&bvh);
         render_error(err, errlen, "render: cannot create a mutex");
         return -1;
     }
     if (pthread_cond_init(&job.finished, NULL) != 0) {
         pthread_mutex_destroy(&job.lock);
+        bvh_free(&bvh);
         render_error(err, errlen, "render: cannot create a condition variable");
         return -1;
     }
-    pthread_t threads[RENDER_MAX_THREADS];
-    int started = 0, status = 0;
-    pthread_mutex_lock(&job.lock);
-    for (; started < nthreads; started++) {
-        status = pthread_create(&threads[started], NULL, render_worker, &job);
-        if (status != 0)
-            break;                    /* the threads already started share the rows */
-        job.running++;
-    }
-    pthread_mutex_unlock(&job.lock);
-
-    if (started == 0) {
-        render_error(err, errlen, "render: cannot start a thread: %s", strerror(status));
-    } else {
-        bool show = opt && opt->progress && isatty(STDERR_FILENO);
-        render_wait(&job, show, start);
-        for (int k = 0; k < started; k++)
-            pthread_join(threads[k], NULL);
+    bool show = opt && opt->progress && isatty(STDERR_FILENO);
+    int started = render_pass(&job, nthreads, show, start, err, errlen);
+    if (started > 0 && atomic_load(&job.stray)) {
+        render_stray_note(opt);
+        stats->stray = true;
+        job.bvh = NULL;
+        atomic_store(&job.stray, false);
+        started = render_pass(&job, nthreads, show, start, err, errlen);
     }
     pthread_cond_destroy(&job.finished);
     pthread_mutex_destroy(&job.lock);
+    bvh_free(&bvh);
     if (started == 0)
         return -1;
 
     double seconds = render_now() - start;
     if (!(seconds > 0))
         seconds = 1e-9;               /* a clock too coarse to see the render */
-    if (stats) {
-        stats->seconds = seconds;
-        stats->rays_per_second = (double)nx * ny / seconds;
-        stats->threads = started;
-    }
+    stats->seconds = seconds;
+    stats->rays_per_second = (double)nx * ny / seconds;
+    stats->threads = started;
     return 0;
 }

@@ -1,10 +1,12 @@
 /*
  * render_main.c - the `render` program: a scene file in, a PNG or PPM out.
  *
- *     render SCENE [--size WxH] [-o OUT] [--threads N] [--quiet]
+ *     render SCENE [--size WxH] [-o OUT] [--threads N] [--hierarchy auto|on|off] [--quiet]
  *
- * Prints the time taken and the rays per second.  Exit status: 0 on
- * success, 1 when the scene or the output fails, 2 on bad usage.
+ * Prints the time taken and the rays per second, and for a scene with
+ * triangles the time taken to read it and the hierarchy built.  Exit
+ * status: 0 on success, 1 when the scene or the output fails, 2 on bad
+ * usage.
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
@@ -31,6 +33,7 @@ typedef struct {
     const char *out_path;        /* NULL: out/<scene name>.png */
     int nx, ny;                  /* 0: the scene's own size    */
     int threads;                 /* 0: one per core            */
+    RenderHierarchy hierarchy;
     bool quiet;
 } RenderArgs;
 
@@ -38,14 +41,17 @@ typedef struct {
 static void render_usage(FILE *f)
 {
     fprintf(f,
-            "usage: render SCENE [--size WxH] [-o OUT] [--threads N] [--quiet]\n"
+            "usage: render SCENE [--size WxH] [-o OUT] [--threads N] [--hierarchy auto|on|off]"
+            " [--quiet]\n"
             "  renders the scene file SCENE with the stage files built in\n"
             "  --size WxH   image size instead of the scene's, 1..%d each side\n"
             "  -o OUT       output image, .png or .ppm (default out/<scene name>.png)\n"
             "  --threads N  worker threads, 1..%d (default one per core)\n"
+            "  --hierarchy  for a scene with planes or triangles, a bounding volume hierarchy\n"
+            "               over its spheres and triangles: auto (with %d or more), on, off\n"
             "  --quiet      print nothing but errors\n"
             "exit status: 0 done, 1 bad scene or output, 2 bad usage\n",
-            IMAGE_MAX_SIDE, RENDER_MAIN_MAX_THREADS);
+            IMAGE_MAX_SIDE, RENDER_MAIN_MAX_THREADS, RENDER_HIERARCHY_MIN);
 }
 
 /* Reads a whole decimal number from text (digits only, no sign or space)
@@ -98,7 +104,7 @@ static bool render_main_image_name(const char *path)
  * is wrong and the usage to stderr.  "--help" prints the usage and exits. */
 static int render_main_args(int argc, char **argv, RenderArgs *args)
 {
-    RenderArgs none = { NULL, NULL, 0, 0, 0, false };
+    RenderArgs none = { NULL, NULL, 0, 0, 0, RENDER_HIERARCHY_AUTO, false };
     *args = none;
     for (int k = 1; k < argc; k++) {
         const char *a = argv[k];
@@ -108,7 +114,8 @@ static int render_main_args(int argc, char **argv, RenderArgs *args)
             exit(0);
         } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
             args->quiet = true;
-        } else if (strcmp(a, "--size") == 0 || strcmp(a, "-o") == 0 || strcmp(a, "--threads") == 0) {
+        } else if (strcmp(a, "--size") == 0 || strcmp(a, "-o") == 0 || strcmp(a, "--threads") == 0
+                   || strcmp(a, "--hierarchy") == 0) {
             if (!value) {
                 fprintf(stderr, "render: %s needs a value\n", a);
                 goto usage;
@@ -122,6 +129,18 @@ static int render_main_args(int argc, char **argv, RenderArgs *args)
                     goto usage;
                 }
                 args->out_path = value;
+            } else if (strcmp(a, "--hierarchy") == 0) {
+                /* in RenderHierarchy's order */
+                static const char *const modes[] = { "auto", "off", "on" };
+                int m = 0;
+                while (m < 3 && strcmp(value, modes[m]) != 0)
+                    m++;
+                if (m == 3) {
+                    fprintf(stderr, "render: --hierarchy wants auto, on or off, got '%.40s'\n",
+                            value);
+                    goto usage;
+                }
+                args->hierarchy = (RenderHierarchy)m;
             } else if (strcmp(a, "--size") == 0) {
                 if (render_main_size(value, &args->nx, &args->ny) < 0) {
                     fprintf(stderr, "render: --size wants WxH, each a whole number from 1 to %d, "
@@ -302,6 +321,24 @@ static void render_main_suggest_scene(const char *path)
         fprintf(stderr, "render: the kit's scenes are in labs/scenes: SCENE=%s\n", guess);
 }
 
+/* Prints what the render did before its "rendered" line: for a scene with
+ * triangles, how long reading it took, and the hierarchy built, if any. */
+static void render_main_report(const char *name, const Scene *scene, double read_seconds,
+                               const RenderStats *stats)
+{
+    if (scene->ntriangles > 0)
+        printf("read %s in %.3f s: %d triangle%s\n", name, read_seconds, scene->ntriangles,
+               scene->ntriangles == 1 ? "" : "s");
+    if (stats->objects == 0)
+        return;
+    printf("built a hierarchy of %d triangle%s", scene->ntriangles,
+           scene->ntriangles == 1 ? "" : "s");
+    if (scene->nspheres > 0)
+        printf(" and %d sphere%s", scene->nspheres, scene->nspheres == 1 ? "" : "s");
+    printf(" in %d nodes in %.3f s%s\n", stats->nodes, stats->build_seconds,
+           stats->stray ? ", then set it aside: a stray hit (see the note above)" : "");
+}
+
 /* Renders as the command line says.  Returns the exit status: 0 done,
  * 1 bad scene or output, 2 bad usage. */
 int main(int argc, char **argv)
@@ -313,11 +350,13 @@ int main(int argc, char **argv)
 
     char err[512], default_out[4096];
     Scene scene;
+    double read_start = render_now();
     if (scene_load(&scene, args.scene_path, err, sizeof err) < 0) {
         fprintf(stderr, "render: %s\n", err);
         render_main_suggest_scene(args.scene_path);
         return 1;
     }
+    double read_seconds = render_now() - read_start;
     if (args.nx > 0) {
         scene.nx = args.nx;
         scene.ny = args.ny;
@@ -335,7 +374,7 @@ int main(int argc, char **argv)
 
     Image img;
     RenderStats stats;
-    RenderOptions opt = { args.threads, !args.quiet };
+    RenderOptions opt = { args.threads, !args.quiet, args.hierarchy };
     int status = 1;
     if (image_alloc(&img, scene.nx, scene.ny, err, sizeof err) < 0) {
         fprintf(stderr, "render: %s\n", err);
@@ -347,6 +386,7 @@ int main(int argc, char **argv)
         } else {
             status = 0;
             if (!args.quiet) {
+                render_main_report(render_main_basename(args.scene_path), &scene, read_seconds, &stats);
                 printf("rendered %s %dx%d with %d thread%s in %.3f s: "
                        "%.1f million rays/s (%.1f million per thread)\n",
                        render_main_basename(args.scene_path), scene.nx, scene.ny,

@@ -14,13 +14,18 @@
  *   measure.c    timing (interleaved medians), the clock, the ceiling
  *   accuracy.c   errors against the exact answers of tests/oracle
  *   renders.c    the lab's scenes rendered at full HD, against exact renders
- *   svg.c        the plot, drawn directly as SVG (svg.h)
+ *   svg.c        the plots, drawn directly as SVG (svg.h)
+ *   outfile.c    every output file written whole, then renamed (outfile.h)
  *   report.c     results.csv, results_by_family.csv, renders.csv, report.md
  *   tri_methods.c  Part 5: the ray/triangle formulations (Moller-Trumbore's
  *                body in tri_methods_body.h, for double and float)
  *   triangles.c  Part 5: their speed, their error and their cracks, with
  *                results_triangles.csv, plot_triangles.svg and a section
  *                of report.md
+ *   scaling.c    Part 5 at scale: rays per second against the number of
+ *                triangles with and without the kit's hierarchy, with
+ *                results_scaling.csv, plot_scaling.svg and a section of
+ *                report.md
  *   bench_main.c options, progress line, the order of the stages
  *
  * Everything the bench writes goes to one directory (out/bench by default).
@@ -247,6 +252,45 @@ int triangles_write(const TriResults *tr, const char *dir, const char *subtitle,
 /* The section of report.md. */
 void triangles_md(FILE *f, const TriResults *tr);
 
+/* ---- scaling.c: Part 5 at scale ------------------------------------------- */
+#define SCALE_MAX 7
+
+/* One mesh, rendered with the hierarchy and without. */
+typedef struct {
+    int triangles, nodes;
+    double read_seconds;            /* scene_load, the OBJ file included        */
+    double build_seconds;           /* the hierarchy, and its probe             */
+    double seconds_with, seconds_without;   /* median render times              */
+    int pixels_with, pixels_without;        /* of images of the same view       */
+} ScaleRow;
+
+typedef struct {
+    bool ran;
+    int n, nx, ny;                  /* meshes; the size rendered with the hierarchy */
+    int reps;                       /* renders of each, the median taken        */
+    double budget;                  /* tests a render without the hierarchy     */
+    char paths[SCALE_MAX][1100];    /* each mesh's scene                        */
+    ScaleRow rows[SCALE_MAX];
+    double e2e_seconds, e2e_bytes;  /* the render program on the largest mesh:
+                                       wall time, peak resident memory          */
+    double ratio_big, ratio_small;  /* render times of 10^6 and 10^4 triangles,
+                                       taken in turn (0: not measured)          */
+} ScaleResults;
+
+/* Writes the meshes and their scenes into dir (scenes: the directory of
+ * knot.scene) and runs render, the render program, on the largest: to be
+ * called before the bench has grown (scaling.c).  Returns 0, or -1 with a
+ * reason in err. */
+int scaling_prepare(const char *dir, const char *scenes, const char *render, bool quick,
+                    ScaleResults *sr, char *err, size_t errlen);
+/* Measures each mesh.  Returns 0, or -1 with a reason in err. */
+int scaling_bench(bool quick, ScaleResults *sr, char *err, size_t errlen);
+/* results_scaling.csv and plot_scaling.svg in dir; 0, or -1 with err. */
+int scaling_write(const ScaleResults *sr, const char *dir, const char *subtitle, char *err,
+                  size_t errlen);
+/* The section of report.md. */
+void scaling_md(FILE *f, const ScaleResults *sr);
+
 /* ---- measure.c: time, clock, ceiling ------------------------------------ */
 double now_seconds(void);                    /* CLOCK_MONOTONIC */
 double median(double *v, int n);             /* sorts v */
@@ -378,6 +422,7 @@ typedef struct {
     RenderResult renders[BENCH_MAX_SCENES];
     int nrenders;
     TriResults tri;                      /* Part 5 (triangles.c)              */
+    ScaleResults scale;                  /* Part 5 at scale (scaling.c)       */
 } BenchResults;
 
 /* Writes results.csv, results_by_family.csv, renders.csv, report.md and

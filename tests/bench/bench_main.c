@@ -3,7 +3,7 @@
  * the progress line.
  *
  *     bench [--quick] [--out DIR] [--scenes DIR] [--size WxH] [--rounds N]
- *           [--seed N] [--placement FILE]
+ *           [--seed N] [--placement FILE] [--render RENDER]
  *     bench --ratio-only [--quick] [--scenes DIR] [--rounds N]
  *
  *   1. throughput: every method's closest-hit loop over the camera rays of
@@ -15,9 +15,13 @@
  *      against an exact render
  *   5. Part 5: the ray/triangle formulations' speed, errors and cracks
  *      (triangles.c)
- *   6. the report: results.csv, results_by_family.csv, renders.csv,
- *      results_triangles.csv, report.md, plot.svg, plot_triangles.svg in
- *      DIR (default out/bench)
+ *   6. Part 5 at scale: rays per second against triangles, with and
+ *      without the kit's hierarchy; and first of all, before the bench
+ *      grows, the render program (RENDER, default
+ *      out/build/sub/solutions/render) on 10^6 of them (scaling.c)
+ *   7. the report: results.csv, results_by_family.csv, renders.csv,
+ *      results_triangles.csv, results_scaling.csv, report.md, plot.svg,
+ *      plot_triangles.svg, plot_scaling.svg in DIR (default out/bench)
  * --quick does the same with small sizes, in a few seconds (make test).
  * --ratio-only runs stage 1 alone and prints one line, "ratio R q1 Q1 q3
  * Q3" (the reference's time over the textbook's, double); `make bench`
@@ -173,7 +177,7 @@ static void pool_stats(ErrorStats *all, const ErrorStats *fam, double *errs, lon
 
 typedef struct {
     bool quick, ratio_only;
-    const char *out, *scenes, *placement;
+    const char *out, *scenes, *placement, *render;
     int width, height, rounds;
     uint64_t seed;
 } Options;
@@ -425,7 +429,7 @@ static int stage_renders(const Options *o, BenchResults *br, char *err, size_t e
 static void usage(void)
 {
     fprintf(stderr, "usage: bench [--quick] [--out DIR] [--scenes DIR] [--size WxH] "
-                    "[--rounds N] [--seed N] [--placement FILE]\n"
+                    "[--rounds N] [--seed N] [--placement FILE] [--render RENDER]\n"
                     "       bench --ratio-only [--quick] [--scenes DIR] [--rounds N]\n");
 }
 
@@ -449,7 +453,8 @@ static int read_placement(const char *path, BenchResults *br, char *err, size_t 
 
 int main(int argc, char **argv)
 {
-    Options o = { false, false, "out/bench", "labs/scenes", NULL, 1920, 1080, 0, 20260101 };
+    Options o = { false, false, "out/bench", "labs/scenes", NULL, "out/build/sub/solutions/render",
+                  1920, 1080, 0, 20260101 };
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (strcmp(a, "--quick") == 0) {
@@ -461,6 +466,9 @@ int main(int argc, char **argv)
             i++;
         } else if (strcmp(a, "--out") == 0 && v) {
             o.out = v;
+            i++;
+        } else if (strcmp(a, "--render") == 0 && v) {
+            o.render = v;
             i++;
         } else if (strcmp(a, "--scenes") == 0 && v) {
             o.scenes = v;
@@ -518,7 +526,9 @@ int main(int argc, char **argv)
         return 1;
     }
 
-    int status = stage_throughput(&o, &br, err, sizeof err);
+    int status = scaling_prepare(o.out, o.scenes, o.render, o.quick, &br.scale, err, sizeof err);
+    if (status == 0)
+        status = stage_throughput(&o, &br, err, sizeof err);
     if (status == 0) {
         progress("ceiling", 0, 1);
         /* the clock read between throughput rounds is the one that counts */
@@ -531,6 +541,8 @@ int main(int argc, char **argv)
         status = stage_renders(&o, &br, err, sizeof err);
     if (status == 0)
         status = triangle_bench(o.scenes, o.quick, o.seed, &br.tri, err, sizeof err);
+    if (status == 0)
+        status = scaling_bench(o.quick, &br.scale, err, sizeof err);
     br.load_after = load_average();
     br.seconds_total = now_seconds() - start_time;
     if (status == 0) {

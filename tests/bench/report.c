@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "bench.h"
+#include "outfile.h"
 #include "svg.h"
 
 #define RATIO_TARGET 1.05          /* reference / textbook, at most             */
@@ -100,23 +101,19 @@ static const char *label(int m)
     return b;
 }
 
+/* dir/name, opened by out_open (outfile.h); closed by close_out. */
 static FILE *open_out(const char *dir, const char *name, char *err, size_t errlen)
 {
     char path[1024];
     snprintf(path, sizeof path, "%s/%s", dir, name);
-    FILE *f = fopen(path, "w");
-    if (!f)
-        snprintf(err, errlen, "%s: cannot write", path);
-    return f;
+    return out_open(path, err, errlen);
 }
 
-static int close_out(FILE *f, const char *name, char *err, size_t errlen)
+static int close_out(FILE *f, const char *dir, const char *name, char *err, size_t errlen)
 {
-    if (fclose(f) != 0) {
-        snprintf(err, errlen, "%s: write failed", name);
-        return -1;
-    }
-    return 0;
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    return out_close(f, path, err, errlen);
 }
 
 /* ---- CSV ------------------------------------------------------------------------- */
@@ -142,7 +139,7 @@ static int write_csv(const BenchResults *br, const char *dir, char *err, size_t 
             fprintf(f, "%.3f,%.3f,", br->miss_ns[m], br->hit_ns[m]);
         fprintf(f, "%d,%d\n", br->grader_failed[m], br->grader_cases);
     }
-    if (close_out(f, "results.csv", err, errlen) != 0)
+    if (close_out(f, dir, "results.csv", err, errlen) != 0)
         return -1;
 
     f = open_out(dir, "results_by_family.csv", err, errlen);
@@ -159,7 +156,7 @@ static int write_csv(const BenchResults *br, const char *dir, char *err, size_t 
                     per_million(s), s->hits, s->max_rel, s->median_rel, s->max_over_kappa,
                     s->over_tol);
         }
-    if (close_out(f, "results_by_family.csv", err, errlen) != 0)
+    if (close_out(f, dir, "results_by_family.csv", err, errlen) != 0)
         return -1;
 
     f = open_out(dir, "renders.csv", err, errlen);
@@ -175,7 +172,7 @@ static int write_csv(const BenchResults *br, const char *dir, char *err, size_t 
                     r->seconds[m], (double)r->pixels / r->seconds[m] / 1e6, r->differ[m],
                     (double)r->differ[m] / (double)r->pixels, r->ambiguous, r->rays_seconds);
     }
-    return close_out(f, "renders.csv", err, errlen);
+    return close_out(f, dir, "renders.csv", err, errlen);
 }
 
 /* ---- the plot ---------------------------------------------------------------------- */
@@ -673,6 +670,7 @@ static int write_md(const BenchResults *br, const char *dir, char *err, size_t e
     md_ceiling(f, br);
 
     triangles_md(f, &br->tri);
+    scaling_md(f, &br->scale);
 
     fprintf(f, "\n## How it is measured\n\n");
     fprintf(f, "- Every method is timed in the same run: each round times every method once "
@@ -689,9 +687,10 @@ static int write_md(const BenchResults *br, const char *dir, char *err, size_t e
     fprintf(f, "- Float methods get the double inputs rounded to float, as a float renderer "
                "would: that rounding is part of their error.\n");
     fprintf(f, "- Files: results.csv (the table above), results_by_family.csv, renders.csv, "
-               "plot.svg; for Part 5, results_triangles.csv and plot_triangles.svg. Source: "
-               "tests/bench (bench.h lists the files).\n");
-    return close_out(f, "report.md", err, errlen);
+               "plot.svg; for Part 5, results_triangles.csv and plot_triangles.svg, and at "
+               "scale results_scaling.csv and plot_scaling.svg. Source: tests/bench (bench.h "
+               "lists the files).\n");
+    return close_out(f, dir, "report.md", err, errlen);
 }
 
 int report_write(const BenchResults *br, const char *dir, char *err, size_t errlen)
@@ -707,6 +706,14 @@ int report_write(const BenchResults *br, const char *dir, char *err, size_t errl
                  "(small sizes): " : "", br->cpu, br->tri.tp_rays, br->tri.tp_triangles,
                  br->tri.hard[0].cases);
         if (triangles_write(&br->tri, dir, sub, err, errlen) != 0)
+            return -1;
+    }
+    if (br->scale.ran) {
+        char sub[400];
+        snprintf(sub, sizeof sub, "%s%s, one thread, the reference; closed knots in knot.scene's "
+                                  "view, %dx%d with the hierarchy", br->quick ? "QUICK RUN "
+                 "(small sizes): " : "", br->cpu, br->scale.nx, br->scale.ny);
+        if (scaling_write(&br->scale, dir, sub, err, errlen) != 0)
             return -1;
     }
     return write_md(br, dir, err, errlen);

@@ -1,12 +1,14 @@
 /*
- * svg.c - the speed-against-error plot, written directly as SVG (no plotting
- * package): log axes, one labelled point per method and precision, and the
- * Pareto front -- the methods no other method beats on both speed and error
- * -- drawn as a staircase.  Panels are stacked one above the other.
+ * svg.c - the benchmark's plots, written directly as SVG (no plotting
+ * package).  The speed-against-error plot: log axes, one labelled point
+ * per method and precision, and the Pareto front -- the methods no other
+ * method beats on both speed and error -- drawn as a staircase; panels are
+ * stacked one above the other.  And lines on log axes (svg_lines).
  */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "outfile.h"
 #include "svg.h"
 
 void pareto_front(const PlotPoint *pts, int n, bool *on)
@@ -127,6 +129,58 @@ static void tick_label(char *buf, size_t len, int k, int e)
 
 /* ---- one panel ------------------------------------------------------------------ */
 
+/* The grid, the ticks and their labels, the frame and the axes' labels
+ * of a panel on axes ax and ay. */
+static void draw_axes(FILE *f, const Axis *ax, const Axis *ay, const char *xlabel, const char *ylabel)
+{
+    bool dense_x = ax->hi - ax->lo > 8;      /* label every other decade */
+    /* grid: decades darker; 2 and 5 between them on the throughput axis */
+    fprintf(f, "<g stroke=\"#e6e6e6\">\n");
+    for (int e = (int)ax->lo; e <= (int)ax->hi; e++) {
+        double x = axis_pos(ax, pow(10, e));
+        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#cfcfcf\"/>\n",
+                x, ay->p1, x, ay->p0);
+    }
+    for (int e = (int)floor(ay->lo); e <= (int)ay->hi; e++)
+        for (int k = 1; k <= 9; k++) {
+            double v = k * pow(10, e);
+            if (log10(v) > ay->hi + 1e-9 || log10(v) < ay->lo - 1e-9)
+                continue;
+            double y = axis_pos(ay, v);
+            fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\"%s/>\n", ax->p0, y,
+                    ax->p1, y, k == 1 ? " stroke=\"#cfcfcf\"" : "");
+        }
+    fprintf(f, "</g>\n<g fill=\"#333\">\n");
+    for (int e = (int)ax->lo; e <= (int)ax->hi; e++) {
+        if (dense_x && (e - (int)ax->lo) % 2 != 0)
+            continue;
+        char buf[32];
+        tick_label(buf, sizeof buf, 1, e);
+        fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">%s</text>\n",
+                axis_pos(ax, pow(10, e)), ay->p0 + 18, buf);
+    }
+    for (int e = (int)floor(ay->lo); e <= (int)ay->hi; e++)
+        for (int k = 1; k <= 5; k += (k < 3 ? 1 : 2)) {           /* 1, 2, 3, 5 */
+            double v = k * pow(10, e);
+            if (log10(v) > ay->hi + 1e-9 || log10(v) < ay->lo - 1e-9)
+                continue;
+            char buf[32];
+            tick_label(buf, sizeof buf, k, e);
+            fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\">%s</text>\n", ax->p0 - 8,
+                    axis_pos(ay, v) + 4, buf);
+        }
+    fprintf(f, "</g>\n");
+    fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"none\" "
+               "stroke=\"#888\"/>\n", ax->p0, ay->p1, ax->p1 - ax->p0, ay->p0 - ay->p1);
+    fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-size=\"13\">",
+            (ax->p0 + ax->p1) / 2, ay->p0 + 42);
+    xml_text(f, xlabel);
+    fprintf(f, "</text>\n<text transform=\"translate(24 %.1f) rotate(-90)\" "
+               "text-anchor=\"middle\" font-size=\"13\">", (ay->p0 + ay->p1) / 2);
+    xml_text(f, ylabel);
+    fprintf(f, "</text>\n");
+}
+
 static void draw_panel(FILE *f, const PlotPanel *p, double top)
 {
     double xs[MAXP], ys[MAXP];
@@ -139,57 +193,10 @@ static void draw_panel(FILE *f, const PlotPanel *p, double top)
     Axis ay = { 0, 0, top + PANEL_H - PANEL_BOTTOM, top + PANEL_TOP };
     axis_range(&ax, xs, n, X_FLOOR, false);
     axis_range(&ay, ys, n, 1e-3, true);
-    bool dense_x = ax.hi - ax.lo > 8;        /* label every other decade */
-
     fprintf(f, "<text x=\"%d\" y=\"%.1f\" font-size=\"15\" font-weight=\"bold\">", LEFT, top + 24);
     xml_text(f, p->title);
     fprintf(f, "</text>\n");
-
-    /* grid: decades darker; 2 and 5 between them on the throughput axis */
-    fprintf(f, "<g stroke=\"#e6e6e6\">\n");
-    for (int e = (int)ax.lo; e <= (int)ax.hi; e++) {
-        double x = axis_pos(&ax, pow(10, e));
-        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#cfcfcf\"/>\n",
-                x, ay.p1, x, ay.p0);
-    }
-    for (int e = (int)floor(ay.lo); e <= (int)ay.hi; e++)
-        for (int k = 1; k <= 9; k++) {
-            double v = k * pow(10, e);
-            if (log10(v) > ay.hi + 1e-9 || log10(v) < ay.lo - 1e-9)
-                continue;
-            double y = axis_pos(&ay, v);
-            fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\"%s/>\n", ax.p0, y,
-                    ax.p1, y, k == 1 ? " stroke=\"#cfcfcf\"" : "");
-        }
-    fprintf(f, "</g>\n<g fill=\"#333\">\n");
-    for (int e = (int)ax.lo; e <= (int)ax.hi; e++) {
-        if (dense_x && (e - (int)ax.lo) % 2 != 0)
-            continue;
-        char buf[32];
-        tick_label(buf, sizeof buf, 1, e);
-        fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">%s</text>\n",
-                axis_pos(&ax, pow(10, e)), ay.p0 + 18, buf);
-    }
-    for (int e = (int)floor(ay.lo); e <= (int)ay.hi; e++)
-        for (int k = 1; k <= 5; k += (k < 3 ? 1 : 2)) {           /* 1, 2, 3, 5 */
-            double v = k * pow(10, e);
-            if (log10(v) > ay.hi + 1e-9 || log10(v) < ay.lo - 1e-9)
-                continue;
-            char buf[32];
-            tick_label(buf, sizeof buf, k, e);
-            fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\">%s</text>\n", ax.p0 - 8,
-                    axis_pos(&ay, v) + 4, buf);
-        }
-    fprintf(f, "</g>\n");
-    fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"none\" "
-               "stroke=\"#888\"/>\n", ax.p0, ay.p1, ax.p1 - ax.p0, ay.p0 - ay.p1);
-    fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-size=\"13\">",
-            (ax.p0 + ax.p1) / 2, ay.p0 + 42);
-    xml_text(f, p->xlabel);
-    fprintf(f, "</text>\n<text transform=\"translate(24 %.1f) rotate(-90)\" "
-               "text-anchor=\"middle\" font-size=\"13\">", (ay.p0 + ay.p1) / 2);
-    xml_text(f, p->ylabel);
-    fprintf(f, "</text>\n");
+    draw_axes(f, &ax, &ay, p->xlabel, p->ylabel);
     fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" fill=\"#888\" font-style=\"italic\">"
                "better: up and to the left</text>\n", ax.p0 + 8, ay.p1 + 16);
 
@@ -275,15 +282,14 @@ static void draw_panel(FILE *f, const PlotPanel *p, double top)
     }
 }
 
-int svg_plot(const char *path, const char *title, const char *subtitle,
-             const PlotPanel *panels, int npanels, char *err, size_t errlen)
+/* Opens path (outfile.h) and writes the document's start, its title and subtitle, for
+ * a picture height pixels high.  Returns the file, or NULL with err. */
+static FILE *svg_begin(const char *path, int height, const char *title, const char *subtitle,
+                       char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        snprintf(err, errlen, "%s: cannot write", path);
-        return -1;
-    }
-    int height = HEADER + npanels * PANEL_H;
+    FILE *f = out_open(path, err, errlen);
+    if (!f)
+        return NULL;
     fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
                "viewBox=\"0 0 %d %d\" font-family=\"Helvetica, Arial, sans-serif\" "
@@ -294,6 +300,22 @@ int svg_plot(const char *path, const char *title, const char *subtitle,
     fprintf(f, "</text>\n<text x=\"%d\" y=\"50\" fill=\"#555\">", LEFT);
     xml_text(f, subtitle);
     fprintf(f, "</text>\n");
+    return f;
+}
+
+/* Ends the document and closes f into path.  Returns 0, or -1 with err. */
+static int svg_end(FILE *f, const char *path, char *err, size_t errlen)
+{
+    fprintf(f, "</svg>\n");
+    return out_close(f, path, err, errlen);
+}
+
+int svg_plot(const char *path, const char *title, const char *subtitle,
+             const PlotPanel *panels, int npanels, char *err, size_t errlen)
+{
+    FILE *f = svg_begin(path, HEADER + npanels * PANEL_H, title, subtitle, err, errlen);
+    if (!f)
+        return -1;
     /* legend, once, under the title: the groups that have points */
     bool present[3] = { false, false, false };
     for (int k = 0; k < npanels; k++)
@@ -316,10 +338,44 @@ int svg_plot(const char *path, const char *title, const char *subtitle,
                "accurate</text>\n", lx + 34, ly);
     for (int k = 0; k < npanels; k++)
         draw_panel(f, &panels[k], HEADER + k * PANEL_H);
-    fprintf(f, "</svg>\n");
-    if (fclose(f) != 0) {
-        snprintf(err, errlen, "%s: write failed", path);
+    return svg_end(f, path, err, errlen);
+}
+
+int svg_lines(const char *path, const char *title, const char *subtitle, const char *xlabel,
+              const char *ylabel, const PlotSeries *series, int nseries, char *err, size_t errlen)
+{
+    FILE *f = svg_begin(path, HEADER + PANEL_H, title, subtitle, err, errlen);
+    if (!f)
         return -1;
+    double xs[MAXP] = { 0 }, ys[MAXP] = { 0 };
+    int n = 0;
+    for (int s = 0; s < nseries; s++)
+        for (int i = 0; i < series[s].n && n < MAXP; i++, n++) {
+            xs[n] = series[s].pts[i].x;
+            ys[n] = series[s].pts[i].y;
+        }
+    Axis ax = { 0, 0, LEFT, WIDTH - RIGHT };
+    Axis ay = { 0, 0, HEADER + PANEL_H - PANEL_BOTTOM, HEADER + 16 };
+    axis_range(&ax, xs, n, X_FLOOR, false);
+    axis_range(&ay, ys, n, 1e-6, true);
+    draw_axes(f, &ax, &ay, xlabel, ylabel);
+    double lx = LEFT;
+    for (int s = 0; s < nseries; s++) {
+        const PlotPoint *pts = series[s].pts;
+        const char *color = group_color[pts[0].group];
+        marker(f, pts[0].group, lx + 6, 72);
+        fprintf(f, "<text x=\"%.1f\" y=\"76\">", lx + 18);
+        xml_text(f, series[s].label);
+        fprintf(f, "</text>\n");
+        lx += 40 + FONT_W * (double)strlen(series[s].label);
+        fprintf(f, "<path fill=\"none\" stroke=\"%s\" stroke-width=\"2\" d=\"", color);
+        for (int i = 0; i < series[s].n; i++)
+            fprintf(f, "%s%.1f %.1f", i ? " L" : "M", axis_pos(&ax, pts[i].x),
+                    axis_pos(&ay, pts[i].y > 1e-6 ? pts[i].y : 1e-6));
+        fprintf(f, "\"/>\n");
+        for (int i = 0; i < series[s].n; i++)
+            marker(f, pts[i].group, axis_pos(&ax, pts[i].x),
+                   axis_pos(&ay, pts[i].y > 1e-6 ? pts[i].y : 1e-6));
     }
-    return 0;
+    return svg_end(f, path, err, errlen);
 }

@@ -1,6 +1,6 @@
 /*
- * svg.h - the benchmark's plot: speed against error on log axes, drawn as
- * SVG by hand (no plotting package).
+ * svg.h - the benchmark's plots, drawn as SVG by hand (no plotting
+ * package): speed against error on log axes, and lines on log axes.
  */
 #ifndef BENCH_SVG_H
 #define BENCH_SVG_H
@@ -30,5 +30,17 @@ void pareto_front(const PlotPoint *pts, int n, bool *on);
  * reason in err. */
 int svg_plot(const char *path, const char *title, const char *subtitle,
              const PlotPanel *panels, int npanels, char *err, size_t errlen);
+
+/* A line of points, drawn in the colour and marker of its points' group. */
+typedef struct {
+    const PlotPoint *pts;       /* by x; their labels are not drawn */
+    int n;
+    const char *label;          /* in the legend */
+} PlotSeries;
+
+/* Writes one panel of lines on log axes to path.  Returns 0, or -1 with a
+ * reason in err. */
+int svg_lines(const char *path, const char *title, const char *subtitle, const char *xlabel,
+              const char *ylabel, const PlotSeries *series, int nseries, char *err, size_t errlen);
 
 #endif

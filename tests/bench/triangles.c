@@ -27,6 +27,7 @@
 #include "../oracle/draw.h"
 #include "../oracle/hard.h"
 #include "bench.h"
+#include "outfile.h"
 #include "svg.h"
 
 #define U 0x1p-53
@@ -427,11 +428,9 @@ int triangles_write(const TriResults *tr, const char *dir, const char *subtitle,
 {
     char path[1024];
     snprintf(path, sizeof path, "%s/results_triangles.csv", dir);
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        snprintf(err, errlen, "%s: cannot write", path);
+    FILE *f = out_open(path, err, errlen);
+    if (!f)
         return -1;
-    }
     fprintf(f, "method,precision,mtests_per_s,"
                "ordinary_max_rel_err,ordinary_median_rel_err,ordinary_wrong_per_million,"
                "ordinary_max_err_over_u_kappa,ordinary_cases,"
@@ -452,10 +451,8 @@ int triangles_write(const TriResults *tr, const char *dir, const char *subtitle,
             fprintf(f, ",%ld", tr->rays[m][k]);
         fprintf(f, ",%ld\n", tr->missed_all[m]);
     }
-    if (fclose(f) != 0) {
-        snprintf(err, errlen, "%s: write failed", path);
+    if (out_close(f, path, err, errlen) != 0)
         return -1;
-    }
 
     /* The plot: speed against cracks, and speed against the error of t. */
     static PlotPoint cracks[TRI_MAX_METHODS], errs[TRI_MAX_METHODS];

@@ -149,6 +149,25 @@ if [ -s "$md" ]; then
         grep -q "went through the reference's meshes and [0-9]* through Moller-Trumbore's" "$md"
 fi
 
+# Part 5 at scale: results_scaling.csv has a row per mesh (--quick: 1 to
+# 1,000 triangles), each rendered with the hierarchy, which then has
+# nodes, and without; plot_scaling.svg draws both lines; report.md has the
+# section and the render program's run on the largest mesh.
+scsv=$dir/results_scaling.csv
+if [ -s "$scsv" ]; then
+    check "results_scaling.csv: a row for each of 1, 10, 100 and 1000 triangles" \
+        sh -c "[ \"\$(cut -d, -f1 '$scsv' | tail -n +2 | tr '\n' ' ')\" = '1 10 100 1000 ' ]"
+    check "results_scaling.csv: rays per second with and without the hierarchy, > 0, and nodes" \
+        awk -F, 'NR > 1 && !($5 + 0 > 0 && $6 + 0 > 0 && $2 + 0 >= 1) { bad = 1 } END { exit bad || NR < 5 }' "$scsv"
+else
+    fail "results_scaling.csv was not written"
+fi
+check "plot_scaling.svg draws the two lines" \
+    sh -c "grep -q '>with the hierarchy<' '$dir/plot_scaling.svg' && [ \"\$(grep -c '<path fill=\"none\"' '$dir/plot_scaling.svg')\" -eq 2 ]"
+check "report.md has the section on meshes at scale, with the render program's run" \
+    sh -c "grep -qx '## Part 5 at scale: rays per second against triangles' '$md' &&
+           grep -q 'The render program on the largest mesh (1000 triangles) at 640x480, end to end' '$md'"
+
 # The ratio under a second placement of the code (make bench): --ratio-only
 # prints its one line, and --placement puts that line in the report; a
 # file that is not such a line is refused, naming it.

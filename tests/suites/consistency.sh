@@ -4,7 +4,8 @@
 #   function bodies the stage files are identical;
 # - the committed public tests match what the oracle writes now;
 # - README.md and tests/bench/README.md show the same benchmark table;
-# - labs/scenes/cracks.obj is what tests/tools/cracks-mesh.sh writes;
+# - labs/scenes/cracks.obj and knot.obj are what tests/tools/cracks-mesh.sh
+#   and knot-mesh.sh write;
 # - labs/raytracer.h keeps the lab contract (when the contract probe is
 #   beside the kit).
 set -u
@@ -33,12 +34,15 @@ if [ -x out/build/bin/gentests ]; then
     done
 fi
 
-# The closed mesh of cracks.scene is what its generator writes.
-if [ -f tests/tools/cracks-mesh.sh ]; then
-    sh tests/tools/cracks-mesh.sh >"$tmp/cracks.obj"
-    check "labs/scenes/cracks.obj is out of date: run sh tests/tools/cracks-mesh.sh >labs/scenes/cracks.obj" \
-        cmp -s labs/scenes/cracks.obj "$tmp/cracks.obj"
-fi
+# The closed meshes of cracks.scene and knot.scene are what their
+# generators write.
+for mesh in cracks knot; do
+    if [ -f "tests/tools/$mesh-mesh.sh" ]; then
+        sh "tests/tools/$mesh-mesh.sh" >"$tmp/$mesh.obj"
+        check "labs/scenes/$mesh.obj is out of date: run sh tests/tools/$mesh-mesh.sh >labs/scenes/$mesh.obj" \
+            cmp -s "labs/scenes/$mesh.obj" "$tmp/$mesh.obj"
+    fi
+done
 
 # The benchmark's latest table stands in README.md and tests/bench/README.md:
 # the two copies must be the same (update both after `make bench`).

@@ -230,16 +230,17 @@ check "no GNU-only or Linux-only tool or flag in the kit's scripts: $(tr '\n' ' 
 # runs all the others (tests/run.sh runs each suite with sh).
 sh_is=$(ls -l /bin/sh 2>/dev/null | sed 's/.*-> *//')
 echo "   /bin/sh is ${sh_is:-/bin/sh}"
-if [ -f tests/tools/cracks-mesh.sh ] && [ -f labs/scenes/cracks.obj ]; then
+for mesh in cracks knot; do
+    [ -f "tests/tools/$mesh-mesh.sh" ] && [ -f "labs/scenes/$mesh.obj" ] || continue
     for shell in dash "bash --posix" ksh mksh posh yash "busybox sh"; do
         set -- $shell
         if have "$1"; then
-            $shell tests/tools/cracks-mesh.sh >"$tmp/cracks.obj" 2>"$tmp/cracks.err"
-            check "$shell tests/tools/cracks-mesh.sh writes labs/scenes/cracks.obj" \
-                cmp -s "$tmp/cracks.obj" labs/scenes/cracks.obj
+            $shell "tests/tools/$mesh-mesh.sh" >"$tmp/$mesh.obj" 2>"$tmp/$mesh.err"
+            check "$shell tests/tools/$mesh-mesh.sh writes labs/scenes/$mesh.obj" \
+                cmp -s "$tmp/$mesh.obj" "labs/scenes/$mesh.obj"
         fi
     done
-fi
+done
 
 # ---- 3. the Makefile ---------------------------------------------------------
 make_features Makefile >"$tmp/found"

@@ -31,7 +31,7 @@ static int render_with(const Scene *scene, int threads, Image *img, RenderStats 
         CHECK_MSG(0, "image_alloc: %s", err);
         return -1;
     }
-    RenderOptions opt = { threads, false };
+    RenderOptions opt = { threads, false, RENDER_HIERARCHY_AUTO };
     int status = render_scene(scene, img, &opt, stats ? stats : &unused, err, sizeof err);
     CHECK_MSG(status == 0, "render_scene returned %d: %s", status, err);
     if (status != 0) {
@@ -369,7 +369,7 @@ static void test_stats(void)
     Sphere sphere = { { 0, 0, -5 }, 1, RED };
     Scene scene = make_scene(200, 150, 60, BACKGROUND, &sphere, 1);
     Image img;
-    RenderStats stats = { -1, -1, -1 };
+    RenderStats stats = { -1, -1, -1, -1, -1, -1, true };
     if (render_with(&scene, 4, &img, &stats) < 0)
         return;
     CHECK(stats.seconds > 0);
@@ -395,7 +395,7 @@ static void test_wrong_image_size(void)
     Image img;
     char err[256] = "";
     CHECK_EQ_INT(image_alloc(&img, 10, 20, err, sizeof err), 0);
-    RenderOptions opt = { 1, false };
+    RenderOptions opt = { 1, false, RENDER_HIERARCHY_AUTO };
     RenderStats stats;
     CHECK_EQ_INT(render_scene(&scene, &img, &opt, &stats, err, sizeof err), -1);
     CHECK_STR_CONTAINS(err, "10x20");
