@@ -727,7 +727,7 @@ static void first_root_above(const Quad *q, double tmin, double *out)
 }
 
 enum { M_RIGHT, M_FAR, M_HALVED, M_DISC4, M_UNIT, M_DISTANCE, M_BEHIND, M_BSIGN, M_INSIDE_MISS,
-       M_CENTRE_BEHIND, M_TANGENT_MISS, M_TMIN, M_NAN, M_FLOAT, NMODELS3, M_CANCEL = NMODELS3 };
+       M_CENTRE_BEHIND, M_TANGENT_MISS, M_TMIN, M_NAN, M_FLOAT, M_T_ZERO, NMODELS3, M_CANCEL = NMODELS3 };
 
 /* What cause m answers to a case.  tmin is the epsilon M_TMIN uses. */
 static void p3_eval(int m, const double *in, double tmin, double *out)
@@ -833,6 +833,8 @@ static bool p3_explains(const void *ctx, int tag, const Test *t, const Case *c, 
         return t->hard;
     if (tag == M_NAN)
         return got[0] == 1 && isnan(got[1]);
+    if (tag == M_T_ZERO)                 /* a hit at the ray's own origin */
+        return got[0] == 1 && got[1] == 0;
     if (tag == M_FLOAT && p->float_digits)   /* a t right to float's digits, not further */
         return got[0] == 1 && c->want[0] == 1 && fabs(got[1] - c->want[1]) <= 1e-5 * fabs(c->want[1]);
     if (tag == M_FLOAT)                  /* a t rounded to float, right or not */
@@ -875,6 +877,40 @@ static void add_probe3(ProbeSet *ps, const char *name, const double (*in)[CASE_M
     Test *t = probe_test(ps, PART3A, KIND_SPHERE, name);
     for (int k = 0; k < n; k++)
         probe_case(t, in[k], 10);
+}
+
+/* Rays that start on the sphere (C = 0 exactly, one root t = 0): every
+ * answer right or a hit at t = 0 exactly, and one such hit, is t >= 0 taken
+ * for t > 0 (Embree's inclusive tnear <= t).  Not named where roots behind
+ * the origin are taken anyway (hits-behind says more). */
+static void p3_t_zero(Found *f, P3Found *out, const Answers *a, const double (*in)[CASE_MAX_IN], int n)
+{
+    if (out->model[M_BEHIND] || a->answered < n)
+        return;
+    int zero = -1;
+    for (int c = 0; c < n; c++) {
+        bool at_zero = a->got[c][0] == 1 && a->got[c][1] == 0;
+        if (!at_zero && !p3_right(a->got[c], in[c], out->rel))
+            return;
+        if (at_zero && zero < 0)
+            zero = c;
+    }
+    if (zero < 0)
+        return;
+    const double *z = in[zero];
+    double v[2];
+    p3_eval(M_RIGHT, z, 0, v);
+    char right[80];
+    if (v[0] == 1)
+        snprintf(right, sizeof right, "the hit is where it leaves the sphere, t = %g", v[1]);
+    else
+        snprintf(right, sizeof right, "it heads away from the sphere: a miss");
+    out->model[M_T_ZERO] = true;
+    name_cause(f, "t-zero", M_T_ZERO, "a ray that starts on the sphere (C = 0, one root t = 0) was a hit "
+               "at t = 0, its own origin: from (%g, %g, %g) along (%g, %g, %g), at the sphere of centre "
+               "(%g, %g, %g) and radius %g, your code answered t = 0, where %s. A hit needs t > 0, not "
+               "t >= 0 (Embree's ray interval, tnear <= t, includes its start; this lab's does not).",
+               z[4], z[5], z[6], z[7], z[8], z[9], z[0], z[1], z[2], z[3], right);
 }
 
 static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
@@ -938,7 +974,16 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
         SPH(0, 0.6, -(0x1p28 + 3), 1, 0, 0, 0, 0, 0, -1),
         SPH(0.75, 0, -(0x1p29 + 5), 1, 0, 0, 0, 0, 0, -1),
     };
-    enum { NB = 6, NS = 8, NBH = 4, NI = 5, NT = 3, NN = 2, NF = 3 };
+    /* Origins exactly on the sphere, axis-aligned unit directions: the
+     * roots are 0 and 2, 4, 6 ahead (a hit there) or behind (a miss). */
+    static const double on[][CASE_MAX_IN] = {
+        SPH(0, 0, -1, 1, 0, 0, 0, 0, 0, -1),
+        SPH(0, 0, -1, 1, 0, 0, 0, 0, 0, 1),
+        SPH(2, 0, 0, 2, 0, 0, 0, 1, 0, 0),
+        SPH(0, -3, 0, 3, 0, 0, 0, 0, 1, 0),
+        SPH(1, 1, -3, 3, 1, 1, 0, 0, 0, -1),
+    };
+    enum { NB = 6, NS = 8, NBH = 4, NI = 5, NT = 3, NN = 2, NF = 3, NO = 5, NPROBES = 9 };
     add_probe3(ps, "probe: ordinary hits", basic, NB);
     add_probe3(ps, "probe: directions scaled by 3 and by 1/4", (const double (*)[CASE_MAX_IN])scaled, NS);
     add_probe3(ps, "probe: spheres behind the origin", behind, NBH);
@@ -947,16 +992,17 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
     add_probe3(ps, "probe: hits just ahead of the origin", (const double (*)[CASE_MAX_IN])near, NG);
     add_probe3(ps, "probe: a zero direction and NaN input", nan_cases, NN);
     add_probe3(ps, "probe: far, small spheres", far, NF);
-    Answers a[8];
-    for (int k = 0; k < 8; k++)
+    add_probe3(ps, "probe: rays that start on the sphere", on, NO);
+    Answers a[NPROBES];
+    for (int k = 0; k < NPROBES; k++)
         probe_run(ps, &ps->list.tests[k], &a[k]);
-    if (unwritten(f, ps, a, 8)) {
-        for (int k = 0; k < 8; k++)
+    if (unwritten(f, ps, a, NPROBES)) {
+        for (int k = 0; k < NPROBES; k++)
             answers_free(&a[k]);
         return;
     }
     const Answers *ab = &a[0], *as = &a[1], *abh = &a[2], *ai = &a[3], *at = &a[4], *an = &a[5],
-                  *anan = &a[6], *afar = &a[7];
+                  *anan = &a[6], *afar = &a[7], *aon = &a[8];
 
     /* Float first: every t of the probes a float, where the right ones are
      * not.  Then "right" means right to float's precision throughout. */
@@ -1104,6 +1150,7 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
                    inside_neg ? "from inside the sphere, the near root, which is behind the origin"
                               : "a sphere wholly behind the origin");
     }
+    p3_t_zero(f, out, aon, on, NO);
     /* From inside, a miss. */
     bool ordinary = basic_model == M_RIGHT;
     if (ordinary && ai->answered == NI && !inside_neg && p3_all(ai, inside, NI, M_INSIDE_MISS, 0, rel)) {
@@ -1156,7 +1203,7 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
                        "computes the discriminant without that cancellation: A R^2 - |f x r|^2.");
         }
     }
-    for (int k = 0; k < 8; k++)
+    for (int k = 0; k < NPROBES; k++)
         answers_free(&a[k]);
 }
 
