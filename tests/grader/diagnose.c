@@ -497,9 +497,13 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
 
 /* Models of each coordinate, one at a time: x depends on i, nx, w; y on
  * j, ny, h; z on d. */
-enum { X_RIGHT, X_CORNER, X_FAR_CORNER, X_NOT_CENTRED, X_SWAPPED, X_INT, X_NM1, X_SQUARE, X_FROM_J, NX_MODELS };
+/* X_INT, X_INT_RIGHT, Y_INT, Y_INT_TOP: an integer division, 0 whatever
+ * the pixel, leaves x or y at an edge of the plane, which edge as the
+ * formula has it ((2 i + 1) / (2 nx) in -w/2 + w (...) or w/2 - w (...)). */
+enum { X_RIGHT, X_CORNER, X_FAR_CORNER, X_NOT_CENTRED, X_SWAPPED, X_INT, X_INT_RIGHT, X_NM1, X_SQUARE,
+       X_FROM_J, NX_MODELS };
 enum { Y_RIGHT, Y_BOTTOM, Y_CORNER, Y_FAR_CORNER, Y_BOTTOM_CORNER, Y_NX, Y_NOT_CENTRED, Y_SWAPPED,
-       Y_INT, Y_NM1, Y_BOTTOM_NM1, Y_FROM_I, NY_MODELS };
+       Y_INT, Y_INT_TOP, Y_NM1, Y_BOTTOM_NM1, Y_FROM_I, NY_MODELS };
 enum { Z_RIGHT, Z_PLUS, Z_ONE, NZ_MODELS };
 
 static double p2_x(int m, const double *in)
@@ -514,6 +518,7 @@ static double p2_x(int m, const double *in)
     case X_NM1:         return -w / 2 + w * i / (nx - 1);         /* nx - 1 steps: edge to edge */
     case X_SQUARE:      return h * (i + 0.5 - nx / 2) / in[3];    /* in units of h / ny */
     case X_FROM_J:      return -w / 2 + w * (in[1] + 0.5) / nx;   /* i and j swapped */
+    case X_INT_RIGHT:   return w / 2;
     default:            return -w / 2;
     }
 }
@@ -533,6 +538,7 @@ static double p2_y(int m, const double *in)
     case Y_NM1:           return h / 2 - h * j / (ny - 1);
     case Y_BOTTOM_NM1:    return -h / 2 + h * j / (ny - 1);
     case Y_FROM_I:        return h / 2 - h * (in[0] + 0.5) / ny;  /* i and j swapped */
+    case Y_INT_TOP:       return h / 2;
     default:              return -h / 2;
     }
 }
@@ -609,16 +615,22 @@ static void diagnose_part2(ProbeSet *ps, Found *f, P2Found *out)
     }
     const double *g = a.got[0], *in = cases[0];
     int x = out->x, y = out->y;
-    if (x == X_INT && y == Y_INT) {
-        name_cause(f, "integer-division", TAG_ALL, "every pixel came back as the plane's corner (-w/2, -h/2): "
-                   "an integer division such as (2 * i + 1) / (2 * nx) is 0 in C when both are ints. "
-                   "Write 0.5 or convert to double first: (i + 0.5) / nx.");
-        x = y = X_RIGHT;
+    bool x_int = x == X_INT || x == X_INT_RIGHT, y_int = y == Y_INT || y == Y_INT_TOP;
+    if (x_int || y_int) {
+        name_cause(f, "integer-division", TAG_ALL, "%s came back at the plane's %s (%s%s%s) whatever the "
+                   "pixel: an integer division such as (2 * i + 1) / (2 * nx) is 0 in C when both "
+                   "are ints. Write 0.5 or convert to double first: (i + 0.5) / nx.",
+                   x_int && y_int ? "every pixel" : x_int ? "x" : "y", x_int && y_int ? "corner" : "edge",
+                   x_int ? (x == X_INT ? "x = -w/2" : "x = w/2") : "", x_int && y_int ? ", " : "",
+                   y_int ? (y == Y_INT ? "y = -h/2" : "y = h/2") : "");
+        x = x_int ? X_RIGHT : x;
+        y = y_int ? Y_RIGHT : y;
     }
     if (x == X_CORNER || x == X_FAR_CORNER || y == Y_CORNER || y == Y_FAR_CORNER || y == Y_BOTTOM_CORNER)
         name_cause(f, "pixel-corner", TAG_ALL, "that is a pixel's corner, not its centre: for pixel (%g, %g) "
                    "of a %g x %g image your code returned (%.6g, %.6g), half a pixel from the centre "
-                   "(%.6g, %.6g). The centre is at i + 0.5 and j + 0.5.",
+                   "(%.6g, %.6g). The centre is at i + 0.5 and j + 0.5 (written i + 1 / 2, it is i: "
+                   "1 / 2 is an integer division, 0 in C; write 0.5).",
                    in[0], in[1], in[2], in[3], g[0], g[1], model[0][0], model[0][1]);
     if (x == X_NM1 || y == Y_NM1 || y == Y_BOTTOM_NM1)
         name_cause(f, "n-minus-1", TAG_ALL, "x and y step by w / (nx - 1) and h / (ny - 1), so the "
