@@ -401,4 +401,20 @@ mk "$kit" grade PART=3a
 check "... and with the reference's, not a word of it (exit $status)" \
     sh -c "[ $status -eq 0 ] && ! grep -q 'All the core points' '$tmp/out'"
 
+# A helper defined, not static, in Parts 3a and 3b (tests/selftest/
+# link-shared-helper): here Part 3b's program links the student's own Part
+# 3a, and the linker refuses two dot()s; the grader builds it with each
+# file's dot its own, as the instructor's grader does (with the
+# reference's Part 3a), and says what make render says: write static.
+cp tests/selftest/link-shared-helper/part*.c "$kit/labs/"
+mk "$kit" grade PART=3b
+check "a non-static helper in Parts 3a and 3b: Part 3b keeps its 30 points, and is told to write static (exit $status, grader $ran)" \
+    sh -c "grep -q '^Part 3b: .*  30 / 30' '$tmp/out' && ! grep -q 'did not build' '$tmp/out' &&
+           grep -q 'dot is defined in part3b_ray_color.c and part3a_sphere_intersect.c' '$tmp/out' &&
+           grep -q 'Write static in front of each definition of dot' '$tmp/out'"
+mk "$kit" render
+check "... which make render stops at, saying the same (exit $status)" \
+    sh -c "[ $status -ne 0 ] && grep -q 'write static in front of each' '$tmp/out'"
+cp solutions/part3a_sphere_intersect.c solutions/part3b_ray_color.c "$kit/labs/"
+
 finish
