@@ -20,11 +20,12 @@
 Vec3 closest_color(const Scene *scene, const Ray *ray) CLOSEST_APART;
 void closest_rows(const Scene *scene, Image *img, double w, double h, int j0, int j1) CLOSEST_APART;
 
-/* Makes (t, color) the nearest so far when t is nearer than *nearest:
- * strictly, so that of equal t the first one offered stays. */
+/* Makes (t, color) the nearest so far when t is nearer than *nearest by
+ * more than a tie (closest.h), so that of two hits equal but for rounding
+ * the first one offered stays. */
 static void closest_keep(double t, Vec3 color, double *nearest, Vec3 *seen)
 {
-    if (t < *nearest) {
+    if (t < *nearest * (1 - CLOSEST_TIE)) {
         *nearest = t;
         *seen = color;
     }

@@ -225,7 +225,9 @@ static void test_threads_byte_identical(void)
 
 /* The colour a ray should get, written here apart from the kit: Part 3b's
  * ray_color for spheres alone; otherwise the closest hit over spheres,
- * planes and triangles, the first of equal t winning. */
+ * planes and triangles, a later one only when nearer by more than a tie
+ * (1e-9 of t, closest.h), so that of hits equal but for rounding the first
+ * wins. */
 static Vec3 expected_color(const Scene *scene, const Ray *ray)
 {
     if (scene->nplanes == 0 && scene->ntriangles == 0)
@@ -233,13 +235,13 @@ static Vec3 expected_color(const Scene *scene, const Ray *ray)
     double best = INFINITY, t;
     Vec3 color = scene->background;
     for (int k = 0; k < scene->nspheres; k++)
-        if (sphere_intersect(&scene->spheres[k], ray, &t) && t < best)
+        if (sphere_intersect(&scene->spheres[k], ray, &t) && (best == INFINITY || best - t > 1e-9 * best))
             best = t, color = scene->spheres[k].color;
     for (int k = 0; k < scene->nplanes; k++)
-        if (plane_intersect(&scene->planes[k], ray, &t) && t < best)
+        if (plane_intersect(&scene->planes[k], ray, &t) && (best == INFINITY || best - t > 1e-9 * best))
             best = t, color = scene->planes[k].color;
     for (int k = 0; k < scene->ntriangles; k++)
-        if (triangle_intersect(&scene->triangles[k], ray, &t) && t < best)
+        if (triangle_intersect(&scene->triangles[k], ray, &t) && (best == INFINITY || best - t > 1e-9 * best))
             best = t, color = scene->triangles[k].color;
     return color;
 }
@@ -363,6 +365,36 @@ static void test_closest_across_kinds(void)
     image_free(&img);
 }
 
+/* Two surfaces whose hits are within 1e-9 of t of each other are a tie,
+ * which the one offered first (planes before triangles) keeps: a wall
+ * z = -5 and a triangle in front of it at t = 5 (1 - 2^-k), the centre
+ * pixel's ray (0, 0, -1) meeting both exactly.  2^-30 (9.3e-10) is a tie,
+ * 2^-29 (1.9e-9) is not: a window twice as wide, or half as wide, fails. */
+static void test_closest_tie(void)
+{
+    static const struct { int k; Vec3 want; const char *what; } cases[] = {
+        { 34, RED, "the wall: the triangle nearer by 2^-34 of t is a tie" },
+        { 30, RED, "the wall: the triangle nearer by 2^-30 of t is a tie" },
+        { 29, BLUE, "the triangle, nearer by 2^-29 of t: no tie" },
+        { 26, BLUE, "the triangle, nearer by 2^-26 of t: no tie" },
+    };
+    for (size_t q = 0; q < sizeof cases / sizeof cases[0]; q++) {
+        double z = -5 + 5 * ldexp(1, -cases[q].k);
+        Plane wall = { { 0, 0, -5 }, { 0, 0, 1 }, RED };
+        Triangle tri = { { -100, -100, z }, { 100, -100, z }, { 0, 100, z }, BLUE };
+        Scene scene = make_scene(41, 31, 90, BACKGROUND, NULL, 0);
+        scene.planes = &wall;
+        scene.nplanes = 1;
+        scene.triangles = &tri;
+        scene.ntriangles = 1;
+        Image img;
+        if (render_with(&scene, 1, &img, NULL) < 0)
+            return;
+        CHECK_PIXEL(&img, 20, 15, cases[q].want, cases[q].what);
+        image_free(&img);
+    }
+}
+
 /* The statistics are positive and consistent. */
 static void test_stats(void)
 {
@@ -414,6 +446,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_ground_plane_halves),
     CHECK_TEST(test_triangle_left_half),
     CHECK_TEST(test_closest_across_kinds),
+    CHECK_TEST(test_closest_tie),
     CHECK_TEST(test_stats),
     CHECK_TEST(test_wrong_image_size),
 };
