@@ -914,14 +914,15 @@ static void p3_t_zero(Found *f, P3Found *out, const Answers *a, const double (*i
     p3_eval(M_RIGHT, z, 0, v);
     char right[80];
     if (v[0] == 1)
-        snprintf(right, sizeof right, "the hit is where it leaves the sphere, t = %g", v[1]);
+        snprintf(right, sizeof right, "a hit at t = %g, where the ray leaves the sphere", v[1]);
     else
-        snprintf(right, sizeof right, "it heads away from the sphere: a miss");
+        snprintf(right, sizeof right, "a miss: the ray heads away from the sphere");
     out->model[M_T_ZERO] = true;
     name_cause(f, "t-zero", M_T_ZERO, "a ray that starts on the sphere (C = 0, one root t = 0) was a hit "
                "at t = 0, its own origin: from (%g, %g, %g) along (%g, %g, %g), at the sphere of centre "
-               "(%g, %g, %g) and radius %g, your code answered t = 0, where %s. A hit needs t > 0, not "
-               "t >= 0 (Embree's ray interval, tnear <= t, includes its start; this lab's does not).",
+               "(%g, %g, %g) and radius %g, your code answered a hit at t = 0; the right answer is %s. A "
+               "hit needs t > 0, not t >= 0 (Embree's ray interval, tnear <= t, includes its start; this "
+               "lab's does not).",
                z[4], z[5], z[6], z[7], z[8], z[9], z[0], z[1], z[2], z[3], right);
 }
 
