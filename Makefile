@@ -333,7 +333,8 @@ all: $(REPORT_REF)
 grade: grader $(REPORT_REF)
 	@$(BUILD)/bin/grade --submission "$(SUBMISSION)" $(if $(PART),--part $(PART)) \
 	    $(if $(RESULTS),--results "$(RESULTS)") $(if $(FORMAT),--format "$(FORMAT)") \
-	    $(if $(CLASSROOM),--classroom "$(CLASSROOM)") --report out/report
+	    $(if $(CLASSROOM),--classroom "$(CLASSROOM)") $(if $(filter all,$(FAILURES)),--all-failures) \
+	    --report out/report
 
 grade-all: grader $(REPORT_REF)
 	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade-all SUBMISSIONS=dir [OUT=dir]"; exit 2; }

@@ -96,6 +96,12 @@ int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
                 cfg->hard_is_bonus = strcmp(mode, "bonus") == 0;
             else
                 want = "'hard bonus' or 'hard core'";
+        } else if (strcmp(word, "hints") == 0) {
+            if (sscanf(line, " hints %15s %n", mode, &used) == 1 && used > 0 && !line[used] &&
+                (!strcmp(mode, "challenge") || !strcmp(mode, "full")))
+                cfg->full_hints = strcmp(mode, "full") == 0;
+            else
+                want = "'hints challenge' or 'hints full'";
         } else if (strcmp(word, "timeout") == 0) {
             if (sscanf(line, " timeout %lf %n", &core, &used) == 1 && used > 0 && !line[used] &&
                 core > 0 && core <= 600)
@@ -127,8 +133,8 @@ int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
             if (!parse_parts(line, cfg->parts))
                 want = "'parts P...': each of 1 2 3a 3b 4 5 at most once";
         } else {
-            want = "'part P core N hard M', 'parts P...', 'hard bonus|core', 'timeout S', "
-                   "'output KIB' or 'seed N'";
+            want = "'part P core N hard M', 'parts P...', 'hard bonus|core', 'hints challenge|full', "
+                   "'timeout S', 'part-time S', 'output KIB' or 'seed N'";
         }
         if (want) {
             snprintf(err, errlen, "%s:%d: expected %s", path, lineno, want);

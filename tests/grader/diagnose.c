@@ -28,7 +28,8 @@ typedef struct {
     char key[32];
     char text[1200];               /* what it is, the evidence, the fix */
     int tag;                       /* which model explains its cases    */
-    int explained;                 /* failing cases it explains         */
+    int explained[2];              /* failing cases it explains, of the
+                                      core tests [0] and the hard [1]  */
 } Cause;
 
 typedef struct {
@@ -58,7 +59,7 @@ static void name_cause(Found *f, const char *key, int tag, const char *fmt, ...)
     Cause *c = &f->cause[f->ncauses++];
     snprintf(c->key, sizeof c->key, "%s", key);
     c->tag = tag;
-    c->explained = 0;
+    c->explained[0] = c->explained[1] = 0;
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(c->text, sizeof c->text, fmt, ap);
@@ -162,13 +163,33 @@ static bool unwritten(Found *f, const ProbeSet *ps, const Answers *a, int nprobe
 
 /* Counts the failing cases of the part's tests each cause explains, drops
  * the causes that explain none (a flaw no failing test shows is not why
- * points were lost), and writes the diagnosis. */
+ * points were lost), and writes the diagnosis: text, the causes of the
+ * core tests' failures; hard_text, those that explain the hard cases'
+ * alone (told apart from the core, as extra credit). */
 typedef bool (*Explains)(const void *ctx, int tag, const Test *t, const Case *c, const double *got);
 
-static void write_diagnosis(Found *f, int part, const TestList *tests, const TestResult *results,
-                            Explains explains, const void *ctx, char **text, char **keys)
+/* The line that ends one group's causes: how many of its failing cases
+ * (core or hard, group) the causes explain. */
+static void summary_line(char **text, size_t *len, int group, int named, bool after_core, int failing,
+                         int explained)
 {
-    int failing = 0, explained = 0;
+    static const char *const kind[2] = { "core", "hard" };
+    const char *these = after_core ? "With the causes above, this explains"
+                      : named > 1 ? "Together these explain" : "This explains";
+    char line[240];
+    if (explained == failing)
+        snprintf(line, sizeof line, "%s every failing %s case of this part (%d).\n", these, kind[group],
+                 failing);
+    else
+        snprintf(line, sizeof line, "%s %d of the %d failing %s cases of this part; the others have a "
+                 "cause the probes did not find.\n", these, explained, failing, kind[group]);
+    append(text, len, line);
+}
+
+static void write_diagnosis(Found *f, int part, const TestList *tests, const TestResult *results,
+                            Explains explains, const void *ctx, char **text, char **hard_text, char **keys)
+{
+    int failing[2] = { 0, 0 }, explained[2] = { 0, 0 };
     for (int k = 0; k < tests->n; k++) {
         const Test *t = &tests->tests[k];
         const Answers *a = &results[k].answers;
@@ -177,41 +198,37 @@ static void write_diagnosis(Found *f, int part, const TestList *tests, const Tes
         for (int c = 0; c < a->answered; c++) {
             if (a->ok[c])
                 continue;
-            failing++;
+            failing[t->hard]++;
             bool any = false;
             for (int q = 0; q < f->ncauses; q++)
                 if (f->cause[q].tag == TAG_UNWRITTEN ? is_skeleton_answer(t, &t->cases[c], a->got[c])
                                                      : explains(ctx, f->cause[q].tag, t, &t->cases[c], a->got[c])) {
-                    f->cause[q].explained++;
+                    f->cause[q].explained[t->hard]++;
                     any = true;
                 }
-            explained += any;
+            explained[t->hard] += any;
         }
     }
-    size_t tlen = 0, klen = 0;
-    int named = 0;
+    char **out[2] = { text, hard_text };
+    size_t len[2] = { 0, 0 }, klen = 0;
+    int named[2] = { 0, 0 };
     for (int q = 0; q < f->ncauses; q++) {
-        if (failing > 0 && f->cause[q].explained == 0)
+        const Cause *c = &f->cause[q];
+        if (failing[0] + failing[1] > 0 && c->explained[0] + c->explained[1] == 0)
             continue;
+        int group = c->explained[0] == 0 && c->explained[1] > 0;      /* the hard cases' alone */
         if (klen)
             append(keys, &klen, " ");
-        append(keys, &klen, f->cause[q].key);
-        append(text, &tlen, "- ");
-        append(text, &tlen, f->cause[q].text);
-        append(text, &tlen, "\n");
-        named++;
+        append(keys, &klen, c->key);
+        append(out[group], &len[group], "- ");
+        append(out[group], &len[group], c->text);
+        append(out[group], &len[group], "\n");
+        named[group]++;
     }
-    if (named == 0 || failing == 0)
-        return;
-    char line[240];
-    if (explained == failing)
-        snprintf(line, sizeof line, "%s every failing case of this part (%d).\n",
-                 named > 1 ? "Together these explain" : "This explains", failing);
-    else
-        snprintf(line, sizeof line, "%s %d of the %d failing cases of this part; the others have a "
-                 "cause the probes did not find.\n", named > 1 ? "Together these explain" : "This explains",
-                 explained, failing);
-    append(text, &tlen, line);
+    for (int group = 0; group < 2; group++)
+        if (named[group] > 0 && failing[group] > 0)
+            summary_line(out[group], &len[group], group, named[group], group == 1 && named[0] > 0,
+                         failing[group], explained[group]);
 }
 
 /* ==== Part 1 ================================================================ */
@@ -484,9 +501,10 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
             name_cause(f, "tan-near-90", TAG_ALL, "your formula is right, but near 180 degrees it loses "
                        "digits (at alpha = %.12g, h is off by %.2g of itself): alpha pi / 360 is "
                        "rounded to a double like any number, and tan is so steep near 90 degrees that "
-                       "this rounding of 1e-16 is magnified many times. Above 45 degrees use "
-                       "tan(alpha / 2) = 1 / tan(90 - alpha / 2): 180 - alpha is exact (the hard-case "
-                       "challenge in the handout).", worst_fov, worst);
+                       "this rounding of 1e-16 is magnified many times. Keeping those digits is the "
+                       "handout's hard-case challenge (extra credit).%s", worst_fov, worst,
+                       ps->probes->full_hints ? " Above 45 degrees use tan(alpha / 2) = 1 / tan(90 - "
+                                                "alpha / 2): 180 - alpha is exact." : "");
         }
     }
     answers_free(&ab);
@@ -1212,8 +1230,9 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
             name_cause(f, "cancellation", M_CANCEL, "your formula is right, but it loses the sphere when it is "
                        "small and far (a sphere of radius 1 at 2^27): B^2 and A C (or |L|^2 and "
                        "tca^2) agree to 16 digits there, and their difference, the part that says "
-                       "where the ray is, is rounding error. The hard-case challenge in the handout "
-                       "computes the discriminant without that cancellation: A R^2 - |f x r|^2.");
+                       "where the ray is, is rounding error. Computing it without that cancellation "
+                       "is the handout's hard-case challenge (extra credit).%s",
+                       ps->probes->full_hints ? " The discriminant is A R^2 - |f x r|^2." : "");
         }
     }
     for (int k = 0; k < NPROBES; k++)
@@ -1386,17 +1405,53 @@ static void diagnose_part3b(ProbeSet *ps, Found *f, PBFound *out)
     answers_free(&ak);
 }
 
+/* ==== Parts 4 and 5 ========================================================= */
+
+/* Their tests are their probes (each case's answer says hit or miss): every
+ * answer of every test that ran a miss, where some are hits, is the
+ * skeleton's answer.  Names that; the tests' hints say the rest. */
+static void flat_unwritten(int part, const TestList *tests, const TestResult *results, char **text,
+                           char **keys)
+{
+    int answered = 0, hits = 0;
+    for (int k = 0; k < tests->n; k++) {
+        const Test *t = &tests->tests[k];
+        const Answers *a = &results[k].answers;
+        if (t->part != part || !results[k].ran)
+            continue;
+        for (int c = 0; c < a->answered; c++) {
+            if (a->got[c][0] != 0)
+                return;
+            answered++;
+            hits += t->cases[c].want[0] == 1 && !(t->cases[c].flags & CASE_EITHER_HIT);
+        }
+    }
+    if (answered == 0 || hits == 0)
+        return;
+    size_t len = 0, klen = 0;
+    char line[200];
+    snprintf(line, sizeof line, "- every answer is a miss, the skeleton's answer, whatever the input (%d "
+             "cases, %d of them hits): the function is not written yet, or returns before its work "
+             "is done.\n", answered, hits);
+    append(text, &len, line);
+    append(keys, &klen, "unwritten");
+}
+
 /* ==== every part ============================================================= */
 
 void diagnose_part(int part, const TestList *tests, const TestResult *results, const Probes *probes,
-                   char **text, char **keys)
+                   char **text, char **hard_text, char **keys)
 {
-    *text = *keys = NULL;
+    *text = *hard_text = *keys = NULL;
     bool failed = false;
     for (int k = 0; k < tests->n; k++)
         failed = failed || (tests->tests[k].part == part && results[k].ran && !results[k].passed);
-    if (!failed || part > PART3B)
+    if (!failed)
         return;
+    if (part > PART3B) {
+        flat_unwritten(part, tests, results, text, keys);
+        return;
+    }
     Found f = { .ncauses = 0 };
     ProbeSet ps = { probes, { 0 } };
     P1Found p1 = { 0 };
@@ -1406,19 +1461,19 @@ void diagnose_part(int part, const TestList *tests, const TestResult *results, c
     switch (part) {
     case PART1:
         diagnose_part1(&ps, &f, &p1);
-        write_diagnosis(&f, part, tests, results, p1_explains, &p1, text, keys);
+        write_diagnosis(&f, part, tests, results, p1_explains, &p1, text, hard_text, keys);
         break;
     case PART2:
         diagnose_part2(&ps, &f, &p2);
-        write_diagnosis(&f, part, tests, results, p2_explains, &p2, text, keys);
+        write_diagnosis(&f, part, tests, results, p2_explains, &p2, text, hard_text, keys);
         break;
     case PART3A:
         diagnose_part3a(&ps, &f, &p3);
-        write_diagnosis(&f, part, tests, results, p3_explains, &p3, text, keys);
+        write_diagnosis(&f, part, tests, results, p3_explains, &p3, text, hard_text, keys);
         break;
     default:
         diagnose_part3b(&ps, &f, &pb);
-        write_diagnosis(&f, part, tests, results, p3b_explains, &pb, text, keys);
+        write_diagnosis(&f, part, tests, results, p3b_explains, &pb, text, hard_text, keys);
         if (probes->own_part3a && probes->part3a_failed) {
             size_t len = *text ? strlen(*text) : 0;
             append(text, &len, "Part 3b calls your own sphere_intersect here, and Part 3a lost points: "

@@ -471,12 +471,13 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         if (b.ok) {
             /* After two tests out of time, a probe would be the third. */
             ProbeContext pc = { opt, &b, timeouts >= 2, deadline };
-            Probes probes = { run_probe, &pc, p == PART3B && !opt->build->reference, false };
+            Probes probes = { run_probe, &pc, p == PART3B && !opt->build->reference, false, cfg->full_hints };
             for (int k = 0; k < tests->n; k++)
                 probes.part3a_failed = probes.part3a_failed ||
                     (tests->tests[k].part == PART3A && !tests->tests[k].hard && g->results[k].ran &&
                      !g->results[k].passed);
-            diagnose_part(p, tests, g->results, &probes, &g->diagnosis[p], &g->causes[p]);
+            diagnose_part(p, tests, g->results, &probes, &g->diagnosis[p], &g->diagnosis_hard[p],
+                          &g->causes[p]);
         }
         g->cpu_probes += sandbox_cpu(false) - children;
         if (opt->keep_objects && b.ok)
@@ -543,6 +544,7 @@ void grade_free(Grade *g)
     for (int p = 0; p < NPARTS; p++) {
         free(g->build_messages[p]);
         free(g->diagnosis[p]);
+        free(g->diagnosis_hard[p]);
         free(g->causes[p]);
     }
     memset(g, 0, sizeof *g);

@@ -2,12 +2,14 @@
  * grade - the autograder's command line.
  *
  *   grade [--submission DIR] [--part 1|2|3a|3b|4|5] [--results FILE] [--quiet]
- *         [--report DIR | --report-file FILE]
+ *         [--report DIR | --report-file FILE] [--all-failures]
  *       grades one submission: the parts of tests/weights.conf's "parts"
  *       line, or the one part named; exit 0 for full marks, 1 when points
  *       are lost, 2 when the grader itself could not run.  --report also
  *       writes the page with pictures, DIR/index.html (--report-file: FILE);
  *       a page that cannot be written is reported and changes nothing else.
+ *       The table is short (report_table.c); --all-failures shows every
+ *       failure in full, as the page does.
  *   grade --all DIR [--out DIR] [--jobs N]
  *       grades every subdirectory of DIR, in parallel; writes
  *       OUT/gradebook.csv, OUT/<submission>.json and OUT/<submission>.html.
@@ -54,7 +56,7 @@ static void usage(void)
     fprintf(stderr,
             "usage: grade [--submission DIR] [--part 1|2|3a|3b|4|5] [--results FILE] [--quiet]\n"
             "             [--format gradescope|prairielearn] [--classroom FILE]\n"
-            "             [--report DIR | --report-file FILE] [--cost] [--verbose]\n"
+            "             [--report DIR | --report-file FILE] [--cost] [--verbose] [--all-failures]\n"
             "       grade --all DIR [--out DIR] [--jobs N]\n"
             "       grade --jail    (says where the submissions' code runs)\n"
             "       either with --weights FILE (default tests/weights.conf)\n"
@@ -67,6 +69,7 @@ static bool results_prairielearn;
 static const char *classroom_path;
 static bool show_cost;             /* --cost: where grading's CPU time went */
 static bool verbose;               /* --verbose: progress on stderr           */
+static bool every_failure;         /* --all-failures: the table in full       */
 
 static int fail(const char *results, const char *fmt, const char *what)
 {
@@ -271,7 +274,7 @@ static int grade_one(const char *submission, const char *part, const char *resul
         return fail(results, "%s", err);
     }
     if (!quiet)
-        report_table(stdout, &g, &cfg, submission);
+        report_table(stdout, &g, &cfg, submission, every_failure);
     if (show_cost) {
         /* The whole process: the grader's own CPU (reading the tests
          * included) and every child it waited for. */
@@ -761,6 +764,8 @@ int main(int argc, char **argv)
         }
         else if (!strcmp(a, "--verbose"))
             verbose = true;
+        else if (!strcmp(a, "--all-failures"))
+            every_failure = true;
         else if (!strcmp(a, "--format") && v)
             format = v, k++;
         else if (!strcmp(a, "--memo") && v)
