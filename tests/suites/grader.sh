@@ -86,14 +86,14 @@ check "the skeleton's Parts 4 and 5 ran without a crash" \
 $grade --submission labs --results "$tmp/labs-short.json" --report-file "$tmp/labs-short.html" \
     >"$tmp/labs-short.out" 2>&1
 lines=$(wc -l <"$tmp/labs-short.out" | tr -d ' ')
-failed=$(grep -c '"status": "failed"' "$tmp/labs-short.json")
+nfailed=$(grep -c '"status": "failed"' "$tmp/labs-short.json")
 articles=$(grep -c '<article class="test"' "$tmp/labs-short.html")
 check "the untouched skeleton's table is short: $lines lines, at most 150" [ "$lines" -le 150 ]
-check "... each part one line: not written yet" [ "$(grep -c 'not written yet' "$tmp/labs-short.out")" -eq 4 ]
-check "... and its page shows every one of its $failed failed tests ($articles)" \
-    sh -c "[ $failed -gt 0 ] && [ $articles -eq $failed ]"
+check "... each part one line: not written yet" [ "$(grep -c '   not written yet: every answer' "$tmp/labs-short.out")" -eq 4 ]
+check "... and its page shows every one of its $nfailed failed tests ($articles)" \
+    sh -c "[ $nfailed -gt 0 ] && [ $articles -eq $nfailed ]"
 check "grade --all-failures shows each in full" \
-    sh -c "[ \$(grep -c '^  FAIL  ' '$tmp/labs.out') -ge $failed ] && ! grep -q 'not written yet' '$tmp/labs.out'"
+    sh -c "[ \$(grep -c '^  FAIL  ' '$tmp/labs.out') -ge $nfailed ] && ! grep -q '   not written yet: every answer' '$tmp/labs.out'"
 
 # A part whose file did not build is one line of the table, with the
 # compiler's (or the grader's) words once, not a line for each test.
