@@ -20,8 +20,10 @@
 
 typedef struct {
     int threads;         /* worker threads; 0 = one per core                  */
-    bool progress;       /* show a progress line on stderr if it is a terminal
-                            and the render takes more than a second          */
+    bool progress;       /* show progress on stderr: on a terminal a line
+                            redrawn once the render takes more than a
+                            second, elsewhere a line every few seconds, and
+                            a word when no row is drawn for long         */
 } RenderOptions;
 
 typedef struct {
