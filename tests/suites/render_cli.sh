@@ -349,9 +349,9 @@ elif [ "$status" -ne 1 ]; then
     fail "compare of the skeleton's render with the reference: exit $status, want 1"
 elif ! grep -q "differ" "$tmp/stdout" || ! grep -q "PSNR" "$tmp/stdout" || ! grep -q "%" "$tmp/stdout"; then
     fail "compare: no share of differing pixels or PSNR in: $(tr '\n' ' ' <"$tmp/stdout")"
-elif [ -z "$size" ] || [ "$height" -ne 90 ] || [ "$width" -le 360 ] || [ "$width" -gt $((360 + 2 * 16)) ] ||
+elif [ -z "$size" ] || [ "$height" -ne $((90 + 11)) ] || [ "$width" -le 360 ] || [ "$width" -gt $((360 + 2 * 16)) ] ||
     [ $(((width - 360) % 2)) -ne 0 ]; then
-    fail "compare -o: the side-by-side image is '$size', want 3 x 120 plus two gaps by 90"
+    fail "compare -o: the side-by-side image is '$size', want 3 x 120 plus two gaps by 90 and the labels' band of 11"
 else
     pass
 fi
