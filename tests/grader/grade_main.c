@@ -103,9 +103,14 @@ static int load_tests(TestList *list, const GradeConfig *cfg, const bool parts[N
             testgen_hidden_flat(list, cfg->seed ^ HIDDEN_SALT_FLAT);
     }
 #else
-    (void)cfg;
     (void)parts;
 #endif
+    /* A part whose hard cases are worth nothing (weights.conf) has no
+     * challenge, and no hard-case test. */
+    bool none[NPARTS];
+    for (int p = 0; p < NPARTS; p++)
+        none[p] = !(cfg->hard[p] > 0);
+    testlist_drop_hard(list, none);
     return 0;
 }
 
