@@ -128,7 +128,7 @@ check "a Parts 1-3b submission keeps full marks by default (exit $status)" [ "$s
 
 # -- a malformed weights file: refused, naming its file and line -----------
 for line in "output 0" "output 65537" "output 12k" "seed -1" "hard maybe" "part 6 core 1 hard 1" \
-    "part 1 core -1 hard 0" "parts 1 1" "colour red" "timeout 0" "timeout 601" "timeout 2 s"; do  # portable: text
+    "part 1 core -1 hard 0" "parts 1 1" "colour red" "hints some" "hints full extra" "timeout 0" "timeout 601" "timeout 2 s"; do  # portable: text
     printf 'part 1 core 20 hard 2.5\n%s\n' "$line" >"$tmp/bad.conf"
     $grade --submission solutions --weights "$tmp/bad.conf" >"$tmp/bad.out" 2>&1
     status=$?
