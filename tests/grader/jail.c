@@ -299,7 +299,7 @@ int jail_enter(int fd)
         say_failed(fd, "entering the root", errno);
         return -1;
     }
-    prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0);
+    prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0);                     /* portable: __linux__ */
     return 0;
 }
 
@@ -598,7 +598,8 @@ static void sweep_folder(int dfd, uid_t id, int depth)
  * owner's and the maker's ids are the columns named uid and cuid). */
 static void remove_ipc(uid_t id)
 {
-    static const char *const tables[] = { "/proc/sysvipc/shm", "/proc/sysvipc/sem", "/proc/sysvipc/msg" };
+    static const char *const tables[] = { "/proc/sysvipc/shm", "/proc/sysvipc/sem",      /* portable: __linux__ */
+                                          "/proc/sysvipc/msg" };                        /* portable: __linux__ */
     for (int t = 0; t < 3; t++) {
         FILE *f = fopen(tables[t], "r");
         if (!f)

@@ -221,7 +221,7 @@ static long long group_memory(pid_t pid)
 #elif defined(__linux__)
     long long total = resident((long)pid);
     char path[96], text[256];
-    snprintf(path, sizeof path, "/proc/%ld/task/%ld/children", (long)pid, (long)pid);
+    snprintf(path, sizeof path, "/proc/%ld/task/%ld/children", (long)pid, (long)pid); /* portable: __linux__ */
     int fd = total >= 0 ? open(path, O_RDONLY) : -1;
     ssize_t n = fd >= 0 ? read(fd, text, sizeof text - 1) : 0;
     if (fd >= 0)

@@ -373,7 +373,7 @@ static void test_closest_across_kinds(void)
  * 2^-29 (1.9e-9) is not: a window twice as wide, or half as wide, fails. */
 static void test_closest_tie(void)
 {
-    static const struct { int k; Vec3 want; const char *what; } cases[] = {
+    const struct { int k; Vec3 want; const char *what; } cases[] = {
         { 34, RED, "the wall: the triangle nearer by 2^-34 of t is a tie" },
         { 30, RED, "the wall: the triangle nearer by 2^-30 of t is a tie" },
         { 29, BLUE, "the triangle, nearer by 2^-29 of t: no tie" },

@@ -2,6 +2,7 @@
  * working folder and in /tmp, for the grader to remove
  * (tests/attacks/README.md). */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too */
 #include "raytracer.h"
 #include <sys/stat.h>
 #include <unistd.h>

@@ -1,6 +1,7 @@
 /* Part 1 right; on its first call, SIGKILL to every process it may signal,
  * to process 1 and to its parent (tests/attacks/README.md). */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too */
 #include "raytracer.h"
 #include <signal.h>
 #include <unistd.h>

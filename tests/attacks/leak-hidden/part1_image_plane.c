@@ -2,6 +2,7 @@
  * worked example (90, 2, 1), all it finds printed, and a wrong answer so
  * that the output is shown (tests/attacks/README.md). */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too */
 #include "raytracer.h"
 #include <dirent.h>
 #include <stdio.h>

@@ -1,6 +1,7 @@
 /* Part 1 with no formula: it answers from what record-answers left behind,
  * and 0 where it finds nothing (tests/attacks/README.md). */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too */
 #include "raytracer.h"
 #include <dirent.h>
 #include <stdio.h>

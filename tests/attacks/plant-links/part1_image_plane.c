@@ -3,6 +3,7 @@
  * only root may read, for the grader to copy later into the report page's
  * render (tests/attacks/README.md). */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too */
 #define _DEFAULT_SOURCE
 #include "raytracer.h"
 #include <dirent.h>

@@ -3,6 +3,7 @@
  * the classmates graded beside it, found through the grader's command
  * lines, and fails so that the output is shown (tests/attacks/README.md). */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too */
 #include "raytracer.h"
 #include <dirent.h>
 #include <stdio.h>
@@ -28,7 +29,7 @@ static void classmates(void)
     struct dirent *e;
     while (proc && (e = readdir(proc))) {
         char path[300], args[4096];
-        snprintf(path, sizeof path, "/proc/%s/cmdline", e->d_name);
+        snprintf(path, sizeof path, "/proc/%s/cmdline", e->d_name);  /* portable: an attack, where /proc is */
         FILE *f = fopen(path, "r");
         size_t n = f ? fread(args, 1, sizeof args - 1, f) : 0;
         if (f)

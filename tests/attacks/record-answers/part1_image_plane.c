@@ -2,6 +2,7 @@
  * run: as folder names where anyone may write, and in a System V shared
  * memory segment (tests/attacks/README.md). */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too */
 #include "raytracer.h"
 #include <stdio.h>
 #include <string.h>

@@ -2,6 +2,7 @@
  * (2 s): every test alone then takes nearly its limit
  * (tests/attacks/README.md). */
 #define _POSIX_C_SOURCE 200809L
+#define _DARWIN_C_SOURCE        /* macOS: the rest too */
 #include "raytracer.h"
 #include <time.h>
 
