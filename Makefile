@@ -101,14 +101,19 @@ KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
 all: $(BUILD)/kit/libkit.a $(BUILD)/bin/compare $(BUILD)/sub/labs/render \
      $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render) grader unit-tests
 
+# The student kit (no solutions/) lists only what runs there.
 help:
 	@echo "make render  [SUBMISSION=dir] [SCENE=file] [SIZE=WxH] [OUT=file]"
 	@echo "make compare [SUBMISSION=dir] [SCENE=file]"
-	@echo "make grade   [SUBMISSION=dir] [PART=1|2|3a|3b|4|5] [RESULTS=file]"
+	@echo "make grade   [SUBMISSION=dir] [PART=1|2|3a|3b|4|5] [FAILURES=all] [RESULTS=file]"
 	@echo "             [FORMAT=gradescope|prairielearn] [CLASSROOM=file]"
+ifneq ($(HAVE_SOLUTIONS),)
 	@echo "make grade-all SUBMISSIONS=dir [OUT=dir] [JOBS=n] [PREVIOUS=dir]"
 	@echo "make sort-submissions FROM=download.zip|dir TO=newdir [MAX_MB=n] [MAX_RATIO=n]"
 	@echo "make gradescope | prairielearn | student-kit | bench | fuzz | sanitize-grader | handouts | test | clean"
+else
+	@echo "make test | clean"
+endif
 	@echo "V=1 after any of them echoes the build's compiler commands"
 
 $(BUILD)/kit/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
@@ -336,7 +341,8 @@ all: $(REPORT_REF)
 grade: grader $(REPORT_REF)
 	@$(BUILD)/bin/grade --submission "$(SUBMISSION)" $(if $(PART),--part $(PART)) \
 	    $(if $(RESULTS),--results "$(RESULTS)") $(if $(FORMAT),--format "$(FORMAT)") \
-	    $(if $(CLASSROOM),--classroom "$(CLASSROOM)") --report out/report
+	    $(if $(CLASSROOM),--classroom "$(CLASSROOM)") $(if $(filter all,$(FAILURES)),--all-failures) \
+	    --report out/report
 
 grade-all: grader $(REPORT_REF)
 	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade-all SUBMISSIONS=dir [OUT=dir] [PREVIOUS=dir]"; exit 2; }
@@ -383,7 +389,7 @@ KIT_DIR    = out/student-kit
 student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 	rm -rf $(KIT_DIR) && mkdir -p $(KIT_DIR)/tests/unit $(KIT_DIR)/labs/reference
 	cp -R Makefile .gitattributes .gitignore labs handouts $(KIT_DIR)/
-	cp handouts/student-readme.md $(KIT_DIR)/README.md
+	mv $(KIT_DIR)/handouts/student-readme.md $(KIT_DIR)/README.md
 	mkdir -p $(KIT_DIR)/.github/workflows
 	sh tests/classroom/workflow.sh >$(KIT_DIR)/.github/workflows/classroom.yml
 	cp -R tests/grader tests/public tests/tools tests/run.sh $(KIT_DIR)/tests/

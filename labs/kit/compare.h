@@ -37,8 +37,16 @@ void compare_heat(int m, unsigned char *rgb);
  * (out of memory). */
 int compare_heat_map(const Image *a, const Image *b, Image *heat, char *err, size_t errlen);
 
+/* The band above the side-by-side panels that holds their labels: its
+ * height for panels width pixels wide (a 5 x 7 font, twice as large from
+ * COMPARE_LABEL_BIG pixels on). */
+#define COMPARE_LABEL_BIG 400
+int compare_label_band(int width);
+
 /* Allocates out and draws a | b | heat map of their difference, with grey
- * gaps of COMPARE_GAP pixels.  Returns 0, or -1 with a reason in err (the
+ * gaps of COMPARE_GAP pixels, under a grey band (compare_label_band) that
+ * labels them "YOUR RENDER", "REFERENCE" and "DIFFERENCE" (a label wider
+ * than its panel is left out).  Returns 0, or -1 with a reason in err (the
  * images are too wide to put side by side, or memory ran out). */
 int compare_side_by_side(const Image *a, const Image *b, Image *out, char *err, size_t errlen);
 

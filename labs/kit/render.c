@@ -32,6 +32,7 @@
 #define RENDER_RUN           16     /* pixels whose rays are made before their colours */
 #define RENDER_PROGRESS_AFTER 1.0   /* seconds before the progress line appears */
 #define RENDER_PROGRESS_EVERY 0.25  /* seconds between its updates */
+#define RENDER_LINE_EVERY    5.0    /* seconds between progress lines, not on a terminal */
 #define RENDER_STALLED       10.0   /* seconds with no row drawn before a word on endless loops
                                        (RENDER_STALLED_SECONDS sets it, for the kit's tests) */
 
@@ -169,10 +170,13 @@ static void *render_worker(void *arg)
     return NULL;
 }
 
-/* Waits until every worker has finished.  With show set, writes
- * "\r  rendering  43%" to stderr a few times a second once the render has
- * run for more than a second, and clears the line at the end.  Never fails. */
-static void render_wait(RenderJob *job, bool show, double start)
+/* Waits until every worker has finished.  With show set: on a terminal
+ * (tty), writes "\r  rendering  43%" to stderr a few times a second once
+ * the render has run for more than a second, and clears the line at the
+ * end; elsewhere, a line "render: 43% of the rows drawn after 5 s" every
+ * RENDER_LINE_EVERY seconds; either way a line once no row has been drawn
+ * for RENDER_STALLED seconds.  Never fails. */
+static void render_wait(RenderJob *job, bool show, bool tty, double start)
 {
     bool shown = false, stall_told = false;
     double last = 0, last_row_at = start, stalled = RENDER_STALLED;
@@ -202,17 +206,25 @@ static void render_wait(RenderJob *job, bool show, double start)
         if (rows != rows_seen)
             rows_seen = rows, last_row_at = now;
         if (job->running > 0 && !stall_told && now - last_row_at > stalled) {
-            fprintf(stderr, "\r  no row finished in the last %.0f s: if the code loops forever, stop it "
+            fprintf(stderr, "%sno row finished in the last %.0f s: if the code loops forever, stop it "
                             "with Ctrl-C (make grade stops each test after a few seconds, and names "
-                            "the ones that do not finish)\n", stalled);
+                            "the ones that do not finish)\n", tty ? "\r  " : "render: ", stalled);
+            fflush(stderr);
             stall_told = true;
         }
-        if (job->running > 0 && now - start > RENDER_PROGRESS_AFTER
-            && now - last >= RENDER_PROGRESS_EVERY * 0.9) {
+        /* On a terminal a line redrawn in place; elsewhere (a log, an
+         * editor's pane) a line every few seconds, so that a long render
+         * or an endless loop does not wait in silence. */
+        double every = tty ? RENDER_PROGRESS_EVERY * 0.9 : RENDER_LINE_EVERY;
+        if (job->running > 0 && now - start > (tty ? RENDER_PROGRESS_AFTER : RENDER_LINE_EVERY)
+            && now - last >= every) {
             int percent = (int)(100.0 * atomic_load(&job->rows_done) / job->scene->ny);
-            fprintf(stderr, "\r  rendering %3d%%", percent);
+            if (tty)
+                fprintf(stderr, "\r  rendering %3d%%", percent);
+            else
+                fprintf(stderr, "render: %d%% of the rows drawn after %.0f s\n", percent, now - start);
             fflush(stderr);
-            shown = true;
+            shown = tty;
             last = now;
         }
     }
@@ -246,7 +258,7 @@ static int render_pass(RenderJob *job, int nthreads, bool show, double start,
         render_error(err, errlen, "render: cannot start a thread: %s", strerror(status));
         return 0;
     }
-    render_wait(job, show, start);
+    render_wait(job, show, isatty(STDERR_FILENO), start);
     for (int k = 0; k < started; k++)
         pthread_join(threads[k], NULL);
     return started;
@@ -341,7 +353,7 @@ int render_scene(const Scene *scene, Image *img, const RenderOptions *opt,
         render_error(err, errlen, "render: cannot create a condition variable");
         return -1;
     }
-    bool show = opt && opt->progress && isatty(STDERR_FILENO);
+    bool show = opt && opt->progress;
     int started = render_pass(&job, nthreads, show, start, err, errlen);
     if (started > 0 && atomic_load(&job.stray)) {
         render_stray_note(opt);

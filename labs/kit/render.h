@@ -34,9 +34,11 @@ typedef enum {
 
 typedef struct {
     int threads;         /* worker threads; 0 = one per core                  */
-    bool progress;       /* show a progress line on stderr if it is a terminal
-                            and the render takes more than a second, and a
-                            note when a stray hit sets the hierarchy aside */
+    bool progress;       /* show progress on stderr: on a terminal a line
+                            redrawn once the render takes more than a
+                            second, elsewhere a line every few seconds; a
+                            word when no row is drawn for long, and a note
+                            when a stray hit sets the hierarchy aside     */
     RenderHierarchy hierarchy;
 } RenderOptions;
 

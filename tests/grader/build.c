@@ -568,11 +568,12 @@ static bool served(Build *b, MemoEntry *e, const char *opath)
 
 /* Compiles the stage file copied into the build (b->dir/src/<stage>.c) to
  * <stage>.o beside it, or takes the object the same bytes built before in
- * this grade --all run (cfg->memo).  Returns 0 when there is an object, 1
- * when the student's file did not build (b->messages says why), -1 when
- * the grader could not run the compiler (err). */
+ * this grade --all run (cfg->memo).  defines: NULL, or up to four -D
+ * options, with which it is compiled afresh (no memo).  Returns 0 when
+ * there is an object, 1 when the student's file did not build (b->messages
+ * says why), -1 when the grader could not run the compiler (err). */
 static int compile_stage(const BuildConfig *cfg, Build *b, const char *stage, bool load,
-                         MemoEntry *memo, char *err, size_t errlen)
+                         char *const *defines, MemoEntry *memo, char *err, size_t errlen)
 {
     const char *kind = load ? "pic" : "o";
     char cfile[80], ofile[80], dfile[80], cpath[PATH_MAX + 700], opath[PATH_MAX + 700],
@@ -587,15 +588,20 @@ static int compile_stage(const BuildConfig *cfg, Build *b, const char *stage, bo
      * by a grading beside this one: what they built, and what the compiler
      * said of them, again.  Else this grading compiles them, and says when
      * it is done, whatever came of it. */
-    bool memo_on = memo_find(cfg->memo, stage, kind, cpath, memo);
+    bool memo_on = !defines && memo_find(cfg->memo, stage, kind, cpath, memo);
     if (memo_on && memo->found && memo_wait(memo, MEMO_WAIT_SECONDS) && served(b, memo, opath))
         return 0;
     snprintf(oout, sizeof oout, "%s/%s", b->rundir, ofile);
     snprintf(dout, sizeof dout, "%s/%s", b->rundir, dfile);
     size_t before = strlen(b->messages);
-    char *argv[] = { (char *)cfg->cc, "-std=c11", "-O1", "-ffp-contract=off", "-Wall", "-Wextra",
-                     "-I.", "-MD", "-MF", dout, "-c", cfile, "-o", oout,
-                     load ? "-fPIC" : NULL, NULL };
+    char *argv[20] = { (char *)cfg->cc, "-std=c11", "-O1", "-ffp-contract=off", "-Wall", "-Wextra",
+                       "-I.", "-MD", "-MF", dout, "-c", cfile, "-o", oout };
+    int argc = 14;
+    if (load)
+        argv[argc++] = "-fPIC";
+    for (int k = 0; defines && defines[k] && k < 4; k++)
+        argv[argc++] = defines[k];
+    argv[argc] = NULL;
     const char *keep[] = { ofile, dfile, NULL };
     int rc = run_cc(cfg, b, argv, keep, &b->cpu_compile, err, errlen);
     if (rc == 0 && access(opath, R_OK) != 0) {
@@ -610,6 +616,85 @@ static int compile_stage(const BuildConfig *cfg, Build *b, const char *stage, bo
         memo_use(memo);
     if (memo_on && !memo->found)
         memo_keep_text(memo, "done", "");
+    return rc;
+}
+
+enum { APART_MAX = 4 };
+
+/* A helper defined, not static, in two of the student's stage files that
+ * one program links (Part 3b with the student's own Part 3a, in the
+ * student kit): the linker refuses it, where the instructor's grader,
+ * which links each stage file with the reference's others, does not, and
+ * the README promises full marks.  Its output is what b->messages holds
+ * from before (the length before the link).  Each of the files after the
+ * first that defines such a name is compiled again with the name made its
+ * own (-Dname=name_in_<stage>), the program (link) linked again, and the
+ * linker's words give way to make render's: write static.  Returns as
+ * run_cc: 1 (the link's failure stands) unless every name the linker says
+ * is defined twice is a helper that two files, compiled here, define. */
+static int link_apart(const BuildConfig *cfg, Build *b, const char *submission, const int *parts,
+                      int nparts, char **link, size_t before, char *err, size_t errlen)
+{
+    char names[APART_MAX][LINKMSG_NAME_MAX];
+    int nnames = linkmsg_duplicate(b->messages + before, names, APART_MAX);
+    char *texts[NPARTS] = { NULL };
+    bool apart = nnames > 0;
+    for (int k = 0; k < nparts; k++)
+        texts[k] = read_stage(submission, parts[k]);
+    char defs[NPARTS][APART_MAX][2 * LINKMSG_NAME_MAX + 40] = { { { 0 } } };
+    char *defines[NPARTS][APART_MAX + 1];
+    char said[2048] = "";
+    for (int q = 0; q < nnames && apart; q++) {
+        int first = -1;
+        apart = !linkmsg_stage_of(names[q]);            /* a helper, not the contract's */
+        for (int k = 0; k < nparts && apart; k++)
+            if (texts[k] && linkmsg_defines(texts[k], names[q]))
+                first = first < 0 ? k : first;
+        apart = apart && first >= 0;
+        char list[512] = "";
+        for (int k = 0; k < nparts && apart; k++) {
+            if (!texts[k] || !linkmsg_defines(texts[k], names[q]))
+                continue;
+            size_t n = strlen(list);
+            snprintf(list + n, sizeof list - n, "%s%s.c", n ? " and " : "", stage_names[parts[k]]);
+            if (k != first)
+                snprintf(defs[k][q], sizeof defs[k][q], "-D%s=%s_in_%s", names[q], names[q],
+                         stage_names[parts[k]]);
+        }
+        apart = apart && strstr(list, " and ");
+        size_t n = strlen(said);
+        snprintf(said + n, sizeof said - n, "%s is defined in %s: make render links your stage files "
+                 "into one program, where a function may be defined only once, and stops there. Write "
+                 "static in front of each definition of %s (graded here with each file's %s its own).\n",
+                 names[q], list, names[q], names[q]);
+    }
+    for (int k = 0; k < nparts; k++)
+        free(texts[k]);
+    int rc = 1;
+    for (int k = 0; k < nparts && apart && rc != -1; k++) {
+        int nd = 0;
+        for (int q = 0; q < nnames; q++)
+            if (defs[k][q][0])
+                defines[k][nd++] = defs[k][q];
+        defines[k][nd] = NULL;
+        char cpath[PATH_MAX + 700];
+        snprintf(cpath, sizeof cpath, "%s/%s.c", b->src, stage_names[parts[k]]);
+        if (nd > 0 && (access(cpath, R_OK) != 0 ||
+                       (rc = compile_stage(cfg, b, stage_names[parts[k]], false, defines[k], NULL,
+                                           err, errlen)) != 0))
+            apart = false;
+    }
+    if (!apart)
+        return rc < 0 ? -1 : 1;
+    size_t failed = strlen(b->messages);
+    const char *keep[] = { "runner", NULL };
+    rc = run_cc(cfg, b, link, keep, &b->cpu_link, err, errlen);
+    if (rc == 0) {
+        b->messages[before] = '\0';                    /* the first link's words */
+        say(b, said);
+    } else if (rc > 0) {
+        b->messages[failed] = '\0';                    /* the first link's stand */
+    }
     return rc;
 }
 
@@ -736,7 +821,7 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
             b->refused = true;          /* scan_includes said why */
             return 0;
         }
-        int rc = compile_stage(cfg, b, stage, load, &memo, err, errlen);
+        int rc = compile_stage(cfg, b, stage, load, NULL, &memo, err, errlen);
         if (rc > 0) {
             explain_lookalikes(b, text, n, cfile);
             explain_own_headers(b, text, n, submission, cfile);
@@ -771,7 +856,10 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
     link[nlink++] = out;
     link[nlink] = NULL;
     const char *keep[] = { "runner", NULL };
+    size_t before = strlen(b->messages);
     int rc = run_cc(cfg, b, link, keep, &b->cpu_link, err, errlen);
+    if (rc > 0 && nparts > 1)
+        rc = link_apart(cfg, b, submission, parts, nparts, link, before, err, errlen);
     if (rc < 0)
         return -1;
     b->ok = rc == 0 && chmod(b->runner, 0755) == 0;

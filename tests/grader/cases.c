@@ -140,17 +140,34 @@ void test_add_triangle(Test *test, const double v[9])
     memcpy(test->triangles[test->ntriangles++].v, v, 9 * sizeof *v);
 }
 
+static void test_free(Test *t)
+{
+    for (int c = 0; c < t->ncases; c++)
+        free(t->cases[c].hints);
+    free(t->cases);
+    free(t->spheres);
+    free(t->triangles);
+}
+
 void testlist_free(TestList *list)
 {
-    for (int k = 0; k < list->n; k++) {
-        for (int c = 0; c < list->tests[k].ncases; c++)
-            free(list->tests[k].cases[c].hints);
-        free(list->tests[k].cases);
-        free(list->tests[k].spheres);
-        free(list->tests[k].triangles);
-    }
+    for (int k = 0; k < list->n; k++)
+        test_free(&list->tests[k]);
     free(list->tests);
     memset(list, 0, sizeof *list);
+}
+
+void testlist_drop_hard(TestList *list, const bool drop[NPARTS])
+{
+    int kept = 0;
+    for (int k = 0; k < list->n; k++) {
+        Test *t = &list->tests[k];
+        if (t->hard && drop[t->part])
+            test_free(t);
+        else
+            list->tests[kept++] = *t;
+    }
+    list->n = kept;
 }
 
 /* ---- writing ------------------------------------------------------------ */

@@ -222,19 +222,36 @@ static void describe_case(Text *t, const Test *test, int index, const Case *c, c
     say(t, "\n");
 }
 
-/* Whether a test the same code passed rules out the mistake of this hint
- * text: a case of it has the hint, so there the mistake answers wrongly,
- * and the code answered right. */
-static bool ruled_out(const char *text, const PartSoFar *part)
+/* The test the same code passed that rules out the mistake of this hint
+ * text (a case of it has the hint, so there the mistake answers wrongly,
+ * and the code answered right), or NULL. */
+static const Test *ruled_out_by(const char *text, const PartSoFar *part)
 {
     for (int k = 0; k < part->npassed; k++) {
         const Test *pt = part->passed[k];
         for (int c = 0; c < pt->ncases; c++)
             for (int h = 0; h < pt->cases[c].nhints; h++)
                 if (strcmp(pt->cases[c].hints[h].text, text) == 0)
-                    return true;
+                    return pt;
     }
-    return false;
+    return NULL;
+}
+
+static bool ruled_out(const char *text, const PartSoFar *part)
+{
+    return ruled_out_by(text, part) != NULL;
+}
+
+/* Whether every wrong answer of the test that the mistake of this hint
+ * text explains is a miss of the mistake's: the test shows that mistake
+ * only by elimination, through hits it missed. */
+static bool shown_by_misses(const Test *test, const bool *ok, int answered, const char *text)
+{
+    for (int c = 0; c < answered; c++)
+        for (int h = 0; h < test->cases[c].nhints; h++)
+            if (!ok[c] && strcmp(test->cases[c].hints[h].text, text) == 0 && test->cases[c].hints[h].out[0] != 0)
+                return false;
+    return true;
 }
 
 /* Whether the mistake of this hint text was named for another test of the
@@ -277,7 +294,8 @@ static bool hits_right(const PartSoFar *part)
  * names only a mistake named for another test and not ruled out.  NULL
  * when none is confirmed. */
 static const char *flat_mistake(const Test *test, const double (*got)[CASE_MAX_OUT],
-                                const bool *ok, int answered, const PartSoFar *part)
+                                const bool *ok, int answered, const PartSoFar *part,
+                                const char **alone_ruled_out)
 {
     enum { MAX_FIT = 16 };
     const char *fit[MAX_FIT];
@@ -319,6 +337,14 @@ static const char *flat_mistake(const Test *test, const double (*got)[CASE_MAX_O
     bool any_hit = false;
     for (int c = 0; c < answered; c++)
         any_hit = any_hit || got[c][0] == 1;
+    /* A mistake that this test shows only by the hits it missed is not
+     * named when a test the code passed shows that it does not make it
+     * (a test without an epsilon on det misses slivers through its own
+     * rounding, and hits the tiny triangles an epsilon loses). */
+    if (nfit == 1 && any_hit && shown_by_misses(test, ok, answered, fit[0]) && ruled_out(fit[0], part)) {
+        *alone_ruled_out = fit[0];
+        return NULL;
+    }
     if (nfit == 1 && any_hit)
         return fit[0];
     int nleft = 0;
@@ -346,18 +372,36 @@ static const char *flat_mistake(const Test *test, const double (*got)[CASE_MAX_O
  * flat_mistake confirms, if it confirms one, is named. */
 static const char *flat_diagnosis(const Test *test, const double (*got)[CASE_MAX_OUT],
                                   const bool *ok, int answered, const PartSoFar *part,
-                                  const char **mistake)
+                                  const char **mistake, const char **ruled)
 {
     static const char all_miss_fact[] =
         "every case of this test was answered as a miss, also where the ray plainly hits";
     bool all_miss = answered > 0;
     for (int c = 0; c < answered; c++)
         all_miss = all_miss && got[c][0] == 0;
-    *mistake = NULL;
+    *mistake = *ruled = NULL;
     if (all_miss && !hits_right(part))
         return all_miss_fact;
-    *mistake = flat_mistake(test, got, ok, answered, part);
+    *mistake = flat_mistake(test, got, ok, answered, part, ruled);
     return *mistake ? *mistake : all_miss ? all_miss_fact : NULL;
+}
+
+/* A hit at t <= 0, or at a t that is not a number, where the input is not
+ * NaN (that case has a hint of its own): the answer alone shows it, and
+ * this says so.  Whether it did. */
+static bool hit_not_ahead(Text *t, const double *got)
+{
+    double tg = got[1];
+    if (got[0] != 1 || tg > 0)
+        return false;
+    if (isnan(tg))
+        say(t, "    hint:      a hit at t = NaN: a hit needs t > 0, and a test written as \"t < 0: "
+               "miss\" lets NaN through (every comparison with NaN is false); write it as "
+               "!(t > 0)\n");
+    else
+        say(t, "    hint:      a hit at t = %.3g is %s the ray's origin: only t > 0 is a hit\n", tg,
+            tg == 0 ? "at" : "behind");
+    return true;
 }
 
 /* Parts 4 and 5: causes that an answer shows by itself, whatever the
@@ -367,27 +411,18 @@ static const char *flat_diagnosis(const Test *test, const double (*got)[CASE_MAX
 static void flat_evidence(Text *t, const Test *test, const Case *c, const double *got, int failed)
 {
     double want = c->want[1], tg = got[1];
-    /* A crack: a miss or a later hit on a mesh whose other rays (at least
-     * three quarters of them) the same test gets right. */
-    if (test->kind == KIND_MESH && c->want[0] == 1 && (got[0] == 0 || tg > want + c->tol[1])
+    /* A crack: a miss or a later hit (farther by more than a t a few
+     * digits off: the mesh's far side) on a mesh whose other rays (at
+     * least three quarters of them) the same test gets right. */
+    if (test->kind == KIND_MESH && c->want[0] == 1 && (got[0] == 0 || tg > want * (1 + 1e-6) + c->tol[1])
         && 4 * failed <= test->ncases) {
         say(t, "    hint:      the ray entered this closed mesh through an edge or vertex that "
                "triangles share, and %s: your test is not watertight there (the hard-case "
                "challenge)\n", got[0] == 0 ? "hit nothing" : "its first hit was farther on");
         return;
     }
-    /* A hit at t <= 0, or at a t that is not a number, where the input is
-     * not NaN (that case has a hint of its own): the answer alone shows it. */
-    if (got[0] == 1 && !(tg > 0)) {
-        if (isnan(tg))
-            say(t, "    hint:      a hit at t = NaN: a hit needs t > 0, and a test written as \"t < 0: "
-                   "miss\" lets NaN through (every comparison with NaN is false); write it as "
-                   "!(t > 0)\n");
-        else
-            say(t, "    hint:      a hit at t = %.3g is %s the ray's origin: only t > 0 is a hit\n", tg,
-                tg == 0 ? "at" : "behind");
+    if (hit_not_ahead(t, got))
         return;
-    }
     /* A hit at t = +inf: a quotient whose divisor was 0. */
     if (got[0] == 1 && tg == INFINITY) {
         say(t, "    hint:      a hit at t = inf is no point of the ray: t must be finite. A division by "
@@ -493,14 +528,28 @@ static char *verdict(const Test *test, Answers *a, const PartSoFar *part)
         bool nan_in = false;
         for (int k = 0; k < kind_nin(test->kind); k++)
             nan_in = nan_in || isnan(bad->in[k]);
+        const char *ruled;
         const char *why = flat_diagnosis(test, (const double (*)[CASE_MAX_OUT])a->got, a->ok, a->answered,
-                                         part, &a->named);
+                                         part, &a->named, &ruled);
         double missed, found;
-        if (nan_in && a->got[a->first_bad][0] == 1)
+        if (ruled) {
+            /* The mistake's words up to its fix ("...: compare it with 0"). */
+            const char *fix = strstr(ruled, ": ");
+            int n = fix ? (int)(fix - ruled) : (int)strlen(ruled);
+            say(&t, "    hint:      the hits missed here fit one known mistake alone (%.*s), but your code "
+                    "passed \"%s\", which code with that mistake fails: they have another cause%s\n", n,
+                ruled, ruled_out_by(ruled, part)->name,
+                test->hard ? ", such as rounding where this hard case makes it large (the handout's "
+                             "hard-case challenge)" : "");
+        }
+        else if (nan_in && a->got[a->first_bad][0] == 1)
             say(&t, "    hint:      NaN input must be a miss: a test written as \"t < 0: miss\" lets "
                     "NaN through (every comparison with NaN is false); write it as !(t > 0)\n");
-        else if (why)
+        else if (why) {
             say(&t, "    hint:      %s\n", why);
+            if (a->named && !strstr(a->named, "t > 0"))  /* what the case shown proves besides */
+                hit_not_ahead(&t, a->got[a->first_bad]);
+        }
         else if (flat_near_misses(test, a, &missed, &found)) {
             /* A fact of the test's missed hits; the case shown may be wrong
              * for a reason of its own (a float t), which is said first. */

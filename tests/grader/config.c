@@ -36,6 +36,19 @@ static bool parse_parts(const char *line, bool parts[NPARTS])
     return true;
 }
 
+/* "KEY A" or "KEY B" alone on the line (its keyword already read):
+ * true, with *first set when it is A; false otherwise. */
+static bool either_word(const char *line, const char *a, const char *b, bool *first)
+{
+    char key[32], mode[16];
+    int used = 0;
+    if (sscanf(line, " %31s %15s %n", key, mode, &used) != 2 || used == 0 || line[used] ||
+        (strcmp(mode, a) != 0 && strcmp(mode, b) != 0))
+        return false;
+    *first = strcmp(mode, a) == 0;
+    return true;
+}
+
 int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
 {
     memset(cfg, 0, sizeof *cfg);
@@ -72,7 +85,7 @@ int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
         if (bom)
             memmove(line, line + bom, strlen(line + bom) + 1);      /* not text */
         line[strcspn(line, "#")] = '\0';
-        char word[32], label[8], mode[16];
+        char word[32], label[8];
         double core = 0, hard = 0;
         unsigned long long seed = 0;
         long kib = 0;
@@ -91,11 +104,14 @@ int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
                 want = "'part P core N hard M': P one of 1 2 3a 3b 4 5, N and M points, 0 or more";
             }
         } else if (strcmp(word, "hard") == 0) {
-            if (sscanf(line, " hard %15s %n", mode, &used) == 1 && used > 0 && !line[used] &&
-                (!strcmp(mode, "bonus") || !strcmp(mode, "core")))
-                cfg->hard_is_bonus = strcmp(mode, "bonus") == 0;
-            else
+            if (!either_word(line, "bonus", "core", &cfg->hard_is_bonus))
                 want = "'hard bonus' or 'hard core'";
+        } else if (strcmp(word, "hints") == 0) {
+            bool challenge;
+            if (either_word(line, "challenge", "full", &challenge))
+                cfg->full_hints = !challenge;
+            else
+                want = "'hints challenge' or 'hints full'";
         } else if (strcmp(word, "timeout") == 0) {
             if (sscanf(line, " timeout %lf %n", &core, &used) == 1 && used > 0 && !line[used] &&
                 core > 0 && core <= 600)
@@ -127,8 +143,8 @@ int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
             if (!parse_parts(line, cfg->parts))
                 want = "'parts P...': each of 1 2 3a 3b 4 5 at most once";
         } else {
-            want = "'part P core N hard M', 'parts P...', 'hard bonus|core', 'timeout S', "
-                   "'output KIB' or 'seed N'";
+            want = "'part P core N hard M', 'parts P...', 'hard bonus|core', 'hints challenge|full', "
+                   "'timeout S', 'part-time S', 'output KIB' or 'seed N'";
         }
         if (want) {
             snprintf(err, errlen, "%s:%d: expected %s", path, lineno, want);

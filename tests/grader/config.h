@@ -21,6 +21,10 @@ typedef struct {
     double core[NPARTS];       /* points of each part's core tests      */
     double hard[NPARTS];       /* points of each part's hard-case tests */
     bool hard_is_bonus;        /* hard points on top of the total        */
+    bool full_hints;           /* "hints full": a hard case's cause gives
+                                  the challenge's answer; by default
+                                  ("hints challenge") it points to the
+                                  handout's challenge                     */
     double timeout;            /* seconds per test                       */
     double part_time;          /* seconds a part's runs may take in all   */
     long output_kib;           /* KiB a test may print before it is stopped */

@@ -28,7 +28,8 @@ typedef struct {
     char key[32];
     char text[1200];               /* what it is, the evidence, the fix */
     int tag;                       /* which model explains its cases    */
-    int explained;                 /* failing cases it explains         */
+    int explained[2];              /* failing cases it explains, of the
+                                      core tests [0] and the hard [1]  */
 } Cause;
 
 typedef struct {
@@ -58,7 +59,7 @@ static void name_cause(Found *f, const char *key, int tag, const char *fmt, ...)
     Cause *c = &f->cause[f->ncauses++];
     snprintf(c->key, sizeof c->key, "%s", key);
     c->tag = tag;
-    c->explained = 0;
+    c->explained[0] = c->explained[1] = 0;
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(c->text, sizeof c->text, fmt, ap);
@@ -162,13 +163,33 @@ static bool unwritten(Found *f, const ProbeSet *ps, const Answers *a, int nprobe
 
 /* Counts the failing cases of the part's tests each cause explains, drops
  * the causes that explain none (a flaw no failing test shows is not why
- * points were lost), and writes the diagnosis. */
+ * points were lost), and writes the diagnosis: text, the causes of the
+ * core tests' failures; hard_text, those that explain the hard cases'
+ * alone (told apart from the core, as extra credit). */
 typedef bool (*Explains)(const void *ctx, int tag, const Test *t, const Case *c, const double *got);
 
-static void write_diagnosis(Found *f, int part, const TestList *tests, const TestResult *results,
-                            Explains explains, const void *ctx, char **text, char **keys)
+/* The line that ends one group's causes: how many of its failing cases
+ * (core or hard, group) the causes explain. */
+static void summary_line(char **text, size_t *len, int group, int named, bool after_core, int failing,
+                         int explained)
 {
-    int failing = 0, explained = 0;
+    static const char *const kind[2] = { "core", "hard" };
+    const char *these = after_core ? "With the causes above, this explains"
+                      : named > 1 ? "Together these explain" : "This explains";
+    char line[240];
+    if (explained == failing)
+        snprintf(line, sizeof line, "%s every failing %s case of this part (%d).\n", these, kind[group],
+                 failing);
+    else
+        snprintf(line, sizeof line, "%s %d of the %d failing %s cases of this part; the others have a "
+                 "cause the probes did not find.\n", these, explained, failing, kind[group]);
+    append(text, len, line);
+}
+
+static void write_diagnosis(Found *f, int part, const TestList *tests, const TestResult *results,
+                            Explains explains, const void *ctx, char **text, char **hard_text, char **keys)
+{
+    int failing[2] = { 0, 0 }, explained[2] = { 0, 0 };
     for (int k = 0; k < tests->n; k++) {
         const Test *t = &tests->tests[k];
         const Answers *a = &results[k].answers;
@@ -177,41 +198,37 @@ static void write_diagnosis(Found *f, int part, const TestList *tests, const Tes
         for (int c = 0; c < a->answered; c++) {
             if (a->ok[c])
                 continue;
-            failing++;
+            failing[t->hard]++;
             bool any = false;
             for (int q = 0; q < f->ncauses; q++)
                 if (f->cause[q].tag == TAG_UNWRITTEN ? is_skeleton_answer(t, &t->cases[c], a->got[c])
                                                      : explains(ctx, f->cause[q].tag, t, &t->cases[c], a->got[c])) {
-                    f->cause[q].explained++;
+                    f->cause[q].explained[t->hard]++;
                     any = true;
                 }
-            explained += any;
+            explained[t->hard] += any;
         }
     }
-    size_t tlen = 0, klen = 0;
-    int named = 0;
+    char **out[2] = { text, hard_text };
+    size_t len[2] = { 0, 0 }, klen = 0;
+    int named[2] = { 0, 0 };
     for (int q = 0; q < f->ncauses; q++) {
-        if (failing > 0 && f->cause[q].explained == 0)
+        const Cause *c = &f->cause[q];
+        if (failing[0] + failing[1] > 0 && c->explained[0] + c->explained[1] == 0)
             continue;
+        int group = c->explained[0] == 0 && c->explained[1] > 0;      /* the hard cases' alone */
         if (klen)
             append(keys, &klen, " ");
-        append(keys, &klen, f->cause[q].key);
-        append(text, &tlen, "- ");
-        append(text, &tlen, f->cause[q].text);
-        append(text, &tlen, "\n");
-        named++;
+        append(keys, &klen, c->key);
+        append(out[group], &len[group], "- ");
+        append(out[group], &len[group], c->text);
+        append(out[group], &len[group], "\n");
+        named[group]++;
     }
-    if (named == 0 || failing == 0)
-        return;
-    char line[240];
-    if (explained == failing)
-        snprintf(line, sizeof line, "%s every failing case of this part (%d).\n",
-                 named > 1 ? "Together these explain" : "This explains", failing);
-    else
-        snprintf(line, sizeof line, "%s %d of the %d failing cases of this part; the others have a "
-                 "cause the probes did not find.\n", named > 1 ? "Together these explain" : "This explains",
-                 explained, failing);
-    append(text, &tlen, line);
+    for (int group = 0; group < 2; group++)
+        if (named[group] > 0 && failing[group] > 0)
+            summary_line(out[group], &len[group], group, named[group], group == 1 && named[0] > 0,
+                         failing[group], explained[group]);
 }
 
 /* ==== Part 1 ================================================================ */
@@ -484,9 +501,10 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
             name_cause(f, "tan-near-90", TAG_ALL, "your formula is right, but near 180 degrees it loses "
                        "digits (at alpha = %.12g, h is off by %.2g of itself): alpha pi / 360 is "
                        "rounded to a double like any number, and tan is so steep near 90 degrees that "
-                       "this rounding of 1e-16 is magnified many times. Above 45 degrees use "
-                       "tan(alpha / 2) = 1 / tan(90 - alpha / 2): 180 - alpha is exact (the hard-case "
-                       "challenge in the handout).", worst_fov, worst);
+                       "this rounding of 1e-16 is magnified many times. Keeping those digits is the "
+                       "handout's hard-case challenge (extra credit).%s", worst_fov, worst,
+                       ps->probes->full_hints ? " Above 45 degrees use tan(alpha / 2) = 1 / tan(90 - "
+                                                "alpha / 2): 180 - alpha is exact." : "");
         }
     }
     answers_free(&ab);
@@ -497,9 +515,13 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
 
 /* Models of each coordinate, one at a time: x depends on i, nx, w; y on
  * j, ny, h; z on d. */
-enum { X_RIGHT, X_CORNER, X_FAR_CORNER, X_NOT_CENTRED, X_SWAPPED, X_INT, X_NM1, X_SQUARE, X_FROM_J, NX_MODELS };
+/* X_INT, X_INT_RIGHT, Y_INT, Y_INT_TOP: an integer division, 0 whatever
+ * the pixel, leaves x or y at an edge of the plane, which edge as the
+ * formula has it ((2 i + 1) / (2 nx) in -w/2 + w (...) or w/2 - w (...)). */
+enum { X_RIGHT, X_CORNER, X_FAR_CORNER, X_NOT_CENTRED, X_SWAPPED, X_INT, X_INT_RIGHT, X_NM1, X_SQUARE,
+       X_FROM_J, NX_MODELS };
 enum { Y_RIGHT, Y_BOTTOM, Y_CORNER, Y_FAR_CORNER, Y_BOTTOM_CORNER, Y_NX, Y_NOT_CENTRED, Y_SWAPPED,
-       Y_INT, Y_NM1, Y_BOTTOM_NM1, Y_FROM_I, NY_MODELS };
+       Y_INT, Y_INT_TOP, Y_NM1, Y_BOTTOM_NM1, Y_FROM_I, NY_MODELS };
 enum { Z_RIGHT, Z_PLUS, Z_ONE, NZ_MODELS };
 
 static double p2_x(int m, const double *in)
@@ -514,6 +536,7 @@ static double p2_x(int m, const double *in)
     case X_NM1:         return -w / 2 + w * i / (nx - 1);         /* nx - 1 steps: edge to edge */
     case X_SQUARE:      return h * (i + 0.5 - nx / 2) / in[3];    /* in units of h / ny */
     case X_FROM_J:      return -w / 2 + w * (in[1] + 0.5) / nx;   /* i and j swapped */
+    case X_INT_RIGHT:   return w / 2;
     default:            return -w / 2;
     }
 }
@@ -533,6 +556,7 @@ static double p2_y(int m, const double *in)
     case Y_NM1:           return h / 2 - h * j / (ny - 1);
     case Y_BOTTOM_NM1:    return -h / 2 + h * j / (ny - 1);
     case Y_FROM_I:        return h / 2 - h * (in[0] + 0.5) / ny;  /* i and j swapped */
+    case Y_INT_TOP:       return h / 2;
     default:              return -h / 2;
     }
 }
@@ -609,16 +633,22 @@ static void diagnose_part2(ProbeSet *ps, Found *f, P2Found *out)
     }
     const double *g = a.got[0], *in = cases[0];
     int x = out->x, y = out->y;
-    if (x == X_INT && y == Y_INT) {
-        name_cause(f, "integer-division", TAG_ALL, "every pixel came back as the plane's corner (-w/2, -h/2): "
-                   "an integer division such as (2 * i + 1) / (2 * nx) is 0 in C when both are ints. "
-                   "Write 0.5 or convert to double first: (i + 0.5) / nx.");
-        x = y = X_RIGHT;
+    bool x_int = x == X_INT || x == X_INT_RIGHT, y_int = y == Y_INT || y == Y_INT_TOP;
+    if (x_int || y_int) {
+        name_cause(f, "integer-division", TAG_ALL, "%s came back at the plane's %s (%s%s%s) whatever the "
+                   "pixel: an integer division such as (2 * i + 1) / (2 * nx) is 0 in C when both "
+                   "are ints. Write 0.5 or convert to double first: (i + 0.5) / nx.",
+                   x_int && y_int ? "every pixel" : x_int ? "x" : "y", x_int && y_int ? "corner" : "edge",
+                   x_int ? (x == X_INT ? "x = -w/2" : "x = w/2") : "", x_int && y_int ? ", " : "",
+                   y_int ? (y == Y_INT ? "y = -h/2" : "y = h/2") : "");
+        x = x_int ? X_RIGHT : x;
+        y = y_int ? Y_RIGHT : y;
     }
     if (x == X_CORNER || x == X_FAR_CORNER || y == Y_CORNER || y == Y_FAR_CORNER || y == Y_BOTTOM_CORNER)
         name_cause(f, "pixel-corner", TAG_ALL, "that is a pixel's corner, not its centre: for pixel (%g, %g) "
                    "of a %g x %g image your code returned (%.6g, %.6g), half a pixel from the centre "
-                   "(%.6g, %.6g). The centre is at i + 0.5 and j + 0.5.",
+                   "(%.6g, %.6g). The centre is at i + 0.5 and j + 0.5 (written i + 1 / 2, it is i: "
+                   "1 / 2 is an integer division, 0 in C; write 0.5).",
                    in[0], in[1], in[2], in[3], g[0], g[1], model[0][0], model[0][1]);
     if (x == X_NM1 || y == Y_NM1 || y == Y_BOTTOM_NM1)
         name_cause(f, "n-minus-1", TAG_ALL, "x and y step by w / (nx - 1) and h / (ny - 1), so the "
@@ -727,7 +757,7 @@ static void first_root_above(const Quad *q, double tmin, double *out)
 }
 
 enum { M_RIGHT, M_FAR, M_HALVED, M_DISC4, M_UNIT, M_DISTANCE, M_BEHIND, M_BSIGN, M_INSIDE_MISS,
-       M_CENTRE_BEHIND, M_TANGENT_MISS, M_TMIN, M_NAN, M_FLOAT, NMODELS3, M_CANCEL = NMODELS3 };
+       M_CENTRE_BEHIND, M_TANGENT_MISS, M_TMIN, M_NAN, M_FLOAT, M_T_ZERO, NMODELS3, M_CANCEL = NMODELS3 };
 
 /* What cause m answers to a case.  tmin is the epsilon M_TMIN uses. */
 static void p3_eval(int m, const double *in, double tmin, double *out)
@@ -833,6 +863,8 @@ static bool p3_explains(const void *ctx, int tag, const Test *t, const Case *c, 
         return t->hard;
     if (tag == M_NAN)
         return got[0] == 1 && isnan(got[1]);
+    if (tag == M_T_ZERO)                 /* a hit at the ray's own origin */
+        return got[0] == 1 && got[1] == 0;
     if (tag == M_FLOAT && p->float_digits)   /* a t right to float's digits, not further */
         return got[0] == 1 && c->want[0] == 1 && fabs(got[1] - c->want[1]) <= 1e-5 * fabs(c->want[1]);
     if (tag == M_FLOAT)                  /* a t rounded to float, right or not */
@@ -875,6 +907,41 @@ static void add_probe3(ProbeSet *ps, const char *name, const double (*in)[CASE_M
     Test *t = probe_test(ps, PART3A, KIND_SPHERE, name);
     for (int k = 0; k < n; k++)
         probe_case(t, in[k], 10);
+}
+
+/* Rays that start on the sphere (C = 0 exactly, one root t = 0): every
+ * answer right or a hit at t = 0 exactly, and one such hit, is t >= 0 taken
+ * for t > 0 (Embree's inclusive tnear <= t).  Not named where roots behind
+ * the origin are taken anyway (hits-behind says more). */
+static void p3_t_zero(Found *f, P3Found *out, const Answers *a, const double (*in)[CASE_MAX_IN], int n)
+{
+    if (out->model[M_BEHIND] || a->answered < n)
+        return;
+    int zero = -1;
+    for (int c = 0; c < n; c++) {
+        bool at_zero = a->got[c][0] == 1 && a->got[c][1] == 0;
+        if (!at_zero && !p3_right(a->got[c], in[c], out->rel))
+            return;
+        if (at_zero && zero < 0)
+            zero = c;
+    }
+    if (zero < 0)
+        return;
+    const double *z = in[zero];
+    double v[2];
+    p3_eval(M_RIGHT, z, 0, v);
+    char right[80];
+    if (v[0] == 1)
+        snprintf(right, sizeof right, "a hit at t = %g, where the ray leaves the sphere", v[1]);
+    else
+        snprintf(right, sizeof right, "a miss: the ray heads away from the sphere");
+    out->model[M_T_ZERO] = true;
+    name_cause(f, "t-zero", M_T_ZERO, "a ray that starts on the sphere (C = 0, one root t = 0) was a hit "
+               "at t = 0, its own origin: from (%g, %g, %g) along (%g, %g, %g), at the sphere of centre "
+               "(%g, %g, %g) and radius %g, your code answered a hit at t = 0; the right answer is %s. A "
+               "hit needs t > 0, not t >= 0 (Embree's ray interval, tnear <= t, includes its start; this "
+               "lab's does not).",
+               z[4], z[5], z[6], z[7], z[8], z[9], z[0], z[1], z[2], z[3], right);
 }
 
 static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
@@ -938,7 +1005,16 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
         SPH(0, 0.6, -(0x1p28 + 3), 1, 0, 0, 0, 0, 0, -1),
         SPH(0.75, 0, -(0x1p29 + 5), 1, 0, 0, 0, 0, 0, -1),
     };
-    enum { NB = 6, NS = 8, NBH = 4, NI = 5, NT = 3, NN = 2, NF = 3 };
+    /* Origins exactly on the sphere, axis-aligned unit directions: the
+     * roots are 0 and 2, 4, 6 ahead (a hit there) or behind (a miss). */
+    static const double on[][CASE_MAX_IN] = {
+        SPH(0, 0, -1, 1, 0, 0, 0, 0, 0, -1),
+        SPH(0, 0, -1, 1, 0, 0, 0, 0, 0, 1),
+        SPH(2, 0, 0, 2, 0, 0, 0, 1, 0, 0),
+        SPH(0, -3, 0, 3, 0, 0, 0, 0, 1, 0),
+        SPH(1, 1, -3, 3, 1, 1, 0, 0, 0, -1),
+    };
+    enum { NB = 6, NS = 8, NBH = 4, NI = 5, NT = 3, NN = 2, NF = 3, NO = 5, NPROBES = 9 };
     add_probe3(ps, "probe: ordinary hits", basic, NB);
     add_probe3(ps, "probe: directions scaled by 3 and by 1/4", (const double (*)[CASE_MAX_IN])scaled, NS);
     add_probe3(ps, "probe: spheres behind the origin", behind, NBH);
@@ -947,16 +1023,17 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
     add_probe3(ps, "probe: hits just ahead of the origin", (const double (*)[CASE_MAX_IN])near, NG);
     add_probe3(ps, "probe: a zero direction and NaN input", nan_cases, NN);
     add_probe3(ps, "probe: far, small spheres", far, NF);
-    Answers a[8];
-    for (int k = 0; k < 8; k++)
+    add_probe3(ps, "probe: rays that start on the sphere", on, NO);
+    Answers a[NPROBES];
+    for (int k = 0; k < NPROBES; k++)
         probe_run(ps, &ps->list.tests[k], &a[k]);
-    if (unwritten(f, ps, a, 8)) {
-        for (int k = 0; k < 8; k++)
+    if (unwritten(f, ps, a, NPROBES)) {
+        for (int k = 0; k < NPROBES; k++)
             answers_free(&a[k]);
         return;
     }
     const Answers *ab = &a[0], *as = &a[1], *abh = &a[2], *ai = &a[3], *at = &a[4], *an = &a[5],
-                  *anan = &a[6], *afar = &a[7];
+                  *anan = &a[6], *afar = &a[7], *aon = &a[8];
 
     /* Float first: every t of the probes a float, where the right ones are
      * not.  Then "right" means right to float's precision throughout. */
@@ -1104,6 +1181,7 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
                    inside_neg ? "from inside the sphere, the near root, which is behind the origin"
                               : "a sphere wholly behind the origin");
     }
+    p3_t_zero(f, out, aon, on, NO);
     /* From inside, a miss. */
     bool ordinary = basic_model == M_RIGHT;
     if (ordinary && ai->answered == NI && !inside_neg && p3_all(ai, inside, NI, M_INSIDE_MISS, 0, rel)) {
@@ -1152,11 +1230,12 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
             name_cause(f, "cancellation", M_CANCEL, "your formula is right, but it loses the sphere when it is "
                        "small and far (a sphere of radius 1 at 2^27): B^2 and A C (or |L|^2 and "
                        "tca^2) agree to 16 digits there, and their difference, the part that says "
-                       "where the ray is, is rounding error. The hard-case challenge in the handout "
-                       "computes the discriminant without that cancellation: A R^2 - |f x r|^2.");
+                       "where the ray is, is rounding error. Computing it without that cancellation "
+                       "is the handout's hard-case challenge (extra credit).%s",
+                       ps->probes->full_hints ? " The discriminant is A R^2 - |f x r|^2." : "");
         }
     }
-    for (int k = 0; k < 8; k++)
+    for (int k = 0; k < NPROBES; k++)
         answers_free(&a[k]);
 }
 
@@ -1326,17 +1405,53 @@ static void diagnose_part3b(ProbeSet *ps, Found *f, PBFound *out)
     answers_free(&ak);
 }
 
+/* ==== Parts 4 and 5 ========================================================= */
+
+/* Their tests are their probes (each case's answer says hit or miss): every
+ * answer of every test that ran a miss, where some are hits, is the
+ * skeleton's answer.  Names that; the tests' hints say the rest. */
+static void flat_unwritten(int part, const TestList *tests, const TestResult *results, char **text,
+                           char **keys)
+{
+    int answered = 0, hits = 0;
+    for (int k = 0; k < tests->n; k++) {
+        const Test *t = &tests->tests[k];
+        const Answers *a = &results[k].answers;
+        if (t->part != part || !results[k].ran)
+            continue;
+        for (int c = 0; c < a->answered; c++) {
+            if (a->got[c][0] != 0)
+                return;
+            answered++;
+            hits += t->cases[c].want[0] == 1 && !(t->cases[c].flags & CASE_EITHER_HIT);
+        }
+    }
+    if (answered == 0 || hits == 0)
+        return;
+    size_t len = 0, klen = 0;
+    char line[200];
+    snprintf(line, sizeof line, "- every answer is a miss, the skeleton's answer, whatever the input (%d "
+             "cases, %d of them hits): the function is not written yet, or returns before its work "
+             "is done.\n", answered, hits);
+    append(text, &len, line);
+    append(keys, &klen, "unwritten");
+}
+
 /* ==== every part ============================================================= */
 
 void diagnose_part(int part, const TestList *tests, const TestResult *results, const Probes *probes,
-                   char **text, char **keys)
+                   char **text, char **hard_text, char **keys)
 {
-    *text = *keys = NULL;
+    *text = *hard_text = *keys = NULL;
     bool failed = false;
     for (int k = 0; k < tests->n; k++)
         failed = failed || (tests->tests[k].part == part && results[k].ran && !results[k].passed);
-    if (!failed || part > PART3B)
+    if (!failed)
         return;
+    if (part > PART3B) {
+        flat_unwritten(part, tests, results, text, keys);
+        return;
+    }
     Found f = { .ncauses = 0 };
     ProbeSet ps = { probes, { 0 } };
     P1Found p1 = { 0 };
@@ -1346,19 +1461,19 @@ void diagnose_part(int part, const TestList *tests, const TestResult *results, c
     switch (part) {
     case PART1:
         diagnose_part1(&ps, &f, &p1);
-        write_diagnosis(&f, part, tests, results, p1_explains, &p1, text, keys);
+        write_diagnosis(&f, part, tests, results, p1_explains, &p1, text, hard_text, keys);
         break;
     case PART2:
         diagnose_part2(&ps, &f, &p2);
-        write_diagnosis(&f, part, tests, results, p2_explains, &p2, text, keys);
+        write_diagnosis(&f, part, tests, results, p2_explains, &p2, text, hard_text, keys);
         break;
     case PART3A:
         diagnose_part3a(&ps, &f, &p3);
-        write_diagnosis(&f, part, tests, results, p3_explains, &p3, text, keys);
+        write_diagnosis(&f, part, tests, results, p3_explains, &p3, text, hard_text, keys);
         break;
     default:
         diagnose_part3b(&ps, &f, &pb);
-        write_diagnosis(&f, part, tests, results, p3b_explains, &pb, text, keys);
+        write_diagnosis(&f, part, tests, results, p3b_explains, &pb, text, hard_text, keys);
         if (probes->own_part3a && probes->part3a_failed) {
             size_t len = *text ? strlen(*text) : 0;
             append(text, &len, "Part 3b calls your own sphere_intersect here, and Part 3a lost points: "

@@ -28,13 +28,18 @@ typedef struct {
     void *ctx;
     bool own_part3a;           /* Part 3b's program calls the student's 3a  */
     bool part3a_failed;        /* ... and that Part 3a lost points          */
+    bool full_hints;           /* a hard case's cause gives the challenge's
+                                  answer (weights.conf's "hints full"); by
+                                  default it says what fails and why, and
+                                  points to the handout's challenge       */
 } Probes;
 
 /* Diagnoses part (PART1 .. PART3B) from its tests' results and its probes.
- * *text receives the explanation for the student and *keys the causes'
- * keys, space-separated; both malloc'd, or NULL when nothing is
- * confirmed. */
+ * *text receives the explanation for the student of the core tests'
+ * failures, *hard_text that of causes which explain hard cases alone (the
+ * extra credit, told apart), and *keys every cause's key, space-separated;
+ * each malloc'd, or NULL when nothing is confirmed. */
 void diagnose_part(int part, const TestList *tests, const TestResult *results, const Probes *probes,
-                   char **text, char **keys);
+                   char **text, char **hard_text, char **keys);
 
 #endif

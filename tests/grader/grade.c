@@ -63,15 +63,16 @@ static char *indented(const char *s, size_t n, const char *pad)
     return out;
 }
 
-/* What the child reads on stdin for a test. */
-static char *test_input(const Test *t, size_t *len)
+/* What the child reads on stdin for a test; alone: a run of this test
+ * alone, whose child writes each answer as soon as it has it (harness.c). */
+static char *test_input(const Test *t, bool alone, size_t *len)
 {
     size_t cap = 256 + (size_t)t->ncases * 26 * CASE_MAX_IN + (size_t)t->nspheres * 26 * 7
                  + (size_t)t->ntriangles * 26 * 9;
     char *s = malloc(cap);
     if (!s)
         return NULL;
-    size_t n = (size_t)snprintf(s, cap, "%s %d\n", kind_word[t->kind], t->ncases);
+    size_t n = (size_t)snprintf(s, cap, "%s%s %d\n", alone ? "alone\n" : "", kind_word[t->kind], t->ncases);
     if (t->kind == KIND_COLOR || t->kind == KIND_IMAGE) {
         n += (size_t)snprintf(s + n, cap - n, "background %a %a %a\nspheres %d\n",
                               t->background[0], t->background[1], t->background[2], t->nspheres);
@@ -142,7 +143,7 @@ static int run_child(const GradeOptions *opt, const Build *b, const Test *t, San
                      char *err, size_t errlen)
 {
     size_t len = 0;
-    char *input = test_input(t, &len);
+    char *input = test_input(t, true, &len);
     if (!input) {
         snprintf(err, errlen, "out of memory");
         return -1;
@@ -231,7 +232,7 @@ static void run_batch(const GradeOptions *opt, Build *b, const TestList *tests, 
         if (t->part != part)
             continue;
         size_t n = 0;
-        char *one = test_input(t, &n);
+        char *one = test_input(t, false, &n);
         if (!one || len + n + 1 > cap) {
             size_t ncap = 2 * (len + n + 1) + 4096;
             char *grown = one ? realloc(input, ncap) : NULL;
@@ -473,12 +474,13 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         if (b.ok) {
             /* After two tests out of time, a probe would be the third. */
             ProbeContext pc = { opt, &b, timeouts >= 2, &spent };
-            Probes probes = { run_probe, &pc, p == PART3B && !opt->build->reference, false };
+            Probes probes = { run_probe, &pc, p == PART3B && !opt->build->reference, false, cfg->full_hints };
             for (int k = 0; k < tests->n; k++)
                 probes.part3a_failed = probes.part3a_failed ||
                     (tests->tests[k].part == PART3A && !tests->tests[k].hard && g->results[k].ran &&
                      !g->results[k].passed);
-            diagnose_part(p, tests, g->results, &probes, &g->diagnosis[p], &g->causes[p]);
+            diagnose_part(p, tests, g->results, &probes, &g->diagnosis[p], &g->diagnosis_hard[p],
+                          &g->causes[p]);
         }
         g->cpu_probes += sandbox_cpu(false) - children;
         if (opt->keep_objects && b.ok)
@@ -545,6 +547,7 @@ void grade_free(Grade *g)
     for (int p = 0; p < NPARTS; p++) {
         free(g->build_messages[p]);
         free(g->diagnosis[p]);
+        free(g->diagnosis_hard[p]);
         free(g->causes[p]);
     }
     memset(g, 0, sizeof *g);

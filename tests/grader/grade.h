@@ -27,9 +27,12 @@ typedef struct {
     bool build_refused[NPARTS];  /* its file never reached the compiler (Build) */
     bool built[NPARTS];        /* it built: build_messages are warnings, if any */
     /* Per part, when it lost points: the causes its probes confirmed, as
-     * text for the student (malloc'd, NULL when none was confirmed), and
-     * their keys, space-separated (tests/selftest/README.md lists them). */
+     * text for the student (malloc'd, NULL when none was confirmed): of
+     * the core tests' failures, and apart, of those that explain hard
+     * cases alone (the extra credit); and every cause's key,
+     * space-separated (tests/selftest/README.md lists them). */
     char *diagnosis[NPARTS];
+    char *diagnosis_hard[NPARTS];
     char *causes[NPARTS];
     double core[NPARTS], core_max[NPARTS];
     double hard[NPARTS], hard_max[NPARTS];

@@ -2,12 +2,14 @@
  * grade - the autograder's command line.
  *
  *   grade [--submission DIR] [--part 1|2|3a|3b|4|5] [--results FILE] [--quiet]
- *         [--report DIR | --report-file FILE]
+ *         [--report DIR | --report-file FILE] [--all-failures]
  *       grades one submission: the parts of tests/weights.conf's "parts"
  *       line, or the one part named; exit 0 for full marks, 1 when points
  *       are lost, 2 when the grader itself could not run.  --report also
  *       writes the page with pictures, DIR/index.html (--report-file: FILE);
  *       a page that cannot be written is reported and changes nothing else.
+ *       The table is short (report_table.c); --all-failures shows every
+ *       failure in full, as the page does.
  *   grade --all DIR [--out DIR] [--jobs N] [--previous DIR]
  *       grades every subdirectory of DIR, in parallel; writes
  *       OUT/gradebook.csv, OUT/<submission>.json and OUT/<submission>.html,
@@ -58,7 +60,7 @@ static void usage(void)
     fprintf(stderr,
             "usage: grade [--submission DIR] [--part 1|2|3a|3b|4|5] [--results FILE] [--quiet]\n"
             "             [--format gradescope|prairielearn] [--classroom FILE]\n"
-            "             [--report DIR | --report-file FILE] [--cost] [--verbose]\n"
+            "             [--report DIR | --report-file FILE] [--cost] [--verbose] [--all-failures]\n"
             "       grade --all DIR [--out DIR] [--jobs N] [--previous DIR]\n"
             "       grade --jail    (says where the submissions' code runs)\n"
             "       either with --weights FILE (default tests/weights.conf)\n"
@@ -75,6 +77,7 @@ static bool show_cost;             /* --cost: where grading's CPU time went */
 static const char *class_record;
 static const char *previous_out;
 static bool verbose;               /* --verbose: progress on stderr           */
+static bool every_failure;         /* --all-failures: the table in full       */
 
 static int fail(const char *results, const char *fmt, const char *what)
 {
@@ -108,9 +111,14 @@ static int load_tests(TestList *list, const GradeConfig *cfg, const bool parts[N
             testgen_hidden_flat(list, cfg->seed ^ HIDDEN_SALT_FLAT);
     }
 #else
-    (void)cfg;
     (void)parts;
 #endif
+    /* A part whose hard cases are worth nothing (weights.conf) has no
+     * challenge, and no hard-case test. */
+    bool none[NPARTS];
+    for (int p = 0; p < NPARTS; p++)
+        none[p] = !(cfg->hard[p] > 0);
+    testlist_drop_hard(list, none);
     return 0;
 }
 
@@ -279,7 +287,7 @@ static int grade_one(const char *submission, const char *part, const char *resul
         return fail(results, "%s", err);
     }
     if (!quiet)
-        report_table(stdout, &g, &cfg, submission);
+        report_table(stdout, &g, &cfg, submission, every_failure);
     if (show_cost) {
         /* The whole process: the grader's own CPU (reading the tests
          * included) and every child it waited for. */
@@ -771,6 +779,8 @@ int main(int argc, char **argv)
         }
         else if (!strcmp(a, "--verbose"))
             verbose = true;
+        else if (!strcmp(a, "--all-failures"))
+            every_failure = true;
         else if (!strcmp(a, "--format") && v)
             format = v, k++;
         else if (!strcmp(a, "--memo") && v)

@@ -124,6 +124,9 @@ void test_add_triangle(Test *test, const double v[9]);
 /* Whether a kind's answer is (hit, t): Parts 3a, 4 and 5. */
 bool kind_is_hit(Kind kind);
 void testlist_free(TestList *list);
+/* Removes the hard-case tests of each part p with drop[p] (a part whose
+ * hard cases are worth nothing has none), keeping the others in order. */
+void testlist_drop_hard(TestList *list, const bool drop[NPARTS]);
 
 /* Reads or writes the test files' text format (see cases.c). */
 int tests_read(TestList *list, const char *path, bool hidden, char *err, size_t errlen);

@@ -14,8 +14,10 @@
 #include "kit/image.h"
 
 /* The table: per part score / max, each test PASS or FAIL, and for each
- * failure what went wrong (input, expected, got, tolerance, hint). */
-void report_table(FILE *f, const Grade *g, const GradeConfig *cfg, const char *submission);
+ * failure what went wrong (input, expected, got, tolerance, hint): short
+ * (report_table.c), or with every_failure every failure in full. */
+void report_table(FILE *f, const Grade *g, const GradeConfig *cfg, const char *submission,
+                  bool every_failure);
 
 /* Writes results.json through a temporary file and rename; 0 or -1. */
 int report_json(const char *path, const Grade *g, const char *submission, char *err, size_t errlen);

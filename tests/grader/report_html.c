@@ -95,7 +95,8 @@ static void scores(Markup *m, const Grade *g, const GradeConfig *cfg)
             continue;
         int failed, total;
         count_tests(g, p, &failed, &total);
-        bool full = g->core[p] >= g->core_max[p] && g->hard[p] >= g->hard_max[p];
+        /* Full marks are the core's: the hard cases are extra credit. */
+        bool full = g->core[p] >= g->core_max[p] && (cfg->hard_is_bonus || g->hard[p] >= g->hard_max[p]);
         /* a part with failures links to them */
         mk_printf(m, "<tr><td>");
         if (failed)
@@ -114,14 +115,20 @@ static void scores(Markup *m, const Grade *g, const GradeConfig *cfg)
         mk_printf(m, " &nbsp; hard-case bonus: %s / %s", points_text(g->bonus).s, points_text(g->bonus_max).s);
     mk_printf(m, " &nbsp; (graded in %.1f s)</p>\n", g->seconds);
     for (int p = 0; p < NPARTS; p++) {
-        if (!g->graded[p] || !g->diagnosis[p])
-            continue;
-        /* Its causes one a line, as the terminal shows them ("- ..."). */
-        mk_printf(m, "<div class=\"diag\"><strong>Part %s, what went wrong (probes run on your code "
-                     "confirmed it):</strong>\n",
-                  part_label(p));
-        mk_text(m, g->diagnosis[p]);
-        mk_printf(m, "</div>\n");
+        /* Its causes one a line, as the terminal shows them ("- "): of the
+         * core's failures, then of the hard cases' alone. */
+        if (g->graded[p] && g->diagnosis[p] && g->core[p] < g->core_max[p]) {
+            mk_printf(m, "<div class=\"diag\"><strong>Part %s, what went wrong (probes run on your code "
+                         "confirmed it):</strong>\n", part_label(p));
+            mk_text(m, g->diagnosis[p]);
+            mk_printf(m, "</div>\n");
+        }
+        if (g->graded[p] && g->diagnosis_hard[p]) {
+            mk_printf(m, "<div class=\"diag\"><strong>Part %s, the hard cases (%sprobes run on your code "
+                         "confirmed it):</strong>\n", part_label(p), cfg->hard_is_bonus ? "extra credit; " : "");
+            mk_text(m, g->diagnosis_hard[p]);
+            mk_printf(m, "</div>\n");
+        }
     }
     for (int p = 0; p < NPARTS; p++) {
         if (!grade_warned(g, p))
@@ -332,9 +339,10 @@ static void failing_test(Markup *m, const Test *t, const TestResult *r, int inde
 }
 
 /* Every failing test, part by part, core tests before hard ones (as the
- * terminal lists them); a part that did not build shows the compiler's
+ * terminal lists them), the hard ones under a heading of their own (bonus:
+ * they are extra credit); a part that did not build shows the compiler's
  * messages once. */
-static void failures(Markup *m, const Grade *g)
+static void failures(Markup *m, const Grade *g, bool bonus)
 {
     int nfailed = 0, unrun = 0;         /* unrun: those of parts that did not build */
     for (int p = 0; p < NPARTS; p++) {
@@ -393,12 +401,20 @@ static void failures(Markup *m, const Grade *g)
                 continue;
             }
         }
-        for (int group = 0; group < 2; group++)
+        for (int group = 0; group < 2; group++) {
+            bool heading = false;           /* the hard cases apart, after the core */
             for (int k = 0; k < g->tests->n; k++) {
                 const Test *t = &g->tests->tests[k];
-                if (t->part == p && t->hard == group && !g->results[k].passed)
-                    failing_test(m, t, &g->results[k], k, built || g->results[k].ran);
+                if (t->part != p || t->hard != group || g->results[k].passed)
+                    continue;
+                if (group == 1 && !heading) {
+                    mk_printf(m, "<h4>Hard cases (%s): %s / %s</h4>\n", bonus ? "extra credit" : "counted",
+                              points_text(g->hard[p]).s, points_text(g->hard_max[p]).s);
+                    heading = true;
+                }
+                failing_test(m, t, &g->results[k], k, built || g->results[k].ran);
             }
+        }
     }
 }
 
@@ -469,7 +485,7 @@ int report_html(const char *path, const Grade *g, const GradeConfig *cfg, const 
     }
     if (rr)
         renders(&m, rr);
-    failures(&m, g);
+    failures(&m, g, cfg->hard_is_bonus);
     passed(&m, g);
     mk_printf(&m, "<footer>Written by the kit's grader (tests/grader). The pictures are drawn "
                   "from the numbers of each test: the expected answers, computed independently, "

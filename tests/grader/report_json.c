@@ -71,11 +71,18 @@ int report_json(const char *path, const Grade *g, const char *submission, char *
                       "could run:\n%s", part_label(p), why, g->build_messages[p] ? g->build_messages[p] : "");
     }
     for (int p = 0; p < NPARTS; p++) {
-        if (!g->diagnosis[p] || (size_t)n >= sizeof summary)
+        if (!g->diagnosis[p] || g->core[p] >= g->core_max[p] || (size_t)n >= sizeof summary)
             continue;
         n += snprintf(summary + n, sizeof summary - (size_t)n,
                       "\n\nPart %s, what went wrong (probes run on your code confirmed it):\n%s",
                       part_label(p), g->diagnosis[p]);
+    }
+    for (int p = 0; p < NPARTS; p++) {
+        if (!g->diagnosis_hard[p] || (size_t)n >= sizeof summary)
+            continue;
+        n += snprintf(summary + n, sizeof summary - (size_t)n,
+                      "\n\nPart %s, the hard cases (extra credit; probes run on your code confirmed it):\n%s",
+                      part_label(p), g->diagnosis_hard[p]);
     }
     for (int p = 0; p < NPARTS; p++) {
         if (!grade_warned(g, p) || (size_t)n >= sizeof summary)

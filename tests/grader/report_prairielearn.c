@@ -134,8 +134,11 @@ static void write_results(JsonWriter *j, const Grade *g, size_t output_max)
             if (!gradable)
                 append(&format_errors, "Part %s: %s", part_label(p), g->build_messages[p]);
         }
-        if (g->diagnosis[p])
+        if (g->diagnosis[p] && g->core[p] < g->core_max[p])
             append(&output, "What went wrong (probes run on your code confirmed it):\n%s\n", g->diagnosis[p]);
+        if (g->diagnosis_hard[p])
+            append(&output, "The hard cases (extra credit; probes run on your code confirmed it):\n%s\n",
+                   g->diagnosis_hard[p]);
     }
     append(&output, "\nCore points: %s / %s\n", points_text(core).s, points_text(core_max).s);
 

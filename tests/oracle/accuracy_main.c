@@ -176,12 +176,12 @@ static void part2(uint64_t seed, int per)
         for (int m = 0; m < 2; m++) {
             Stat *s = m ? &tb[k % nf] : &ref[k % nf];
             Vec3 p = (m ? textbook_pixel : pixel_coordinates)(c[k].i, c[k].j, c[k].nx, c[k].ny, c[k].w, c[k].h, c[k].d);
-            double e = fmax(fabs(p.x - c[k].p.x) / (U * c[k].w), fabs(p.y - c[k].p.y) / (U * c[k].h));
+            double e = fmax(rel_u(p.x, c[k].p.x), rel_u(p.y, c[k].p.y));
             stat_add(s, e, e / HARD_PART2_TOL_U);
             s->fails += !hard_check2(&c[k], p);
         }
     }
-    printf("\n### Part 2: pixel_coordinates (error of x in u |w|, of y in u |h|; tolerance %g)\n\n%s",
+    printf("\n### Part 2: pixel_coordinates (error of x in u |x|, of y in u |y|; tolerance %g)\n\n%s",
            HARD_PART2_TOL_U, HEADER);
     for (int f = 0; f < nf; f++) {
         printf("| %s |", c[f].family);

@@ -163,8 +163,8 @@ int hard_part2(uint64_t seed, HardCase2 *cases, int max)
 
 bool hard_check2(const HardCase2 *c, Vec3 got)
 {
-    return fabs(got.x - c->p.x) <= HARD_PART2_TOL_U * ORACLE_U * fabs(c->w)
-        && fabs(got.y - c->p.y) <= HARD_PART2_TOL_U * ORACLE_U * fabs(c->h)
+    return fabs(got.x - c->p.x) <= HARD_PART2_TOL_U * ORACLE_U * fabs(c->p.x)
+        && fabs(got.y - c->p.y) <= HARD_PART2_TOL_U * ORACLE_U * fabs(c->p.y)
         && got.z == c->p.z;
 }
 

@@ -24,9 +24,14 @@
  *            the argument (times tan's condition, at most pi / 2 once the
  *            angle is reduced to 45 degrees or less), tan's own ulp, the
  *            products by 2 d and by aspect.
- *   Part 2   x within HARD_PART2_TOL_U u |w| of the exact centre, y within
- *            HARD_PART2_TOL_U u |h|, z exactly -d.  The lecture's formula
- *            -w/2 + w (i + 0.5) / nx is off by at most about 1.25 u |w|.
+ *   Part 2   x within HARD_PART2_TOL_U u |x| of the exact centre, y within
+ *            HARD_PART2_TOL_U u |y|, z exactly -d: relative to the
+ *            coordinate itself, so the centre column is x = 0 exactly and
+ *            mirrored pixels opposite.  (2 i + 1 - nx) (w / (2 nx)) is an
+ *            exact integer times one rounding, rounded once more: within
+ *            about 2 u |x|.  The lecture's formula -w/2 + w (i + 0.5) / nx
+ *            cancels near the centre (off by up to about 2 u |w| whatever
+ *            x), and fails.
  *   Part 3a  oracle_sphere_accepts (oracle.h): hit/miss must match unless
  *            ambiguous; t within ORACLE_K_T u kappa t; a hit's t finite, > 0.
  *   Part 3b  camera_ray: origin exact, each direction component within

@@ -69,10 +69,14 @@ void tg_pixel(Test *t, int i, int j, int nx, int ny, double w, double h, double 
     memcpy(c->in, in, sizeof in);
     Vec3 p = oracle_pixel(i, j, nx, ny, w, h, d);
     c->want[0] = p.x, c->want[1] = p.y, c->want[2] = p.z;
-    double rel = t->hard ? HARD_PART2_TOL_U * U : CORE_REL;
-    c->tol[0] = rel * fabs(w);
-    c->tol[1] = rel * fabs(h);
-    c->tol[2] = 0;
+    /* Hard: relative to the coordinate itself (hard.h), the centre column
+     * and row exact; core: to the plane's size. */
+    c->tol[0] = t->hard ? HARD_PART2_TOL_U * U * fabs(p.x) : CORE_REL * fabs(w);
+    c->tol[1] = t->hard ? HARD_PART2_TOL_U * U * fabs(p.y) : CORE_REL * fabs(h);
+    /* z = -d exactly is a hard case's demand; a core test takes z as it
+     * takes x and y, so that a pixel unprojected through the inverse of a
+     * projection matrix (gluUnProject), -d within an ulp, is right. */
+    c->tol[2] = t->hard ? 0 : CORE_REL * fabs(d);
 
 }
 

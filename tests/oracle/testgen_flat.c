@@ -146,7 +146,7 @@ void tg_planehit(Test *t, const double p[3], const double n[3], const double e[3
 enum {
     MT_NO_SUM = 1,       /* beta + gamma <= 1 not checked       */
     MT_NO_T = 2,         /* t > 0 not checked                    */
-    MT_NO_DET = 4,       /* det = 0 not checked; "t < 0: miss"   */
+    MT_NO_DET = 4,       /* det = 0 not checked; "t <= 0: miss" (NaN passes) */
     MT_CULL = 8,         /* det < 0 a miss (one-sided)           */
     MT_EPS = 16,         /* |det| < 1e-8 a miss                  */
     MT_STRICT = 32,      /* beta > 0, gamma > 0, beta + gamma < 1 */
@@ -192,7 +192,7 @@ static bool mt(const double a[3], const double b[3], const double cc[3], const d
     if (flags & MT_NO_T)
         return true;
     if (flags & MT_NO_DET)
-        return !(*t < 0);
+        return !(*t <= 0);
     if (flags & MT_TMIN)
         return *t > 1e-3 && *t < INFINITY;
     if (flags & MT_T_ZERO)
@@ -212,7 +212,7 @@ static void triangle_hints(Case *c, const double a[3], const double b[3], const 
         { MT_EPS, "a hit was missed where det is small (a small or far triangle, or a grazing ray): no epsilon on det = -(e1 x e2).r (such as 1e-8): compare it with 0" },
         { MT_NO_T, "a hit at or behind the ray's origin (t <= 0): only t > 0 is a hit" },
         { MT_NO_SUM, "beta + gamma <= 1 is missing: the ray passed outside the edge bc and still hit" },
-        { MT_NO_DET, "det = 0 (parallel to the triangle, or in its plane) is a miss: check it first; and a hit needs t > 0, not only t >= 0" },
+        { MT_NO_DET, "det = 0 (parallel to the triangle, or in its plane) is a miss: check it before dividing by it" },
         { MT_CULL, "both sides count: a ray that meets the triangle from behind (det < 0) hits too" },
         { MT_GAMMA_SIGN, "gamma = r.(s x e1) / det and t = e2.(s x e1) / det: the order of a cross product matters" },
         { MT_S_SIGN, "s = e - a (the ray's origin minus a), not a - e: it flips beta, gamma and t" },

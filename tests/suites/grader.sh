@@ -73,12 +73,27 @@ if [ -d tests/hidden ]; then
                grep -q 'hidden' '$tmp/hidden-a.json'"
 fi
 
-$grade --submission labs --weights "$all" --summary >"$tmp/labs.out" 2>&1
+$grade --submission labs --weights "$all" --summary --all-failures >"$tmp/labs.out" 2>&1
 status=$?
 check "the skeleton loses points (exit $status, want 1)" [ "$status" -eq 1 ]
 check "the skeleton scores 0 on every part" grep -q "^summary 0 0 0 0 0 0 0 0 1" "$tmp/labs.out"
 check "the skeleton's Parts 4 and 5 ran without a crash" \
     sh -c "! grep -q -e 'crashed' -e 'did not finish' '$tmp/labs.out'"
+
+# The untouched skeleton as make grade shows it: short, a part not written
+# yet one line, while the page keeps every failure (an article each), as
+# grade --all-failures does.
+$grade --submission labs --results "$tmp/labs-short.json" --report-file "$tmp/labs-short.html" \
+    >"$tmp/labs-short.out" 2>&1
+lines=$(wc -l <"$tmp/labs-short.out" | tr -d ' ')
+nfailed=$(grep -c '"status": "failed"' "$tmp/labs-short.json")
+articles=$(grep -c '<article class="test"' "$tmp/labs-short.html")
+check "the untouched skeleton's table is short: $lines lines, at most 150" [ "$lines" -le 150 ]
+check "... each part one line: not written yet" [ "$(grep -c '   not written yet: every answer' "$tmp/labs-short.out")" -eq 4 ]
+check "... and its page shows every one of its $nfailed failed tests ($articles)" \
+    sh -c "[ $nfailed -gt 0 ] && [ $articles -eq $nfailed ]"
+check "grade --all-failures shows each in full" \
+    sh -c "[ \$(grep -c '^  FAIL  ' '$tmp/labs.out') -ge $nfailed ] && ! grep -q '   not written yet: every answer' '$tmp/labs.out'"
 
 # A part whose file did not build is one line of the table, with the
 # compiler's (or the grader's) words once, not a line for each test.
@@ -113,7 +128,7 @@ check "a Parts 1-3b submission keeps full marks by default (exit $status)" [ "$s
 
 # -- a malformed weights file: refused, naming its file and line -----------
 for line in "output 0" "output 65537" "output 12k" "seed -1" "hard maybe" "part 6 core 1 hard 1" \
-    "part 1 core -1 hard 0" "parts 1 1" "colour red" "timeout 0" "timeout 601" "timeout 2 s"; do  # portable: text
+    "part 1 core -1 hard 0" "parts 1 1" "colour red" "hints some" "hints full extra" "timeout 0" "timeout 601" "timeout 2 s"; do  # portable: text
     printf 'part 1 core 20 hard 2.5\n%s\n' "$line" >"$tmp/bad.conf"
     $grade --submission solutions --weights "$tmp/bad.conf" >"$tmp/bad.out" 2>&1
     status=$?
@@ -473,9 +488,32 @@ for sname in hostile-crash-across-tests hostile-state-across-tests; do
     check "$sname: not every test passed together" \
         sh -c "! grep -q 'together: [0-9]* passed; 0 run alone' '$tmp/$sname.verbose'"
 done
-# The table marks the hard cases too (one submission is enough to see it).
+# The table marks the hard cases too (one submission is enough to see it),
+# after the core tests, under a heading of their own, and a part with its
+# core points is never told what went wrong.
 $grade --submission "$tmp/subs/rw-rtiow-camera" --part 1 >"$tmp/rw-rtiow-camera.table" 2>&1
 check "the table marks a failed hard case [hard]" grep -q "FAIL  Part 1: .*\[hard\]" "$tmp/rw-rtiow-camera.table"
+core_line=$(grep -n '^  PASS  Part 1: hidden: random' "$tmp/rw-rtiow-camera.table" | cut -d: -f1)
+hard_line=$(grep -n '^  Hard cases (extra credit): 1.04 / 2.5$' "$tmp/rw-rtiow-camera.table" | cut -d: -f1)
+fail_line=$(grep -n '^  FAIL  Part 1: hard' "$tmp/rw-rtiow-camera.table" | head -n 1 | cut -d: -f1)
+check "the hard cases after the core tests, as extra credit (lines ${core_line:-none}, ${hard_line:-none}, ${fail_line:-none})" \
+    sh -c "[ -n '$core_line' ] && [ -n '$hard_line' ] && [ -n '$fail_line' ] &&
+           [ '$core_line' -lt '$hard_line' ] && [ '$hard_line' -lt '$fail_line' ]"
+check "a part with its core points is never told what went wrong" \
+    sh -c "! grep -qi 'what went wrong' '$tmp/rw-rtiow-camera.table' '$tmp/grades-subs/rw-rtiow-camera.json'"
+# The hard-case challenges' answers are the handout's, hidden behind its
+# hint: by default no results file or page gives them (Part 1's
+# complement of the angle, Part 3a's discriminant); with "hints full" in
+# the weights, the cause gives it.
+check "with the default hints, no results file or page gives a hard-case challenge's formula" \
+    sh -c "! grep -rlF -e 'tan(90 - alpha' -e 'f x r|' '$tmp/grades-subs' '$tmp/grades-subs45'"
+sed 's/^hints .*/hints full/' "$core" >"$tmp/full-hints.conf"
+for sname in rw-rtiow-camera textbook; do
+    $grade --submission "$tmp/subs/$sname" --weights "$tmp/full-hints.conf" --results "$tmp/full-$sname.json" \
+        --quiet >/dev/null 2>&1
+done
+check "with hints full, the causes give the challenges' formulas" \
+    sh -c "grep -qF 'tan(90 - alpha / 2)' '$tmp/full-rw-rtiow-camera.json' && grep -qF 'A R^2 - |f x r|^2' '$tmp/full-textbook.json'"
 check "forged results: the grader's own score stands" \
     grep -q '"score": *[0-9.]*,' "$tmp/grades-subs/hostile-forge-results.json"
 check "forged results: no score of 1000 anywhere" sh -c "! grep -rq '\"score\": 1000' '$tmp/grades-subs'"

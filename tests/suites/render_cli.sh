@@ -349,9 +349,9 @@ elif [ "$status" -ne 1 ]; then
     fail "compare of the skeleton's render with the reference: exit $status, want 1"
 elif ! grep -q "differ" "$tmp/stdout" || ! grep -q "PSNR" "$tmp/stdout" || ! grep -q "%" "$tmp/stdout"; then
     fail "compare: no share of differing pixels or PSNR in: $(tr '\n' ' ' <"$tmp/stdout")"
-elif [ -z "$size" ] || [ "$height" -ne 90 ] || [ "$width" -le 360 ] || [ "$width" -gt $((360 + 2 * 16)) ] ||
+elif [ -z "$size" ] || [ "$height" -ne $((90 + 11)) ] || [ "$width" -le 360 ] || [ "$width" -gt $((360 + 2 * 16)) ] ||
     [ $(((width - 360) % 2)) -ne 0 ]; then
-    fail "compare -o: the side-by-side image is '$size', want 3 x 120 plus two gaps by 90"
+    fail "compare -o: the side-by-side image is '$size', want 3 x 120 plus two gaps by 90 and the labels' band of 11"
 else
     pass
 fi
@@ -552,14 +552,26 @@ if [ -d solutions ]; then
     check "... and writes no picture" [ ! -e "$tmp/crashes.png" ]
 fi
 
-# Code that loops forever: on a terminal, once no row has been finished for
-# a while (RENDER_STALLED_SECONDS here, 10 s by default), a line says how to
-# stop it.  Run through util-linux's script, which gives it a terminal,
-# where there is one.
-if [ -d solutions ] && script --version 2>/dev/null | grep -q util-linux; then
+# Code that loops forever: once no row has been finished for a while
+# (RENDER_STALLED_SECONDS here, 10 s by default), a line says how to stop
+# it, on a terminal and elsewhere (output to a file or a pipe, as a log or
+# an editor's pane takes it), where it once waited in silence.  A terminal through
+# util-linux's script, where there is one.
+if [ -d solutions ]; then
     misbehaving "$tmp/loops" 'for (volatile int forever = 1; forever;) ;'
     loops_bin=out/build/sub/$(printf '%s' "$tmp/loops" | tr / _)/render
     run ${MAKE:-make} --no-print-directory "$loops_bin" SUBMISSION="$tmp/loops"
+    RENDER_STALLED_SECONDS=1 "$loops_bin" labs/scenes/default.scene --size 40x30 -o "$tmp/loops.png" \
+        </dev/null >"$tmp/loops-pipe.out" 2>&1 &
+    loops_pid=$!
+    sleep 3
+    kill "$loops_pid" 2>/dev/null
+    wait "$loops_pid" 2>/dev/null
+    check "code that loops forever, its output to a file: a line says how to stop it" \
+        grep -q '^render: no row finished in the last 1 s: if the code loops forever, stop it with Ctrl-C' \
+        "$tmp/loops-pipe.out"
+fi
+if [ -d solutions ] && script --version 2>/dev/null | grep -q util-linux; then
     loops_cmd="timeout 3 $loops_bin labs/scenes/default.scene --size 40x30 -o $tmp/loops.png"  # portable: util-linux only
     RENDER_STALLED_SECONDS=1 script -qec "$loops_cmd" /dev/null </dev/null >"$tmp/loops.out" 2>&1  # portable: util-linux only
     check "code that loops forever: on a terminal, a line says how to stop it" \

@@ -140,10 +140,14 @@ for s in labs/scenes/*.scene; do
     check "the kit lacks $s" cmp -s "$s" "$kit/$s"
     check "the kit lacks the reference render labs/reference/$name.png" test -s "$kit/labs/reference/$name.png"
 done
-# Every picture and file the handouts and the README link to is there.
-# (handouts/student-readme.md is the README's source: its links are the README's.)
+# One README, the kit's own (handouts/student-readme.md is its source, and
+# not shipped beside it: its links are written from the kit's top).  Every
+# picture and file the handouts and the README link to is there, and none
+# names a program the kit cannot build (the instructor's accuracy tool).
+check "the kit ships handouts/student-readme.md beside its README" test ! -e "$kit/handouts/student-readme.md"
+check "the kit's handouts or README name the accuracy tool, which the kit cannot build" \
+    sh -c "! grep -l 'bin/accuracy' '$kit/README.md' '$kit'/handouts/*.md"
 for md in "$kit"/README.md "$kit"/handouts/*.md; do
-    [ "$md" = "$kit/handouts/student-readme.md" ] && continue
     base=$(dirname "$md")
     sed -n 's/.*\](\([^)#]*\)).*/\1/p; s/.*src="\([^"]*\)".*/\1/p' "$md" | grep -v '^[a-z]*:' |
         sort -u >"$tmp/links"
@@ -230,6 +234,14 @@ else
     pass
 fi
 
+# make help lists what runs here, and no target of the instructor's kit.
+mk "$kit" help
+check "the kit's make help lists render, compare, grade, test and clean, and nothing of the instructor's" \
+    sh -c "[ $status -eq 0 ] && grep -q '^make render' '$tmp/out' && grep -q '^make compare' '$tmp/out' &&
+           grep -q '^make grade ' '$tmp/out' && grep -q 'make test | clean' '$tmp/out' &&
+           ! grep -q -e grade-all -e sort-submissions -e 'make gradescope' -e student-kit -e bench -e fuzz \
+                     -e sanitize-grader -e handouts '$tmp/out'"
+
 # ---- the untouched skeleton: 0 on every part, status 1 --------------------
 mk "$kit" grade
 if crashed; then
@@ -250,6 +262,8 @@ for p in 1 2 3a 3b; do
     fi
 done
 check "make grade on the skeleton: Score: 0 / 100" grep -q '^Score: 0 / 100' "$tmp/out"
+check "make grade on the skeleton is short ($(wc -l <"$tmp/out" | tr -d ' ') lines, at most 150; a part not written yet is one line)" \
+    sh -c "[ \$(wc -l <'$tmp/out') -le 150 ] && [ \$(grep -c '   not written yet: every answer' '$tmp/out') -eq 4 ]"
 check "make grade on the untouched kit says nothing of its headers" \
     sh -c "! grep -q 'is not the one the kit came with' '$tmp/out'"
 
@@ -400,5 +414,21 @@ cp solutions/part3a_sphere_intersect.c "$kit/labs/"
 mk "$kit" grade PART=3a
 check "... and with the reference's, not a word of it (exit $status)" \
     sh -c "[ $status -eq 0 ] && ! grep -q 'All the core points' '$tmp/out'"
+
+# A helper defined, not static, in Parts 3a and 3b (tests/selftest/
+# link-shared-helper): here Part 3b's program links the student's own Part
+# 3a, and the linker refuses two dot()s; the grader builds it with each
+# file's dot its own, as the instructor's grader does (with the
+# reference's Part 3a), and says what make render says: write static.
+cp tests/selftest/link-shared-helper/part*.c "$kit/labs/"
+mk "$kit" grade PART=3b
+check "a non-static helper in Parts 3a and 3b: Part 3b keeps its 30 points, and is told to write static (exit $status, grader $ran)" \
+    sh -c "grep -q '^Part 3b: .*  30 / 30' '$tmp/out' && ! grep -q 'did not build' '$tmp/out' &&
+           grep -q 'dot is defined in part3b_ray_color.c and part3a_sphere_intersect.c' '$tmp/out' &&
+           grep -q 'Write static in front of each definition of dot' '$tmp/out'"
+mk "$kit" render
+check "... which make render stops at, saying the same (exit $status)" \
+    sh -c "[ $status -ne 0 ] && grep -q 'write static in front of each' '$tmp/out'"
+cp solutions/part3a_sphere_intersect.c solutions/part3b_ray_color.c "$kit/labs/"
 
 finish

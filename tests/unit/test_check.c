@@ -202,6 +202,136 @@ static void test_one_mistake_fits(void)
     testlist_free(&list);
 }
 
+/* One mistake alone explains a test, but only by the hits it missed, and
+ * a test the code passed has a case that mistake fails: it is not named,
+ * and the hint says why, naming that test.  A mistake shown by an answer
+ * of its own (a hit at its t) is named all the same. */
+static void test_ruled_out_by_misses(void)
+{
+    static const char A[] = "mistake A: its fix";
+    const char *a_only[] = { A };
+    TestList list = { 0 };
+    Test *failed = testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: the test failed");
+    hit_case(failed, a_only, 1);
+    hit_case(failed, NULL, 0);
+    hit_case(testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: a test A fails"), a_only, 1);
+    hit_case(testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: plain hits"), NULL, 0);
+    const char misses[] = "0x0p+0 0x0p+0\n0x1p+0 0x1p+2\nend 2\n";
+    const char at_two[] = "0x1p+0 0x1p+1\n0x1p+0 0x1p+2\nend 2\n";
+    const Test *rules_out[] = { &list.tests[1] }, *plain[] = { &list.tests[2] };
+    static const struct {
+        bool ruled, hit_at_two, named;
+    } cases[] = {
+        { true, false, false },        /* missed hits, ruled out: not named */
+        { false, false, true },        /* missed hits, nothing rules it out  */
+        { true, true, true },          /* its own answer, a hit at t = 2     */
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        Hint *h = &list.tests[0].cases[0].hints[0];
+        h->out[0] = cases[k].hit_at_two ? 1 : 0;
+        h->out[1] = cases[k].hit_at_two ? 2 : 0;
+        PartSoFar part = { cases[k].ruled ? rules_out : plain, 1, NULL, 0 };
+        const char *answers = cases[k].hit_at_two ? at_two : misses;
+        char *out = NULL;
+        Answers a;
+        CHECK(!check_answers_in_part(&list.tests[0], answers, strlen(answers), &part, &out, &a));
+        if (cases[k].named) {
+            CHECK_MSG(a.named && strcmp(a.named, A) == 0, "case %zu: named %s", k, a.named ? a.named : "nothing");
+        } else {
+            CHECK_MSG(!a.named && !strstr(out, A), "case %zu: named %s", k, a.named ? a.named : "");
+            CHECK_STR_CONTAINS(out, "the hits missed here fit one known mistake alone (mistake A), but your "
+                                    "code passed \"Part 5: a test A fails\", which code with that mistake "
+                                    "fails: they have another cause");
+        }
+        free(out);
+        answers_free(&a);
+    }
+    testlist_free(&list);
+}
+
+/* The case of a public test of this kind whose input is in[0 .. nin). */
+static const Case *public_case(const TestList *list, Kind kind, const double *in, int nin)
+{
+    for (int k = 0; k < list->n; k++)
+        for (int c = 0; c < list->tests[k].ncases && list->tests[k].kind == kind; c++)
+            if (memcmp(list->tests[k].cases[c].in, in, (size_t)nin * sizeof *in) == 0)
+                return &list->tests[k].cases[c];
+    return NULL;
+}
+
+/* The core tests' tolerance, pinned part by part on the worked examples,
+ * whose answers are exact: relative 1e-9 (of w and h, of w, h and d for
+ * Part 2's x, y and z, of t), absolute 1e-9 for Part 3b's unit direction;
+ * an answer 0.9 of it away is right, 1.1 of it away wrong, either side.
+ * Part 3b's colour and a camera ray's origin are exact.  A tolerance made
+ * wider or narrower, in the test files (tests/oracle) or in the judging
+ * (check.c), fails here. */
+static void test_core_tolerances(void)
+{
+    static const struct {
+        const char *file;
+        Kind kind;
+        int nin;
+        double in[CASE_MAX_IN], want[CASE_MAX_OUT], scale[CASE_MAX_OUT];
+    } cases[] = {
+        { "tests/public/part1.tests", KIND_PLANE, 3, { 90, 2, 1 }, { 4, 2 }, { 4, 2 } },
+        { "tests/public/part2.tests", KIND_PIXEL, 7, { 0, 0, 4, 2, 4, 2, 1 }, { -1.5, 0.5, -1 }, { 4, 2, 1 } },
+        { "tests/public/part2.tests", KIND_PIXEL, 7, { 6, 3, 7, 9, 1.75, 2.25, 0.5 }, { 0.75, 0.25, -0.5 },
+          { 1.75, 2.25, 0.5 } },
+        { "tests/public/part3a.tests", KIND_SPHERE, 10, { 0, 0, -5, 1, 0, 0, 0, 0, 0, -2 }, { 1, 2 }, { 0, 2 } },
+        { "tests/public/part3b.tests", KIND_CAMERA, 6, { 0, 0, 0, 3, 0, -4 }, { 0, 0, 0, 0.6, 0, -0.8 },
+          { 0, 0, 0, 1, 1, 1 } },
+        { "tests/public/part4.tests", KIND_PLANEHIT, 12, { 0, -1, 0, 0, 2, 0, 0, 0, 0, 0, -0.5, -1 }, { 1, 2 },
+          { 0, 2 } },
+        { "tests/public/part5.tests", KIND_TRIANGLE, 15, { -1, -1, -4, 1, -1, -4, 0, 1, -4, 0, 0, 0, 0, 0, -2 },
+          { 1, 2 }, { 0, 2 } },
+    };
+    for (size_t q = 0; q < sizeof cases / sizeof cases[0]; q++) {
+        TestList list = { 0 };
+        char err[256];
+        CHECK_MSG(tests_read(&list, cases[q].file, false, err, sizeof err) == 0, "%s", err);
+        const Case *c = public_case(&list, cases[q].kind, cases[q].in, cases[q].nin);
+        CHECK_MSG(c != NULL, "%s: no case of the worked example's input", cases[q].file);
+        int nout = kind_nout(cases[q].kind);
+        for (int k = 0; c && k < nout; k++) {
+            CHECK_MSG(c->want[k] == cases[q].want[k], "%s: output %d expected %.17g, not %.17g", cases[q].file,
+                      k, c->want[k], cases[q].want[k]);
+            double got[CASE_MAX_OUT];
+            memcpy(got, cases[q].want, sizeof got);
+            CHECK_MSG(case_is_right(cases[q].kind, c, got), "%s: the exact answer is wrong", cases[q].file);
+            if (cases[q].scale[k] == 0)
+                continue;
+            for (int side = -1; side <= 1; side += 2) {
+                double unit = side * 1e-9 * cases[q].scale[k];
+                got[k] = cases[q].want[k] + 0.9 * unit;
+                CHECK_MSG(case_is_right(cases[q].kind, c, got), "%s: output %d off by 0.9 of the tolerance "
+                          "(%.3g) is judged wrong", cases[q].file, k, 0.9 * unit);
+                got[k] = cases[q].want[k] + 1.1 * unit;
+                CHECK_MSG(!case_is_right(cases[q].kind, c, got), "%s: output %d off by 1.1 of the tolerance "
+                          "(%.3g) is judged right", cases[q].file, k, 1.1 * unit);
+                got[k] = cases[q].want[k];
+            }
+        }
+        if (c && cases[q].kind == KIND_CAMERA) {       /* the origin: exact */
+            double got[CASE_MAX_OUT] = { 0x1p-1074, 0, 0, 0.6, 0, -0.8 };
+            CHECK_MSG(!case_is_right(KIND_CAMERA, c, got), "an origin off by the least double is judged right");
+        }
+        testlist_free(&list);
+    }
+    /* A colour is a sphere's, unchanged: one off by an ulp is wrong. */
+    TestList list = { 0 };
+    char err[256];
+    CHECK_MSG(tests_read(&list, "tests/public/part3b.tests", false, err, sizeof err) == 0, "%s", err);
+    const Case *c = public_case(&list, KIND_COLOR, (const double[6]){ 0, 0, 0, 0, 0, -1 }, 6);
+    CHECK(c && c->want[0] == 1 && c->want[1] == 0 && c->want[2] == 0);
+    if (c) {
+        double right[3] = { 1, 0, 0 }, off[3] = { nextafter(1, 0), 0, 0 };
+        CHECK(case_is_right(KIND_COLOR, c, right));
+        CHECK(!case_is_right(KIND_COLOR, c, off));
+    }
+    testlist_free(&list);
+}
+
 /* The order of the tests' files does not matter: a failed test that two
  * mistakes fit, judged before the test that names one of them, names it
  * once the part's every test is judged (check_part_again), with the same
@@ -307,6 +437,8 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_bytes),
     CHECK_TEST(test_two_mistakes_fit),
     CHECK_TEST(test_one_mistake_fits),
+    CHECK_TEST(test_ruled_out_by_misses),
+    CHECK_TEST(test_core_tolerances),
     CHECK_TEST(test_part_again),
     CHECK_TEST(test_hit_not_ahead),
 };

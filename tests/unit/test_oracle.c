@@ -685,20 +685,26 @@ static void test_textbook_part1(void)
     CHECK_MSG(near180 > 0 && near180_fail > near180 / 2, "textbook fails %d of %d near 180", near180_fail, near180);
 }
 
+/* The reference meets Part 2's hard cases; the lecture's formula, which
+ * cancels near the centre, does not: the challenge is one it does not
+ * meet (it fails a tenth of every family's cases at least; 12% to 40% of
+ * the 200 here). */
 static void test_reference_part2_hard(void)
 {
     static HardCase2 c[HARD_PART2_FAMILIES * PER_FAMILY];
-    int n = hard_part2(SEED, c, HARD_PART2_FAMILIES * PER_FAMILY);
+    int n = hard_part2(SEED, c, HARD_PART2_FAMILIES * PER_FAMILY), lecture_fails[HARD_PART2_FAMILIES] = { 0 };
     for (int k = 0; k < n; k++) {
         Vec3 p = pixel_coordinates(c[k].i, c[k].j, c[k].nx, c[k].ny, c[k].w, c[k].h, c[k].d);
         CHECK_MSG(hard_check2(&c[k], p), "%s: pixel (%d, %d) of %dx%d, w %a h %a: (%a, %a), want (%a, %a)",
                   c[k].family, c[k].i, c[k].j, c[k].nx, c[k].ny, c[k].w, c[k].h, p.x, p.y, c[k].p.x, c[k].p.y);
-        /* the lecture's formula is within the tolerance too */
         int i = c[k].i, j = c[k].j, nx = c[k].nx, ny = c[k].ny;
         double w = c[k].w, h = c[k].h;
         Vec3 q = vec3(-w / 2 + w * (i + 0.5) / nx, -h / 2 + h * (ny - 0.5 - j) / ny, -c[k].d);
-        CHECK_MSG(hard_check2(&c[k], q), "%s: the lecture's formula fails", c[k].family);
+        lecture_fails[k % HARD_PART2_FAMILIES] += !hard_check2(&c[k], q);
     }
+    for (int f = 0; f < HARD_PART2_FAMILIES; f++)
+        CHECK_MSG(lecture_fails[f] >= n / HARD_PART2_FAMILIES / 10, "%s: the lecture's formula fails %d of %d",
+                  c[f].family, lecture_fails[f], n / HARD_PART2_FAMILIES);
 }
 
 static void test_reference_part3a_hard(void)

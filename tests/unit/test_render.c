@@ -4,6 +4,7 @@
 #include "check.h"            /* first: it sets the POSIX feature level */
 #include "../../labs/kit/render.h"
 #include "../../labs/kit/scene.h"
+#include "../../labs/kit/compare.h"
 
 /* A scene of nx x ny pixels with the given spheres, eye at the origin. */
 static Scene make_scene(int nx, int ny, double fov, Vec3 background, Sphere *spheres, int n)
@@ -414,6 +415,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_ground_plane_halves),
     CHECK_TEST(test_triangle_left_half),
     CHECK_TEST(test_closest_across_kinds),
+    CHECK_TEST(test_side_by_side_labels),
     CHECK_TEST(test_stats),
     CHECK_TEST(test_wrong_image_size),
 };
