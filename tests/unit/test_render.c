@@ -364,6 +364,43 @@ static void test_closest_across_kinds(void)
     image_free(&img);
 }
 
+/* make compare's side-by-side picture: a band of labels (white letters on
+ * grey) above each of the three panels, then the two images and the heat
+ * map, pixel for pixel; a label wider than its panel is left out. */
+static void test_side_by_side_labels(void)
+{
+    for (int width = 120; width >= 20; width -= 100) {
+        Image a, b, out;
+        char err[128];
+        if (image_alloc(&a, width, 9, err, sizeof err) < 0 || image_alloc(&b, width, 9, err, sizeof err) < 0)
+            return;
+        memset(a.rgb, 10, (size_t)3 * width * 9);
+        memset(b.rgb, 10, (size_t)3 * width * 9);
+        b.rgb[0] = 200;                                /* one pixel differs */
+        CHECK(compare_side_by_side(&a, &b, &out, err, sizeof err) == 0);
+        int band = compare_label_band(width);
+        CHECK_EQ_INT(band, 11);
+        CHECK_EQ_INT(out.width, 3 * width + 2 * COMPARE_GAP);
+        CHECK_EQ_INT(out.height, 9 + band);
+        for (int k = 0; k < 3; k++) {
+            int x0 = k * (width + COMPARE_GAP), white = 0;
+            for (int j = 0; j < band; j++)
+                for (int i = x0; i < x0 + width; i++)
+                    white += out.rgb[3 * (j * out.width + i)] == 255;
+            CHECK_MSG(width < 70 ? white == 0 : white > 20, "panel %d, %d wide: %d white pixels in its label", k,
+                      width, white);
+            const unsigned char *first = out.rgb + 3 * (band * out.width + x0);
+            if (k < 2)                                 /* the images, under the band */
+                CHECK_EQ_INT(first[0], k == 0 ? 10 : 200);
+            else                                       /* the heat map: a difference */
+                CHECK(first[0] != 0 || first[1] != 0 || first[2] != 0);
+        }
+        image_free(&a);
+        image_free(&b);
+        image_free(&out);
+    }
+}
+
 /* The statistics are positive and consistent. */
 static void test_stats(void)
 {
