@@ -5,33 +5,24 @@
 CC        ?= cc
 OPT       ?= -O2
 STD        = -std=c11
-WARN       = -Wall
-WARN      += -Wextra
-WARN      += -Wpedantic
-WARN      += -Wshadow
-WARN      += -Wstrict-prototypes
-FPFLAGS    = -ffp-contract=off          # never contract a*b+c; never -ffast-math
+WARN       = -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes
+# Never contract a*b+c; never -ffast-math.
+FPFLAGS    = -ffp-contract=off
 CFLAGS     = $(STD) $(OPT) $(FPFLAGS) $(WARN)
 SANFLAGS   = $(STD) -O1 -g $(FPFLAGS) $(WARN) -fsanitize=address,undefined \
              -fno-omit-frame-pointer -fno-sanitize-recover=all
-# Linking a sanitized program.  gcc links UBSan's runtime as a shared
-# library with 6 MB of zeroed globals, which LeakSanitizer reads through at
-# every exit: about 1,550 page faults and 20 ms a process, more than the
-# rest of a small test's run.  -static-libubsan links that runtime into the
-# program, whose globals are small.  Only gcc knows the option (clang links
-# its sanitizers' runtimes statically already): the recipe asks the
-# compiler, once per sanitized link, not once per make.
+# Linking a sanitized program: gcc's UBSan runtime is linked in statically
+# (-static-libubsan), which spares LeakSanitizer reading through that shared
+# library's globals at every exit.  clang has no such option (it links its
+# sanitizers' runtimes statically already), so the recipe asks the compiler.
 SAN_LINK   = $(SANFLAGS) $$($(CC) -static-libubsan -E -x c /dev/null >/dev/null 2>&1 && echo -static-libubsan)
 THREADS    = -pthread
 RENDER_LTO = -flto                      # the renderer inlines across the stage files; empty to disable
 LDLIBS     = -lm
 SYSTEM    := $(shell uname -s)
-# The archiver.  GNU ar loads every linker plugin installed beside it; where
-# clang's LLVMgold is one, that loads all of LLVM (about 70 ms and 3,400
-# page faults for the kit's dozen objects).  gcc-ar hands ar gcc's own
-# plugin, and ar loads that one alone (about 10 ms); the archive is the
-# same.  On Linux, where ar is GNU ar, gcc-ar is used if it is on PATH
-# (found without starting a process); plain ar elsewhere.
+# The archiver.  On Linux, gcc-ar where it is on PATH: GNU ar alone loads
+# every linker plugin installed beside it (all of LLVM where clang's
+# LLVMgold is one), gcc-ar only gcc's; the archive is the same.
 KIT_AR    ?= $(if $(filter Linux,$(SYSTEM)),$(firstword $(wildcard $(addsuffix /gcc-ar,$(subst :, ,$(PATH)))) ar),ar)
 
 # A copy of the kit with Windows line ends (CRLF), as Git for Windows checks
@@ -58,38 +49,37 @@ V         ?=
 Q          = $(if $(filter 1,$(V)),,@)
 SAY_CC     = $(if $(Q),@echo "  CC      $<")
 
-# What the targets act on (all accept absolute paths).
+# What the targets act on (all accept absolute paths); the others that
+# `make help` lists (SIZE, PART, RESULTS...) are empty unless given.
 SUBMISSION ?= labs
 SCENE      ?= labs/scenes/default.scene
-SIZE       ?=
-PART       ?=
-RESULTS    ?=
-FORMAT     ?=
-CLASSROOM  ?=
-SUBMISSIONS ?=
-JOBS       ?=
-PREVIOUS   ?=
 
-# Where the builds go: OUT_ROOT=dir builds into dir/build and dir/asan (the
-# portability suite builds with a second compiler beside the first).
+# Two builds: $(BUILD), plain, and $(ASAN), with the sanitizers.
+# OUT_ROOT=dir puts them in dir/build and dir/asan (the portability suite
+# builds with a second compiler beside the first).
 OUT_ROOT  ?= out
 BUILD      = $(OUT_ROOT)/build
 ASAN       = $(OUT_ROOT)/asan
 STAGES     = part1_image_plane part2_pixel_coordinates part3a_sphere_intersect part3b_ray_color \
              part4_plane_intersect part5_triangle_intersect
 HAVE_SOLUTIONS := $(wildcard solutions/part1_image_plane.c)
+# In the instructor's kit the grader also draws the hidden tests with the
+# oracle (tests/oracle, tests/hidden); the student kit has neither.
+HAVE_ORACLE := $(wildcard tests/oracle/oracle.h)
+HAVE_HIDDEN := $(wildcard tests/hidden/hidden.c)
 
-# ---- the framework students use (labs/kit) ---------------------------------
-KIT_SRC    = labs/kit/image.c labs/kit/png.c labs/kit/zlib.c labs/kit/scene.c labs/kit/render.c \
-             labs/kit/numtext.c labs/kit/savefile.c labs/kit/textfile.c labs/kit/obj.c \
-             labs/kit/bvh.c labs/kit/closest.c labs/kit/compare.c
+# The libraries' sources: each folder's C files but its programs (*_main.c)
+# and, for the grader, its harnesses (the programs that run a student's code).
+KIT_SRC    = $(filter-out %_main.c,$(wildcard labs/kit/*.c))
 KIT_HDR    = $(wildcard labs/*.h labs/kit/*.h)
-KIT_OBJ    = $(KIT_SRC:labs/kit/%.c=$(BUILD)/kit/%.o)
-KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
+ORACLE_SRC = $(filter-out %_main.c,$(wildcard tests/oracle/*.c))
+TOOLS_SRC  = $(filter-out %_main.c,$(wildcard tests/tools/*.c))
+GRADER_LIB_SRC = $(filter-out %_main.c tests/grader/harness%,$(wildcard tests/grader/*.c))
+GRADER_HDR = $(wildcard tests/grader/*.h) $(KIT_HDR)
 
-.PHONY: all help render compare grade grade-all gradescope student-kit bench \
+.PHONY: all help render compare grade grade-all gradescope prairielearn student-kit bench \
         handouts test test-build unit-tests clean grader public-tests fuzz sanitize-grader \
-        submission-dir sort-submissions
+        submission-dir sort-submissions print-cflags
 .DELETE_ON_ERROR:
 .SECONDARY:                             # keep the objects a chain of rules makes (the renderer's lto/)
 .SECONDEXPANSION:
@@ -97,9 +87,12 @@ KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
 # order-only prerequisite "| $$(@D)/."), not by a mkdir per target.
 %/.:
 	@mkdir -p $@
+# An archive's members are the prerequisites its own line names.
+$(OUT_ROOT)/%.a:
+	$(Q)rm -f $@ && $(KIT_AR) rcs $@ $^
 
 all: $(BUILD)/kit/libkit.a $(BUILD)/bin/compare $(BUILD)/sub/labs/render \
-     $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render) grader unit-tests
+     $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render) grader unit-tests $(BUILD)/bin/htmlcheck
 
 # The student kit (no solutions/) lists only what runs there.
 help:
@@ -116,15 +109,6 @@ else
 endif
 	@echo "V=1 after any of them echoes the build's compiler commands"
 
-$(BUILD)/kit/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $(THREADS) -c $< -o $@
-$(ASAN)/kit/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(SANFLAGS) $(THREADS) -c $< -o $@
-$(BUILD)/kit/libkit.a: $(KIT_OBJ)
-	$(Q)rm -f $@ && $(KIT_AR) rcs $@ $^
-$(ASAN)/kit/libkit.a: $(KIT_ASAN)
-	$(Q)rm -f $@ && $(KIT_AR) rcs $@ $^
-
 # ---- renderer and compare, per submission ----------------------------------
 # A submission's build lives in out/build/sub/<name>: labs and solutions by
 # name, any other directory by its absolute path with / turned into _.
@@ -140,10 +124,6 @@ SUB_BUILD  = $(BUILD)/sub/$(SUB_NAME)
 
 # The renderer's own objects (lto/) are built with link-time optimisation,
 # so the per-pixel calls into the stage files can be inlined.
-$(BUILD)/sub/labs/%.o: labs/%.c $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/sub/solutions/%.o: solutions/%.c $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
 # A stage file the student edits: bin/stagecheck first refuses one the
 # grader would not build (a header of the student's own: it compiles each
 # stage file alone; tests/grader/own_headers.h).  One that does not compile:
@@ -210,72 +190,29 @@ compare: submission-dir $(SUB_BUILD)/render $(BUILD)/bin/compare $(if $(HAVE_SOL
 	$(BUILD)/bin/compare out/compare/$(SCENE_NAME)-submission.png $(REF_IMAGE) \
 	    -o out/compare/$(SCENE_NAME).png
 
-# ---- the oracle: independent double-double answers (tests/oracle) ----------
-ORACLE_SRC = $(filter-out %_main.c,$(wildcard tests/oracle/*.c))
-ORACLE_OBJ = $(ORACLE_SRC:tests/oracle/%.c=$(BUILD)/oracle/%.o)
-$(BUILD)/oracle/%.o: tests/oracle/%.c $(wildcard tests/oracle/*.h) $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(ASAN)/oracle/%.o: tests/oracle/%.c $(wildcard tests/oracle/*.h) $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/oracle/liboracle.a: $(ORACLE_OBJ)
-	$(Q)rm -f $@ && $(KIT_AR) rcs $@ $^
-$(ASAN)/oracle/liboracle.a: $(ORACLE_SRC:tests/oracle/%.c=$(ASAN)/oracle/%.o)
-	$(Q)rm -f $@ && $(KIT_AR) rcs $@ $^
-
-# ---- instructor tools: archives (zip, tar.gz) and JSON (tests/tools) -------
-TOOLS_SRC  = $(filter-out %_main.c,$(wildcard tests/tools/*.c))
-TOOLS_OBJ  = $(TOOLS_SRC:tests/tools/%.c=$(BUILD)/tools/%.o)
-$(BUILD)/tools/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(ASAN)/tools/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/tools/libtools.a: $(TOOLS_OBJ)
-	$(Q)rm -f $@ && $(KIT_AR) rcs $@ $^
-$(ASAN)/tools/libtools.a: $(TOOLS_SRC:tests/tools/%.c=$(ASAN)/tools/%.o)
-	$(Q)rm -f $@ && $(KIT_AR) rcs $@ $^
+# ---- instructor tools: archives (zip, tar.gz), JSON, the oracle -----------
 $(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 # The report page's checker (tests/suites/report.sh).
 $(BUILD)/bin/htmlcheck: $(BUILD)/tools/htmlcheck_main.o | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
-all: $(BUILD)/bin/htmlcheck
+# The public tests' expected values, from the oracle's double-double answers.
+$(BUILD)/bin/gentests: $(BUILD)/oracle/gentests_main.o $(BUILD)/oracle/liboracle.a \
+                       $(BUILD)/grader/libgrader.a $(BUILD)/kit/libkit.a | $$(@D)/.
+	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+# The reference solutions' accuracy on the hard cases (tables for the README).
+$(BUILD)/bin/accuracy: $(BUILD)/oracle/accuracy_main.o $(BUILD)/oracle/liboracle.a \
+                       $(STAGES:%=$(BUILD)/sub/solutions/%.o) | $$(@D)/.
+	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+# (commit the result)
+public-tests: $(BUILD)/bin/gentests
+	$(BUILD)/bin/gentests tests/public
 
 # ---- the autograder (tests/grader) ------------------------------------------
-# In the instructor's kit the grader also draws the hidden tests with the
-# oracle (tests/oracle, tests/hidden); the student kit has neither.
-HAVE_ORACLE := $(wildcard tests/oracle/oracle.h)
-HAVE_HIDDEN := $(wildcard tests/hidden/hidden.c)
-GRADER_LIB_SRC = tests/grader/cases.c tests/grader/check.c tests/grader/sandbox.c tests/grader/jail.c \
-                 tests/grader/build.c tests/grader/memo.c tests/grader/include_scan.c tests/grader/linkmsg.c tests/grader/lookalike.c \
-                 tests/grader/own_headers.c tests/grader/config.c tests/grader/grade.c \
-                 tests/grader/report_table.c tests/grader/report_json.c \
-                 tests/grader/diagnose.c tests/grader/lmsname.c tests/grader/terminal.c \
-                 tests/grader/report_render.c tests/grader/report_html.c tests/grader/markup.c \
-                 $(wildcard tests/grader/fig*.c)
-GRADER_LIB_SRC += tests/grader/report_classroom.c tests/grader/report_prairielearn.c
-# The class page of grade --all (report_class.h) and the CSV files' fields.
-GRADER_LIB_SRC += tests/grader/report_class.c $(wildcard tests/grader/class_*.c) tests/grader/csv.c
-GRADER_HDR = $(wildcard tests/grader/*.h) $(KIT_HDR)
-GRADER_OBJ = $(GRADER_LIB_SRC:tests/grader/%.c=$(BUILD)/grader/%.o)
-HARNESS    = $(BUILD)/grader/harness_1.o $(BUILD)/grader/harness_2.o \
-             $(BUILD)/grader/harness_3.o $(BUILD)/grader/harness_4.o \
-             $(BUILD)/grader/harness_5.o $(BUILD)/grader/harness_6.o \
-             $(BUILD)/grader/harness_render.o
+HARNESS    = $(foreach k,1 2 3 4 5 6 render,$(BUILD)/grader/harness_$(k).o)
 GRADER_REF = $(if $(HAVE_SOLUTIONS),$(STAGES:%=$(BUILD)/grader/ref_%.o))
 GRADE_DEFS = $(if $(and $(HAVE_ORACLE),$(HAVE_HIDDEN)),-DGRADER_ORACLE)
-GRADE_EXTRA = $(if $(GRADE_DEFS),$(BUILD)/grader/hidden.o $(BUILD)/oracle/liboracle.a)
 
-$(BUILD)/grader/%.o: tests/grader/%.c $(GRADER_HDR) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/grader/harness_%.o: tests/grader/harness.c tests/grader/hexfloat.h tests/grader/harness_init.h \
-                             $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -c $< -o $@
-# The report page's render program (build_render): harness_render.c draws a scene.
-$(BUILD)/grader/harness_render.o: tests/grader/harness_render.c tests/grader/harness_init.h \
-                                 $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
-	$(Q)cp $< $@
 # On Linux each part's program is also prebuilt as a runner (harness_load.c):
 # the grader then builds a student's file as a shared object, which costs a
 # fraction of linking a whole program, and the runner loads it (build.c).
@@ -291,6 +228,15 @@ $(BUILD)/grader/harness_load_%.o: tests/grader/harness.c tests/grader/harness_lo
 $(BUILD)/grader/harness_load.o: tests/grader/harness_load.c tests/grader/harness_load.h \
                                 tests/grader/contract.h $(KIT_HDR) | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+$(BUILD)/grader/harness_%.o: tests/grader/harness.c tests/grader/hexfloat.h tests/grader/harness_init.h \
+                             $(KIT_HDR) | $$(@D)/.
+	$(Q)$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -c $< -o $@
+# The report page's render program (build_render): harness_render.c draws a scene.
+$(BUILD)/grader/harness_render.o: tests/grader/harness_render.c tests/grader/harness_init.h \
+                                 $(KIT_HDR) | $$(@D)/.
+	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
+$(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
+	$(Q)cp $< $@
 # (runner_3, Part 3a's, leaves out Part 3b's reference too: it calls
 # sphere_intersect, which only the student's object defines.)
 runner_refs = $(if $(HAVE_SOLUTIONS),$(filter-out $(BUILD)/grader/ref_$(word $(1),$(STAGES)).o \
@@ -301,15 +247,6 @@ $(BUILD)/grader/runner_$(1): $(BUILD)/grader/harness_load_$(1).o $(BUILD)/grader
 	$(Q)$$(CC) $$(CFLAGS) -rdynamic $$^ -o $$@ $$(LDLIBS) -ldl
 endef
 $(foreach k,1 2 3 4 5 6,$(eval $(call RUNNER_RULE,$(k))))
-$(BUILD)/grader/hidden.o: tests/hidden/hidden.c $(GRADER_HDR) $(wildcard tests/oracle/*.h) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/grader/libgrader.a: $(GRADER_OBJ)
-	$(Q)rm -f $@ && $(KIT_AR) rcs $@ $^
-$(BUILD)/grader/grade_main.o: tests/grader/grade_main.c $(GRADER_HDR) $(wildcard tests/oracle/*.h) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $(GRADE_DEFS) -DGRADER_BUILD='"$(BUILD)"' -Ilabs -c $< -o $@
-$(BUILD)/bin/grade: $(BUILD)/grader/grade_main.o $(GRADE_EXTRA) $(BUILD)/grader/libgrader.a \
-                    $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $(HARNESS) $(GRADER_REF) $(RUNNERS) $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/lookalike: $(BUILD)/grader/lookalike_main.o $(BUILD)/grader/lookalike.o \
                         $(BUILD)/tools/utf8.o $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
@@ -320,15 +257,11 @@ $(BUILD)/bin/stagecheck: $(BUILD)/grader/stagecheck_main.o $(BUILD)/grader/inclu
                          $(BUILD)/grader/own_headers.o $(BUILD)/grader/lookalike.o \
                          $(BUILD)/tools/utf8.o $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
-$(BUILD)/bin/gentests: $(BUILD)/oracle/gentests_main.o $(BUILD)/oracle/liboracle.a \
-                       $(BUILD)/grader/libgrader.a $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
-# The reference solutions' accuracy on the hard cases (tables for the README).
-$(BUILD)/bin/accuracy: $(BUILD)/oracle/accuracy_main.o $(BUILD)/oracle/liboracle.a \
-                       $(STAGES:%=$(BUILD)/sub/solutions/%.o) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 
-grader: $(BUILD)/bin/grade $(HARNESS) $(GRADER_REF) $(RUNNERS)
+# bin/sortsubs sorts a class's download from Canvas, Moodle or Blackboard
+# (one zip, or folder, of every student's files, each name carrying its
+# student) into one folder per submission for grade-all.
+grader: $(BUILD)/bin/grade $(HARNESS) $(GRADER_REF) $(RUNNERS) $(BUILD)/bin/sortsubs
 
 # The report page (out/report/index.html) shows the default scene drawn by
 # the submission beside the reference's picture: in the instructor's kit
@@ -349,20 +282,9 @@ grade-all: grader $(REPORT_REF)
 	@$(BUILD)/bin/grade --all "$(SUBMISSIONS)" --out "$(if $(OUT),$(OUT),out/grades)" $(if $(JOBS),--jobs $(JOBS)) \
 	    $(if $(PREVIOUS),--previous "$(PREVIOUS)")
 
-# A class's download from Canvas, Moodle or Blackboard (one zip, or folder,
-# of every student's files, each name carrying its student), sorted into
-# one folder per submission for grade-all (tests/grader/sortsubs_main.c).
-$(BUILD)/bin/sortsubs: $(BUILD)/grader/sortsubs_main.o $(BUILD)/grader/libgrader.a \
-                       $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
-grader: $(BUILD)/bin/sortsubs
 sort-submissions: $(BUILD)/bin/sortsubs
 	@test -n "$(FROM)" && test -n "$(TO)" || { echo "usage: make sort-submissions FROM=download.zip|dir TO=newdir [MAX_MB=n] [MAX_RATIO=n]"; exit 2; }
 	@$(BUILD)/bin/sortsubs $(if $(MAX_MB),--max-mb "$(MAX_MB)") $(if $(MAX_RATIO),--max-ratio "$(MAX_RATIO)") "$(FROM)" "$(TO)"
-
-# The public tests' expected values, from the oracle (commit the result).
-public-tests: $(BUILD)/bin/gentests
-	$(BUILD)/bin/gentests tests/public
 
 # ---- releases: the Gradescope bundle and the student kit ------------------
 SCENES     = $(wildcard labs/scenes/*.scene)
@@ -377,7 +299,6 @@ gradescope: $(BUILD)/bin/pack
 
 # The PrairieLearn question: info.json, question.html, and tests/ with the
 # grading entrypoint and the kit it builds (tests/prairielearn/question.sh).
-.PHONY: prairielearn
 prairielearn:
 	sh tests/prairielearn/question.sh out/prairielearn/raytracer-lab
 
@@ -406,7 +327,6 @@ student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 	@echo "wrote $(KIT_DIR)/ and out/student-kit.tar.gz"
 
 # The compile flags, for the suites' small helper programs (tests/lib/cc_build.sh).
-.PHONY: print-cflags
 print-cflags:
 	@echo $(CFLAGS)
 
@@ -421,116 +341,18 @@ else
 	@echo "the figures are in handouts/figures (drawing them again needs solutions/)"
 endif
 
-# ---- unit tests of the framework (tests/unit) ------------------------------
-UNIT_SRC   = $(wildcard tests/unit/test_*.c)
-UNIT_BIN   = $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)
-UNIT_ASAN  = $(UNIT_SRC:tests/unit/%.c=$(ASAN)/tests/%)
-REF_DIR    = $(if $(HAVE_SOLUTIONS),solutions,labs)
-REF_OBJ    = $(STAGES:%=$(BUILD)/sub/$(REF_DIR)/%.o)
-REF_ASAN   = $(STAGES:%=$(ASAN)/sub/$(REF_DIR)/%.o)
-unit-tests: $(UNIT_BIN)
-$(ASAN)/sub/solutions/%.o: solutions/%.c $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
-$(ASAN)/sub/labs/%.o: labs/%.c $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
-UNIT_LIBS  = $(if $(HAVE_ORACLE),$(BUILD)/oracle/liboracle.a) $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
-UNIT_LIBS_ASAN = $(UNIT_LIBS:$(BUILD)/%=$(ASAN)/%)
-# (Not the grader's units: their own rules are below.)
-GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers lmsname terminal csv
-UNIT_PLAIN = $(filter-out $(GRADER_UNITS:%=$(BUILD)/tests/test_%) \
-                         $(BUILD)/tests/test_hidden $(BUILD)/tests/test_figures $(BUILD)/tests/test_bvh,\
-                         $(UNIT_BIN))
-$(UNIT_PLAIN): $(BUILD)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_OBJ) $(UNIT_LIBS) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $(THREADS) -Ilabs $< $(REF_OBJ) $(UNIT_LIBS) -o $@ $(LDLIBS)
-$(ASAN)/tests/%: tests/unit/%.c tests/unit/check.h $(REF_ASAN) $(UNIT_LIBS_ASAN) | $$(@D)/.
-	$(Q)$(CC) $(SAN_LINK) $(THREADS) -Ilabs $< $(REF_ASAN) $(UNIT_LIBS_ASAN) -o $@ $(LDLIBS)
-
-# test_bvh links its own sphere_intersect and triangle_intersect, which
-# pass each call on to the reference's (compiled under other names) or to
-# deliberately wrong ones; the other parts are the reference's.
-BVH_RENAME = -Dsphere_intersect=reference_sphere_intersect -Dtriangle_intersect=reference_triangle_intersect
-BVH_OWN    = part3a_sphere_intersect part5_triangle_intersect
-BVH_REF    = $(BVH_OWN:%=$(BUILD)/tests/obj/renamed_%.o) \
-             $(filter-out $(BVH_OWN:%=$(BUILD)/sub/$(REF_DIR)/%.o),$(REF_OBJ))
-BVH_REF_ASAN = $(BVH_OWN:%=$(ASAN)/tests/obj/renamed_%.o) \
-               $(filter-out $(BVH_OWN:%=$(ASAN)/sub/$(REF_DIR)/%.o),$(REF_ASAN))
-$(BUILD)/tests/obj/renamed_%.o: $(REF_DIR)/%.c $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $(BVH_RENAME) -Ilabs -c $< -o $@
-$(ASAN)/tests/obj/renamed_%.o: $(REF_DIR)/%.c $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(SANFLAGS) $(BVH_RENAME) -Ilabs -c $< -o $@
-$(BUILD)/tests/obj/test_bvh.o: tests/unit/test_bvh.c tests/unit/check.h $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $(THREADS) -Ilabs -c $< -o $@
-$(BUILD)/tests/test_bvh: $(BUILD)/tests/obj/test_bvh.o $(BVH_REF) $(UNIT_LIBS) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $(THREADS) $^ -o $@ $(LDLIBS)
-$(ASAN)/tests/test_bvh: tests/unit/test_bvh.c tests/unit/check.h $(BVH_REF_ASAN) $(UNIT_LIBS_ASAN) | $$(@D)/.
-	$(Q)$(CC) $(SAN_LINK) $(THREADS) -Ilabs $< $(BVH_REF_ASAN) $(UNIT_LIBS_ASAN) -o $@ $(LDLIBS)
-
-# test_hexfloat checks two headers of the grader's.
-$(BUILD)/tests/test_hexfloat $(ASAN)/tests/test_hexfloat: tests/grader/hexfloat.h tests/grader/decimal.h
-
-# The unit tests of the grader's sandbox, include scan, memo, test files'
-# reader (cases.c) and judging of answers (check.c) link the part alone,
-# and what it needs of another part (a prerequisite .c below).
-$(GRADER_UNITS:%=$(BUILD)/tests/test_%): $(BUILD)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
-                                         tests/grader/%.c $(GRADER_HDR) $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs $(filter %.c,$^) $(BUILD)/kit/libkit.a -o $@ $(LDLIBS)
-$(GRADER_UNITS:%=$(ASAN)/tests/test_%): $(ASAN)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
-                                        tests/grader/%.c $(GRADER_HDR) $(ASAN)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(SAN_LINK) -Ilabs $(filter %.c,$^) $(ASAN)/kit/libkit.a -o $@ $(LDLIBS)
-# check.c reads the kinds of cases from cases.c.
-$(BUILD)/tests/test_check $(ASAN)/tests/test_check: tests/grader/cases.c
-# terminal.c and lookalike.c read UTF-8 with tests/tools/utf8.c.
-$(BUILD)/tests/test_terminal $(ASAN)/tests/test_terminal: tests/tools/utf8.c
-$(BUILD)/tests/test_lookalike $(ASAN)/tests/test_lookalike: tests/tools/utf8.c
-# The sandbox runs its children in the jail (jail.c), its shell scripts
-# through init_sh beside it (built plain in both builds: a sanitized
-# program does not fit a test's memory limit).
-$(BUILD)/tests/test_sandbox $(ASAN)/tests/test_sandbox: tests/grader/jail.c
-$(BUILD)/tests/test_sandbox: | $(BUILD)/tests/init_sh
-$(ASAN)/tests/test_sandbox: | $(ASAN)/tests/init_sh
-$(BUILD)/tests/init_sh $(ASAN)/tests/init_sh: tests/unit/init_sh.c tests/grader/harness_init.h | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $< -o $@
-# own_headers.c reads the names with include_scan.c.
-$(BUILD)/tests/test_own_headers $(ASAN)/tests/test_own_headers: tests/grader/include_scan.c
-# The hidden tests' unit test (instructor's kit only) links them, the
-# oracle, the grader's library (the tests' lists and their judge) and the
-# reference, which it holds up against the mistakes; sanitized, it draws
-# a tenth of the seeds (what it checks there is the code, not the seeds).
-$(BUILD)/tests/test_hidden: tests/unit/test_hidden.c tests/unit/check.h $(BUILD)/grader/hidden.o $(REF_OBJ) \
-                            $(BUILD)/oracle/liboracle.a $(BUILD)/grader/libgrader.a $(BUILD)/tools/libtools.a \
-                            $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs $(filter-out %.h,$^) -o $@ $(LDLIBS)
-$(ASAN)/tests/test_hidden: tests/unit/test_hidden.c tests/unit/check.h $(ASAN)/grader/hidden.o $(REF_ASAN) \
-                           $(ASAN)/oracle/liboracle.a $(GRADER_LIB_SRC:tests/grader/%.c=$(ASAN)/grader/%.o) \
-                           $(ASAN)/tools/libtools.a \
-                           $(ASAN)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(SAN_LINK) -DSEEDS=30 -DSEEDS_FLAT=100 -Ilabs $(filter-out %.h,$^) -o $@ $(LDLIBS)
-# The figures' unit test (instructor's kit only) draws every case of the
-# public tests and of some seeds' hidden tests with the grader's figures;
-# sanitized, one seed's.
-FIGURE_LIBS = $(BUILD)/grader/hidden.o $(BUILD)/oracle/liboracle.a $(BUILD)/grader/libgrader.a \
-              $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
-$(BUILD)/tests/test_figures: tests/unit/test_figures.c tests/unit/check.h $(FIGURE_LIBS) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs $(filter-out %.h,$^) -o $@ $(LDLIBS)
-$(ASAN)/tests/test_figures: tests/unit/test_figures.c tests/unit/check.h $(ASAN)/grader/hidden.o \
-                            $(ASAN)/oracle/liboracle.a $(GRADER_LIB_SRC:tests/grader/%.c=$(ASAN)/grader/%.o) \
-                            $(ASAN)/tools/libtools.a $(ASAN)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(SAN_LINK) -DSEEDS=1 -Ilabs $(filter-out %.h,$^) -o $@ $(LDLIBS)
-
 # ---- bench: speed against accuracy (tests/bench) ----------------------------
-# `make bench` writes out/bench/: results.csv, report.md, plot.svg and more
-# (about a minute and a half).  tests/suites/bench.sh runs `bench --quick`.  It links the
-# reference solutions and the oracle, so only the instructor's kit has it.
+# `make bench` writes out/bench/: results.csv, report.md, plot.svg and more.
+# tests/suites/bench.sh runs `bench --quick`.  It links the reference
+# solutions and the oracle, so only the instructor's kit has it.
 BENCH_SRC  = $(wildcard tests/bench/*.c)
-BENCH_OBJ  = $(BENCH_SRC:tests/bench/%.c=$(BUILD)/bench/%.o)
+BENCH_OBJ  = $(BENCH_SRC:tests/bench/%.c=$(BUILD)/bench/%.o) $(STAGES:%=$(BUILD)/bench/solutions/%.o)
 HAVE_BENCH := $(and $(HAVE_SOLUTIONS),$(wildcard tests/oracle/hard.h),$(BENCH_SRC))
-# Where the linker happens to put the loops moved the reference/textbook
-# ratio by 9%: of six random orders of the same objects, three gave 1.00x
-# and three 1.10x.  With every function and loop of the bench and of its
-# own copies of the reference's objects starting on a 64-byte boundary,
-# six orders gave 0.997x-1.005x (tests/bench/README.md).  Used where the
-# compiler takes the flags.  The bench's objects depend on the Makefile,
-# whose flags its figures depend on.
+# Every function and loop of the bench and of its own copies of the
+# reference's objects starts on a 64-byte boundary, so that where the linker
+# puts them does not move its ratios (tests/bench/README.md); where the
+# compiler takes the flags.  The bench's figures depend on the flags, so its
+# objects depend on the Makefile.
 BENCH_ALIGN = $(shell $(CC) -falign-functions=64 -falign-loops=64 -Werror -x c -c /dev/null -o /dev/null 2>/dev/null && echo -falign-functions=64 -falign-loops=64)
 $(BUILD)/bench/%.o: tests/bench/%.c $(wildcard tests/bench/*.h) $(wildcard tests/oracle/*.h) $(KIT_HDR) Makefile | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $(BENCH_ALIGN) -Ilabs -c $< -o $@
@@ -538,26 +360,19 @@ $(BUILD)/bench/solutions/%.o: solutions/%.c $(KIT_HDR) Makefile | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $(BENCH_ALIGN) -Ilabs -c $< -o $@
 # The fast path's sqrt is vectorised only if it need not set errno (no result changes).
 $(BUILD)/bench/fastpath.o $(BUILD)/bench/measure.o: CFLAGS += -fno-math-errno
-$(BUILD)/bin/bench: $(BENCH_OBJ) $(STAGES:%=$(BUILD)/bench/solutions/%.o) \
-                    $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a | $$(@D)/.
+$(BUILD)/bin/bench: $(BENCH_OBJ) $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 all: $(if $(HAVE_BENCH),$(BUILD)/bin/bench)
 # `make bench` also measures the ratio in bench-reordered, the same objects
 # linked in the reverse order, and bench's report gives both: the check
-# that the placement no longer moves it (tests/bench/README.md).
+# that the placement does not move it (tests/bench/README.md).
 reverse = $(if $(1),$(call reverse,$(wordlist 2,$(words $(1)),$(1))) $(firstword $(1)))
-$(BUILD)/bin/bench-reordered: $(BENCH_OBJ) $(STAGES:%=$(BUILD)/bench/solutions/%.o) \
-                              $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a | $$(@D)/.
+$(BUILD)/bin/bench-reordered: $(BENCH_OBJ) $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $(call reverse,$(filter %.o,$^)) $(filter %.a,$^) -o $@ $(LDLIBS)
 bench: $(BUILD)/bin/bench $(BUILD)/bin/bench-reordered $(BUILD)/sub/solutions/render
 	@mkdir -p out/bench
 	$(BUILD)/bin/bench-reordered --ratio-only >out/bench/placement.txt.new && mv out/bench/placement.txt.new out/bench/placement.txt
 	$(BUILD)/bin/bench --out out/bench --placement out/bench/placement.txt
-
-# ---- the kit's own tests ---------------------------------------------------
-# The renderer with the reference stages, sanitized (tests/suites/render_cli.sh).
-$(ASAN)/bin/render-solutions: $(ASAN)/kit/render_main.o $(REF_ASAN) $(ASAN)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(SAN_LINK) $(THREADS) $^ -o $@ $(LDLIBS)
 
 # ---- fuzzing the readers of untrusted input (tests/fuzz) --------------------
 # `make fuzz [FUZZ="scene png ..."] [FUZZ_SECONDS=n]` builds each target
@@ -583,6 +398,115 @@ fuzz:
 	@if [ -f tests/fuzz/run.sh ]; then FUZZ_OUT=$(OUT_ROOT)/fuzz FUZZ_CC=$(FUZZ_CC) sh tests/fuzz/run.sh $(FUZZ); \
 	 else echo "make fuzz: only the instructor's kit has the fuzz targets (tests/fuzz)"; exit 2; fi
 
+# ---- the rules of both builds -----------------------------------------------
+# BUILD_RULES's $(1) is a build's folder, $(2) and $(3) name the variables
+# with its flags for compiling and for linking; $$ in it is a $ that make
+# expands when it runs the rule.
+define BUILD_RULES
+$(1)/kit/%.o: labs/kit/%.c $(KIT_HDR) | $(1)/kit/.
+	$$(Q)$$(CC) $$($(2)) $$(THREADS) -c $$< -o $$@
+$(1)/sub/labs/%.o: labs/%.c $(KIT_HDR) | $(1)/sub/labs/.
+	$$(Q)$$(CC) $$($(2)) -Ilabs -c $$< -o $$@
+$(1)/sub/solutions/%.o: solutions/%.c $(KIT_HDR) | $(1)/sub/solutions/.
+	$$(Q)$$(CC) $$($(2)) -Ilabs -c $$< -o $$@
+$(1)/oracle/%.o: tests/oracle/%.c $(wildcard tests/oracle/*.h) $(KIT_HDR) | $(1)/oracle/.
+	$$(Q)$$(CC) $$($(2)) -Ilabs -c $$< -o $$@
+$(1)/tools/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) $(KIT_HDR) | $(1)/tools/.
+	$$(Q)$$(CC) $$($(2)) -Ilabs -c $$< -o $$@
+$(1)/grader/%.o: tests/grader/%.c $(GRADER_HDR) | $(1)/grader/.
+	$$(Q)$$(CC) $$($(2)) -Ilabs -c $$< -o $$@
+$(1)/grader/hidden.o: tests/hidden/hidden.c $(GRADER_HDR) $(wildcard tests/oracle/*.h) | $(1)/grader/.
+	$$(Q)$$(CC) $$($(2)) -Ilabs -c $$< -o $$@
+$(1)/grader/grade_main.o: tests/grader/grade_main.c $(GRADER_HDR) $(wildcard tests/oracle/*.h) | $(1)/grader/.
+	$$(Q)$$(CC) $$($(2)) $$(GRADE_DEFS) -DGRADER_BUILD='"$$(BUILD)"' -Ilabs -c $$< -o $$@
+$(1)/kit/libkit.a: $(KIT_SRC:labs/kit/%.c=$(1)/kit/%.o)
+$(1)/oracle/liboracle.a: $(ORACLE_SRC:tests/oracle/%.c=$(1)/oracle/%.o)
+$(1)/tools/libtools.a: $(TOOLS_SRC:tests/tools/%.c=$(1)/tools/%.o)
+$(1)/grader/libgrader.a: $(GRADER_LIB_SRC:tests/grader/%.c=$(1)/grader/%.o)
+
+# The grader.  Both builds' grade use the plain build's harnesses and runners.
+$(1)/bin/grade: $(1)/grader/grade_main.o $(if $(GRADE_DEFS),$(1)/grader/hidden.o $(1)/oracle/liboracle.a) \
+                $(1)/grader/libgrader.a $(1)/tools/libtools.a $(1)/kit/libkit.a \
+                | $(HARNESS) $(GRADER_REF) $(RUNNERS) $(1)/bin/.
+	$$(Q)$$(CC) $$($(3)) $$^ -o $$@ $$(LDLIBS)
+$(1)/bin/sortsubs: $(1)/grader/sortsubs_main.o $(1)/grader/libgrader.a $(1)/tools/libtools.a \
+                   $(1)/kit/libkit.a | $(1)/bin/.
+	$$(Q)$$(CC) $$($(3)) $$^ -o $$@ $$(LDLIBS)
+
+# The unit tests (tests/unit) but those with rules of their own.
+$(UNIT_LINKED:%=$(1)/tests/%): $(1)/tests/%: tests/unit/%.c tests/unit/check.h $(call ref_obj,$(1)) \
+                                              $(call unit_libs,$(1)) | $(1)/tests/.
+	$$(Q)$$(CC) $$($(3)) $$(THREADS) -Ilabs $$(filter-out %.h,$$^) -o $$@ $$(LDLIBS)
+# test_hexfloat checks two headers of the grader's.
+$(1)/tests/test_hexfloat: tests/grader/hexfloat.h tests/grader/decimal.h
+
+# test_bvh links its own sphere_intersect and triangle_intersect, which
+# pass each call on to the reference's (compiled under other names) or to
+# deliberately wrong ones; the other parts are the reference's.
+$(1)/tests/obj/renamed_%.o: $(REF_DIR)/%.c $(KIT_HDR) | $(1)/tests/obj/.
+	$$(Q)$$(CC) $$($(2)) $$(BVH_RENAME) -Ilabs -c $$< -o $$@
+$(1)/tests/test_bvh: tests/unit/test_bvh.c tests/unit/check.h $(BVH_OWN:%=$(1)/tests/obj/renamed_%.o) \
+                     $(filter-out $(BVH_OWN:%=$(1)/sub/$(REF_DIR)/%.o),$(call ref_obj,$(1))) \
+                     $(call unit_libs,$(1)) | $(1)/tests/.
+	$$(Q)$$(CC) $$($(3)) $$(THREADS) -Ilabs $$(filter-out %.h,$$^) -o $$@ $$(LDLIBS)
+
+# The unit tests of the grader's sandbox, include scan, memo, test files'
+# reader (cases.c), judging of answers (check.c) and so on link the part
+# alone, and what it needs of another part (a prerequisite .c below).
+$(GRADER_UNITS:%=$(1)/tests/test_%): $(1)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
+                                     tests/grader/%.c $(GRADER_HDR) $(1)/kit/libkit.a | $(1)/tests/.
+	$$(Q)$$(CC) $$($(3)) -Ilabs $$(filter %.c,$$^) $(1)/kit/libkit.a -o $$@ $$(LDLIBS)
+# check.c reads the kinds of cases from cases.c.
+$(1)/tests/test_check: tests/grader/cases.c
+# terminal.c and lookalike.c read UTF-8 with tests/tools/utf8.c.
+$(1)/tests/test_terminal $(1)/tests/test_lookalike: tests/tools/utf8.c
+# own_headers.c reads the names with include_scan.c.
+$(1)/tests/test_own_headers: tests/grader/include_scan.c
+# The sandbox runs its children in the jail (jail.c), its shell scripts
+# through init_sh beside it (built plain in both builds: a sanitized
+# program does not fit a test's memory limit).
+$(1)/tests/test_sandbox: tests/grader/jail.c | $(1)/tests/init_sh
+$(1)/tests/init_sh: tests/unit/init_sh.c tests/grader/harness_init.h | $(1)/tests/.
+	$$(Q)$$(CC) $$(CFLAGS) $$< -o $$@
+
+# The hidden tests' unit test (instructor's kit only) links them, the
+# oracle, the grader's library (the tests' lists and their judge) and the
+# reference, which it holds up against the mistakes.  The figures' unit
+# test (instructor's kit only) draws every case of the public tests and of
+# some seeds' hidden tests with the grader's figures.  SEEDS may set how
+# many seeds they draw (below).
+$(1)/tests/test_hidden: tests/unit/test_hidden.c tests/unit/check.h $(1)/grader/hidden.o $(call ref_obj,$(1)) \
+                        $(call figure_libs,$(1)) | $(1)/tests/.
+	$$(Q)$$(CC) $$($(3)) $$(SEEDS) -Ilabs $$(filter-out %.h,$$^) -o $$@ $$(LDLIBS)
+$(1)/tests/test_figures: tests/unit/test_figures.c tests/unit/check.h $(1)/grader/hidden.o \
+                         $(call figure_libs,$(1)) | $(1)/tests/.
+	$$(Q)$$(CC) $$($(3)) $$(SEEDS) -Ilabs $$(filter-out %.h,$$^) -o $$@ $$(LDLIBS)
+endef
+
+# What the unit tests link: the reference (in the student kit the
+# skeletons) and the kit's libraries.
+UNIT_NAMES = $(basename $(notdir $(wildcard tests/unit/test_*.c)))
+REF_DIR    = $(if $(HAVE_SOLUTIONS),solutions,labs)
+ref_obj    = $(STAGES:%=$(1)/sub/$(REF_DIR)/%.o)
+unit_libs  = $(if $(HAVE_ORACLE),$(1)/oracle/liboracle.a) $(1)/tools/libtools.a $(1)/kit/libkit.a
+figure_libs = $(1)/oracle/liboracle.a $(1)/grader/libgrader.a $(1)/tools/libtools.a $(1)/kit/libkit.a
+GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers lmsname terminal csv
+UNIT_LINKED = $(filter-out $(GRADER_UNITS:%=test_%) test_hidden test_figures test_bvh,$(UNIT_NAMES))
+BVH_RENAME = -Dsphere_intersect=reference_sphere_intersect -Dtriangle_intersect=reference_triangle_intersect
+BVH_OWN    = part3a_sphere_intersect part5_triangle_intersect
+
+$(eval $(call BUILD_RULES,$(BUILD),CFLAGS,CFLAGS))
+$(eval $(call BUILD_RULES,$(ASAN),SANFLAGS,SAN_LINK))
+# Sanitized, the hidden tests' unit test draws a tenth of the seeds and the
+# figures' one seed's cases: what it checks there is the code, not the seeds.
+$(ASAN)/tests/test_hidden: SEEDS = -DSEEDS=30 -DSEEDS_FLAT=100
+$(ASAN)/tests/test_figures: SEEDS = -DSEEDS=1
+unit-tests: $(UNIT_NAMES:%=$(BUILD)/tests/%)
+
+# The renderer with the reference stages, sanitized (tests/suites/render_cli.sh).
+$(ASAN)/bin/render-solutions: $(ASAN)/kit/render_main.o $(call ref_obj,$(ASAN)) $(ASAN)/kit/libkit.a | $$(@D)/.
+	$(Q)$(CC) $(SAN_LINK) $(THREADS) $^ -o $@ $(LDLIBS)
+
 # ---- the grader itself under the sanitizers (`make sanitize-grader`) --------
 # Builds the grader with the address, undefined-behaviour and leak
 # sanitizers and runs the suites that grade with it (GRADE= names it to
@@ -590,21 +514,7 @@ fuzz:
 # hostile submissions, their pages, results and gradebooks; and the sorter
 # of a class's download (SORTSUBS=), on the downloads its suite makes.  The runners
 # and harnesses it uses are the plain build's (a sanitized test would not
-# fit the tests' memory limit).  Not part of `make test`: about a minute.
-GRADER_ASAN_OBJ = $(GRADER_LIB_SRC:tests/grader/%.c=$(ASAN)/grader/%.o)
-GRADE_EXTRA_ASAN = $(if $(GRADE_DEFS),$(ASAN)/grader/hidden.o $(ASAN)/oracle/liboracle.a)
-$(ASAN)/grader/%.o: tests/grader/%.c $(GRADER_HDR) | $$(@D)/.
-	$(Q)$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
-$(ASAN)/grader/grade_main.o: tests/grader/grade_main.c $(GRADER_HDR) $(wildcard tests/oracle/*.h) | $$(@D)/.
-	$(Q)$(CC) $(SANFLAGS) $(GRADE_DEFS) -DGRADER_BUILD='"$(BUILD)"' -Ilabs -c $< -o $@
-$(ASAN)/grader/hidden.o: tests/hidden/hidden.c $(GRADER_HDR) $(wildcard tests/oracle/*.h) | $$(@D)/.
-	$(Q)$(CC) $(SANFLAGS) -Ilabs -c $< -o $@
-$(ASAN)/bin/grade: $(ASAN)/grader/grade_main.o $(GRADE_EXTRA_ASAN) $(GRADER_ASAN_OBJ) \
-                   $(ASAN)/tools/libtools.a $(ASAN)/kit/libkit.a | grader $$(@D)/.
-	$(Q)$(CC) $(SAN_LINK) $^ -o $@ $(LDLIBS)
-$(ASAN)/bin/sortsubs: $(ASAN)/grader/sortsubs_main.o $(GRADER_ASAN_OBJ) $(ASAN)/tools/libtools.a \
-                      $(ASAN)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(SAN_LINK) $^ -o $@ $(LDLIBS)
+# fit the tests' memory limit).  Not part of `make test`.
 SANITIZE_SUITES = grader.sh report.sh class_page.sh limits.sh signals.sh jail.sh sort_submissions.sh
 ifneq ($(wildcard tests/suites/grader.sh),)
 sanitize-grader: all $(ASAN)/bin/grade $(ASAN)/bin/sortsubs
@@ -616,7 +526,7 @@ sanitize-grader:
 endif
 
 # What the tests need built (`make -j2 test-build` builds it on two cores).
-test-build: all $(UNIT_ASAN) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)
+test-build: all $(UNIT_NAMES:%=$(ASAN)/tests/%) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)
 test: test-build
 	@sh tests/run.sh
 
