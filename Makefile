@@ -6,31 +6,24 @@ CC        ?= cc
 OPT       ?= -O2
 STD        = -std=c11
 WARN       = -Wall -Wextra -Wpedantic -Wshadow -Wstrict-prototypes
-# Never contract a*b+c; never -ffast-math.
-FPFLAGS    = -ffp-contract=off
+FPFLAGS    = -ffp-contract=off          # never contract a*b+c; never -ffast-math
 CFLAGS     = $(STD) $(OPT) $(FPFLAGS) $(WARN)
 SANFLAGS   = $(STD) -O1 -g $(FPFLAGS) $(WARN) -fsanitize=address,undefined \
              -fno-omit-frame-pointer -fno-sanitize-recover=all
-# Linking a sanitized program: gcc's UBSan runtime is linked in statically
-# (-static-libubsan), which spares LeakSanitizer reading through that shared
-# library's globals at every exit.  clang has no such option (it links its
-# sanitizers' runtimes statically already), so the recipe asks the compiler.
+# gcc's UBSan runtime linked statically spares LeakSanitizer reading through
+# its shared copy at every exit; clang has no such option, so the recipe asks.
 SAN_LINK   = $(SANFLAGS) $$($(CC) -static-libubsan -E -x c /dev/null >/dev/null 2>&1 && echo -static-libubsan)
 THREADS    = -pthread
 RENDER_LTO = -flto                      # the renderer inlines across the stage files; empty to disable
 LDLIBS     = -lm
 SYSTEM    := $(shell uname -s)
-# The archiver.  On Linux, gcc-ar where it is on PATH: GNU ar alone loads
-# every linker plugin installed beside it (all of LLVM where clang's
-# LLVMgold is one), gcc-ar only gcc's; the archive is the same.
+# On Linux gcc-ar where it is on PATH: GNU ar alone loads every linker
+# plugin beside it (all of LLVM where clang's is one).
 KIT_AR    ?= $(if $(filter Linux,$(SYSTEM)),$(firstword $(wildcard $(addsuffix /gcc-ar,$(subst :, ,$(PATH)))) ar),ar)
 
-# A copy of the kit with Windows line ends (CRLF), as Git for Windows checks
-# files out where core.autocrlf is set and no .gitattributes says LF (the
-# kit's does; a template made from an older kit may not): the shell cannot
-# run its scripts, and the grader refuses its own test files.  Say so, and
-# how to mend it without losing work, before anything else fails ($(empty)
-# keeps the commands' indent, which make would strip).
+# A copy with Windows line ends (CRLF: Git for Windows, where no .gitattributes
+# says LF) cannot run its scripts: say so, and how to mend it, before anything
+# else fails ($(empty) keeps the commands' indent).
 empty :=
 ifneq ($(shell grep -l "$$(printf '\r')" tests/run.sh 2>/dev/null),)
 $(info this copy of the kit has Windows line ends (CRLF), which the shell cannot run:)
@@ -42,9 +35,8 @@ $(info or clone the repository again from a WSL (Linux) terminal.)
 $(error the kit's files have Windows line ends)
 endif
 
-# Quiet by default: the kit's own build commands are not echoed, and a
-# stage file (the file a student edits) is named as make render compiles
-# it.  V=1 echoes every command.  Warnings and errors print either way.
+# Quiet unless V=1: the kit's own commands are not echoed, a stage file is
+# named as make render compiles it; warnings and errors print either way.
 V         ?=
 Q          = $(if $(filter 1,$(V)),,@)
 SAY_CC     = $(if $(Q),@echo "  CC      $<")
@@ -54,22 +46,18 @@ SAY_CC     = $(if $(Q),@echo "  CC      $<")
 SUBMISSION ?= labs
 SCENE      ?= labs/scenes/default.scene
 
-# Two builds: $(BUILD), plain, and $(ASAN), with the sanitizers.
-# OUT_ROOT=dir puts them in dir/build and dir/asan (the portability suite
-# builds with a second compiler beside the first).
+# Two builds, plain and sanitized: OUT_ROOT=dir puts them in dir/build and
+# dir/asan (the portability suite builds with a second compiler there).
 OUT_ROOT  ?= out
 BUILD      = $(OUT_ROOT)/build
 ASAN       = $(OUT_ROOT)/asan
 STAGES     = part1_image_plane part2_pixel_coordinates part3a_sphere_intersect part3b_ray_color \
              part4_plane_intersect part5_triangle_intersect
+# What the student kit does not have.
 HAVE_SOLUTIONS := $(wildcard solutions/part1_image_plane.c)
-# In the instructor's kit the grader also draws the hidden tests with the
-# oracle (tests/oracle, tests/hidden); the student kit has neither.
 HAVE_ORACLE := $(wildcard tests/oracle/oracle.h)
 HAVE_HIDDEN := $(wildcard tests/hidden/hidden.c)
-
-# The libraries' sources: each folder's C files but its programs (*_main.c)
-# and, for the grader, its harnesses (the programs that run a student's code).
+# Each library is its folder's C files but the programs (and harnesses).
 KIT_SRC    = $(filter-out %_main.c,$(wildcard labs/kit/*.c))
 KIT_HDR    = $(wildcard labs/*.h labs/kit/*.h)
 ORACLE_SRC = $(filter-out %_main.c,$(wildcard tests/oracle/*.c))
@@ -111,10 +99,9 @@ endif
 
 # ---- renderer and compare, per submission ----------------------------------
 # A submission's build lives in out/build/sub/<name>: labs and solutions by
-# name, any other directory by its absolute path with / turned into _.
-# Stage files the submission lacks come from labs/ (the skeletons).  A
-# folder with no stage file of its own but some in its labs/ (a repository
-# made from the student kit) is rendered from there, as the grader grades it.
+# name, any other folder by its absolute path with / turned into _.  Stage
+# files it lacks come from labs/ (the skeletons); a folder with none but some
+# in its labs/ (a student kit's repository) is rendered from there.
 sub_name   = $(if $(filter labs solutions,$(1)),$(1),$(subst /,_,$(abspath $(1))))
 stage_src  = $(firstword $(wildcard $(2)/$(1).c) labs/$(1).c)
 stage_dir  = $(if $(wildcard $(STAGES:%=$(1)/%.c)),$(1),$(if $(wildcard $(STAGES:%=$(1)/labs/%.c)),$(1)/labs,$(1)))
@@ -122,13 +109,11 @@ SUB_DIR   := $(call stage_dir,$(SUBMISSION))
 SUB_NAME  := $(call sub_name,$(SUB_DIR))
 SUB_BUILD  = $(BUILD)/sub/$(SUB_NAME)
 
-# The renderer's own objects (lto/) are built with link-time optimisation,
-# so the per-pixel calls into the stage files can be inlined.
-# A stage file the student edits: bin/stagecheck first refuses one the
-# grader would not build (a header of the student's own: it compiles each
-# stage file alone; tests/grader/own_headers.h).  One that does not compile:
-# bin/lookalike then names what in it only looks like C (a non-breaking
-# space, curly quotes...), as the grader does (tests/grader/lookalike.h).
+# The renderer's objects (lto/) are built for link-time optimisation, so
+# the per-pixel calls into the stage files can be inlined.  A student's
+# stage file: bin/stagecheck first refuses one the grader would not build (a
+# header of the student's own, tests/grader/own_headers.h); if it does not
+# compile, bin/lookalike names what in it only looks like C (lookalike.h).
 STAGE_CC = $(BUILD)/bin/stagecheck $< && \
            { $(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@ || { $(BUILD)/bin/lookalike $<; exit 1; }; }
 STAGE_TOOLS = $(BUILD)/bin/stagecheck $(BUILD)/bin/lookalike
@@ -144,12 +129,9 @@ $(SUB_BUILD)/lto/%.o: $$(call stage_src,$$*,$(SUB_DIR)) $(KIT_HDR) | $$(@D)/. $(
 endif
 $(BUILD)/kit/lto/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) -c $< -o $@
-RENDER_OBJ = $(BUILD)/kit/lto/render_main.o $(BUILD)/kit/lto/render.o $(BUILD)/kit/lto/image.o \
-             $(BUILD)/kit/lto/closest.o $(BUILD)/kit/lto/bvh.o
-# A link that fails: bin/linkcheck then says what the linker's message
-# means for the stage files (tests/grader/linkcheck_main.c): a helper
-# defined in two of them, most often, which make render cannot link and the
-# grader, building each alone, does not mind.
+RENDER_OBJ = $(addprefix $(BUILD)/kit/lto/,render_main.o render.o image.o closest.o bvh.o)
+# A link that fails: bin/linkcheck says what the linker's message means for
+# the stage files (most often a helper defined in two of them).
 render_src = $(if $(filter labs solutions,$(1)),$(STAGES:%=$(1)/%.c),\
                  $(foreach s,$(STAGES),$(call stage_src,$(s),$(SUB_DIR))))
 $(BUILD)/sub/%/render: $(RENDER_OBJ) \
@@ -158,12 +140,9 @@ $(BUILD)/sub/%/render: $(RENDER_OBJ) \
 	$(Q)$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) $^ -o $@ $(LDLIBS) 2>$@.log || \
 	    { cat $@.log >&2; $(BUILD)/bin/linkcheck $@.log $(call render_src,$*); rm -f $@.log; exit 1; }; \
 	    cat $@.log >&2; rm -f $@.log
-$(BUILD)/bin/compare: $(BUILD)/kit/compare_main.o $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 
 SCENE_NAME = $(basename $(notdir $(SCENE)))
 OUT_RENDER = $(if $(OUT),$(OUT),out/$(SCENE_NAME).png)
-
 # SUBMISSION must be a folder: a mistyped one is refused, not drawn with the
 # skeletons (the stage files a submission lacks) over out/default.png.
 submission-dir:
@@ -190,82 +169,62 @@ compare: submission-dir $(SUB_BUILD)/render $(BUILD)/bin/compare $(if $(HAVE_SOL
 	$(BUILD)/bin/compare out/compare/$(SCENE_NAME)-submission.png $(REF_IMAGE) \
 	    -o out/compare/$(SCENE_NAME).png
 
-# ---- instructor tools: archives (zip, tar.gz), JSON, the oracle -----------
-$(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a | $$(@D)/.
+# ---- the plain build's programs: each links what its own line names --------
+PROGRAMS   = compare pack htmlcheck gentests accuracy lookalike linkcheck stagecheck bench
+$(PROGRAMS:%=$(BUILD)/bin/%): | $(BUILD)/bin/.
 	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+$(BUILD)/bin/compare: $(BUILD)/kit/compare_main.o $(BUILD)/kit/libkit.a
+$(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
 # The report page's checker (tests/suites/report.sh).
-$(BUILD)/bin/htmlcheck: $(BUILD)/tools/htmlcheck_main.o | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
-# The public tests' expected values, from the oracle's double-double answers.
+$(BUILD)/bin/htmlcheck: $(BUILD)/tools/htmlcheck_main.o
+# The public tests' expected values, from the oracle (commit the result).
 $(BUILD)/bin/gentests: $(BUILD)/oracle/gentests_main.o $(BUILD)/oracle/liboracle.a \
-                       $(BUILD)/grader/libgrader.a $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
-# The reference solutions' accuracy on the hard cases (tables for the README).
-$(BUILD)/bin/accuracy: $(BUILD)/oracle/accuracy_main.o $(BUILD)/oracle/liboracle.a \
-                       $(STAGES:%=$(BUILD)/sub/solutions/%.o) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
-# (commit the result)
+                       $(BUILD)/grader/libgrader.a $(BUILD)/kit/libkit.a
 public-tests: $(BUILD)/bin/gentests
 	$(BUILD)/bin/gentests tests/public
-
-# ---- the autograder (tests/grader) ------------------------------------------
-HARNESS    = $(foreach k,1 2 3 4 5 6 render,$(BUILD)/grader/harness_$(k).o)
-GRADER_REF = $(if $(HAVE_SOLUTIONS),$(STAGES:%=$(BUILD)/grader/ref_%.o))
-GRADE_DEFS = $(if $(and $(HAVE_ORACLE),$(HAVE_HIDDEN)),-DGRADER_ORACLE)
-
-# On Linux each part's program is also prebuilt as a runner (harness_load.c):
-# the grader then builds a student's file as a shared object, which costs a
-# fraction of linking a whole program, and the runner loads it (build.c).
-# runner_K holds the harness for Part K (HARNESS_PART's numbering) and, in
-# the instructor's kit, the reference for every other part.
-LOAD_RUNNERS := $(if $(filter Linux,$(SYSTEM)),1)
-RUNNERS    = $(if $(LOAD_RUNNERS),$(foreach k,1 2 3 4 5 6,$(BUILD)/grader/runner_$(k)))
-RUNNER_DEFS = $(if $(HAVE_SOLUTIONS),-DHARNESS_REFS)
-$(BUILD)/grader/harness_load_%.o: tests/grader/harness.c tests/grader/harness_load.h \
-                                  tests/grader/harness_init.h tests/grader/hexfloat.h \
-                                  $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -DHARNESS_LOAD $(RUNNER_DEFS) -c $< -o $@
-$(BUILD)/grader/harness_load.o: tests/grader/harness_load.c tests/grader/harness_load.h \
-                                tests/grader/contract.h $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/grader/harness_%.o: tests/grader/harness.c tests/grader/hexfloat.h tests/grader/harness_init.h \
-                             $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -c $< -o $@
-# The report page's render program (build_render): harness_render.c draws a scene.
-$(BUILD)/grader/harness_render.o: tests/grader/harness_render.c tests/grader/harness_init.h \
-                                 $(KIT_HDR) | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-$(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
-	$(Q)cp $< $@
-# (runner_3, Part 3a's, leaves out Part 3b's reference too: it calls
-# sphere_intersect, which only the student's object defines.)
-runner_refs = $(if $(HAVE_SOLUTIONS),$(filter-out $(BUILD)/grader/ref_$(word $(1),$(STAGES)).o \
-              $(if $(filter 3,$(1)),$(BUILD)/grader/ref_part3b_ray_color.o),$(GRADER_REF)))
-define RUNNER_RULE
-$(BUILD)/grader/runner_$(1): $(BUILD)/grader/harness_load_$(1).o $(BUILD)/grader/harness_load.o \
-                           $(call runner_refs,$(1))
-	$(Q)$$(CC) $$(CFLAGS) -rdynamic $$^ -o $$@ $$(LDLIBS) -ldl
-endef
-$(foreach k,1 2 3 4 5 6,$(eval $(call RUNNER_RULE,$(k))))
+# The reference solutions' accuracy on the hard cases (tables for the README).
+$(BUILD)/bin/accuracy: $(BUILD)/oracle/accuracy_main.o $(BUILD)/oracle/liboracle.a \
+                       $(STAGES:%=$(BUILD)/sub/solutions/%.o)
 $(BUILD)/bin/lookalike: $(BUILD)/grader/lookalike_main.o $(BUILD)/grader/lookalike.o \
-                        $(BUILD)/tools/utf8.o $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
-$(BUILD)/bin/linkcheck: $(BUILD)/grader/linkcheck_main.o $(BUILD)/grader/linkmsg.o \
-                        $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+                        $(BUILD)/tools/utf8.o $(BUILD)/kit/libkit.a
+$(BUILD)/bin/linkcheck: $(BUILD)/grader/linkcheck_main.o $(BUILD)/grader/linkmsg.o $(BUILD)/kit/libkit.a
 $(BUILD)/bin/stagecheck: $(BUILD)/grader/stagecheck_main.o $(BUILD)/grader/include_scan.o \
                          $(BUILD)/grader/own_headers.o $(BUILD)/grader/lookalike.o \
-                         $(BUILD)/tools/utf8.o $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+                         $(BUILD)/tools/utf8.o $(BUILD)/kit/libkit.a
 
+# ---- the autograder (tests/grader) ------------------------------------------
+# A part's program links its harness (HARNESS_PART=K for the K-th of STAGES)
+# with the student's file; harness_render.o draws the report page's scene.
+# The grader takes them and the reference's objects (ref_*.o) from here.
+PART_KS    = 1 2 3 4 5 6
+HARNESS    = $(PART_KS:%=$(BUILD)/grader/harness_%.o) $(BUILD)/grader/harness_render.o
+GRADER_REF = $(if $(HAVE_SOLUTIONS),$(STAGES:%=$(BUILD)/grader/ref_%.o))
+GRADE_DEFS = $(if $(and $(HAVE_ORACLE),$(HAVE_HIDDEN)),-DGRADER_ORACLE)
+$(PART_KS:%=$(BUILD)/grader/harness_%.o): $(BUILD)/grader/harness_%.o: tests/grader/harness.c \
+        tests/grader/hexfloat.h tests/grader/harness_init.h $(KIT_HDR) | $(BUILD)/grader/.
+	$(Q)$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -c $< -o $@
+$(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
+	$(Q)cp $< $@
+# On Linux each part's program is also prebuilt as a runner (harness_load.c)
+# that loads the student's file built as a shared object, which costs a
+# fraction of linking a whole program (build.c).  runner_K holds Part K's
+# harness and, in the instructor's kit, the reference of every other part
+# (but runner_3's Part 3b: it calls sphere_intersect, the student's).
+RUNNERS    = $(if $(filter Linux,$(SYSTEM)),$(PART_KS:%=$(BUILD)/grader/runner_%))
+runner_refs = $(if $(HAVE_SOLUTIONS),$(filter-out $(BUILD)/grader/ref_$(word $(1),$(STAGES)).o \
+              $(if $(filter 3,$(1)),$(BUILD)/grader/ref_part3b_ray_color.o),$(GRADER_REF)))
+$(PART_KS:%=$(BUILD)/grader/harness_load_%.o): $(BUILD)/grader/harness_load_%.o: tests/grader/harness.c \
+        tests/grader/harness_load.h tests/grader/harness_init.h tests/grader/hexfloat.h $(KIT_HDR) | $(BUILD)/grader/.
+	$(Q)$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -DHARNESS_LOAD $(if $(HAVE_SOLUTIONS),-DHARNESS_REFS) -c $< -o $@
+$(PART_KS:%=$(BUILD)/grader/runner_%): $(BUILD)/grader/runner_%: $(BUILD)/grader/harness_load_%.o \
+        $(BUILD)/grader/harness_load.o $$(call runner_refs,$$*)
+	$(Q)$(CC) $(CFLAGS) -rdynamic $^ -o $@ $(LDLIBS) -ldl
 # bin/sortsubs sorts a class's download from Canvas, Moodle or Blackboard
-# (one zip, or folder, of every student's files, each name carrying its
-# student) into one folder per submission for grade-all.
+# into one folder per submission for grade-all (sortsubs_main.c).
 grader: $(BUILD)/bin/grade $(HARNESS) $(GRADER_REF) $(RUNNERS) $(BUILD)/bin/sortsubs
 
-# The report page (out/report/index.html) shows the default scene drawn by
-# the submission beside the reference's picture: in the instructor's kit
-# rendered here with solutions/, in the student kit the stored
+# The report page shows the submission's default scene beside the
+# reference's: rendered here in the instructor's kit, in the student kit
 # labs/reference/default.png (the grader takes the first that exists).
 REPORT_REF = $(if $(HAVE_SOLUTIONS),$(BUILD)/report/default.png)
 $(BUILD)/report/default.png: $(BUILD)/sub/solutions/render labs/scenes/default.scene | $$(@D)/.
@@ -276,19 +235,15 @@ grade: grader $(REPORT_REF)
 	    $(if $(RESULTS),--results "$(RESULTS)") $(if $(FORMAT),--format "$(FORMAT)") \
 	    $(if $(CLASSROOM),--classroom "$(CLASSROOM)") $(if $(filter all,$(FAILURES)),--all-failures) \
 	    --report out/report
-
 grade-all: grader $(REPORT_REF)
 	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade-all SUBMISSIONS=dir [OUT=dir] [PREVIOUS=dir]"; exit 2; }
 	@$(BUILD)/bin/grade --all "$(SUBMISSIONS)" --out "$(if $(OUT),$(OUT),out/grades)" $(if $(JOBS),--jobs $(JOBS)) \
 	    $(if $(PREVIOUS),--previous "$(PREVIOUS)")
-
 sort-submissions: $(BUILD)/bin/sortsubs
 	@test -n "$(FROM)" && test -n "$(TO)" || { echo "usage: make sort-submissions FROM=download.zip|dir TO=newdir [MAX_MB=n] [MAX_RATIO=n]"; exit 2; }
 	@$(BUILD)/bin/sortsubs $(if $(MAX_MB),--max-mb "$(MAX_MB)") $(if $(MAX_RATIO),--max-ratio "$(MAX_RATIO)") "$(FROM)" "$(TO)"
 
 # ---- releases: the Gradescope bundle and the student kit ------------------
-SCENES     = $(wildcard labs/scenes/*.scene)
-
 # autograder.zip: setup.sh and run_autograder at its root, beside the kit.
 gradescope: $(BUILD)/bin/pack
 	rm -rf out/gradescope/bundle && mkdir -p out/gradescope/bundle
@@ -303,9 +258,8 @@ prairielearn:
 	sh tests/prairielearn/question.sh out/prairielearn/raytracer-lab
 
 # The student kit: skeletons, framework, scenes and their reference renders,
-# the grader with the public tests, the handouts.  No solutions/, no hidden
-# tests, no oracle, and none of the instructor's test material (nor the
-# hidden cases' seed from tests/weights.conf).
+# the grader with the public tests, the handouts.  No solutions/, hidden
+# tests, oracle or other instructor's test material, nor the hidden seed.
 KIT_DIR    = out/student-kit
 student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 	rm -rf $(KIT_DIR) && mkdir -p $(KIT_DIR)/tests/unit $(KIT_DIR)/labs/reference
@@ -319,21 +273,16 @@ student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 	mkdir -p $(KIT_DIR)/tests/grader/shipped && cp labs/raytracer.h labs/vec3.h $(KIT_DIR)/tests/grader/shipped/
 	cp tests/unit/check.h tests/unit/test_vec3.c tests/unit/test_png.c tests/unit/test_scene.c \
 	   $(KIT_DIR)/tests/unit/
-	for s in $(SCENES); do \
+	for s in $(wildcard labs/scenes/*.scene); do \
 	    $(BUILD)/sub/solutions/render $$s --quiet -o $(KIT_DIR)/labs/reference/$$(basename $$s .scene).png \
 	        || exit 1; \
 	done
 	$(BUILD)/bin/pack targz out/student-kit.tar.gz $(KIT_DIR) student-kit
 	@echo "wrote $(KIT_DIR)/ and out/student-kit.tar.gz"
 
-# The compile flags, for the suites' small helper programs (tests/lib/cc_build.sh).
-print-cflags:
-	@echo $(CFLAGS)
-
-# ---- handouts --------------------------------------------------------------
-# The handouts' figures, drawn by the kit from the reference and from faulty
-# variants (handouts/figures/make-figures.sh); commit the PNGs it writes.
-# The student kit has no solutions/: its figures come ready-made.
+# The handouts' figures, drawn from the reference and faulty variants
+# (handouts/figures/make-figures.sh; commit the PNGs); the student kit's
+# come ready-made.
 handouts: $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render $(BUILD)/bin/compare grader)
 ifneq ($(HAVE_SOLUTIONS),)
 	MAKE="$(MAKE)" sh handouts/figures/make-figures.sh
@@ -341,17 +290,19 @@ else
 	@echo "the figures are in handouts/figures (drawing them again needs solutions/)"
 endif
 
+# The compile flags, for the suites' small helper programs (tests/lib/cc_build.sh).
+print-cflags:
+	@echo $(CFLAGS)
+
 # ---- bench: speed against accuracy (tests/bench) ----------------------------
-# `make bench` writes out/bench/: results.csv, report.md, plot.svg and more.
-# tests/suites/bench.sh runs `bench --quick`.  It links the reference
-# solutions and the oracle, so only the instructor's kit has it.
+# out/bench/: results.csv, report.md, plot.svg and more.  It links the
+# reference and the oracle, so only the instructor's kit has it.
 BENCH_SRC  = $(wildcard tests/bench/*.c)
 BENCH_OBJ  = $(BENCH_SRC:tests/bench/%.c=$(BUILD)/bench/%.o) $(STAGES:%=$(BUILD)/bench/solutions/%.o)
 HAVE_BENCH := $(and $(HAVE_SOLUTIONS),$(wildcard tests/oracle/hard.h),$(BENCH_SRC))
-# Every function and loop of the bench and of its own copies of the
-# reference's objects starts on a 64-byte boundary, so that where the linker
-# puts them does not move its ratios (tests/bench/README.md); where the
-# compiler takes the flags.  The bench's figures depend on the flags, so its
+# Each function and loop starts on a 64-byte boundary (where the compiler
+# takes the flags), so that where the linker puts them does not move the
+# ratios (tests/bench/README.md).  The figures depend on the flags, so the
 # objects depend on the Makefile.
 BENCH_ALIGN = $(shell $(CC) -falign-functions=64 -falign-loops=64 -Werror -x c -c /dev/null -o /dev/null 2>/dev/null && echo -falign-functions=64 -falign-loops=64)
 $(BUILD)/bench/%.o: tests/bench/%.c $(wildcard tests/bench/*.h) $(wildcard tests/oracle/*.h) $(KIT_HDR) Makefile | $$(@D)/.
@@ -360,12 +311,10 @@ $(BUILD)/bench/solutions/%.o: solutions/%.c $(KIT_HDR) Makefile | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $(BENCH_ALIGN) -Ilabs -c $< -o $@
 # The fast path's sqrt is vectorised only if it need not set errno (no result changes).
 $(BUILD)/bench/fastpath.o $(BUILD)/bench/measure.o: CFLAGS += -fno-math-errno
-$(BUILD)/bin/bench: $(BENCH_OBJ) $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a | $$(@D)/.
-	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
+$(BUILD)/bin/bench: $(BENCH_OBJ) $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a
 all: $(if $(HAVE_BENCH),$(BUILD)/bin/bench)
-# `make bench` also measures the ratio in bench-reordered, the same objects
-# linked in the reverse order, and bench's report gives both: the check
-# that the placement does not move it (tests/bench/README.md).
+# bench-reordered, the same objects linked in reverse order, is the check
+# that their placement does not move the ratio.
 reverse = $(if $(1),$(call reverse,$(wordlist 2,$(words $(1)),$(1))) $(firstword $(1)))
 $(BUILD)/bin/bench-reordered: $(BENCH_OBJ) $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $(call reverse,$(filter %.o,$^)) $(filter %.a,$^) -o $@ $(LDLIBS)
@@ -377,7 +326,6 @@ bench: $(BUILD)/bin/bench $(BUILD)/bin/bench-reordered $(BUILD)/sub/solutions/re
 # ---- fuzzing the readers of untrusted input (tests/fuzz) --------------------
 # `make fuzz [FUZZ="scene png ..."] [FUZZ_SECONDS=n]` builds each target
 # with clang's libFuzzer and the sanitizers, then runs it (tests/fuzz/run.sh).
-# Not part of `make test`: a run finds what it finds in its time.
 FUZZ_CC    ?= clang
 FUZZ_FLAGS  = $(STD) -g -O1 $(FPFLAGS) $(WARN) -fsanitize=fuzzer,address,undefined \
               -fno-sanitize-recover=all
@@ -399,15 +347,12 @@ fuzz:
 	 else echo "make fuzz: only the instructor's kit has the fuzz targets (tests/fuzz)"; exit 2; fi
 
 # ---- the rules of both builds -----------------------------------------------
-# BUILD_RULES's $(1) is a build's folder, $(2) and $(3) name the variables
-# with its flags for compiling and for linking; $$ in it is a $ that make
-# expands when it runs the rule.
+# BUILD_RULES's $(1) is a build's folder, $(2) and $(3) name the variables of
+# its flags for compiling and for linking; in it, $$ is a $ left for the rule.
 define BUILD_RULES
 $(1)/kit/%.o: labs/kit/%.c $(KIT_HDR) | $(1)/kit/.
 	$$(Q)$$(CC) $$($(2)) $$(THREADS) -c $$< -o $$@
-$(1)/sub/labs/%.o: labs/%.c $(KIT_HDR) | $(1)/sub/labs/.
-	$$(Q)$$(CC) $$($(2)) -Ilabs -c $$< -o $$@
-$(1)/sub/solutions/%.o: solutions/%.c $(KIT_HDR) | $(1)/sub/solutions/.
+$(1)/sub/$(REF_DIR)/%.o: $(REF_DIR)/%.c $(KIT_HDR) | $(1)/sub/$(REF_DIR)/.
 	$$(Q)$$(CC) $$($(2)) -Ilabs -c $$< -o $$@
 $(1)/oracle/%.o: tests/oracle/%.c $(wildcard tests/oracle/*.h) $(KIT_HDR) | $(1)/oracle/.
 	$$(Q)$$(CC) $$($(2)) -Ilabs -c $$< -o $$@
@@ -423,8 +368,7 @@ $(1)/kit/libkit.a: $(KIT_SRC:labs/kit/%.c=$(1)/kit/%.o)
 $(1)/oracle/liboracle.a: $(ORACLE_SRC:tests/oracle/%.c=$(1)/oracle/%.o)
 $(1)/tools/libtools.a: $(TOOLS_SRC:tests/tools/%.c=$(1)/tools/%.o)
 $(1)/grader/libgrader.a: $(GRADER_LIB_SRC:tests/grader/%.c=$(1)/grader/%.o)
-
-# The grader.  Both builds' grade use the plain build's harnesses and runners.
+# Either build's grade runs the plain build's harnesses and runners.
 $(1)/bin/grade: $(1)/grader/grade_main.o $(if $(GRADE_DEFS),$(1)/grader/hidden.o $(1)/oracle/liboracle.a) \
                 $(1)/grader/libgrader.a $(1)/tools/libtools.a $(1)/kit/libkit.a \
                 | $(HARNESS) $(GRADER_REF) $(RUNNERS) $(1)/bin/.
@@ -433,34 +377,26 @@ $(1)/bin/sortsubs: $(1)/grader/sortsubs_main.o $(1)/grader/libgrader.a $(1)/tool
                    $(1)/kit/libkit.a | $(1)/bin/.
 	$$(Q)$$(CC) $$($(3)) $$^ -o $$@ $$(LDLIBS)
 
-# The unit tests (tests/unit) but those with rules of their own.
 $(UNIT_LINKED:%=$(1)/tests/%): $(1)/tests/%: tests/unit/%.c tests/unit/check.h $(call ref_obj,$(1)) \
                                               $(call unit_libs,$(1)) | $(1)/tests/.
 	$$(Q)$$(CC) $$($(3)) $$(THREADS) -Ilabs $$(filter-out %.h,$$^) -o $$@ $$(LDLIBS)
-# test_hexfloat checks two headers of the grader's.
 $(1)/tests/test_hexfloat: tests/grader/hexfloat.h tests/grader/decimal.h
-
 # test_bvh links its own sphere_intersect and triangle_intersect, which
 # pass each call on to the reference's (compiled under other names) or to
-# deliberately wrong ones; the other parts are the reference's.
+# deliberately wrong ones.
 $(1)/tests/obj/renamed_%.o: $(REF_DIR)/%.c $(KIT_HDR) | $(1)/tests/obj/.
 	$$(Q)$$(CC) $$($(2)) $$(BVH_RENAME) -Ilabs -c $$< -o $$@
 $(1)/tests/test_bvh: tests/unit/test_bvh.c tests/unit/check.h $(BVH_OWN:%=$(1)/tests/obj/renamed_%.o) \
                      $(filter-out $(BVH_OWN:%=$(1)/sub/$(REF_DIR)/%.o),$(call ref_obj,$(1))) \
                      $(call unit_libs,$(1)) | $(1)/tests/.
 	$$(Q)$$(CC) $$($(3)) $$(THREADS) -Ilabs $$(filter-out %.h,$$^) -o $$@ $$(LDLIBS)
-
-# The unit tests of the grader's sandbox, include scan, memo, test files'
-# reader (cases.c), judging of answers (check.c) and so on link the part
-# alone, and what it needs of another part (a prerequisite .c below).
+# A unit test of a part of the grader links that part alone, and what it
+# needs of another part (a prerequisite .c below).
 $(GRADER_UNITS:%=$(1)/tests/test_%): $(1)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
                                      tests/grader/%.c $(GRADER_HDR) $(1)/kit/libkit.a | $(1)/tests/.
 	$$(Q)$$(CC) $$($(3)) -Ilabs $$(filter %.c,$$^) $(1)/kit/libkit.a -o $$@ $$(LDLIBS)
-# check.c reads the kinds of cases from cases.c.
 $(1)/tests/test_check: tests/grader/cases.c
-# terminal.c and lookalike.c read UTF-8 with tests/tools/utf8.c.
 $(1)/tests/test_terminal $(1)/tests/test_lookalike: tests/tools/utf8.c
-# own_headers.c reads the names with include_scan.c.
 $(1)/tests/test_own_headers: tests/grader/include_scan.c
 # The sandbox runs its children in the jail (jail.c), its shell scripts
 # through init_sh beside it (built plain in both builds: a sanitized
@@ -468,13 +404,7 @@ $(1)/tests/test_own_headers: tests/grader/include_scan.c
 $(1)/tests/test_sandbox: tests/grader/jail.c | $(1)/tests/init_sh
 $(1)/tests/init_sh: tests/unit/init_sh.c tests/grader/harness_init.h | $(1)/tests/.
 	$$(Q)$$(CC) $$(CFLAGS) $$< -o $$@
-
-# The hidden tests' unit test (instructor's kit only) links them, the
-# oracle, the grader's library (the tests' lists and their judge) and the
-# reference, which it holds up against the mistakes.  The figures' unit
-# test (instructor's kit only) draws every case of the public tests and of
-# some seeds' hidden tests with the grader's figures.  SEEDS may set how
-# many seeds they draw (below).
+# The hidden tests' and the figures' unit tests (instructor's kit only).
 $(1)/tests/test_hidden: tests/unit/test_hidden.c tests/unit/check.h $(1)/grader/hidden.o $(call ref_obj,$(1)) \
                         $(call figure_libs,$(1)) | $(1)/tests/.
 	$$(Q)$$(CC) $$($(3)) $$(SEEDS) -Ilabs $$(filter-out %.h,$$^) -o $$@ $$(LDLIBS)
@@ -483,8 +413,8 @@ $(1)/tests/test_figures: tests/unit/test_figures.c tests/unit/check.h $(1)/grade
 	$$(Q)$$(CC) $$($(3)) $$(SEEDS) -Ilabs $$(filter-out %.h,$$^) -o $$@ $$(LDLIBS)
 endef
 
-# What the unit tests link: the reference (in the student kit the
-# skeletons) and the kit's libraries.
+# The unit tests link the reference (the skeletons in the student kit) and
+# the kit's libraries, but for those with rules of their own.
 UNIT_NAMES = $(basename $(notdir $(wildcard tests/unit/test_*.c)))
 REF_DIR    = $(if $(HAVE_SOLUTIONS),solutions,labs)
 ref_obj    = $(STAGES:%=$(1)/sub/$(REF_DIR)/%.o)
@@ -497,24 +427,19 @@ BVH_OWN    = part3a_sphere_intersect part5_triangle_intersect
 
 $(eval $(call BUILD_RULES,$(BUILD),CFLAGS,CFLAGS))
 $(eval $(call BUILD_RULES,$(ASAN),SANFLAGS,SAN_LINK))
+unit-tests: $(UNIT_NAMES:%=$(BUILD)/tests/%)
 # Sanitized, the hidden tests' unit test draws a tenth of the seeds and the
 # figures' one seed's cases: what it checks there is the code, not the seeds.
 $(ASAN)/tests/test_hidden: SEEDS = -DSEEDS=30 -DSEEDS_FLAT=100
 $(ASAN)/tests/test_figures: SEEDS = -DSEEDS=1
-unit-tests: $(UNIT_NAMES:%=$(BUILD)/tests/%)
-
 # The renderer with the reference stages, sanitized (tests/suites/render_cli.sh).
 $(ASAN)/bin/render-solutions: $(ASAN)/kit/render_main.o $(call ref_obj,$(ASAN)) $(ASAN)/kit/libkit.a | $$(@D)/.
 	$(Q)$(CC) $(SAN_LINK) $(THREADS) $^ -o $@ $(LDLIBS)
 
 # ---- the grader itself under the sanitizers (`make sanitize-grader`) --------
-# Builds the grader with the address, undefined-behaviour and leak
-# sanitizers and runs the suites that grade with it (GRADE= names it to
-# them): the reference, the skeleton and the self-test's faulty and
-# hostile submissions, their pages, results and gradebooks; and the sorter
-# of a class's download (SORTSUBS=), on the downloads its suite makes.  The runners
-# and harnesses it uses are the plain build's (a sanitized test would not
-# fit the tests' memory limit).  Not part of `make test`.
+# The suites that grade, with the sanitized grade and sortsubs (GRADE= and
+# SORTSUBS=); the runners and harnesses are still the plain build's (a
+# sanitized test would not fit the tests' memory limit).
 SANITIZE_SUITES = grader.sh report.sh class_page.sh limits.sh signals.sh jail.sh sort_submissions.sh
 ifneq ($(wildcard tests/suites/grader.sh),)
 sanitize-grader: all $(ASAN)/bin/grade $(ASAN)/bin/sortsubs
