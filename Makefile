@@ -35,17 +35,12 @@ $(info or clone the repository again from a WSL (Linux) terminal.)
 $(error the kit's files have Windows line ends)
 endif
 
-# Quiet unless V=1: the kit's own commands are not echoed, a stage file is
-# named as make render compiles it; warnings and errors print either way.
-V         ?=
+# V=1 echoes every command; by default a stage file is named as it compiles.
 Q          = $(if $(filter 1,$(V)),,@)
 SAY_CC     = $(if $(Q),@echo "  CC      $<")
-
-# What the targets act on (all accept absolute paths); the others that
-# `make help` lists (SIZE, PART, RESULTS...) are empty unless given.
+# What the targets act on (these and the other paths may be absolute).
 SUBMISSION ?= labs
 SCENE      ?= labs/scenes/default.scene
-
 # Two builds, plain and sanitized: OUT_ROOT=dir puts them in dir/build and
 # dir/asan (the portability suite builds with a second compiler there).
 OUT_ROOT  ?= out
@@ -56,7 +51,9 @@ STAGES     = part1_image_plane part2_pixel_coordinates part3a_sphere_intersect p
 # What the student kit does not have.
 HAVE_SOLUTIONS := $(wildcard solutions/part1_image_plane.c)
 HAVE_ORACLE := $(wildcard tests/oracle/oracle.h)
-HAVE_HIDDEN := $(wildcard tests/hidden/hidden.c)
+# The reference (the skeletons in the student kit) and its objects in build $(1).
+REF_DIR    = $(if $(HAVE_SOLUTIONS),solutions,labs)
+ref_obj    = $(STAGES:%=$(1)/sub/$(REF_DIR)/%.o)
 # Each library is its folder's C files but the programs (and harnesses).
 KIT_SRC    = $(filter-out %_main.c,$(wildcard labs/kit/*.c))
 KIT_HDR    = $(wildcard labs/*.h labs/kit/*.h)
@@ -71,8 +68,7 @@ GRADER_HDR = $(wildcard tests/grader/*.h) $(KIT_HDR)
 .DELETE_ON_ERROR:
 .SECONDARY:                             # keep the objects a chain of rules makes (the renderer's lto/)
 .SECONDEXPANSION:
-# A target's directory is made once, before the first target in it (an
-# order-only prerequisite "| $$(@D)/."), not by a mkdir per target.
+# A target's folder is made once, as an order-only prerequisite (| $$(@D)/.).
 %/.:
 	@mkdir -p $@
 # An archive's members are the prerequisites its own line names.
@@ -81,7 +77,6 @@ $(OUT_ROOT)/%.a:
 
 all: $(BUILD)/kit/libkit.a $(BUILD)/bin/compare $(BUILD)/sub/labs/render \
      $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render) grader unit-tests $(BUILD)/bin/htmlcheck
-
 # The student kit (no solutions/) lists only what runs there.
 help:
 	@echo "make render  [SUBMISSION=dir] [SCENE=file] [SIZE=WxH] [OUT=file]"
@@ -98,22 +93,18 @@ endif
 	@echo "V=1 after any of them echoes the build's compiler commands"
 
 # ---- renderer and compare, per submission ----------------------------------
-# A submission's build lives in out/build/sub/<name>: labs and solutions by
-# name, any other folder by its absolute path with / turned into _.  Stage
-# files it lacks come from labs/ (the skeletons); a folder with none but some
-# in its labs/ (a student kit's repository) is rendered from there.
+# A submission builds in out/build/sub/<name>: labs, solutions, or another
+# folder's absolute path with / as _, with labs/ for the stage files it lacks;
+# a student kit's repository (stage files in its labs/) is drawn from there.
 sub_name   = $(if $(filter labs solutions,$(1)),$(1),$(subst /,_,$(abspath $(1))))
 stage_src  = $(firstword $(wildcard $(2)/$(1).c) labs/$(1).c)
 stage_dir  = $(if $(wildcard $(STAGES:%=$(1)/%.c)),$(1),$(if $(wildcard $(STAGES:%=$(1)/labs/%.c)),$(1)/labs,$(1)))
 SUB_DIR   := $(call stage_dir,$(SUBMISSION))
 SUB_NAME  := $(call sub_name,$(SUB_DIR))
 SUB_BUILD  = $(BUILD)/sub/$(SUB_NAME)
-
-# The renderer's objects (lto/) are built for link-time optimisation, so
-# the per-pixel calls into the stage files can be inlined.  A student's
-# stage file: bin/stagecheck first refuses one the grader would not build (a
-# header of the student's own, tests/grader/own_headers.h); if it does not
-# compile, bin/lookalike names what in it only looks like C (lookalike.h).
+# The renderer's objects (lto/) are built for link-time optimisation.  A stage
+# file the grader would not build is refused (bin/stagecheck); if one does not
+# compile, bin/lookalike says why; bin/linkcheck explains a failed link.
 STAGE_CC = $(BUILD)/bin/stagecheck $< && \
            { $(CC) $(CFLAGS) $(RENDER_LTO) -Ilabs -c $< -o $@ || { $(BUILD)/bin/lookalike $<; exit 1; }; }
 STAGE_TOOLS = $(BUILD)/bin/stagecheck $(BUILD)/bin/lookalike
@@ -129,36 +120,25 @@ $(SUB_BUILD)/lto/%.o: $$(call stage_src,$$*,$(SUB_DIR)) $(KIT_HDR) | $$(@D)/. $(
 endif
 $(BUILD)/kit/lto/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) -c $< -o $@
-RENDER_OBJ = $(addprefix $(BUILD)/kit/lto/,render_main.o render.o image.o closest.o bvh.o)
-# A link that fails: bin/linkcheck says what the linker's message means for
-# the stage files (most often a helper defined in two of them).
 render_src = $(if $(filter labs solutions,$(1)),$(STAGES:%=$(1)/%.c),\
                  $(foreach s,$(STAGES),$(call stage_src,$(s),$(SUB_DIR))))
-$(BUILD)/sub/%/render: $(RENDER_OBJ) \
+$(BUILD)/sub/%/render: $(addprefix $(BUILD)/kit/lto/,render_main.o render.o image.o closest.o bvh.o) \
                        $$(addprefix $(BUILD)/sub/$$*/lto/,$$(addsuffix .o,$$(STAGES))) $(BUILD)/kit/libkit.a \
                        | $(BUILD)/bin/linkcheck
 	$(Q)$(CC) $(CFLAGS) $(RENDER_LTO) $(THREADS) $^ -o $@ $(LDLIBS) 2>$@.log || \
 	    { cat $@.log >&2; $(BUILD)/bin/linkcheck $@.log $(call render_src,$*); rm -f $@.log; exit 1; }; \
 	    cat $@.log >&2; rm -f $@.log
-
 SCENE_NAME = $(basename $(notdir $(SCENE)))
-OUT_RENDER = $(if $(OUT),$(OUT),out/$(SCENE_NAME).png)
-# SUBMISSION must be a folder: a mistyped one is refused, not drawn with the
-# skeletons (the stage files a submission lacks) over out/default.png.
+# A SUBMISSION that is no folder is refused, not drawn as the skeletons.
 submission-dir:
 	@test -d "$(SUBMISSION)" || { echo "make: SUBMISSION=$(SUBMISSION) is not a directory"; exit 2; }
 	@test -n "$(wildcard $(STAGES:%=$(SUB_DIR)/%.c))" || \
 	    echo "note: $(SUBMISSION) holds no stage file (nor does its labs folder): the skeletons are drawn"
-
-# In the student kit, a note when labs/raytracer.h or labs/vec3.h is not as
-# shipped (tests/grader/shipped): make render builds with the student's
-# copy, the instructor's grader with the kit's own (as make grade does).
-SHIPPED_HDR = $(wildcard tests/grader/shipped/raytracer.h tests/grader/shipped/vec3.h)
+# A note where a header in labs/ is not the shipped one (tests/grader/shipped).
 render: submission-dir $(SUB_BUILD)/render
-	$(SUB_BUILD)/render "$(SCENE)" $(if $(SIZE),--size $(SIZE)) -o "$(OUT_RENDER)"
-	@for h in $(notdir $(SHIPPED_HDR)); do cmp -s labs/$$h tests/grader/shipped/$$h || \
+	$(SUB_BUILD)/render "$(SCENE)" $(if $(SIZE),--size $(SIZE)) -o "$(if $(OUT),$(OUT),out/$(SCENE_NAME).png)"
+	@for h in $(notdir $(wildcard tests/grader/shipped/*.h)); do cmp -s labs/$$h tests/grader/shipped/$$h || \
 	    echo "note: labs/$$h is not the one the kit came with. make render used yours; your instructor grades your part*.c files with the kit's own (tests/grader/shipped/$$h), where what they use from your change will be missing: keep it in your part*.c files."; done
-
 # In the kit's own repository the reference image is rendered with
 # solutions/; in the student kit it is the stored render under labs/reference.
 REF_IMAGE = $(if $(HAVE_SOLUTIONS),out/compare/$(SCENE_NAME)-reference.png,labs/reference/$(SCENE_NAME).png)
@@ -177,14 +157,13 @@ $(BUILD)/bin/compare: $(BUILD)/kit/compare_main.o $(BUILD)/kit/libkit.a
 $(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
 # The report page's checker (tests/suites/report.sh).
 $(BUILD)/bin/htmlcheck: $(BUILD)/tools/htmlcheck_main.o
-# The public tests' expected values, from the oracle (commit the result).
+# The public tests' expected values (commit them) and the reference's
+# accuracy on the hard cases (the README's tables), from the oracle.
 $(BUILD)/bin/gentests: $(BUILD)/oracle/gentests_main.o $(BUILD)/oracle/liboracle.a \
                        $(BUILD)/grader/libgrader.a $(BUILD)/kit/libkit.a
 public-tests: $(BUILD)/bin/gentests
 	$(BUILD)/bin/gentests tests/public
-# The reference solutions' accuracy on the hard cases (tables for the README).
-$(BUILD)/bin/accuracy: $(BUILD)/oracle/accuracy_main.o $(BUILD)/oracle/liboracle.a \
-                       $(STAGES:%=$(BUILD)/sub/solutions/%.o)
+$(BUILD)/bin/accuracy: $(BUILD)/oracle/accuracy_main.o $(BUILD)/oracle/liboracle.a $(call ref_obj,$(BUILD))
 $(BUILD)/bin/lookalike: $(BUILD)/grader/lookalike_main.o $(BUILD)/grader/lookalike.o \
                         $(BUILD)/tools/utf8.o $(BUILD)/kit/libkit.a
 $(BUILD)/bin/linkcheck: $(BUILD)/grader/linkcheck_main.o $(BUILD)/grader/linkmsg.o $(BUILD)/kit/libkit.a
@@ -193,23 +172,19 @@ $(BUILD)/bin/stagecheck: $(BUILD)/grader/stagecheck_main.o $(BUILD)/grader/inclu
                          $(BUILD)/tools/utf8.o $(BUILD)/kit/libkit.a
 
 # ---- the autograder (tests/grader) ------------------------------------------
-# A part's program links its harness (HARNESS_PART=K for the K-th of STAGES)
-# with the student's file; harness_render.o draws the report page's scene.
-# The grader takes them and the reference's objects (ref_*.o) from here.
+# A part's program links its harness (HARNESS_PART=K: the K-th of STAGES) with
+# the student's file; harness_render.o draws the report page's scene.
 PART_KS    = 1 2 3 4 5 6
 HARNESS    = $(PART_KS:%=$(BUILD)/grader/harness_%.o) $(BUILD)/grader/harness_render.o
 GRADER_REF = $(if $(HAVE_SOLUTIONS),$(STAGES:%=$(BUILD)/grader/ref_%.o))
-GRADE_DEFS = $(if $(and $(HAVE_ORACLE),$(HAVE_HIDDEN)),-DGRADER_ORACLE)
+GRADE_DEFS = $(if $(and $(HAVE_ORACLE),$(wildcard tests/hidden/hidden.c)),-DGRADER_ORACLE)
 $(PART_KS:%=$(BUILD)/grader/harness_%.o): $(BUILD)/grader/harness_%.o: tests/grader/harness.c \
         tests/grader/hexfloat.h tests/grader/harness_init.h $(KIT_HDR) | $(BUILD)/grader/.
 	$(Q)$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -c $< -o $@
 $(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
 	$(Q)cp $< $@
-# On Linux each part's program is also prebuilt as a runner (harness_load.c)
-# that loads the student's file built as a shared object, which costs a
-# fraction of linking a whole program (build.c).  runner_K holds Part K's
-# harness and, in the instructor's kit, the reference of every other part
-# (but runner_3's Part 3b: it calls sphere_intersect, the student's).
+# On Linux runner_K loads Part K's file built as a shared object, cheaper than a
+# link, beside the other parts' reference (runner_3 without Part 3b's).
 RUNNERS    = $(if $(filter Linux,$(SYSTEM)),$(PART_KS:%=$(BUILD)/grader/runner_%))
 runner_refs = $(if $(HAVE_SOLUTIONS),$(filter-out $(BUILD)/grader/ref_$(word $(1),$(STAGES)).o \
               $(if $(filter 3,$(1)),$(BUILD)/grader/ref_part3b_ray_color.o),$(GRADER_REF)))
@@ -219,13 +194,10 @@ $(PART_KS:%=$(BUILD)/grader/harness_load_%.o): $(BUILD)/grader/harness_load_%.o:
 $(PART_KS:%=$(BUILD)/grader/runner_%): $(BUILD)/grader/runner_%: $(BUILD)/grader/harness_load_%.o \
         $(BUILD)/grader/harness_load.o $$(call runner_refs,$$*)
 	$(Q)$(CC) $(CFLAGS) -rdynamic $^ -o $@ $(LDLIBS) -ldl
-# bin/sortsubs sorts a class's download from Canvas, Moodle or Blackboard
-# into one folder per submission for grade-all (sortsubs_main.c).
+# bin/sortsubs sorts a class's download from an LMS for grade-all.
 grader: $(BUILD)/bin/grade $(HARNESS) $(GRADER_REF) $(RUNNERS) $(BUILD)/bin/sortsubs
 
-# The report page shows the submission's default scene beside the
-# reference's: rendered here in the instructor's kit, in the student kit
-# labs/reference/default.png (the grader takes the first that exists).
+# The report page's reference picture; the student kit's is in labs/reference.
 REPORT_REF = $(if $(HAVE_SOLUTIONS),$(BUILD)/report/default.png)
 $(BUILD)/report/default.png: $(BUILD)/sub/solutions/render labs/scenes/default.scene | $$(@D)/.
 	$(Q)$(BUILD)/sub/solutions/render labs/scenes/default.scene --quiet -o $@
@@ -251,15 +223,11 @@ gradescope: $(BUILD)/bin/pack
 	cp tests/gradescope/setup.sh tests/gradescope/run_autograder out/gradescope/bundle/
 	$(BUILD)/bin/pack zip out/gradescope/autograder.zip out/gradescope/bundle
 	@echo "wrote out/gradescope/autograder.zip"
-
-# The PrairieLearn question: info.json, question.html, and tests/ with the
-# grading entrypoint and the kit it builds (tests/prairielearn/question.sh).
+# The PrairieLearn question (tests/prairielearn/question.sh).
 prairielearn:
 	sh tests/prairielearn/question.sh out/prairielearn/raytracer-lab
-
-# The student kit: skeletons, framework, scenes and their reference renders,
-# the grader with the public tests, the handouts.  No solutions/, hidden
-# tests, oracle or other instructor's test material, nor the hidden seed.
+# The student kit: no solutions/, hidden tests, oracle or other instructor's
+# test material, nor the hidden seed; the scenes' reference renders.
 KIT_DIR    = out/student-kit
 student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 	rm -rf $(KIT_DIR) && mkdir -p $(KIT_DIR)/tests/unit $(KIT_DIR)/labs/reference
@@ -279,31 +247,24 @@ student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 	done
 	$(BUILD)/bin/pack targz out/student-kit.tar.gz $(KIT_DIR) student-kit
 	@echo "wrote $(KIT_DIR)/ and out/student-kit.tar.gz"
-
-# The handouts' figures, drawn from the reference and faulty variants
-# (handouts/figures/make-figures.sh; commit the PNGs); the student kit's
-# come ready-made.
+# The handouts' figures (handouts/figures/make-figures.sh; commit the PNGs).
 handouts: $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render $(BUILD)/bin/compare grader)
 ifneq ($(HAVE_SOLUTIONS),)
 	MAKE="$(MAKE)" sh handouts/figures/make-figures.sh
 else
 	@echo "the figures are in handouts/figures (drawing them again needs solutions/)"
 endif
-
 # The compile flags, for the suites' small helper programs (tests/lib/cc_build.sh).
 print-cflags:
 	@echo $(CFLAGS)
 
 # ---- bench: speed against accuracy (tests/bench) ----------------------------
-# out/bench/: results.csv, report.md, plot.svg and more.  It links the
-# reference and the oracle, so only the instructor's kit has it.
+# out/bench/: results.csv, report.md, plot.svg and more (instructor's kit).
 BENCH_SRC  = $(wildcard tests/bench/*.c)
 BENCH_OBJ  = $(BENCH_SRC:tests/bench/%.c=$(BUILD)/bench/%.o) $(STAGES:%=$(BUILD)/bench/solutions/%.o)
 HAVE_BENCH := $(and $(HAVE_SOLUTIONS),$(wildcard tests/oracle/hard.h),$(BENCH_SRC))
-# Each function and loop starts on a 64-byte boundary (where the compiler
-# takes the flags), so that where the linker puts them does not move the
-# ratios (tests/bench/README.md).  The figures depend on the flags, so the
-# objects depend on the Makefile.
+# 64-byte aligned functions and loops (where the compiler takes the flags): the
+# linker's placement must not move the ratios (bench-reordered checks that).
 BENCH_ALIGN = $(shell $(CC) -falign-functions=64 -falign-loops=64 -Werror -x c -c /dev/null -o /dev/null 2>/dev/null && echo -falign-functions=64 -falign-loops=64)
 $(BUILD)/bench/%.o: tests/bench/%.c $(wildcard tests/bench/*.h) $(wildcard tests/oracle/*.h) $(KIT_HDR) Makefile | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $(BENCH_ALIGN) -Ilabs -c $< -o $@
@@ -313,8 +274,6 @@ $(BUILD)/bench/solutions/%.o: solutions/%.c $(KIT_HDR) Makefile | $$(@D)/.
 $(BUILD)/bench/fastpath.o $(BUILD)/bench/measure.o: CFLAGS += -fno-math-errno
 $(BUILD)/bin/bench: $(BENCH_OBJ) $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a
 all: $(if $(HAVE_BENCH),$(BUILD)/bin/bench)
-# bench-reordered, the same objects linked in reverse order, is the check
-# that their placement does not move the ratio.
 reverse = $(if $(1),$(call reverse,$(wordlist 2,$(words $(1)),$(1))) $(firstword $(1)))
 $(BUILD)/bin/bench-reordered: $(BENCH_OBJ) $(BUILD)/oracle/liboracle.a $(BUILD)/kit/libkit.a | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) $(call reverse,$(filter %.o,$^)) $(filter %.a,$^) -o $@ $(LDLIBS)
@@ -329,17 +288,12 @@ bench: $(BUILD)/bin/bench $(BUILD)/bin/bench-reordered $(BUILD)/sub/solutions/re
 FUZZ_CC    ?= clang
 FUZZ_FLAGS  = $(STD) -g -O1 $(FPFLAGS) $(WARN) -fsanitize=fuzzer,address,undefined \
               -fno-sanitize-recover=all
-FUZZ_SRC    = $(filter-out labs/kit/render.c labs/kit/closest.c,$(KIT_SRC)) tests/grader/cases.c \
-              tests/grader/check.c tests/grader/config.c tests/grader/markup.c \
-              tests/grader/figures.c $(wildcard tests/grader/fig_*.c) tests/tools/json_read.c \
-              tests/tools/base64.c tests/tools/utf8.c
-FUZZ_OBJ    = $(addprefix $(OUT_ROOT)/fuzz/obj/,$(notdir $(FUZZ_SRC:.c=.o)))
-$(OUT_ROOT)/fuzz/obj/%.o: labs/kit/%.c $(KIT_HDR) | $$(@D)/.
-	$(Q)$(FUZZ_CC) $(FUZZ_FLAGS) -c $< -o $@
-$(OUT_ROOT)/fuzz/obj/%.o: tests/grader/%.c $(GRADER_HDR) | $$(@D)/.
+FUZZ_SRC    = $(filter-out labs/kit/render.c labs/kit/closest.c,$(KIT_SRC)) $(wildcard tests/grader/fig_*.c) \
+              $(addprefix tests/grader/,cases.c check.c config.c markup.c figures.c) \
+              $(addprefix tests/tools/,json_read.c base64.c utf8.c)
+FUZZ_OBJ    = $(FUZZ_SRC:%.c=$(OUT_ROOT)/fuzz/obj/%.o)
+$(OUT_ROOT)/fuzz/obj/%.o: %.c $(GRADER_HDR) $(wildcard tests/tools/*.h) | $$(@D)/.
 	$(Q)$(FUZZ_CC) $(FUZZ_FLAGS) -Ilabs -c $< -o $@
-$(OUT_ROOT)/fuzz/obj/%.o: tests/tools/%.c $(wildcard tests/tools/*.h) | $$(@D)/.
-	$(Q)$(FUZZ_CC) $(FUZZ_FLAGS) -c $< -o $@
 $(OUT_ROOT)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz.h tests/fuzz/fuzz_public.h $(FUZZ_OBJ) | $$(@D)/.
 	$(Q)$(FUZZ_CC) $(FUZZ_FLAGS) -Ilabs $< $(FUZZ_OBJ) -o $@ $(LDLIBS)
 fuzz:
@@ -347,8 +301,8 @@ fuzz:
 	 else echo "make fuzz: only the instructor's kit has the fuzz targets (tests/fuzz)"; exit 2; fi
 
 # ---- the rules of both builds -----------------------------------------------
-# BUILD_RULES's $(1) is a build's folder, $(2) and $(3) name the variables of
-# its flags for compiling and for linking; in it, $$ is a $ left for the rule.
+# $(1) is a build's folder, $(2) and $(3) name the variables of its flags
+# for compiling and for linking; $$ is a $ left for the rule.
 define BUILD_RULES
 $(1)/kit/%.o: labs/kit/%.c $(KIT_HDR) | $(1)/kit/.
 	$$(Q)$$(CC) $$($(2)) $$(THREADS) -c $$< -o $$@
@@ -376,60 +330,47 @@ $(1)/bin/grade: $(1)/grader/grade_main.o $(if $(GRADE_DEFS),$(1)/grader/hidden.o
 $(1)/bin/sortsubs: $(1)/grader/sortsubs_main.o $(1)/grader/libgrader.a $(1)/tools/libtools.a \
                    $(1)/kit/libkit.a | $(1)/bin/.
 	$$(Q)$$(CC) $$($(3)) $$^ -o $$@ $$(LDLIBS)
-
 $(UNIT_LINKED:%=$(1)/tests/%): $(1)/tests/%: tests/unit/%.c tests/unit/check.h $(call ref_obj,$(1)) \
                                               $(call unit_libs,$(1)) | $(1)/tests/.
 	$$(Q)$$(CC) $$($(3)) $$(THREADS) -Ilabs $$(filter-out %.h,$$^) -o $$@ $$(LDLIBS)
 $(1)/tests/test_hexfloat: tests/grader/hexfloat.h tests/grader/decimal.h
-# test_bvh links its own sphere_intersect and triangle_intersect, which
-# pass each call on to the reference's (compiled under other names) or to
-# deliberately wrong ones.
+# test_bvh's own sphere_intersect and triangle_intersect call the reference's
+# (compiled under other names) or deliberately wrong ones.
 $(1)/tests/obj/renamed_%.o: $(REF_DIR)/%.c $(KIT_HDR) | $(1)/tests/obj/.
 	$$(Q)$$(CC) $$($(2)) $$(BVH_RENAME) -Ilabs -c $$< -o $$@
 $(1)/tests/test_bvh: tests/unit/test_bvh.c tests/unit/check.h $(BVH_OWN:%=$(1)/tests/obj/renamed_%.o) \
                      $(filter-out $(BVH_OWN:%=$(1)/sub/$(REF_DIR)/%.o),$(call ref_obj,$(1))) \
                      $(call unit_libs,$(1)) | $(1)/tests/.
 	$$(Q)$$(CC) $$($(3)) $$(THREADS) -Ilabs $$(filter-out %.h,$$^) -o $$@ $$(LDLIBS)
-# A unit test of a part of the grader links that part alone, and what it
-# needs of another part (a prerequisite .c below).
+# A grader part's unit test links that part alone, with the .c files it needs.
 $(GRADER_UNITS:%=$(1)/tests/test_%): $(1)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
                                      tests/grader/%.c $(GRADER_HDR) $(1)/kit/libkit.a | $(1)/tests/.
 	$$(Q)$$(CC) $$($(3)) -Ilabs $$(filter %.c,$$^) $(1)/kit/libkit.a -o $$@ $$(LDLIBS)
 $(1)/tests/test_check: tests/grader/cases.c
 $(1)/tests/test_terminal $(1)/tests/test_lookalike: tests/tools/utf8.c
 $(1)/tests/test_own_headers: tests/grader/include_scan.c
-# The sandbox runs its children in the jail (jail.c), its shell scripts
-# through init_sh beside it (built plain in both builds: a sanitized
-# program does not fit a test's memory limit).
+# init_sh, plain in both builds: a sanitized one would not fit a test's memory.
 $(1)/tests/test_sandbox: tests/grader/jail.c | $(1)/tests/init_sh
 $(1)/tests/init_sh: tests/unit/init_sh.c tests/grader/harness_init.h | $(1)/tests/.
 	$$(Q)$$(CC) $$(CFLAGS) $$< -o $$@
 # The hidden tests' and the figures' unit tests (instructor's kit only).
-$(1)/tests/test_hidden: tests/unit/test_hidden.c tests/unit/check.h $(1)/grader/hidden.o $(call ref_obj,$(1)) \
-                        $(call figure_libs,$(1)) | $(1)/tests/.
+$(1)/tests/test_hidden $(1)/tests/test_figures: $(1)/tests/%: tests/unit/%.c tests/unit/check.h \
+        $(1)/grader/hidden.o $(1)/oracle/liboracle.a $(1)/grader/libgrader.a $(1)/tools/libtools.a \
+        $(1)/kit/libkit.a | $(1)/tests/.
 	$$(Q)$$(CC) $$($(3)) $$(SEEDS) -Ilabs $$(filter-out %.h,$$^) -o $$@ $$(LDLIBS)
-$(1)/tests/test_figures: tests/unit/test_figures.c tests/unit/check.h $(1)/grader/hidden.o \
-                         $(call figure_libs,$(1)) | $(1)/tests/.
-	$$(Q)$$(CC) $$($(3)) $$(SEEDS) -Ilabs $$(filter-out %.h,$$^) -o $$@ $$(LDLIBS)
+$(1)/tests/test_hidden: $(call ref_obj,$(1))
 endef
 
-# The unit tests link the reference (the skeletons in the student kit) and
-# the kit's libraries, but for those with rules of their own.
 UNIT_NAMES = $(basename $(notdir $(wildcard tests/unit/test_*.c)))
-REF_DIR    = $(if $(HAVE_SOLUTIONS),solutions,labs)
-ref_obj    = $(STAGES:%=$(1)/sub/$(REF_DIR)/%.o)
 unit_libs  = $(if $(HAVE_ORACLE),$(1)/oracle/liboracle.a) $(1)/tools/libtools.a $(1)/kit/libkit.a
-figure_libs = $(1)/oracle/liboracle.a $(1)/grader/libgrader.a $(1)/tools/libtools.a $(1)/kit/libkit.a
 GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers lmsname terminal csv
 UNIT_LINKED = $(filter-out $(GRADER_UNITS:%=test_%) test_hidden test_figures test_bvh,$(UNIT_NAMES))
 BVH_RENAME = -Dsphere_intersect=reference_sphere_intersect -Dtriangle_intersect=reference_triangle_intersect
 BVH_OWN    = part3a_sphere_intersect part5_triangle_intersect
-
 $(eval $(call BUILD_RULES,$(BUILD),CFLAGS,CFLAGS))
 $(eval $(call BUILD_RULES,$(ASAN),SANFLAGS,SAN_LINK))
 unit-tests: $(UNIT_NAMES:%=$(BUILD)/tests/%)
-# Sanitized, the hidden tests' unit test draws a tenth of the seeds and the
-# figures' one seed's cases: what it checks there is the code, not the seeds.
+# Sanitized, they draw fewer seeds: what they check there is the code.
 $(ASAN)/tests/test_hidden: SEEDS = -DSEEDS=30 -DSEEDS_FLAT=100
 $(ASAN)/tests/test_figures: SEEDS = -DSEEDS=1
 # The renderer with the reference stages, sanitized (tests/suites/render_cli.sh).
@@ -437,9 +378,7 @@ $(ASAN)/bin/render-solutions: $(ASAN)/kit/render_main.o $(call ref_obj,$(ASAN)) 
 	$(Q)$(CC) $(SAN_LINK) $(THREADS) $^ -o $@ $(LDLIBS)
 
 # ---- the grader itself under the sanitizers (`make sanitize-grader`) --------
-# The suites that grade, with the sanitized grade and sortsubs (GRADE= and
-# SORTSUBS=); the runners and harnesses are still the plain build's (a
-# sanitized test would not fit the tests' memory limit).
+# The suites that grade, with the sanitized grade and sortsubs (GRADE=, SORTSUBS=).
 SANITIZE_SUITES = grader.sh report.sh class_page.sh limits.sh signals.sh jail.sh sort_submissions.sh
 ifneq ($(wildcard tests/suites/grader.sh),)
 sanitize-grader: all $(ASAN)/bin/grade $(ASAN)/bin/sortsubs
@@ -449,11 +388,9 @@ else
 sanitize-grader:
 	@echo "make sanitize-grader: only the instructor's kit has the grader's suites (tests/suites)"; exit 2
 endif
-
 # What the tests need built (`make -j2 test-build` builds it on two cores).
 test-build: all $(UNIT_NAMES:%=$(ASAN)/tests/%) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)
 test: test-build
 	@sh tests/run.sh
-
 clean:
 	rm -rf out
