@@ -183,8 +183,9 @@ $(PART_KS:%=$(BUILD)/grader/harness_%.o): $(BUILD)/grader/harness_%.o: tests/gra
 	$(Q)$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -c $< -o $@
 $(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
 	$(Q)cp $< $@
-# On Linux runner_K loads Part K's file built as a shared object, cheaper than a
-# link, beside the other parts' reference (runner_3 without Part 3b's).
+# On Linux runner_K loads the student's file as a shared object (cheaper than
+# a link), beside the instructor's reference of the other parts (runner_3, for
+# Part 3a, without 3b's).
 RUNNERS    = $(if $(filter Linux,$(SYSTEM)),$(PART_KS:%=$(BUILD)/grader/runner_%))
 runner_refs = $(if $(HAVE_SOLUTIONS),$(filter-out $(BUILD)/grader/ref_$(word $(1),$(STAGES)).o \
               $(if $(filter 3,$(1)),$(BUILD)/grader/ref_part3b_ray_color.o),$(GRADER_REF)))
