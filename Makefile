@@ -82,7 +82,7 @@ HAVE_SOLUTIONS := $(wildcard solutions/part1_image_plane.c)
 # ---- the framework students use (labs/kit) ---------------------------------
 KIT_SRC    = labs/kit/image.c labs/kit/png.c labs/kit/zlib.c labs/kit/scene.c labs/kit/render.c \
              labs/kit/numtext.c labs/kit/savefile.c labs/kit/textfile.c labs/kit/obj.c \
-             labs/kit/bvh.c labs/kit/closest.c labs/kit/compare.c
+             labs/kit/bvh.c labs/kit/closest.c labs/kit/compare.c labs/kit/edges.c
 KIT_HDR    = $(wildcard labs/*.h labs/kit/*.h)
 KIT_OBJ    = $(KIT_SRC:labs/kit/%.c=$(BUILD)/kit/%.o)
 KIT_ASAN   = $(KIT_SRC:labs/kit/%.c=$(ASAN)/kit/%.o)
@@ -202,13 +202,16 @@ render: submission-dir $(SUB_BUILD)/render
 
 # In the kit's own repository the reference image is rendered with
 # solutions/; in the student kit it is the stored render under labs/reference.
+# Either way with its pixels on an edge (labs/kit/edges.h), where a colour
+# that rounding decides is equal.
 REF_IMAGE = $(if $(HAVE_SOLUTIONS),out/compare/$(SCENE_NAME)-reference.png,labs/reference/$(SCENE_NAME).png)
+REF_EDGES = $(REF_IMAGE:.png=.edges)
 compare: submission-dir $(SUB_BUILD)/render $(BUILD)/bin/compare $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render)
 	@mkdir -p out/compare
 	$(SUB_BUILD)/render "$(SCENE)" -o out/compare/$(SCENE_NAME)-submission.png
-	$(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render "$(SCENE)" --quiet -o $(REF_IMAGE))
+	$(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render "$(SCENE)" --quiet -o $(REF_IMAGE) --edges $(REF_EDGES))
 	$(BUILD)/bin/compare out/compare/$(SCENE_NAME)-submission.png $(REF_IMAGE) \
-	    -o out/compare/$(SCENE_NAME).png
+	    --edges $(REF_EDGES) -o out/compare/$(SCENE_NAME).png
 
 # ---- the oracle: independent double-double answers (tests/oracle) ----------
 ORACLE_SRC = $(filter-out %_main.c,$(wildcard tests/oracle/*.c))
@@ -399,8 +402,8 @@ student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 	cp tests/unit/check.h tests/unit/test_vec3.c tests/unit/test_png.c tests/unit/test_scene.c \
 	   $(KIT_DIR)/tests/unit/
 	for s in $(SCENES); do \
-	    $(BUILD)/sub/solutions/render $$s --quiet -o $(KIT_DIR)/labs/reference/$$(basename $$s .scene).png \
-	        || exit 1; \
+	    n=$(KIT_DIR)/labs/reference/$$(basename $$s .scene); \
+	    $(BUILD)/sub/solutions/render $$s --quiet -o $$n.png --edges $$n.edges || exit 1; \
 	done
 	$(BUILD)/bin/pack targz out/student-kit.tar.gz $(KIT_DIR) student-kit
 	@echo "wrote $(KIT_DIR)/ and out/student-kit.tar.gz"
