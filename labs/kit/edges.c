@@ -70,8 +70,8 @@ int edges_find(Edges *edges, const Image *img, const Image nudged[4], char *err,
 
 int edges_write(const Edges *edges, const char *path, char *err, size_t errlen)
 {
-    /* "i j" and four colours: at most 12 + 4 * 12 characters a line */
-    size_t size = 256 + 64 * edges->count, len = 0;
+    /* "i j" and four colours: at most 11 + 4 * 13 + 1 characters a line */
+    size_t size = 256 + 80 * edges->count, len = 0;
     char *text = malloc(size);
     if (!text) {
         snprintf(err, errlen, "%s: out of memory", path);
