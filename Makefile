@@ -141,13 +141,16 @@ render: submission-dir $(SUB_BUILD)/render
 	    echo "note: labs/$$h is not the one the kit came with. make render used yours; your instructor grades your part*.c files with the kit's own (tests/grader/shipped/$$h), where what they use from your change will be missing: keep it in your part*.c files."; done
 # In the kit's own repository the reference image is rendered with
 # solutions/; in the student kit it is the stored render under labs/reference.
+# Either way with its pixels on an edge (labs/kit/edges.h), where a colour
+# that rounding decides is equal.
 REF_IMAGE = $(if $(HAVE_SOLUTIONS),out/compare/$(SCENE_NAME)-reference.png,labs/reference/$(SCENE_NAME).png)
+REF_EDGES = $(REF_IMAGE:.png=.edges)
 compare: submission-dir $(SUB_BUILD)/render $(BUILD)/bin/compare $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render)
 	@mkdir -p out/compare
 	$(SUB_BUILD)/render "$(SCENE)" -o out/compare/$(SCENE_NAME)-submission.png
-	$(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render "$(SCENE)" --quiet -o $(REF_IMAGE))
+	$(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render "$(SCENE)" --quiet -o $(REF_IMAGE) --edges $(REF_EDGES))
 	$(BUILD)/bin/compare out/compare/$(SCENE_NAME)-submission.png $(REF_IMAGE) \
-	    -o out/compare/$(SCENE_NAME).png
+	    --edges $(REF_EDGES) -o out/compare/$(SCENE_NAME).png
 
 # ---- the plain build's programs: each links what its own line names --------
 PROGRAMS   = compare pack htmlcheck gentests accuracy lookalike linkcheck stagecheck bench
@@ -157,8 +160,7 @@ $(BUILD)/bin/compare: $(BUILD)/kit/compare_main.o $(BUILD)/kit/libkit.a
 $(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
 # The report page's checker (tests/suites/report.sh).
 $(BUILD)/bin/htmlcheck: $(BUILD)/tools/htmlcheck_main.o
-# The public tests' expected values (commit them) and the reference's
-# accuracy on the hard cases (the README's tables), from the oracle.
+# The oracle's programs: the public tests' values (commit them), accuracy tables.
 $(BUILD)/bin/gentests: $(BUILD)/oracle/gentests_main.o $(BUILD)/oracle/liboracle.a \
                        $(BUILD)/grader/libgrader.a $(BUILD)/kit/libkit.a
 public-tests: $(BUILD)/bin/gentests
@@ -184,8 +186,7 @@ $(PART_KS:%=$(BUILD)/grader/harness_%.o): $(BUILD)/grader/harness_%.o: tests/gra
 $(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
 	$(Q)cp $< $@
 # On Linux runner_K loads the student's file as a shared object (cheaper than
-# a link), beside the instructor's reference of the other parts (runner_3, for
-# Part 3a, without 3b's).
+# a link), with the instructor's reference of the other parts (3a's: not 3b's).
 RUNNERS    = $(if $(filter Linux,$(SYSTEM)),$(PART_KS:%=$(BUILD)/grader/runner_%))
 runner_refs = $(if $(HAVE_SOLUTIONS),$(filter-out $(BUILD)/grader/ref_$(word $(1),$(STAGES)).o \
               $(if $(filter 3,$(1)),$(BUILD)/grader/ref_part3b_ray_color.o),$(GRADER_REF)))
@@ -224,7 +225,6 @@ gradescope: $(BUILD)/bin/pack
 	cp tests/gradescope/setup.sh tests/gradescope/run_autograder out/gradescope/bundle/
 	$(BUILD)/bin/pack zip out/gradescope/autograder.zip out/gradescope/bundle
 	@echo "wrote out/gradescope/autograder.zip"
-# The PrairieLearn question (tests/prairielearn/question.sh).
 prairielearn:
 	sh tests/prairielearn/question.sh out/prairielearn/raytracer-lab
 # The student kit: no solutions/, hidden tests, oracle or other instructor's
@@ -243,8 +243,8 @@ student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 	cp tests/unit/check.h tests/unit/test_vec3.c tests/unit/test_png.c tests/unit/test_scene.c \
 	   $(KIT_DIR)/tests/unit/
 	for s in $(wildcard labs/scenes/*.scene); do \
-	    $(BUILD)/sub/solutions/render $$s --quiet -o $(KIT_DIR)/labs/reference/$$(basename $$s .scene).png \
-	        || exit 1; \
+	    n=$(KIT_DIR)/labs/reference/$$(basename $$s .scene); \
+	    $(BUILD)/sub/solutions/render $$s --quiet -o $$n.png --edges $$n.edges || exit 1; \
 	done
 	$(BUILD)/bin/pack targz out/student-kit.tar.gz $(KIT_DIR) student-kit
 	@echo "wrote $(KIT_DIR)/ and out/student-kit.tar.gz"

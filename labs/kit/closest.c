@@ -22,8 +22,8 @@
 Vec3 closest_color(const Scene *scene, const Ray *ray) CLOSEST_APART;
 Vec3 closest_color_bvh(const Scene *scene, const Bvh *bvh, const Ray *ray, bool *stray) CLOSEST_APART;
 bool closest_probe(const Scene *scene, const Bvh *bvh) CLOSEST_APART;
-bool closest_rows(const Scene *scene, const Bvh *bvh, Image *img, double w, double h, int j0,
-                  int j1) CLOSEST_APART;
+bool closest_rows(const Scene *scene, const Bvh *bvh, Image *img, double w, double h,
+                  const double nudge[2], int j0, int j1) CLOSEST_APART;
 
 /* The closest hit so far: its t, its place in the plain loop's order
  * (spheres, planes, triangles) and its colour. */
@@ -233,14 +233,18 @@ bool closest_probe(const Scene *scene, const Bvh *bvh)
     return false;
 }
 
-bool closest_rows(const Scene *scene, const Bvh *bvh, Image *img, double w, double h, int j0, int j1)
+bool closest_rows(const Scene *scene, const Bvh *bvh, Image *img, double w, double h,
+                  const double nudge[2], int j0, int j1)
 {
     const int nx = scene->nx, ny = scene->ny;
     bool stray = false;
     for (int j = j0; j < j1; j++) {
         unsigned char *px = img->rgb + (size_t)3 * nx * (size_t)j;
         for (int i = 0; i < nx; i++) {
-            Ray ray = camera_ray(scene->eye, pixel_coordinates(i, j, nx, ny, w, h, scene->d));
+            Vec3 s = pixel_coordinates(i, j, nx, ny, w, h, scene->d);
+            if (nudge[0] != 0 || nudge[1] != 0)
+                s = vec3(s.x + nudge[0], s.y + nudge[1], s.z);
+            Ray ray = camera_ray(scene->eye, s);
             Vec3 color = bvh ? closest_color_bvh(scene, bvh, &ray, &stray) : closest_color(scene, &ray);
             if (stray)
                 return false;

@@ -61,9 +61,11 @@ Vec3 closest_color_bvh(const Scene *scene, const Bvh *bvh, const Ray *ray, bool 
 bool closest_probe(const Scene *scene, const Bvh *bvh);
 
 /* Draws rows j0 .. j1 - 1 of img (scene->nx x scene->ny) for an image plane
- * w x h: for each pixel, its centre (Part 2), the camera ray (Part 3b) and
+ * w x h: for each pixel, its centre (Part 2) plus nudge in x and y, the
+ * camera ray (Part 3b) and
  * closest_color, or closest_color_bvh when bvh is not NULL.  Returns
  * true, or false at the first stray hit (the rows are then unfinished). */
-bool closest_rows(const Scene *scene, const Bvh *bvh, Image *img, double w, double h, int j0, int j1);
+bool closest_rows(const Scene *scene, const Bvh *bvh, Image *img, double w, double h,
+                  const double nudge[2], int j0, int j1);
 
 #endif

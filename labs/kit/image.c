@@ -20,6 +20,8 @@
 #include "png.h"
 #include "zlib.h"
 
+_Static_assert(IMAGE_MAX_SIDE == PNG_MAX_SIDE, "every Image can be written as PNG, every PNG read");
+
 /* The largest file image_read reads: an RGBA PNG of the largest size,
  * stored uncompressed, with room to spare for its chunk overhead. */
 #define IMAGE_READ_MAX ((size_t)4 * IMAGE_MAX_SIDE * IMAGE_MAX_SIDE + ((size_t)16 << 20))
@@ -118,7 +120,7 @@ int image_write(const Image *img, const char *path, char *err, size_t errlen)
     char why[200];
     int rc;
     if (format == IMAGE_PNG) {
-        rc = png_encode(img, &bytes, why, sizeof why);
+        rc = png_encode(img->width, img->height, img->rgb, &bytes, why, sizeof why);
     } else {
         rc = image_encode_ppm(img, &bytes);
         snprintf(why, sizeof why, "out of memory");
@@ -262,7 +264,7 @@ int image_read(Image *img, const char *path, char *err, size_t errlen)
     }
     const unsigned char *p = bytes.data;
     if (png_has_signature(p, bytes.len))
-        rc = png_decode(p, bytes.len, img, why, sizeof why);
+        rc = png_decode(p, bytes.len, &img->width, &img->height, &img->rgb, why, sizeof why);
     else if (bytes.len >= 2 && p[0] == 'P' && p[1] == '6')
         rc = image_decode_ppm(p, bytes.len, img, why, sizeof why);
     else if (bytes.len >= 2 && p[0] == 'P' && p[1] == '3')

@@ -1,5 +1,6 @@
 /*
- * png.c - encoding and decoding PNG images in memory.  See png.h.
+ * png.c - encoding and decoding PNG images in memory, as raw RGB bytes.
+ * See png.h.
  */
 #include "png.h"
 
@@ -196,16 +197,16 @@ static int png_choose_filter(const unsigned char *row, const unsigned char *prev
 /* Builds the filtered image data: each row starts with its filter type,
  * chosen by the minimum sum of absolute differences.  Returns 0 or -1
  * (out of memory). */
-static int png_filter_image(const Image *img, KitBuf *raw)
+static int png_filter_image(int width, int height, const unsigned char *rgb, KitBuf *raw)
 {
-    size_t len = 3 * (size_t)img->width, rows = (size_t)img->height;
+    size_t len = 3 * (size_t)width, rows = (size_t)height;
     unsigned char *zero = calloc(len, 1);
     if (!zero || kit_buf_reserve(raw, rows * (len + 1)) != 0) {
         free(zero);
         return -1;
     }
     for (size_t j = 0; j < rows; j++) {
-        const unsigned char *row = img->rgb + j * len;
+        const unsigned char *row = rgb + j * len;
         const unsigned char *prev = j > 0 ? row - len : zero;
         unsigned char *dst = raw->data + raw->len;
         int type = png_choose_filter(row, prev, len, 3);
@@ -219,25 +220,25 @@ static int png_filter_image(const Image *img, KitBuf *raw)
 
 /* Writes the signature, IHDR, the IDAT chunks and IEND.  Returns 0, or -1
  * with a reason in err. */
-int png_encode(const Image *img, KitBuf *out, char *err, size_t errlen)
+int png_encode(int width, int height, const unsigned char *rgb, KitBuf *out, char *err,
+               size_t errlen)
 {
-    if (!img->rgb || img->width < 1 || img->height < 1 ||
-        img->width > IMAGE_MAX_SIDE || img->height > IMAGE_MAX_SIDE) {
-        snprintf(err, errlen, "cannot encode an image of %d x %d pixels as PNG",
-                 img->width, img->height);
+    if (!rgb || width < 1 || height < 1 || width > PNG_MAX_SIDE || height > PNG_MAX_SIDE) {
+        snprintf(err, errlen, "cannot encode an image of %d x %d pixels as PNG", width, height);
         return -1;
     }
     size_t old_len = out->len;
     KitBuf raw = {0}, z = {0};
     unsigned char ihdr[13];
-    png_put_be32(ihdr, (uint32_t)img->width);
-    png_put_be32(ihdr + 4, (uint32_t)img->height);
+    png_put_be32(ihdr, (uint32_t)width);
+    png_put_be32(ihdr + 4, (uint32_t)height);
     ihdr[8] = 8;            /* bit depth */
     ihdr[9] = 2;            /* colour type: RGB */
     ihdr[10] = 0;           /* compression: deflate */
     ihdr[11] = 0;           /* filter method: adaptive */
     ihdr[12] = 0;           /* not interlaced */
-    int rc = png_filter_image(img, &raw) == 0 && kit_zlib_compress(raw.data, raw.len, &z) == 0 &&
+    int rc = png_filter_image(width, height, rgb, &raw) == 0 &&
+             kit_zlib_compress(raw.data, raw.len, &z) == 0 &&
              kit_buf_append(out, png_signature, PNG_SIGNATURE_SIZE) == 0 &&
              png_put_chunk(out, "IHDR", ihdr, sizeof ihdr) == 0 ? 0 : -1;
     for (size_t at = 0; rc == 0 && at < z.len; at += PNG_IDAT_MAX) {
@@ -271,9 +272,9 @@ static int png_read_ihdr(const unsigned char *d, size_t n, PngHeader *h, char *e
     }
     uint32_t w = png_get_be32(d), ht = png_get_be32(d + 4);
     unsigned depth = d[8], type = d[9];
-    if (w < 1 || ht < 1 || w > IMAGE_MAX_SIDE || ht > IMAGE_MAX_SIDE) {
+    if (w < 1 || ht < 1 || w > PNG_MAX_SIDE || ht > PNG_MAX_SIDE) {
         snprintf(err, errlen, "PNG image is %lu x %lu pixels: each side must be 1 to %d",
-                 (unsigned long)w, (unsigned long)ht, IMAGE_MAX_SIDE);
+                 (unsigned long)w, (unsigned long)ht, PNG_MAX_SIDE);
         return -1;
     }
     if (type != 0 && type != 2 && type != 4 && type != 6) {
@@ -431,13 +432,14 @@ static int png_unfilter(unsigned char *raw, size_t rows, size_t stride, size_t b
 
 /* Signature, chunks, inflate, unfilter, then conversion to RGB.
  * Returns 0, or -1 with a reason. */
-int png_decode(const void *data, size_t n, Image *img, char *err, size_t errlen)
+int png_decode(const void *data, size_t n, int *width, int *height, unsigned char **rgb,
+               char *err, size_t errlen)
 {
     const unsigned char *p = data;
     PngHeader h = {0, 0, 0};
     KitBuf idat = {0}, raw = {0};
-    img->width = img->height = 0;
-    img->rgb = NULL;
+    *width = *height = 0;
+    *rgb = NULL;
     if (!png_has_signature(p, n)) {
         snprintf(err, errlen, "not a PNG file (bad signature)");
         return -1;
@@ -475,18 +477,20 @@ int png_decode(const void *data, size_t n, Image *img, char *err, size_t errlen)
          * and the buffer becomes the image's. */
         for (size_t j = 0; j < rows; j++)
             memmove(raw.data + j * stride, raw.data + j * (stride + 1) + 1, stride);
-        img->width = h.width;
-        img->height = h.height;
-        img->rgb = raw.data;
+        *width = h.width;
+        *height = h.height;
+        *rgb = raw.data;
         return 0;
     }
-    if (image_alloc(img, h.width, h.height, err, errlen) != 0) {
+    unsigned char *out = malloc(3 * (size_t)h.width * rows);
+    if (!out) {
+        snprintf(err, errlen, "out of memory for a %d x %d image", h.width, h.height);
         kit_buf_free(&raw);
         return -1;
     }
     for (size_t j = 0; j < rows; j++) {
         const unsigned char *src = raw.data + j * (stride + 1) + 1;
-        unsigned char *dst = img->rgb + j * 3 * (size_t)h.width;
+        unsigned char *dst = out + j * 3 * (size_t)h.width;
         for (size_t i = 0; i < (size_t)h.width; i++, src += h.channels, dst += 3) {
             int grey = h.channels < 3;
             dst[0] = src[0];
@@ -495,5 +499,8 @@ int png_decode(const void *data, size_t n, Image *img, char *err, size_t errlen)
         }
     }
     kit_buf_free(&raw);
+    *width = h.width;
+    *height = h.height;
+    *rgb = out;
     return 0;
 }

@@ -42,6 +42,7 @@ typedef struct {
     const Scene *scene;
     Image *img;
     double w, h;                 /* the image plane's size (Part 1)           */
+    double nudge[2];             /* RenderOptions' nudge                      */
     bool closest;                /* drawn by closest.h, not by ray_color      */
     const Bvh *bvh;              /* closest.h's hierarchy, or NULL            */
     atomic_bool stray;           /* a thread met a stray hit (closest.h)      */
@@ -116,6 +117,7 @@ static void render_rows(const RenderJob *job, int j0, int j1)
     const int nx = scene->nx, ny = scene->ny;
     const double w = job->w, h = job->h, d = scene->d;
     const Vec3 e = scene->eye;
+    const bool nudged = job->nudge[0] != 0 || job->nudge[1] != 0;
     for (int j = j0; j < j1; j++) {
         unsigned char *px = job->img->rgb + (size_t)3 * nx * (size_t)j;
         Vec3 last = { 0, 0, 0 };        /* the previous pixel's colour, once have_last */
@@ -124,8 +126,12 @@ static void render_rows(const RenderJob *job, int j0, int j1)
         for (int i0 = 0; i0 < nx; i0 += RENDER_RUN) {
             const int n = nx - i0 < RENDER_RUN ? nx - i0 : RENDER_RUN;
             Ray rays[RENDER_RUN];
-            for (int k = 0; k < n; k++)
-                rays[k] = camera_ray(e, pixel_coordinates(i0 + k, j, nx, ny, w, h, d));
+            for (int k = 0; k < n; k++) {
+                Vec3 s = pixel_coordinates(i0 + k, j, nx, ny, w, h, d);
+                if (nudged)
+                    s = vec3(s.x + job->nudge[0], s.y + job->nudge[1], s.z);
+                rays[k] = camera_ray(e, s);
+            }
             for (int k = 0; k < n; k++) {
                 Vec3 color = ray_color(scene, &rays[k]);
                 if (!have_last || memcmp(&color, &last, sizeof color) != 0) {
@@ -159,7 +165,8 @@ static void *render_worker(void *arg)
         crash_j0 = j0;
         if (!job->closest)
             render_rows(job, j0, j1);
-        else if (!closest_rows(job->scene, job->bvh, job->img, job->w, job->h, j0, j1))
+        else if (!closest_rows(job->scene, job->bvh, job->img, job->w, job->h, job->nudge,
+                                   j0, j1))
             atomic_store(&job->stray, true);
         atomic_fetch_add(&job->rows_done, j1 - j0);
     }
@@ -330,6 +337,8 @@ int render_scene(const Scene *scene, Image *img, const RenderOptions *opt,
     crash_j0 = -2;
     image_plane_size(scene->fov_degrees, (double)nx / ny, scene->d, &job.w, &job.h);
     crash_j0 = -1;
+    job.nudge[0] = opt ? opt->nudge[0] * job.w : 0;
+    job.nudge[1] = opt ? opt->nudge[1] * job.h : 0;
     job.rows_per_chunk = nx >= RENDER_CHUNK_PIXELS ? 1 : RENDER_CHUNK_PIXELS / nx;
     atomic_init(&job.next_row, 0);
     atomic_init(&job.rows_done, 0);

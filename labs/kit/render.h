@@ -40,6 +40,8 @@ typedef struct {
                             word when no row is drawn for long, and a note
                             when a stray hit sets the hierarchy aside     */
     RenderHierarchy hierarchy;
+    double nudge[2];     /* added to every pixel centre's x and y: 0, but
+                            for the renders that find edges (edges.h)     */
 } RenderOptions;
 
 typedef struct {

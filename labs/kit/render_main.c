@@ -1,7 +1,8 @@
 /*
  * render_main.c - the `render` program: a scene file in, a PNG or PPM out.
  *
- *     render SCENE [--size WxH] [-o OUT] [--threads N] [--hierarchy auto|on|off] [--quiet]
+ *     render SCENE [--size WxH] [-o OUT] [--threads N] [--hierarchy auto|on|off]
+ *            [--edges FILE] [--quiet]
  *
  * Prints the time taken and the rays per second, and for a scene with
  * triangles the time taken to read it and the hierarchy built.  Exit
@@ -21,6 +22,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "edges.h"
 #include "image.h"
 #include "render.h"
 #include "scene.h"
@@ -31,6 +33,7 @@
 typedef struct {
     const char *scene_path;
     const char *out_path;        /* NULL: out/<scene name>.png */
+    const char *edges_path;      /* NULL: no file of edges     */
     int nx, ny;                  /* 0: the scene's own size    */
     int threads;                 /* 0: one per core            */
     RenderHierarchy hierarchy;
@@ -42,13 +45,15 @@ static void render_usage(FILE *f)
 {
     fprintf(f,
             "usage: render SCENE [--size WxH] [-o OUT] [--threads N] [--hierarchy auto|on|off]"
-            " [--quiet]\n"
+            " [--edges FILE] [--quiet]\n"
             "  renders the scene file SCENE with the stage files built in\n"
             "  --size WxH   image size instead of the scene's, 1..%d each side\n"
             "  -o OUT       output image, .png or .ppm (default out/<scene name>.png)\n"
             "  --threads N  worker threads, 1..%d (default one per core)\n"
             "  --hierarchy  for a scene with planes or triangles, a bounding volume hierarchy\n"
             "               over its spheres and triangles: auto (with %d or more), on, off\n"
+            "  --edges FILE also write the pixels on an edge, whose colour a ray moved by a\n"
+            "               rounding changes, and their other colours (for compare --edges)\n"
             "  --quiet      print nothing but errors\n"
             "exit status: 0 done, 1 bad scene or output, 2 bad usage\n",
             IMAGE_MAX_SIDE, RENDER_MAIN_MAX_THREADS, RENDER_HIERARCHY_MIN);
@@ -104,7 +109,7 @@ static bool render_main_image_name(const char *path)
  * is wrong and the usage to stderr.  "--help" prints the usage and exits. */
 static int render_main_args(int argc, char **argv, RenderArgs *args)
 {
-    RenderArgs none = { NULL, NULL, 0, 0, 0, RENDER_HIERARCHY_AUTO, false };
+    RenderArgs none = { NULL, NULL, NULL, 0, 0, 0, RENDER_HIERARCHY_AUTO, false };
     *args = none;
     for (int k = 1; k < argc; k++) {
         const char *a = argv[k];
@@ -115,7 +120,7 @@ static int render_main_args(int argc, char **argv, RenderArgs *args)
         } else if (strcmp(a, "--quiet") == 0 || strcmp(a, "-q") == 0) {
             args->quiet = true;
         } else if (strcmp(a, "--size") == 0 || strcmp(a, "-o") == 0 || strcmp(a, "--threads") == 0
-                   || strcmp(a, "--hierarchy") == 0) {
+                   || strcmp(a, "--hierarchy") == 0 || strcmp(a, "--edges") == 0) {
             if (!value) {
                 fprintf(stderr, "render: %s needs a value\n", a);
                 goto usage;
@@ -129,6 +134,8 @@ static int render_main_args(int argc, char **argv, RenderArgs *args)
                     goto usage;
                 }
                 args->out_path = value;
+            } else if (strcmp(a, "--edges") == 0) {
+                args->edges_path = value;
             } else if (strcmp(a, "--hierarchy") == 0) {
                 /* in RenderHierarchy's order */
                 static const char *const modes[] = { "auto", "off", "on" };
@@ -339,6 +346,37 @@ static void render_main_report(const char *name, const Scene *scene, double read
            stats->stray ? ", then set it aside: a stray hit (see the note above)" : "");
 }
 
+/* Renders scene four more times, each pixel centre nudged by EDGES_NUDGE
+ * of the image plane left, right, up and down, and writes the pixels of
+ * img whose colour changes to path (edges.h).  Returns 0, or -1 with a
+ * reason in err. */
+static int render_main_edges(const Scene *scene, const Image *img, RenderOptions opt,
+                             const char *path, bool quiet, char *err, size_t errlen)
+{
+    static const double way[4][2] = { { -1, 0 }, { 1, 0 }, { 0, -1 }, { 0, 1 } };
+    Image nudged[4] = { { 0, 0, NULL } };
+    Edges edges = { 0, 0, 0, NULL };
+    int status = 0;
+    opt.progress = false;
+    for (int k = 0; k < 4 && status == 0; k++) {
+        opt.nudge[0] = way[k][0] * EDGES_NUDGE;
+        opt.nudge[1] = way[k][1] * EDGES_NUDGE;
+        status = image_alloc(&nudged[k], scene->nx, scene->ny, err, errlen);
+        if (status == 0)
+            status = render_scene(scene, &nudged[k], &opt, NULL, err, errlen);
+    }
+    if (status == 0)
+        status = edges_find(&edges, img, nudged, err, errlen);
+    if (status == 0)
+        status = edges_write(&edges, path, err, errlen);
+    if (status == 0 && !quiet)
+        printf("wrote %s: %zu pixel%s on an edge\n", path, edges.count, edges.count == 1 ? "" : "s");
+    edges_free(&edges);
+    for (int k = 0; k < 4; k++)
+        image_free(&nudged[k]);
+    return status;
+}
+
 /* Renders as the command line says.  Returns the exit status: 0 done,
  * 1 bad scene or output, 2 bad usage. */
 int main(int argc, char **argv)
@@ -374,7 +412,7 @@ int main(int argc, char **argv)
 
     Image img;
     RenderStats stats;
-    RenderOptions opt = { args.threads, !args.quiet, args.hierarchy };
+    RenderOptions opt = { args.threads, !args.quiet, args.hierarchy, { 0, 0 } };
     int status = 1;
     if (image_alloc(&img, scene.nx, scene.ny, err, sizeof err) < 0) {
         fprintf(stderr, "render: %s\n", err);
@@ -393,6 +431,11 @@ int main(int argc, char **argv)
                        stats.threads, stats.threads == 1 ? "" : "s", stats.seconds,
                        stats.rays_per_second / 1e6, stats.rays_per_second / 1e6 / stats.threads);
                 printf("wrote %s\n", out);
+            }
+            if (args.edges_path
+                && render_main_edges(&scene, &img, opt, args.edges_path, args.quiet, err, sizeof err) < 0) {
+                fprintf(stderr, "render: %s\n", err);
+                status = 1;
             }
         }
         image_free(&img);

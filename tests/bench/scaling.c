@@ -71,7 +71,7 @@ static double scale_render(Scene *scene, int nx, int ny, RenderHierarchy h, int 
     scene->ny = ny;
     if (image_alloc(&img, nx, ny, err, errlen) != 0)
         return -1;
-    RenderOptions opt = { 1, false, h };
+    RenderOptions opt = { 1, false, h, { 0, 0 } };
     for (int r = 0; r < reps; r++) {
         if (render_scene(scene, &img, &opt, last, err, errlen) != 0) {
             image_free(&img);

@@ -11,7 +11,7 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "class_model.h"
-#include "figures.h"
+#include "fig_draw.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -6,7 +6,7 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "fig_ray.h"
-#include "figures.h"
+#include "fig_draw.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -259,252 +259,325 @@ static double line_stretch(const RayFig *f)
     return isfinite(k) ? k : 1;      /* at least 5: x is more than 20 / 3 */
 }
 
-void ray_figure(Markup *m, const RayFig *given)
-{
-    char buf[64], buf2[64];
-    /* a grazing plane is drawn with heights stretched: b becomes k b, so
-     * the line A a + B b = C becomes A a + (B / k) b = C */
-    const double stretch = line_stretch(given);
-    RayFig stretched;
-    const RayFig *f = given;
-    if (stretch > 1) {
-        stretched = *given;
-        stretched.line_B = given->line_B / stretch;
-        f = &stretched;
-    }
-    double aw = f->want_hit ? f->want_t * f->rlen : NAN;
-    double ag = f->got_known && f->got_hit ? f->got_t * f->rlen : NAN;
-    const RayCircle *tc = f->target >= 0 && f->target < f->ncircles ? &f->circles[f->target] : NULL;
+/* ---- the figure ---------------------------------------------------------------- */
 
-    /* How far the interesting things are from e. */
-    double L = isfinite(aw) ? fabs(aw) : 0;
+/* A figure as ray_figure lays it out: what its steps share. */
+typedef struct {
+    const RayFig *f;           /* the figure, with heights stretched (line_stretch) */
+    double stretch;            /* by how much (1: not at all)                       */
+    double aw, ag;             /* a of the expected and of the returned hit, or NaN */
+    bool got_drawable;         /* the returned hit is near enough to be drawn       */
+    bool both;                 /* both hits are drawn, and apart                    */
+    const RayCircle *tc;       /* the circle the hits are about, or NULL            */
+    double fa, fb;             /* the plane's foot (line_foot), or 0, 0             */
+    Box bx;                    /* what the main window shows                        */
+    int nwin;                  /* the windows: the main one, then zoomed-in ones    */
+    FigView win[3];
+    const char *why[3];        /* why each zoomed-in window is there                */
+    int digits;                /* of the t in the labels                            */
+} RayLayout;
+
+/* How far the interesting things are from e: the expected hit, the
+ * circles' nearest points and the plane's foot (or else the circles'
+ * radii, or 1); and the returned hit, when it is near enough to draw
+ * (ly->got_drawable says whether). */
+static double ray_reach(RayLayout *ly)
+{
+    const RayFig *f = ly->f;
+    double L = isfinite(ly->aw) ? fabs(ly->aw) : 0;
     for (int k = 0; k < f->ncircles; k++) {
         const RayCircle *c = &f->circles[k];
         double d = hypot(c->a, c->b);
         L = fmax(L, d > c->R ? d - c->R : 0);
     }
-    double fa = 0, fb = 0;
-    if (f->has_line) {
-        line_foot(f, &fa, &fb);
-        L = fmax(L, hypot(fa, fb));
-    }
+    if (f->has_line)
+        L = fmax(L, hypot(ly->fa, ly->fb));
     if (!(L > 0))
         for (int k = 0; k < f->ncircles; k++)
             L = fmax(L, f->circles[k].R);
     if (!(L > 0))
         L = 1;
-    bool got_drawable = isfinite(ag) && fabs(ag) <= 50 * L;
-    if (got_drawable)
-        L = fmax(L, fabs(ag));
+    ly->got_drawable = isfinite(ly->ag) && fabs(ly->ag) <= 50 * L;
+    if (ly->got_drawable)
+        L = fmax(L, fabs(ly->ag));
+    return L;
+}
 
-    Box bx = { 0, 0, 0, 0, false };
-    box_add(&bx, 0, 0);
-    if (isfinite(aw))
-        box_add(&bx, aw, 0);
-    if (got_drawable)
-        box_add(&bx, ag, 0);
+/* The world box of the main window (ly->bx), for things within about L
+ * of e: e, the hits, the circles (of one far larger, the part near e and
+ * where it crosses the axis), the plane's foot with room for its normal,
+ * some of the ray ahead of e, and a little room above and below the axis. */
+static void ray_main_box(RayLayout *ly, double L)
+{
+    const RayFig *f = ly->f;
+    Box *bx = &ly->bx;
+    box_add(bx, 0, 0);
+    if (isfinite(ly->aw))
+        box_add(bx, ly->aw, 0);
+    if (ly->got_drawable)
+        box_add(bx, ly->ag, 0);
     for (int k = 0; k < f->ncircles; k++) {
         const RayCircle *c = &f->circles[k];
         double d = hypot(c->a, c->b);
         if (c->R <= 3 * L) {
-            box_add(&bx, c->a - c->R, c->b - c->R);
-            box_add(&bx, c->a + c->R, c->b + c->R);
+            box_add(bx, c->a - c->R, c->b - c->R);
+            box_add(bx, c->a + c->R, c->b + c->R);
         } else if (d > 0) {
-            box_add(&bx, c->a * (1 - c->R / d), c->b * (1 - c->R / d));
+            box_add(bx, c->a * (1 - c->R / d), c->b * (1 - c->R / d));
             if (c->b <= c->R) {
                 double half = sqrt((c->R - c->b) * (c->R + c->b));
                 if (fabs(c->a - half) <= 3 * L)
-                    box_add(&bx, c->a - half, 0);
+                    box_add(bx, c->a - half, 0);
                 if (fabs(c->a + half) <= 3 * L)
-                    box_add(&bx, c->a + half, 0);
+                    box_add(bx, c->a + half, 0);
             }
         }
     }
     if (f->has_line) {
-        box_add(&bx, fa, fb);
+        box_add(bx, ly->fa, ly->fb);
         /* and room for the normal's arrow and label on the side it points
          * to (past the window's edge, a normal along the ray is not seen) */
-        double n = hypot(f->line_A, f->line_B), room = 0.2 * fmax(bx.x1 - bx.x0, bx.y1 - bx.y0);
-        box_add(&bx, fa + room * f->line_A / n, fb + room * f->line_B / n);
+        double n = hypot(f->line_A, f->line_B), room = 0.2 * fmax(bx->x1 - bx->x0, bx->y1 - bx->y0);
+        box_add(bx, ly->fa + room * f->line_A / n, ly->fb + room * f->line_B / n);
     }
-    /* keep some of the ray ahead of e in view, and a little room above
-     * and below the axis */
-    if (bx.x1 < 0.25 * (bx.x1 - bx.x0))
-        box_add(&bx, 0.25 * (bx.x1 - bx.x0), 0);
+    /* keep some of the ray ahead of e in view */
+    if (bx->x1 < 0.25 * (bx->x1 - bx->x0))
+        box_add(bx, 0.25 * (bx->x1 - bx->x0), 0);
     /* keep a little room above and below the axis */
-    double span = fmax(bx.x1 - bx.x0, bx.y1 - bx.y0);
-    box_add(&bx, bx.x0, -0.06 * span);
-    box_add(&bx, bx.x0, 0.06 * span);
+    double span = fmax(bx->x1 - bx->x0, bx->y1 - bx->y0);
+    box_add(bx, bx->x0, -0.06 * span);
+    box_add(bx, bx->x0, 0.06 * span);
+}
 
-    FigView main;
-    fig_fit(&main, bx.x0, bx.y0, bx.x1, bx.y1, 0.06, 10, TOP, 740, WH);
+/* The next reason to zoom in from a window of s pixels per unit, with the
+ * world box (zb) the closer window shows; NULL when none is left.  Each
+ * reason is given once: used[] holds those given (the sphere too small,
+ * the ray grazing it, the two hits too close, e and the plane too close). */
+static const char *zoom_reason(const RayLayout *ly, double s, bool used[4], Box *zb)
+{
+    const RayCircle *tc = ly->tc;
+    double aw = ly->aw, ag = ly->ag;
+    if (tc && !used[0] && tc->R * s < 6) {
+        used[0] = true;
+        box_add(zb, tc->a - tc->R, tc->b - tc->R);
+        box_add(zb, tc->a + tc->R, tc->b + tc->R);
+        box_add(zb, tc->a, 0);
+        if (isfinite(aw) && fabs(aw - tc->a) < 6 * tc->R)
+            box_add(zb, aw, 0);
+        if (ly->got_drawable && fabs(ag - tc->a) < 6 * tc->R)
+            box_add(zb, ag, 0);
+        return "the sphere";
+    }
+    if (tc && !used[1] && fabs(tc->b - tc->R) < 0.05 * tc->R && fabs(tc->b - tc->R) * s < 4) {
+        used[1] = true;
+        /* the gap between the ray and the edge, as wide again on each
+         * side; an exact tangent has none: close enough to see it touch */
+        double g = tc->b != tc->R ? fabs(tc->b - tc->R) : 0.02 * tc->R;
+        box_add(zb, tc->a - 8 * g, -5 * g);
+        box_add(zb, tc->a + 8 * g, 5 * g);
+        return "where the ray grazes the sphere";
+    }
+    if (ly->both && !used[2] && fabs(aw - ag) * s < 10) {
+        used[2] = true;
+        double d = fabs(aw - ag), mid = aw / 2 + ag / 2;
+        box_add(zb, mid - 2.5 * d, -1.2 * d);
+        box_add(zb, mid + 2.5 * d, 1.2 * d);
+        return "the two hits";
+    }
+    double g = hypot(ly->fa, ly->fb);
+    if (ly->f->has_line && !used[3] && isfinite(aw) && g * s < 6 && g > 0) {
+        used[3] = true;
+        box_add(zb, -2 * g, -2 * g);
+        box_add(zb, fmax(2 * g, 1.2 * aw), 2 * g);
+        return "e and the plane";
+    }
+    return NULL;
+}
 
-    /* Zoomed-in windows (at most two, each closer than the last), while
-     * what matters is too small at the scale so far. */
-    FigView win[3];
-    const char *why[3] = { NULL, NULL, NULL };
-    int nwin = 1;
-    win[0] = main;
-    bool both = isfinite(aw) && got_drawable && aw != ag;
-    bool used_small = false, used_close = false, used_graze = false, used_line = false;
-    while (nwin < 3) {
-        double s = win[nwin - 1].s;
+/* Zoomed-in windows after the main one (at most two, each closer than the
+ * last), while what matters is too small at the scale so far. */
+static void zoom_in(RayLayout *ly)
+{
+    bool used[4] = { false, false, false, false };
+    ly->nwin = 1;
+    while (ly->nwin < 3) {
+        double s = ly->win[ly->nwin - 1].s;
         Box zb = { 0, 0, 0, 0, false };
-        const char *what = NULL;
-        if (tc && !used_small && tc->R * s < 6) {
-            what = "the sphere";
-            used_small = true;
-            box_add(&zb, tc->a - tc->R, tc->b - tc->R);
-            box_add(&zb, tc->a + tc->R, tc->b + tc->R);
-            box_add(&zb, tc->a, 0);
-            if (isfinite(aw) && fabs(aw - tc->a) < 6 * tc->R)
-                box_add(&zb, aw, 0);
-            if (got_drawable && fabs(ag - tc->a) < 6 * tc->R)
-                box_add(&zb, ag, 0);
-        } else if (tc && !used_graze && fabs(tc->b - tc->R) < 0.05 * tc->R
-                   && fabs(tc->b - tc->R) * s < 4) {
-            what = "where the ray grazes the sphere";
-            used_graze = true;
-            /* the gap between the ray and the edge, as wide again on each
-             * side; an exact tangent has none: close enough to see it touch */
-            double g = tc->b != tc->R ? fabs(tc->b - tc->R) : 0.02 * tc->R;
-            box_add(&zb, tc->a - 8 * g, -5 * g);
-            box_add(&zb, tc->a + 8 * g, 5 * g);
-        } else if (both && !used_close && fabs(aw - ag) * s < 10) {
-            what = "the two hits";
-            used_close = true;
-            double d = fabs(aw - ag), mid = aw / 2 + ag / 2;
-            box_add(&zb, mid - 2.5 * d, -1.2 * d);
-            box_add(&zb, mid + 2.5 * d, 1.2 * d);
-        } else if (f->has_line && !used_line && isfinite(aw) && hypot(fa, fb) * s < 6
-                   && hypot(fa, fb) > 0) {
-            what = "e and the plane";
-            used_line = true;
-            double g = hypot(fa, fb);
-            box_add(&zb, -2 * g, -2 * g);
-            box_add(&zb, fmax(2 * g, 1.2 * aw), 2 * g);
-        }
+        const char *what = zoom_reason(ly, s, used, &zb);
         if (!what || !zb.any)
             break;
         FigView z;
         fig_fit(&z, zb.x0, zb.y0, zb.x1, zb.y1, 0.12, 0, TOP, 220, WH);
         if (!(z.s > 4 * s))
             continue;               /* no closer than now: try the next reason */
-        why[nwin] = what;
-        win[nwin++] = z;
+        ly->why[ly->nwin] = what;
+        ly->win[ly->nwin++] = z;
     }
-    /* Lay the windows out side by side: the main one keeps its left edge. */
+}
+
+/* Lays the windows out side by side: the main one keeps its left edge. */
+static void lay_out_windows(RayLayout *ly)
+{
     static const double widths[3][3] = { { 740, 0, 0 }, { 470, 260, 0 }, { 300, 210, 210 } };
+    const FigView main = ly->win[0];
+    const Box *bx = &ly->bx;
     double x = 10;
-    for (int k = 0; k < nwin; k++) {
-        double w = widths[nwin - 1][k];
+    for (int k = 0; k < ly->nwin; k++) {
+        double w = widths[ly->nwin - 1][k];
+        FigView *v = &ly->win[k];
         if (k == 0) {
             /* its left edge kept, unless that would push the far end of
              * what it shows past the right: then what it shows, centred
              * (a main window fitted to its height starts well left of
              * what it shows) */
             double left = main.cx - main.pw / 2 / main.s;
-            win[0].pw = w;
-            win[0].s = fmin(main.s, w / fmax((bx.x1 - bx.x0) * 1.12, 1e-300));
-            double seen = w / win[0].s;
-            if (left + seen < bx.x1 + 0.06 * (bx.x1 - bx.x0))
-                left = (bx.x0 + bx.x1) / 2 - seen / 2;
-            win[0].cx = left + w / 2 / win[0].s;
+            v->pw = w;
+            v->s = fmin(main.s, w / fmax((bx->x1 - bx->x0) * 1.12, 1e-300));
+            double seen = w / v->s;
+            if (left + seen < bx->x1 + 0.06 * (bx->x1 - bx->x0))
+                left = (bx->x0 + bx->x1) / 2 - seen / 2;
+            v->cx = left + w / 2 / v->s;
         } else {
-            FigView z = win[k];
+            FigView z = *v;
             double cx = z.cx, cy = z.cy, sw = z.pw / z.s, sh = z.ph / z.s;
-            fig_fit(&win[k], cx - sw / 2, cy - sh / 2, cx + sw / 2, cy + sh / 2, 0, x, TOP, w, WH);
+            fig_fit(v, cx - sw / 2, cy - sh / 2, cx + sw / 2, cy + sh / 2, 0, x, TOP, w, WH);
         }
-        win[k].px0 = x;
+        v->px0 = x;
         x += w + 10;
     }
-    main = win[0];
+}
 
-    fig_begin(m, FW, FH + (f->note ? 16 : 0), f->title ? f->title : "the ray");
-    svg_text(m, 10, 19, "start", 14, COL_TEXT, true, "%s", f->title ? f->title : "");
-    /* enough digits that the expected and the returned t read apart */
+/* Enough digits that the expected and the returned t read apart. */
+static int ray_digits(const RayFig *f)
+{
+    char buf[64], buf2[64];
     int digits = 6;
     while (digits < 17 && f->want_hit && f->got_known && f->got_hit && f->want_t != f->got_t
            && strcmp(fig_num(buf, sizeof buf, f->want_t, digits), fig_num(buf2, sizeof buf2, f->got_t, digits)) == 0)
         digits++;
-    bool got_shown = false;
-    for (int k = 0; k < nwin; k++) {
-        const FigView *v = &win[k];
-        bool want_in = isfinite(aw) && fig_inside(v, aw, 0);
-        bool got_in = got_drawable && fig_inside(v, ag, 0);
-        got_shown = got_shown || got_in;
-        const char *frame_col = k ? "#7a4fbf" : "#bbbbbb";
-        fig_window(m, v, k ? "#f8f5fd" : "#fbfbfb");
-        draw_content(m, v, f, aw, ag, want_in, got_in, k == 0);
-        if (k + 1 < nwin) {
-            /* where the next window is, in this one */
-            const FigView *z = &win[k + 1];
-            double x0 = fig_px(v, z->cx - z->pw / 2 / z->s), x1 = fig_px(v, z->cx + z->pw / 2 / z->s);
-            double ya = fig_py(v, z->cy + z->ph / 2 / z->s), yb = fig_py(v, z->cy - z->ph / 2 / z->s);
-            double cxp = (x0 + x1) / 2, cyp = (ya + yb) / 2, rw = fmax(x1 - x0, 10), rh = fmax(yb - ya, 10);
-            svg_rect(m, cxp - rw / 2, cyp - rh / 2, rw, rh, "none", "#7a4fbf", 1.4);
-        }
-        fig_window_end(m);
-        svg_rect(m, v->px0, v->py0, v->pw, v->ph, "none", frame_col, k ? 1.4 : 1);
-        /* labels of the hits, outside the clipping so that none is cut:
-         * expected above the axis, returned below */
-        double y0 = fig_py(v, 0), lo = v->px0 + 4, hi = v->px0 + v->pw - 4;
-        bool apart = !(want_in && got_in) || fabs(fig_px(v, aw) - fig_px(v, ag)) > 4;
-        if (want_in) {
-            if (k == 0)
-                snprintf(buf2, sizeof buf2, "expected t = %s", fig_num(buf, sizeof buf, f->want_t, digits));
-            else
-                snprintf(buf2, sizeof buf2, "expected");
-            double w = 6.6 * (double)strlen(buf2), px = fmin(fmax(fig_px(v, aw), lo + w / 2), hi - w / 2);
-            svg_text(m, px, y0 - 14, "middle", 12, COL_WANT, true, "%s", buf2);
-        }
-        if (got_in && (apart || k == 0)) {
-            if (k == 0)
-                snprintf(buf2, sizeof buf2, "your t = %s", fig_num(buf, sizeof buf, f->got_t, digits));
-            else
-                snprintf(buf2, sizeof buf2, "yours");
-            double w = 6.6 * (double)strlen(buf2), px = fmin(fmax(fig_px(v, ag), lo + w / 2), hi - w / 2);
-            svg_text(m, px, y0 + 34, "middle", 12, COL_GOT, true, "%s", buf2);
-        }
-        if (k > 0) {
-            svg_text(m, v->px0 + 6, v->py0 + 16, "start", 12, "#7a4fbf", true, "zoomed in %s times:",
-                     fig_times(buf, sizeof buf, v->s / main.s));
-            svg_text(m, v->px0 + 6, v->py0 + 30, "start", 12, "#7a4fbf", true, "%s", why[k]);
-            char note[120];
-            snprintf(note, sizeof note, "this window is %s wide", fig_num(buf2, sizeof buf2, v->pw / v->s, 2));
-            if (both && fabs(aw - ag) * v->s < 3 && k == nwin - 1)
-                snprintf(note, sizeof note, "the two hits are %s apart", fig_num(buf, sizeof buf, fabs(aw - ag), 2));
-            if (strcmp(why[k], "where the ray grazes the sphere") == 0 && tc) {
-                if (tc->b == tc->R)
-                    snprintf(note, sizeof note, "the ray touches the edge: it passes exactly on it");
-                else
-                    snprintf(note, sizeof note, "the ray passes %s %s the edge",
-                             fig_num(buf, sizeof buf, fabs(tc->b - tc->R), 2),
-                             tc->b < tc->R ? "inside" : "outside");
-            }
-            svg_text(m, v->px0 + 6, v->py0 + v->ph - 8, "start", 11, COL_NOTE, false, "%s", note);
-        } else if (stretch > 1) {
-            /* on the side of the ray away from the plane at e */
-            bool below = f->line_C / f->line_B < 0;
-            svg_text(m, v->px0 + 6, below ? v->py0 + 16 : v->py0 + v->ph - 8, "start", 12, "#7a4fbf", true,
-                     "heights off the ray stretched %s times", fig_times(buf, sizeof buf, stretch));
-        }
-    }
-    /* a returned hit off the figure, or at a t that is not a number */
-    if (f->got_known && f->got_hit && !got_shown && isnan(f->got_t)) {
-        svg_text(m, main.px0 + main.pw - 6, fig_py(&main, 0) + 34, "end", 12, COL_GOT, true,
-                 "your t = NaN: no point of the ray");
-    } else if (f->got_known && f->got_hit && !got_shown) {
-        bool ahead = !(ag < 0) && !(f->got_t < 0);
-        double y0 = fig_py(&main, 0);
-        double xe = ahead ? main.px0 + main.pw - 6 : main.px0 + 6;
-        svg_text(m, xe, y0 + 34, ahead ? "end" : "start", 12, COL_GOT, true, "%syour t = %s: off "
-                 "the figure%s", ahead ? "" : "\xE2\x86\x90 ", fig_num(buf, sizeof buf, f->got_t, 6),
-                 ahead ? " \xE2\x86\x92" : "");
-    }
+    return digits;
+}
 
-    /* the legend */
-    char wt[120], gt[120];
+/* A hit's label at height y, over the hit at a but inside the window's
+ * frame. */
+static void hit_label(Markup *m, const FigView *v, double a, double y, const char *color, const char *text)
+{
+    double lo = v->px0 + 4, hi = v->px0 + v->pw - 4;
+    double w = 6.6 * (double)strlen(text), px = fmin(fmax(fig_px(v, a), lo + w / 2), hi - w / 2);
+    svg_text(m, px, y, "middle", 12, color, true, "%s", text);
+}
+
+/* The labels of the hits in window k, outside the clipping so that none
+ * is cut: expected above the axis, returned below; with their t in the
+ * main window. */
+static void hit_labels(Markup *m, const RayLayout *ly, int k, bool want_in, bool got_in)
+{
+    const RayFig *f = ly->f;
+    const FigView *v = &ly->win[k];
+    char buf[64], text[64];
+    double y0 = fig_py(v, 0);
+    bool apart = !(want_in && got_in) || fabs(fig_px(v, ly->aw) - fig_px(v, ly->ag)) > 4;
+    if (want_in) {
+        if (k == 0)
+            snprintf(text, sizeof text, "expected t = %s", fig_num(buf, sizeof buf, f->want_t, ly->digits));
+        else
+            snprintf(text, sizeof text, "expected");
+        hit_label(m, v, ly->aw, y0 - 14, COL_WANT, text);
+    }
+    if (got_in && (apart || k == 0)) {
+        if (k == 0)
+            snprintf(text, sizeof text, "your t = %s", fig_num(buf, sizeof buf, f->got_t, ly->digits));
+        else
+            snprintf(text, sizeof text, "yours");
+        hit_label(m, v, ly->ag, y0 + 34, COL_GOT, text);
+    }
+}
+
+/* The words in window k's corners: of a zoomed-in window, how far it
+ * zooms, why, and how wide it is (or how far apart the hits are, or the
+ * ray from the sphere's edge); of the main window, how far heights are
+ * stretched, if they are. */
+static void window_note(Markup *m, const RayLayout *ly, int k)
+{
+    const RayFig *f = ly->f;
+    const FigView *v = &ly->win[k];
+    const RayCircle *tc = ly->tc;
+    char buf[64], buf2[64];
+    if (k > 0) {
+        svg_text(m, v->px0 + 6, v->py0 + 16, "start", 12, "#7a4fbf", true, "zoomed in %s times:",
+                 fig_times(buf, sizeof buf, v->s / ly->win[0].s));
+        svg_text(m, v->px0 + 6, v->py0 + 30, "start", 12, "#7a4fbf", true, "%s", ly->why[k]);
+        char note[120];
+        snprintf(note, sizeof note, "this window is %s wide", fig_num(buf2, sizeof buf2, v->pw / v->s, 2));
+        if (ly->both && fabs(ly->aw - ly->ag) * v->s < 3 && k == ly->nwin - 1)
+            snprintf(note, sizeof note, "the two hits are %s apart",
+                     fig_num(buf, sizeof buf, fabs(ly->aw - ly->ag), 2));
+        if (strcmp(ly->why[k], "where the ray grazes the sphere") == 0 && tc) {
+            if (tc->b == tc->R)
+                snprintf(note, sizeof note, "the ray touches the edge: it passes exactly on it");
+            else
+                snprintf(note, sizeof note, "the ray passes %s %s the edge",
+                         fig_num(buf, sizeof buf, fabs(tc->b - tc->R), 2),
+                         tc->b < tc->R ? "inside" : "outside");
+        }
+        svg_text(m, v->px0 + 6, v->py0 + v->ph - 8, "start", 11, COL_NOTE, false, "%s", note);
+    } else if (ly->stretch > 1) {
+        /* on the side of the ray away from the plane at e */
+        bool below = f->line_C / f->line_B < 0;
+        svg_text(m, v->px0 + 6, below ? v->py0 + 16 : v->py0 + v->ph - 8, "start", 12, "#7a4fbf", true,
+                 "heights off the ray stretched %s times", fig_times(buf, sizeof buf, ly->stretch));
+    }
+}
+
+/* Draws window k: its content, the frame of the next window in it, its
+ * own frame, the hits' labels and its note.  Returns whether the returned
+ * hit shows in it. */
+static bool draw_window(Markup *m, const RayLayout *ly, int k)
+{
+    const FigView *v = &ly->win[k];
+    bool want_in = isfinite(ly->aw) && fig_inside(v, ly->aw, 0);
+    bool got_in = ly->got_drawable && fig_inside(v, ly->ag, 0);
+    fig_window(m, v, k ? "#f8f5fd" : "#fbfbfb");
+    draw_content(m, v, ly->f, ly->aw, ly->ag, want_in, got_in, k == 0);
+    if (k + 1 < ly->nwin) {
+        /* where the next window is, in this one */
+        const FigView *z = &ly->win[k + 1];
+        double x0 = fig_px(v, z->cx - z->pw / 2 / z->s), x1 = fig_px(v, z->cx + z->pw / 2 / z->s);
+        double ya = fig_py(v, z->cy + z->ph / 2 / z->s), yb = fig_py(v, z->cy - z->ph / 2 / z->s);
+        double cxp = (x0 + x1) / 2, cyp = (ya + yb) / 2, rw = fmax(x1 - x0, 10), rh = fmax(yb - ya, 10);
+        svg_rect(m, cxp - rw / 2, cyp - rh / 2, rw, rh, "none", "#7a4fbf", 1.4);
+    }
+    fig_window_end(m);
+    svg_rect(m, v->px0, v->py0, v->pw, v->ph, "none", k ? "#7a4fbf" : "#bbbbbb", k ? 1.4 : 1);
+    hit_labels(m, ly, k, want_in, got_in);
+    window_note(m, ly, k);
+    return got_in;
+}
+
+/* A returned hit shown in no window: off the figure, or at a t that is
+ * not a number. */
+static void got_off_figure(Markup *m, const RayLayout *ly)
+{
+    const RayFig *f = ly->f;
+    const FigView *main = &ly->win[0];
+    char buf[64];
+    if (isnan(f->got_t)) {
+        svg_text(m, main->px0 + main->pw - 6, fig_py(main, 0) + 34, "end", 12, COL_GOT, true,
+                 "your t = NaN: no point of the ray");
+        return;
+    }
+    bool ahead = !(ly->ag < 0) && !(f->got_t < 0);
+    double y0 = fig_py(main, 0);
+    double xe = ahead ? main->px0 + main->pw - 6 : main->px0 + 6;
+    svg_text(m, xe, y0 + 34, ahead ? "end" : "start", 12, COL_GOT, true, "%syour t = %s: off "
+             "the figure%s", ahead ? "" : "\xE2\x86\x90 ", fig_num(buf, sizeof buf, f->got_t, 6),
+             ahead ? " \xE2\x86\x92" : "");
+}
+
+/* The legend and the notes under the windows. */
+static void ray_legend(Markup *m, const RayFig *f, int digits)
+{
+    char buf[64], wt[120], gt[120];
     if (f->want_text)
         snprintf(wt, sizeof wt, "%s", f->want_text);
     else if (f->want_hit)
@@ -525,5 +598,39 @@ void ray_figure(Markup *m, const RayFig *given)
              "dashed: t < 0, behind e");
     if (f->note)
         svg_text(m, 12, TOP + WH + 60, "start", 11, COL_NOTE, false, "%s", f->note);
+}
+
+void ray_figure(Markup *m, const RayFig *given)
+{
+    /* a grazing plane is drawn with heights stretched: b becomes k b, so
+     * the line A a + B b = C becomes A a + (B / k) b = C */
+    RayLayout ly = { .f = given, .stretch = line_stretch(given) };
+    RayFig stretched;
+    if (ly.stretch > 1) {
+        stretched = *given;
+        stretched.line_B = given->line_B / ly.stretch;
+        ly.f = &stretched;
+    }
+    const RayFig *f = ly.f;
+    ly.aw = f->want_hit ? f->want_t * f->rlen : NAN;
+    ly.ag = f->got_known && f->got_hit ? f->got_t * f->rlen : NAN;
+    ly.tc = f->target >= 0 && f->target < f->ncircles ? &f->circles[f->target] : NULL;
+    if (f->has_line)
+        line_foot(f, &ly.fa, &ly.fb);
+    ray_main_box(&ly, ray_reach(&ly));
+    fig_fit(&ly.win[0], ly.bx.x0, ly.bx.y0, ly.bx.x1, ly.bx.y1, 0.06, 10, TOP, 740, WH);
+    ly.both = isfinite(ly.aw) && ly.got_drawable && ly.aw != ly.ag;
+    zoom_in(&ly);
+    lay_out_windows(&ly);
+    ly.digits = ray_digits(f);
+
+    fig_begin(m, FW, FH + (f->note ? 16 : 0), f->title ? f->title : "the ray");
+    svg_text(m, 10, 19, "start", 14, COL_TEXT, true, "%s", f->title ? f->title : "");
+    bool got_shown = false;
+    for (int k = 0; k < ly.nwin; k++)
+        got_shown = draw_window(m, &ly, k) || got_shown;
+    if (f->got_known && f->got_hit && !got_shown)
+        got_off_figure(m, &ly);
+    ray_legend(m, f, ly.digits);
     fig_end(m);
 }

@@ -6,7 +6,8 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
-#include "figures.h"
+#include "fig_draw.h"
+#include "fig_parts.h"
 #include "fig_ray.h"
 
 #include <math.h>

@@ -133,7 +133,7 @@ int mk_png_uri(Markup *m, const Image *img)
     KitBuf png;
     char err[256];
     kit_buf_init(&png);
-    if (png_encode(img, &png, err, sizeof err) != 0) {
+    if (png_encode(img->width, img->height, img->rgb, &png, err, sizeof err) != 0) {
         kit_buf_free(&png);
         return -1;
     }

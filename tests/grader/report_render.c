@@ -138,7 +138,8 @@ int report_render(const ReportRenderOptions *o, ReportRenders *rr, char *err, si
         free(rr->ref_png);
         rr->ref_png = kit_load_file(path, REFERENCE_PNG_MAX, &rr->ref_png_len);
         if (!rr->ref_png || !png_has_signature(rr->ref_png, rr->ref_png_len) ||
-            png_decode(rr->ref_png, rr->ref_png_len, &rr->ref, why, sizeof why) != 0) {
+            png_decode(rr->ref_png, rr->ref_png_len, &rr->ref.width, &rr->ref.height, &rr->ref.rgb,
+                       why, sizeof why) != 0) {
             free(rr->ref_png);          /* image_read says why, naming the file */
             rr->ref_png = NULL;
         }

@@ -136,101 +136,112 @@ static unsigned long bound(const char *text, unsigned long max)
     return *text >= '0' && *text <= '9' && !*end && !errno && v >= 1 && v <= max ? v : 0;
 }
 
-int main(int argc, char **argv)
+/* The download and its files, sorted: what main's steps share. */
+typedef struct {
+    Archive in;                       /* the download's files                       */
+    Item *items;                      /* those named as the platforms name them     */
+    size_t nitems;
+    const ArchiveEntry **unsorted;    /* the others, but for the system's own       */
+    size_t nunsorted, nsystem;
+    size_t nby[LMS_BLACKBOARD + 1];   /* the items of each platform                 */
+    size_t nfolders, nlater, nlate;   /* submissions, items left out, late ones     */
+} Sorting;
+
+/* Reads the options (--max-mb N, --max-ratio N) into lim.  Returns the
+ * index of the first argument after them, or -1 when one is wrong. */
+static int read_options(int argc, char **argv, ArchiveLimits *lim)
 {
-    ArchiveLimits lim = { (size_t)256 << 20, 100 };
     int arg = 1;
     for (; arg + 1 < argc && strncmp(argv[arg], "--max-", 6) == 0; arg += 2) {
         bool mb = strcmp(argv[arg], "--max-mb") == 0;
         unsigned long v = bound(argv[arg + 1], mb ? ARCHIVE_MAX_SIZE >> 20 : 1000000);
         if (mb && v)
-            lim.max_unpacked = (size_t)v << 20;
+            lim->max_unpacked = (size_t)v << 20;
         else if (strcmp(argv[arg], "--max-ratio") == 0 && v)
-            lim.max_ratio = (unsigned)v;
+            lim->max_ratio = (unsigned)v;
         else
-            return usage();
+            return -1;
     }
-    if (argc - arg != 2 || !*argv[arg] || !*argv[arg + 1])
-        return usage();
-    const char *from = argv[arg], *to = argv[arg + 1];
-    char err[ERR_MAX], why[ERR_MAX];
-    bool exists;
-    if (!new_destination(to, &exists, why, sizeof why)) {
-        snprintf(err, sizeof err, "%s", to);
-        return fail(err, why);
-    }
+    return arg;
+}
 
-    /* The download, as a list of files: a zip's entries, or a folder's tree. */
+/* The download, as a list of files (s->in): a zip's entries, or a
+ * folder's tree.  Returns 0, or 1 having said why. */
+static int read_download(Sorting *s, const char *from, const ArchiveLimits *lim)
+{
+    char err[ERR_MAX], why[ERR_MAX];
     struct stat st;
     if (stat(from, &st) != 0) {
         snprintf(err, sizeof err, "%s", from);
         return fail(err, strerror(errno));
     }
-    Archive in;
-    archive_init(&in, ARCHIVE_ZIP);
-    int status = S_ISDIR(st.st_mode) ? archive_add_tree(&in, from, NULL, why, sizeof why)
-                                     : archive_load_within(&in, from, &lim, why, sizeof why);
-    if (status != 0) {
-        archive_free(&in);
+    int status = S_ISDIR(st.st_mode) ? archive_add_tree(&s->in, from, NULL, why, sizeof why)
+                                     : archive_load_within(&s->in, from, lim, why, sizeof why);
+    if (status != 0)
         return fail(S_ISDIR(st.st_mode) ? "the download's folder could not be read" : "the download could not be read",
                     why);
-    }
+    return 0;
+}
 
-    /* Each file by its name. */
-    Item *items = calloc(in.count + 1, sizeof *items);
-    const ArchiveEntry **unsorted = calloc(in.count + 1, sizeof *unsorted);
-    if (!items || !unsorted) {
-        archive_free(&in);
+/* Each file by its name: those named as a platform names a submission's
+ * files become items, the others are not sorted, and the system's own are
+ * counted and left out.  Returns 0, or 1 having said why (none is named
+ * so). */
+static int name_files(Sorting *s, const char *from)
+{
+    s->items = calloc(s->in.count + 1, sizeof *s->items);
+    s->unsorted = calloc(s->in.count + 1, sizeof *s->unsorted);
+    if (!s->items || !s->unsorted)
         return fail("out of memory", NULL);
-    }
-    size_t nitems = 0, nunsorted = 0, nsystem = 0, nby[LMS_BLACKBOARD + 1] = { 0 };
-    for (size_t k = 0; k < in.count; k++) {
-        const ArchiveEntry *e = &in.entries[k];
+    for (size_t k = 0; k < s->in.count; k++) {
+        const ArchiveEntry *e = &s->in.entries[k];
         if (e->is_dir)
             continue;
         if (system_file(e->path)) {
-            nsystem++;
+            s->nsystem++;
             continue;
         }
-        Item *it = &items[nitems];
+        Item *it = &s->items[s->nitems];
         if (!lms_name(e->path, stage_names, NPARTS, &it->n) || !archive_path_ok(it->n.who) ||
             !archive_path_ok(it->n.name) || strchr(it->n.who, '/') || strcmp(it->n.who, "sorted.txt") == 0) {
-            unsorted[nunsorted++] = e;
+            s->unsorted[s->nunsorted++] = e;
             continue;
         }
         it->entry = e;
         it->kept = true;
-        nby[it->n.lms]++;
-        nitems++;
+        s->nby[it->n.lms]++;
+        s->nitems++;
     }
-    if (nitems == 0) {
-        snprintf(err, sizeof err, "%s holds no file named as Canvas, Moodle or Blackboard name a class's "
-                 "files (NAME_USERID_FILEID_FILE, \"FULL NAME_ID_assignsubmission_file_\" and the file, or "
-                 "ASSIGNMENT_USERNAME_attempt_DATE_FILE)", from);
-        free(items);
-        free(unsorted);
-        archive_free(&in);
-        return fail(err, NULL);
-    }
+    if (s->nitems > 0)
+        return 0;
+    char err[ERR_MAX];
+    snprintf(err, sizeof err, "%s holds no file named as Canvas, Moodle or Blackboard name a class's "
+             "files (NAME_USERID_FILEID_FILE, \"FULL NAME_ID_assignsubmission_file_\" and the file, or "
+             "ASSIGNMENT_USERNAME_attempt_DATE_FILE)", from);
+    return fail(err, NULL);
+}
 
-    /* By submission, then name.  Of a submission's attempts, the latest
-     * is kept (Blackboard's dates, written so that their order is that of
-     * their text); of one file uploaded more than once, the last (Canvas's
-     * highest "-N"). */
+/* By submission, then name.  Of a submission's attempts, the latest is
+ * kept (Blackboard's dates, written so that their order is that of their
+ * text); of one file uploaded more than once, the last (Canvas's highest
+ * "-N").  Counts the submissions, the items left out and the late ones. */
+static void keep_latest(Sorting *s)
+{
+    Item *items = s->items;
+    size_t nitems = s->nitems;
     qsort(items, nitems, sizeof *items, by_who_then_name);
-    size_t nfolders = 0, nlater = 0, nlate = 0;
     for (size_t k = 0, end; k < nitems; k = end) {
         const char *latest = items[k].n.attempt;
         for (end = k; end < nitems && strcmp(items[end].n.who, items[k].n.who) == 0; end++)
             if (strcmp(items[end].n.attempt, latest) > 0)
                 latest = items[end].n.attempt;
-        nfolders++;
-        nlate += items[k].n.late;
+        s->nfolders++;
+        s->nlate += items[k].n.late;
         for (size_t j = k; j < end; j++)
             if (strcmp(items[j].n.attempt, latest) != 0) {
                 items[j].kept = false;
                 items[j].earlier_attempt = true;
-                nlater++;
+                s->nlater++;
             }
     }
     for (size_t k = 0; k + 1 < nitems; k++) {
@@ -240,23 +251,25 @@ int main(int argc, char **argv)
         if (items[k].kept && next < nitems && strcmp(items[k].n.who, items[next].n.who) == 0 &&
             strcmp(items[k].n.name, items[next].n.name) == 0) {
             items[k].kept = false;
-            nlater++;
+            s->nlater++;
         }
     }
+}
 
-    /* The sorted folders, and sorted.txt, as an archive written out at once. */
-    Archive out;
-    archive_init(&out, ARCHIVE_ZIP);
+/* The sorted folders, and sorted.txt, into out, to be written at once.
+ * Returns 0, or -1 with why. */
+static int pack_sorted(const Sorting *s, const char *from, Archive *out, char *why, size_t whylen)
+{
     KitBuf list = { 0 };
     char line[3 * ERR_MAX];
     snprintf(line, sizeof line, "# sorted by sortsubs from %s: each file, and where it came from\n", from);
-    status = kit_buf_append(&list, line, strlen(line));
-    for (size_t k = 0; k < nitems && status == 0; k++) {
-        const Item *it = &items[k];
+    int status = kit_buf_append(&list, line, strlen(line));
+    for (size_t k = 0; k < s->nitems && status == 0; k++) {
+        const Item *it = &s->items[k];
         char path[2 * LMS_NAME_MAX + 2];
         snprintf(path, sizeof path, "%s/%s", it->n.who, it->n.name);
         if (it->kept)
-            status = archive_add_file(&out, path, it->entry->data, it->entry->size, 0644, why, sizeof why);
+            status = archive_add_file(out, path, it->entry->data, it->entry->size, 0644, why, whylen);
         snprintf(line, sizeof line, "%s\t%s%s%s\n", it->kept ? path : "(left out)", it->entry->path,
                  it->n.late ? "\t(late)" : "",
                  it->kept ? "" : it->earlier_attempt ? "\t(of an earlier attempt)"
@@ -264,78 +277,102 @@ int main(int argc, char **argv)
         if (status == 0)
             status = kit_buf_append(&list, line, strlen(line));
     }
-    for (size_t k = 0; k < nunsorted && status == 0; k++) {
-        snprintf(line, sizeof line, "(not sorted)\t%s\n", unsorted[k]->path);
+    for (size_t k = 0; k < s->nunsorted && status == 0; k++) {
+        snprintf(line, sizeof line, "(not sorted)\t%s\n", s->unsorted[k]->path);
         status = kit_buf_append(&list, line, strlen(line));
     }
     if (status == 0)
-        status = archive_add_file(&out, "sorted.txt", list.data, list.len, 0644, why, sizeof why);
+        status = archive_add_file(out, "sorted.txt", list.data, list.len, 0644, why, whylen);
     free(list.data);
+    return status;
+}
 
-    /* Written beside TO, then renamed to it. */
+/* Writes out into a new folder beside TO, then renames it to TO (an empty
+ * folder there, which exists says, removed first).  Returns 0, or -1 with
+ * why; nothing is left written then. */
+static int write_beside(const Archive *out, const char *to, bool exists, char *why, size_t whylen)
+{
     char tmp[4096];
-    if (status == 0 && (size_t)snprintf(tmp, sizeof tmp, "%s.sorting.XXXXXX", to) >= sizeof tmp) {
-        snprintf(why, sizeof why, "the folder's name is too long");
+    if ((size_t)snprintf(tmp, sizeof tmp, "%s.sorting.XXXXXX", to) >= sizeof tmp) {
+        snprintf(why, whylen, "the folder's name is too long");
+        return -1;
+    }
+    if (!mkdtemp(tmp)) {
+        snprintf(why, whylen, "%.900s: %s", tmp, strerror(errno));
+        return -1;
+    }
+    chmod(tmp, 0755);
+    int status = archive_extract(out, tmp, why, whylen);
+    if (status == 0 && exists && rmdir(to) != 0) {
+        snprintf(why, whylen, "%.900s: %s", to, strerror(errno));
         status = -1;
     }
-    if (status == 0 && !mkdtemp(tmp)) {
-        snprintf(why, sizeof why, "%.900s: %s", tmp, strerror(errno));
+    if (status == 0 && rename(tmp, to) != 0) {
+        snprintf(why, whylen, "%.900s: %s", to, strerror(errno));
         status = -1;
     }
-    if (status == 0) {
-        chmod(tmp, 0755);
-        status = archive_extract(&out, tmp, why, sizeof why);
-        if (status == 0 && exists && rmdir(to) != 0) {
-            snprintf(why, sizeof why, "%.900s: %s", to, strerror(errno));
-            status = -1;
-        }
-        if (status == 0 && rename(tmp, to) != 0) {
-            snprintf(why, sizeof why, "%.900s: %s", to, strerror(errno));
-            status = -1;
-        }
-        if (status != 0)
-            build_rmtree(tmp);
-    }
-    archive_free(&out);
-    if (status != 0) {
-        free(items);
-        free(unsorted);
-        archive_free(&in);
-        return fail("the sorted folders could not be written", why);
-    }
+    if (status != 0)
+        build_rmtree(tmp);
+    return status;
+}
 
+/* The sorted folders and sorted.txt, written to TO.  Returns 0, or 1
+ * having said why. */
+static int write_sorted(const Sorting *s, const char *from, const char *to, bool exists)
+{
+    char why[ERR_MAX];
+    Archive out;
+    archive_init(&out, ARCHIVE_ZIP);
+    int status = pack_sorted(s, from, &out, why, sizeof why);
+    if (status == 0)
+        status = write_beside(&out, to, exists, why, sizeof why);
+    archive_free(&out);
+    return status == 0 ? 0 : fail("the sorted folders could not be written", why);
+}
+
+/* The first line: how many files of which platforms went into how many
+ * folders, and the first submissions' names. */
+static void say_sorted(const Sorting *s, const char *to)
+{
     /* "Canvas", "Canvas and Moodle", "Canvas, Moodle and Blackboard" */
     static const char *const platform[] = { "", "Canvas", "Moodle", "Blackboard" };
     char platforms[64] = "";
     int nplatforms = 0, named = 0;
     for (int l = LMS_CANVAS; l <= LMS_BLACKBOARD; l++)
-        nplatforms += nby[l] > 0;
+        nplatforms += s->nby[l] > 0;
     for (int l = LMS_CANVAS; l <= LMS_BLACKBOARD; l++)
-        if (nby[l]) {
+        if (s->nby[l]) {
             named++;
             snprintf(platforms + strlen(platforms), sizeof platforms - strlen(platforms), "%s%s",
                      named == 1 ? "" : named == nplatforms ? " and " : ", ", platform[l]);
         }
-    printf("sorted %zu file%s of a %s download into %zu submission folder%s in %s", nitems - nlater,
-           nitems - nlater == 1 ? "" : "s", platforms, nfolders, nfolders == 1 ? "" : "s", to);
-    if (nlate)
-        printf(" (%zu of them late, as Canvas marked them)", nlate);
+    size_t nsorted = s->nitems - s->nlater;
+    printf("sorted %zu file%s of a %s download into %zu submission folder%s in %s", nsorted,
+           nsorted == 1 ? "" : "s", platforms, s->nfolders, s->nfolders == 1 ? "" : "s", to);
+    if (s->nlate)
+        printf(" (%zu of them late, as Canvas marked them)", s->nlate);
     printf(":");
     size_t shown = 0;
-    for (size_t k = 0; k < nitems; k++)
-        if (k == 0 || strcmp(items[k].n.who, items[k - 1].n.who) != 0) {
+    for (size_t k = 0; k < s->nitems; k++)
+        if (k == 0 || strcmp(s->items[k].n.who, s->items[k - 1].n.who) != 0) {
             if (shown < 8) {
                 fputs(shown ? ", " : " ", stdout);
-                put_name(items[k].n.who);
+                put_name(s->items[k].n.who);
             }
             else if (shown == 8)
                 printf(", ...");
             shown++;
         }
     printf("\n");
-    for (size_t k = 0, end; k < nitems; k = end) {      /* earlier attempts: once a submission */
+}
+
+/* Each submission with files of earlier attempts left out, once. */
+static void say_earlier_attempts(const Sorting *s)
+{
+    const Item *items = s->items;
+    for (size_t k = 0, end; k < s->nitems; k = end) {
         size_t left = 0, kept = k;
-        for (end = k; end < nitems && strcmp(items[end].n.who, items[k].n.who) == 0; end++) {
+        for (end = k; end < s->nitems && strcmp(items[end].n.who, items[k].n.who) == 0; end++) {
             left += items[end].earlier_attempt;
             if (!items[end].earlier_attempt)
                 kept = end;
@@ -348,7 +385,13 @@ int main(int argc, char **argv)
         put_name(items[kept].n.attempt);
         printf("; left out %zu file%s of earlier attempts\n", left, left == 1 ? "" : "s");
     }
-    for (size_t k = 0; k < nitems; k++) {
+}
+
+/* Each file uploaded again: the upload kept, and the one left out. */
+static void say_earlier_uploads(const Sorting *s)
+{
+    const Item *items = s->items;
+    for (size_t k = 0; k < s->nitems; k++) {
         if (items[k].kept || items[k].earlier_attempt)
             continue;
         size_t last = k + 1;                /* the one kept: the last of its run */
@@ -364,20 +407,56 @@ int main(int argc, char **argv)
         put_name(items[k].entry->path);
         fputs("\n", stdout);
     }
-    if (nunsorted) {
+}
+
+/* The files not sorted, those of the system's own left out, and where
+ * sorted.txt is. */
+static void say_left_out(const Sorting *s, const char *to)
+{
+    if (s->nunsorted) {
         printf("not sorted (not named as Canvas, Moodle or Blackboard name a submission's files): ");
-        for (size_t k = 0; k < nunsorted && k < 8; k++) {
+        for (size_t k = 0; k < s->nunsorted && k < 8; k++) {
             fputs(k ? ", " : "", stdout);
-            put_name(unsorted[k]->path);
+            put_name(s->unsorted[k]->path);
         }
-        printf("%s\n", nunsorted > 8 ? ", ..." : "");
+        printf("%s\n", s->nunsorted > 8 ? ", ..." : "");
     }
-    if (nsystem)
-        printf("left out %zu file%s of the system's own (names starting with \".\", __MACOSX)\n", nsystem,
-               nsystem == 1 ? "" : "s");
+    if (s->nsystem)
+        printf("left out %zu file%s of the system's own (names starting with \".\", __MACOSX)\n", s->nsystem,
+               s->nsystem == 1 ? "" : "s");
     printf("where each file came from: %s/sorted.txt\n", to);
-    free(items);
-    free(unsorted);
-    archive_free(&in);
-    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    ArchiveLimits lim = { (size_t)256 << 20, 100 };
+    int arg = read_options(argc, argv, &lim);
+    if (arg < 0 || argc - arg != 2 || !*argv[arg] || !*argv[arg + 1])
+        return usage();
+    const char *from = argv[arg], *to = argv[arg + 1];
+    char err[ERR_MAX], why[ERR_MAX];
+    bool exists;
+    if (!new_destination(to, &exists, why, sizeof why)) {
+        snprintf(err, sizeof err, "%s", to);
+        return fail(err, why);
+    }
+    Sorting s = { 0 };
+    archive_init(&s.in, ARCHIVE_ZIP);
+    int status = read_download(&s, from, &lim);
+    if (status == 0)
+        status = name_files(&s, from);
+    if (status == 0) {
+        keep_latest(&s);
+        status = write_sorted(&s, from, to, exists);
+    }
+    if (status == 0) {
+        say_sorted(&s, to);
+        say_earlier_attempts(&s);
+        say_earlier_uploads(&s);
+        say_left_out(&s, to);
+    }
+    free(s.items);
+    free(s.unsorted);
+    archive_free(&s.in);
+    return status;
 }

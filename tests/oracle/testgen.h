@@ -53,8 +53,9 @@ void tg_triangle(Test *t, const double a[3], const double b[3], const double c[3
                  const double e[3], const double r[3]);
 void tg_mesh_ray(Test *t, const double e[3], const double r[3]);
 
-/* The hard cases of Parts 4 and 5 (hard_flat.c) as tests tagged hard, as
- * tg_hard does for the others. */
+/* The hard cases of Part 5 (hard_flat.c) as tests tagged hard, as tg_hard
+ * does for the others; Part 4's families as core tests, which the
+ * lecture's formula meets (Part 4 has no challenge of its own). */
 void tg_hard_flat(TestList *list, uint64_t seed, int rounds, bool hidden);
 
 /* The random hidden cases' seeds: tests/weights.conf's seed, mixed with

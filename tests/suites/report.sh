@@ -327,12 +327,12 @@ check "Part 4's figure, the normal along the ray: it is drawn in the window, off
 check "Part 4's figure, the plane's nearest point at the window's top: the normal is drawn in the window" \
     normal_shown "$page/p4-one-sided.html" "hits and misses</h4>"
 check "Part 4's figure, a plane along the window's top, its normal pointing out: the normal is drawn in the window" \
-    normal_shown "$page/p4-no-parallel-check-nan-safe.html" "hard: parallel, behind the plane (exact dyadic)<span"
+    normal_shown "$page/p4-no-parallel-check-nan-safe.html" "rounding: parallel, behind the plane (exact dyadic)</h4>"
 # A ray in the plane answered with a hit at t = NaN (0 / 0): the figure says
 # the ray lies in the plane, and that NaN is no point of the ray (it once
 # said "off the figure", as of a t too large to draw).
 check "Part 4's figure, a ray in the plane and a hit at t = NaN: both said as such" \
-    awk 'index($0, "Part 4: hard: in the plane (exact dyadic)<span") { on = 1 }
+    awk 'index($0, "Part 4: rounding: in the plane (exact dyadic)</h4>") { on = 1 }
          !on { next }
          /lies in it [(][(]p - e[)][.]n = 0[)]/ { lies = 1 }
          /your t = NaN: no point of the ray/ { nan = 1 }
@@ -347,7 +347,7 @@ check "Part 4's figure, a ray in the plane and a hit at t = NaN: both said as su
 # tangent of the angle between the ray and the plane, worked out here from
 # the case's input (r.n over |r| |n|).
 grazing_drawn() {
-    awk -v head="Part 4: $2<span" "$awk_attr"'
+    awk -v head="Part 4: $2</h4>" "$awk_attr"'
     index($0, head) { on = 1; next }
     !on { next }
     /<svg x=/ && !seen { seen = inwin = 1; next }
@@ -377,7 +377,7 @@ grazing_drawn() {
         exit !(F > 1 && dy >= 30 && off <= 1.5 && ratio > 0.99 && ratio < 1.01)
     }' "$1"
 }
-grazing_drawn "$page/p4-float.html" "hard: grazing ray, 1e-12..1e-3 off the plane" >"$tmp/grazing"
+grazing_drawn "$page/p4-float.html" "rounding: grazing ray, 1e-12..1e-3 off the plane" >"$tmp/grazing"
 grazing=$?
 check "Part 4's figure, a grazing ray: heights stretched and said so, the plane's slope true to F ($(cat "$tmp/grazing"))" \
     [ "$grazing" -eq 0 ]

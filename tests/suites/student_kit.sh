@@ -139,6 +139,8 @@ for s in labs/scenes/*.scene; do
     name=$(basename "$s" .scene)
     check "the kit lacks $s" cmp -s "$s" "$kit/$s"
     check "the kit lacks the reference render labs/reference/$name.png" test -s "$kit/labs/reference/$name.png"
+    check "the kit lacks the reference's pixels on an edge labs/reference/$name.edges" \
+        grep -q '^size [0-9]* [0-9]*$' "$kit/labs/reference/$name.edges"
 done
 # One README, the kit's own (handouts/student-readme.md is its source, and
 # not shipped beside it: its links are written from the kit's top).  Every
@@ -385,6 +387,20 @@ for s in "$kit"/labs/scenes/*.scene; do
         pass
     fi
 done
+
+# The lecture's Part 2 and the textbook's Part 4 (tests/selftest/textbook-
+# ground), right but for rounding where the wall meets the ground and along
+# the box's outline: identical, with the stored pixels on an edge.
+if [ -d tests/selftest/textbook-ground ]; then
+    mkdir -p "$tmp/textbook"
+    cp solutions/*.c "$tmp/textbook/"
+    cp tests/selftest/textbook-ground/*.c "$tmp/textbook/"
+    for name in ground cracks; do
+        mk "$kit" compare SUBMISSION="$tmp/textbook" SCENE="labs/scenes/$name.scene"
+        check "make compare in the kit: the textbook's $name.scene is identical to the stored reference (exit $status)" \
+            sh -c "[ $status -eq 0 ] && grep -q 'on an edge' '$tmp/out' && grep -q '^identical$' '$tmp/out'"
+    done
+fi
 
 # The textbook's Part 3a: every core point, some hard cases (the extra
 # credit) lost, so make ends with Error 1 below "Score: 30 / 30"; the line

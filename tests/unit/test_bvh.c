@@ -247,7 +247,7 @@ static int render_as(const Scene *scene, RenderHierarchy hierarchy, int threads,
         CHECK_MSG(0, "image_alloc: %s", err);
         return -1;
     }
-    RenderOptions opt = { threads, false, hierarchy };
+    RenderOptions opt = { threads, false, hierarchy, { 0, 0 } };
     int status = render_scene(scene, img, &opt, stats, err, sizeof err);
     CHECK_MSG(status == 0, "render_scene: %s", err);
     if (status != 0) {

@@ -32,7 +32,7 @@ static int render_with(const Scene *scene, int threads, Image *img, RenderStats 
         CHECK_MSG(0, "image_alloc: %s", err);
         return -1;
     }
-    RenderOptions opt = { threads, false, RENDER_HIERARCHY_AUTO };
+    RenderOptions opt = { threads, false, RENDER_HIERARCHY_AUTO, { 0, 0 } };
     int status = render_scene(scene, img, &opt, stats ? stats : &unused, err, sizeof err);
     CHECK_MSG(status == 0, "render_scene returned %d: %s", status, err);
     if (status != 0) {
@@ -433,7 +433,7 @@ static void test_wrong_image_size(void)
     Image img;
     char err[256] = "";
     CHECK_EQ_INT(image_alloc(&img, 10, 20, err, sizeof err), 0);
-    RenderOptions opt = { 1, false, RENDER_HIERARCHY_AUTO };
+    RenderOptions opt = { 1, false, RENDER_HIERARCHY_AUTO, { 0, 0 } };
     RenderStats stats;
     CHECK_EQ_INT(render_scene(&scene, &img, &opt, &stats, err, sizeof err), -1);
     CHECK_STR_CONTAINS(err, "10x20");
