@@ -382,7 +382,7 @@ $(ASAN)/bin/render-solutions: $(ASAN)/kit/render_main.o $(call ref_obj,$(ASAN)) 
 # The suites that grade, with the sanitized grade and sortsubs (GRADE=, SORTSUBS=).
 SANITIZE_SUITES = grader.sh report.sh class_page.sh limits.sh signals.sh jail.sh sort_submissions.sh
 ifneq ($(wildcard tests/suites/grader.sh),)
-sanitize-grader: all $(ASAN)/bin/grade $(ASAN)/bin/sortsubs
+sanitize-grader: all $(BUILD)/bin/pack $(ASAN)/bin/grade $(ASAN)/bin/sortsubs
 	@echo "grading with $(ASAN)/bin/grade, sorting with $(ASAN)/bin/sortsubs (address, undefined-behaviour and leak sanitizers)"
 	@GRADE=$(ASAN)/bin/grade SORTSUBS=$(ASAN)/bin/sortsubs sh tests/run.sh $(SANITIZE_SUITES)
 else
@@ -390,7 +390,7 @@ sanitize-grader:
 	@echo "make sanitize-grader: only the instructor's kit has the grader's suites (tests/suites)"; exit 2
 endif
 # What the tests need built (`make -j2 test-build` builds it on two cores).
-test-build: all $(UNIT_NAMES:%=$(ASAN)/tests/%) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)
+test-build: all $(BUILD)/bin/pack $(UNIT_NAMES:%=$(ASAN)/tests/%) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)
 test: test-build
 	@sh tests/run.sh
 clean:
