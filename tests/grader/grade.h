@@ -47,7 +47,8 @@ typedef struct {
     double cpu_compile, cpu_link, cpu_tests, cpu_probes;
 } Grade;
 
-/* Grades; 0 on success, -1 when the grader itself could not run. */
+/* Grades; 0 on success, -1 when the grader itself could not run (then
+ * grade_free frees what g holds so far). */
 int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
                      char *err, size_t errlen);
 void grade_free(Grade *g);

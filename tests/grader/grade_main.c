@@ -281,6 +281,7 @@ static int grade_one(const char *submission, const char *part, const char *resul
 
     Grade g;
     if (grade_submission(&opt, &tests, &g, err, sizeof err) != 0) {
+        grade_free(&g);                 /* what it had made before it stopped */
         testlist_free(&tests);
         if (kept[0])
             build_rmtree(kept);
