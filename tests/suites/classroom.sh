@@ -1,8 +1,7 @@
 #!/bin/sh
 # GitHub Classroom: the student kit's workflow and the runner results that
 # `make grade CLASSROOM=file` appends, totalled by the grading reporter's
-# own rules (tests/classroom/reporter_totals.c, which cites the action's
-# source), for a full-marks, a partial and a zero submission.  Each time,
+# own rules (reporter(), below, which cites the action's source), for a full-marks, a partial and a zero submission.  Each time,
 # both of the reporter's totals -- the points it shows, (tests passed /
 # tests) x max_score added over the runners, and the points it sends the
 # classroom, the tests' scores added up -- must be the kit's own core score
@@ -31,13 +30,56 @@ tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtclassroom.XXXXXX") || { echo "0 passed, 1 fai
 trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
 
-# ---- the reporter's rules, in C ---------------------------------------------
-totals="$tmp/reporter_totals"
-cc_build "$tmp" reporter_totals "$tmp/cc.log" \
-    tests/classroom/reporter_totals.c tests/tools/base64.c tests/tools/json_read.c tests/tools/utf8.c \
-    labs/kit/numtext.c
-check "tests/classroom/reporter_totals.c builds without a warning" [ -x "$totals" ]
-[ -x "$totals" ] || { cat "$tmp/cc.log"; finish; }
+# ---- the reporter's rules -----------------------------------------------------
+# decode RUNNERS ENVFILE: each runner's results as the reporter reads them,
+# "ID JSON" one runner a line: the runner id of the comma-separated RUNNERS,
+# trimmed, in capitals, with _RESULTS, names the variable of ENVFILE
+# ("NAME=VALUE" lines) holding base64 of the JSON.  awk decodes it (base64's
+# option to decode differs between Linux and macOS).
+decode() {
+    printf '%s\n' "$1" | tr ',' '\n' | LC_ALL=C awk '
+        BEGIN { a = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/"
+                for (i = 0; i < 64; i++) v[substr(a, i + 1, 1)] = i }
+        NR == FNR { gsub(/^ +| +$/, ""); id[++n] = $0; next }
+        { k = index($0, "="); if (k > 1) val[substr($0, 1, k - 1)] = substr($0, k + 1) }
+        END { for (r = 1; r <= n; r++) {
+                  s = val[toupper(id[r]) "_RESULTS"]; out = ""; bits = 0; nb = 0
+                  for (i = 1; i <= length(s); i++) {
+                      c = substr(s, i, 1)
+                      if (c == "=") break
+                      bits = bits * 64 + v[c]; nb += 6
+                      if (nb >= 8) { nb -= 8; b = int(bits / 2 ^ nb); bits -= b * 2 ^ nb; out = out sprintf("%c", b) }
+                  }
+                  print id[r], out } }' - "$2"
+}
+# reporter DUMP: the reporter's totals from decode's lines, by the rules of
+# the action's source (classroom-resources/autograding-grading-reporter, v1):
+# a runner's points are its tests with status "pass" over its tests, times
+# its max_score (src/helpers/test-helpers.js), added over the runners for
+# the table (src/aggregate-results.js); what it sends the classroom adds the
+# "score" of each test of the runners whose max_score is not 0
+# (src/notify-classroom.js); the step fails when a runner's status is "fail"
+# or "error" (src/main.js).  One line per runner, then the totals:
+#   runner ID status S tests N passed P max M shown X counted C
+#   shown_total X / shown_max M / counted_total T / counted_max N / workflow W
+# Each runner's JSON is the kit's own (one object, "status" and "max_score"
+# first, then "tests"): these patterns read that and nothing more.
+reporter() {
+    LC_ALL=C awk '
+        function num(name, s) { return match(s, "\"" name "\":[^,}]*") ? substr(s, RSTART + length(name) + 3, RLENGTH - length(name) - 3) + 0 : 0 }
+        { st = $0; sub(/^[^ ]* {"version":1,"status":"/, "", st); sub(/".*/, "", st)
+          max = num("max_score", $0)
+          t = $0; ntests = gsub(/"name":/, "", t)
+          t = $0; npass = gsub(/"status":"pass","score":/, "", t)
+          shown = ntests ? npass / ntests * max : 0
+          counted = 0
+          if (max) { t = $0; sub(/^.*"tests":/, "", t)
+                     while (match(t, /"score":[^,}]*/)) { counted += substr(t, RSTART + 8, RLENGTH - 8); t = substr(t, RSTART + RLENGTH) } }
+          printf "runner %s status %s tests %d passed %d max %.17g shown %.17g counted %.17g\n", $1, st, ntests, npass, max, shown, counted
+          if (st == "fail" || st == "error") wf = "fail"
+          st_total += shown; st_max += max; c_total += counted; c_max += max }
+        END { printf "shown_total %.17g\nshown_max %.17g\ncounted_total %.17g\ncounted_max %.17g\nworkflow %s\n", st_total, st_max, c_total, c_max, wf == "" ? "pass" : wf }' "$1"
+}
 have_node=
 if command -v node >/dev/null 2>&1; then
     have_node=1
@@ -99,11 +141,8 @@ g() { awk -v x="$1" "$pts"' BEGIN { printf "%s", pts(x + 0) }'; }
 # compares both totals with the kit's score and each part's points.
 totals() {
     label=$1 kitout=$2 runners=$3 envfile=$4 want_workflow=$5
-    if ! "$totals" "$runners" "$envfile" >"$tmp/totals.out" 2>"$tmp/totals.err"; then
-        fail "$label: the reporter could not read the results: $(cat "$tmp/totals.err")"
-        return
-    fi
-    pass
+    decode "$runners" "$envfile" >"$tmp/totals.dump"
+    reporter "$tmp/totals.dump" >"$tmp/totals.out"
     score=$(sed -n 's/^Score: \([^ ]*\) \/ \([^ ]*\).*/\1/p' "$kitout")
     max=$(sed -n 's/^Score: \([^ ]*\) \/ \([^ ]*\).*/\2/p' "$kitout")
     shown=$(value shown_total "$tmp/totals.out")
@@ -136,8 +175,8 @@ totals() {
     printf '%s\n' "$label" >"$tmp/js.$njs.label"
 }
 
-# js_checks: node's totals of every case totals() listed, each against the C
-# checker's.
+# js_checks: node's totals of every case totals() listed, each against
+# reporter()'s (to two decimals, as the kit prints points).
 js_checks() {
     [ -n "$have_node" ] || return 0
     node "$tmp/totals.js" "$tmp/js.list" >"$tmp/node.out" 2>&1 ||
@@ -147,8 +186,10 @@ js_checks() {
         k=$((k + 1))
         label=$(cat "$tmp/js.$k.label")
         if [ -f "$tmp/js.$k.out" ]; then
-            check "$label: JavaScript's totals are the C checker's" cmp -s "$tmp/c.$k.out" "$tmp/js.$k.out"
-            cmp -s "$tmp/c.$k.out" "$tmp/js.$k.out" || diff "$tmp/c.$k.out" "$tmp/js.$k.out" | sed 's/^/    | /'
+            awk "$pts"' { print $1, pts($2) }' "$tmp/js.$k.out" >"$tmp/js.$k.pts"
+            awk "$pts"' { print $1, pts($2) }' "$tmp/c.$k.out" >"$tmp/c.$k.pts"
+            check "$label: JavaScript's totals are reporter()'s" cmp -s "$tmp/c.$k.pts" "$tmp/js.$k.pts"
+            cmp -s "$tmp/c.$k.pts" "$tmp/js.$k.pts" || diff "$tmp/c.$k.pts" "$tmp/js.$k.pts" | sed 's/^/    | /'
         else
             fail "$label: the JavaScript check failed: $(head -n 3 "$tmp/js.$k.err" 2>/dev/null)"
         fi
@@ -266,8 +307,8 @@ grade_kit() {
     longest=$(awk '{ if (length($0) > n) n = length($0) } END { print n + 0 }' "$tmp/$label.outputs")
     check "$label: every runner's results are under 64 KB (an environment variable may hold 128 KB): $longest bytes" \
         [ "$longest" -lt 65536 ]
-    "$totals" --dump "$runners" "$tmp/$label.env" >"$tmp/$label.dump" 2>&1
-    check "$label: every runner decodes" [ "$(wc -l <"$tmp/$label.dump")" -eq "$nrun" ]
+    decode "$runners" "$tmp/$label.env" >"$tmp/$label.dump"
+    check "$label: every runner decodes" [ "$(grep -c '^[a-z0-9]* {"version":1,' "$tmp/$label.dump")" -eq "$nrun" ]
     check "$label: no test is a hidden test" sh -c "! grep -q '\"name\":\"[^\"]*hidden' '$tmp/$label.dump'"
 }
 grade_kit student-full "$tmp/full"
@@ -312,10 +353,17 @@ for case in full partial broken zero; do
     want=fail
     [ "$case" = full ] && want=pass
     totals "instructor's kit, $case" "$tmp/i-$case.kit" "$ids" "$tmp/i-$case.env" "$want"
+    cp "$tmp/totals.out" "$tmp/i-$case.totals"
 done
-"$totals" --dump "$(cut -d= -f1 "$tmp/i-full.outputs" | paste -s -d, -)" "$tmp/i-full.env" >"$tmp/i-full.dump" 2>&1
+# The partial submission (p1-aspect-inverted with p3a-tangent-miss): each
+# runner's points as committed (Part 1 at 2.5 / 20, Part 3a at 28.33 / 30).
+check "instructor's kit, partial: the reporter's view is tests/classroom/expected/partial.totals" \
+    cmp -s "$tmp/i-partial.totals" tests/classroom/expected/partial.totals
+cmp -s "$tmp/i-partial.totals" tests/classroom/expected/partial.totals ||
+    diff tests/classroom/expected/partial.totals "$tmp/i-partial.totals" | head -n 20 | sed 's/^/    | /'
+decode "$(cut -d= -f1 "$tmp/i-full.outputs" | paste -s -d, -)" "$tmp/i-full.env" >"$tmp/i-full.dump"
 check "instructor's kit: hidden tests are among the runners" grep -q '"name":"Part 3a: hidden: ' "$tmp/i-full.dump"
-"$totals" --dump part2test1 "$tmp/i-broken.env" >"$tmp/broken.json" 2>&1
+decode part2test1 "$tmp/i-broken.env" >"$tmp/broken.json"
 check "a part that does not build: its runners are errors that say so" \
     sh -c "grep -q '\"status\":\"error\"' '$tmp/broken.json' && grep -q 'did not build' '$tmp/broken.json'"
 
