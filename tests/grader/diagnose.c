@@ -336,21 +336,165 @@ static bool p1_explains(const void *ctx, int tag, const Test *t, const Case *c, 
     return p->tan90 && p1_angle_rounding(c->in, got, 8) && fabs(got[0] - c->in[1] * got[1]) <= 1e-12 * got[0];
 }
 
+/* Part 1's probes: ordinary fields of view, and those near 180 degrees. */
+static const double p1_ordinary[][3] = {
+    { 60, 2, 1.5 }, { 90, 0.5, 3 }, { 30, 1.5, 0.5 }, { 120, 1.25, 2 }, { 10, 4.0 / 3, 0.75 },
+};
+static const double p1_near180[][3] = {
+    { 179.99, 1, 1 }, { 179.9999, 1, 1 }, { 179.999999, 1, 1 }, { 179.99999999, 1, 1 },
+};
+enum { N_FOV_ORDINARY = sizeof p1_ordinary / sizeof *p1_ordinary, N_FOV_NEAR180 = sizeof p1_near180 / sizeof *p1_near180 };
+
+/* The simplest model that explains every ordinary answer. */
+static void p1_simplest_model(P1Found *out, const Answers *ab)
+{
+    int best = 99;
+    for (int angle = 0; angle < 4; angle++)
+        for (int f2 = 0; f2 < 2; f2++)
+            for (int ud = 0; ud < 2; ud++)
+                for (int shape = 0; shape < 5; shape++) {
+                    P1Model m = { angle, f2, ud, shape };
+                    bool all = true;
+                    for (int c = 0; c < N_FOV_ORDINARY && all; c++)
+                        all = p1_matches(m, p1_ordinary[c], ab->got[c]);
+                    if (all && p1_mistakes(m) < best) {
+                        best = p1_mistakes(m);
+                        out->model = m;
+                        out->have_model = true;
+                    }
+                }
+}
+
+/* A right formula with a wrong constant: the factor from degrees to
+ * radians each answer implies, k = 2 atan(h / 2 d) / alpha, is the same
+ * in every case (to double's roundings) but is not pi / 180, as with
+ * pi written 3.14159 or the factor 0.0174533. */
+static void p1_pi_approximate(Found *f, P1Found *out, const Answers *ab)
+{
+    double kmin = INFINITY, kmax = -INFINITY;
+    bool shaped = true;
+    for (int c = 0; c < N_FOV_ORDINARY; c++) {
+        const double *in = p1_ordinary[c], *got = ab->got[c];
+        double k = 2 * atan(got[1] / (2 * in[2])) / in[0];
+        shaped = shaped && got[1] > 0 && fabs(got[0] - in[1] * got[1]) <= 1e-12 * fabs(got[0]);
+        kmin = fmin(kmin, k);
+        kmax = fmax(kmax, k);
+    }
+    double k = (kmin + kmax) / 2, off = k / (M_PI / 180) - 1;
+    if (shaped && kmax - kmin <= 1e-12 * k && fabs(off) > 1e-10 && fabs(off) < 1e-2) {
+        out->factor = k;
+        name_cause(f, "pi-approximate", TAG_ALL, "the factor from degrees to radians is %s by %.2g "
+                   "of itself: every answer is that of the right formula with %.10g in place of "
+                   "pi / 180 = 0.017453292519943295, as if pi were %.9g. Use M_PI (raytracer.h "
+                   "defines it), not a value of pi or of pi / 180 written out.",
+                   off > 0 ? "too large" : "too small", fabs(off), k, k * 180);
+    }
+}
+
+/* Right to float's digits only, but not every answer a float: float
+ * somewhere inside (a float variable, tanf, a constant written 180.0f). */
+static void p1_float_inside(Found *f, P1Found *out, const Answers *ab)
+{
+    double worst = 0;
+    int worst_c = 0, worst_k = 0;
+    bool close = true;
+    for (int c = 0; c < N_FOV_ORDINARY && close; c++) {
+        double v[2];
+        p1_with_factor(M_PI / 180, p1_ordinary[c], v);
+        for (int k = 0; k < 2; k++) {
+            double rel = fabs(ab->got[c][k] - v[k]) / fabs(v[k]);
+            close = close && rel <= FLOAT_DIGITS;
+            if (rel > worst)
+                worst = rel, worst_c = c, worst_k = k;
+        }
+    }
+    if (close && worst > 1e-9) {
+        double v[2];
+        char b0[40], b1[40];
+        p1_with_factor(M_PI / 180, p1_ordinary[worst_c], v);
+        out->float_digits = true;
+        name_cause(f, "float", TAG_ALL, "your answers agree with the right ones to about 7 digits, "
+                   "float's precision, and no further: for alpha = %g, aspect = %g, d = %g your "
+                   "%s = %s, the right one %s (off by %.2g of itself). Some of the computation is "
+                   "in float (a float variable, tanf, a constant written 180.0f): use double "
+                   "throughout.", p1_ordinary[worst_c][0], p1_ordinary[worst_c][1], p1_ordinary[worst_c][2],
+                   worst_k ? "h" : "w",
+                   kit_shortest_double(b0, sizeof b0, ab->got[worst_c][worst_k]),
+                   kit_shortest_double(b1, sizeof b1, v[worst_k]), worst);
+    }
+}
+
+/* Each mistake of the model found, named; g the answer for alpha = 90,
+ * aspect = 0.5, d = 3. */
+static void p1_model_mistakes(Found *f, P1Model m, const double *g)
+{
+    if (m.angle == 1 || m.angle == 3)
+        name_cause(f, "degrees-as-radians", TAG_ALL, "tan was given the angle in degrees: for alpha = 90, "
+                   "aspect = 0.5, d = 3 your code returned h = %.6g, which is %s tan(%s) with %s "
+                   "read as radians. tan takes radians: multiply degrees by pi / 180 (and if your "
+                   "function treats the field of view as radians, it is given in degrees here).",
+                   g[1], m.factor2 ? "2 d" : "d", m.angle == 1 ? "45" : "90", m.angle == 1 ? "45" : "90");
+    if (m.angle >= 2)
+        name_cause(f, "full-angle", TAG_ALL, "tan of the whole field of view: h = 2 d tan(alpha / 2) "
+                   "uses half the angle (the plane spans alpha / 2 above the axis and alpha / 2 below).");
+    if (!m.factor2)
+        name_cause(f, "no-factor-2", TAG_ALL, "the factor 2 is missing: tan(alpha / 2) gives half the "
+                   "plane's height, h / (2 d); h = 2 d tan(alpha / 2).");
+    if (!m.use_d)
+        name_cause(f, "d-ignored", TAG_ALL, "the plane is sized as if d = 1 (for d = 3 your h is a third "
+                   "of the right one): h = 2 d tan(alpha / 2) grows with d. Tutorials such as "
+                   "Scratchapixel put the plane at distance 1; this lab's is at d.");
+    if (m.shape == 1)
+        name_cause(f, "aspect-inverted", TAG_ALL, "the aspect ratio is inverted: w = aspect h, with "
+                   "aspect = nx / ny (for aspect 0.5 the plane is half as wide as it is tall).");
+    if (m.shape == 2)
+        name_cause(f, "w-h-swapped", TAG_ALL, "w and h are swapped: h = 2 d tan(alpha / 2) is the "
+                   "height, and w = aspect h the width.");
+    if (m.shape == 4)
+        name_cause(f, "shorter-axis", TAG_ALL, "for tall images the field of view was taken "
+                   "along the width, the image's shorter side (pbrt's convention): in this lab "
+                   "alpha is always VERTICAL, h = 2 d tan(alpha / 2), whatever the aspect.");
+    if (m.shape == 3)
+        name_cause(f, "horizontal-fov", TAG_ALL, "the field of view is taken as the horizontal one "
+                   "(w = 2 d tan(alpha / 2), h = w / aspect): in this lab alpha is VERTICAL, so "
+                   "h = 2 d tan(alpha / 2) and w = aspect h.");
+}
+
+/* Near 180: a right formula whose rounded angle tan amplifies. */
+static void p1_tan_near_90(const ProbeSet *ps, Found *f, P1Found *out, const Answers *af)
+{
+    bool wrong = false, rounding = true;
+    double worst = 0, worst_fov = 0;
+    for (int c = 0; c < N_FOV_NEAR180; c++) {
+        double h = p1_h_near_180(p1_near180[c][0], 1);
+        double rel = fabs(af->got[c][1] - h) / h;
+        if (rel > 32 * U) {
+            wrong = true;
+            rounding = rounding && p1_angle_rounding(p1_near180[c], af->got[c], 8);
+            if (rel > worst)
+                worst = rel, worst_fov = p1_near180[c][0];
+        }
+    }
+    if (wrong && rounding) {
+        out->tan90 = true;
+        name_cause(f, "tan-near-90", TAG_ALL, "your formula is right, but near 180 degrees it loses "
+                   "digits (at alpha = %.12g, h is off by %.2g of itself): alpha pi / 360 is "
+                   "rounded to a double like any number, and tan is so steep near 90 degrees that "
+                   "this rounding of 1e-16 is magnified many times. Keeping those digits is the "
+                   "handout's hard-case challenge (extra credit).%s", worst_fov, worst,
+                   ps->probes->full_hints ? " Above 45 degrees use tan(alpha / 2) = 1 / tan(90 - "
+                                            "alpha / 2): 180 - alpha is exact." : "");
+    }
+}
+
 static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
 {
-    static const double basic[][3] = {
-        { 60, 2, 1.5 }, { 90, 0.5, 3 }, { 30, 1.5, 0.5 }, { 120, 1.25, 2 }, { 10, 4.0 / 3, 0.75 },
-    };
-    static const double near180[][3] = {
-        { 179.99, 1, 1 }, { 179.9999, 1, 1 }, { 179.999999, 1, 1 }, { 179.99999999, 1, 1 },
-    };
-    enum { NB = sizeof basic / sizeof *basic, NF = sizeof near180 / sizeof *near180 };
     Test *tb = probe_test(ps, PART1, KIND_PLANE, "probe: ordinary fields of view");
-    for (int k = 0; k < NB; k++)
-        probe_case(tb, basic[k], 3);
+    for (int k = 0; k < N_FOV_ORDINARY; k++)
+        probe_case(tb, p1_ordinary[k], 3);
     Test *tf = probe_test(ps, PART1, KIND_PLANE, "probe: fields of view near 180 degrees");
-    for (int k = 0; k < NF; k++)
-        probe_case(tf, near180[k], 3);
+    for (int k = 0; k < N_FOV_NEAR180; k++)
+        probe_case(tf, p1_near180[k], 3);
     Answers a2[2];
     probe_run(ps, &ps->list.tests[0], &a2[0]);
     probe_run(ps, &ps->list.tests[1], &a2[1]);
@@ -360,153 +504,29 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
         answers_free(&af);
         return;
     }
-
-    /* The simplest model that explains every ordinary answer. */
-    if (ab.answered == NB) {
-        int best = 99;
-        for (int angle = 0; angle < 4; angle++)
-            for (int f2 = 0; f2 < 2; f2++)
-                for (int ud = 0; ud < 2; ud++)
-                    for (int shape = 0; shape < 5; shape++) {
-                        P1Model m = { angle, f2, ud, shape };
-                        bool all = true;
-                        for (int c = 0; c < NB && all; c++)
-                            all = p1_matches(m, basic[c], ab.got[c]);
-                        if (all && p1_mistakes(m) < best) {
-                            best = p1_mistakes(m);
-                            out->model = m;
-                            out->have_model = true;
-                        }
-                    }
-    }
-    double model[NB][CASE_MAX_OUT];
-    for (int c = 0; c < NB; c++)
-        p1_eval(out->have_model ? out->model : (P1Model){ 0, 1, 1, 0 }, basic[c], model[c]);
-    bool in_float = all_float(&ab, 2, (const double (*)[CASE_MAX_OUT])model, NB);
+    if (ab.answered == N_FOV_ORDINARY)
+        p1_simplest_model(out, &ab);
+    double model[N_FOV_ORDINARY][CASE_MAX_OUT];
+    for (int c = 0; c < N_FOV_ORDINARY; c++)
+        p1_eval(out->have_model ? out->model : (P1Model){ 0, 1, 1, 0 }, p1_ordinary[c], model[c]);
+    bool in_float = all_float(&ab, 2, (const double (*)[CASE_MAX_OUT])model, N_FOV_ORDINARY);
 
     const P1Model m = out->model;
     const double *g = ab.answered ? ab.got[1] : NULL;     /* alpha = 90, aspect 0.5, d = 3 */
-
-    /* A right formula with a wrong constant: the factor from degrees to
-     * radians each answer implies, k = 2 atan(h / 2 d) / alpha, is the same
-     * in every case (to double's roundings) but is not pi / 180, as with
-     * pi written 3.14159 or the factor 0.0174533. */
-    if (ab.answered == NB) {
-        double kmin = INFINITY, kmax = -INFINITY;
-        bool shaped = true;
-        for (int c = 0; c < NB; c++) {
-            const double *in = basic[c], *got = ab.got[c];
-            double k = 2 * atan(got[1] / (2 * in[2])) / in[0];
-            shaped = shaped && got[1] > 0 && fabs(got[0] - in[1] * got[1]) <= 1e-12 * fabs(got[0]);
-            kmin = fmin(kmin, k);
-            kmax = fmax(kmax, k);
-        }
-        double k = (kmin + kmax) / 2, off = k / (M_PI / 180) - 1;
-        if (shaped && kmax - kmin <= 1e-12 * k && fabs(off) > 1e-10 && fabs(off) < 1e-2) {
-            out->factor = k;
-            name_cause(f, "pi-approximate", TAG_ALL, "the factor from degrees to radians is %s by %.2g "
-                       "of itself: every answer is that of the right formula with %.10g in place of "
-                       "pi / 180 = 0.017453292519943295, as if pi were %.9g. Use M_PI (raytracer.h "
-                       "defines it), not a value of pi or of pi / 180 written out.",
-                       off > 0 ? "too large" : "too small", fabs(off), k, k * 180);
-        }
-    }
-    /* Right to float's digits only, but not every answer a float: float
-     * somewhere inside (a float variable, tanf, a constant written 180.0f). */
-    if (ab.answered == NB && !in_float && out->factor == 0) {
-        double worst = 0;
-        int worst_c = 0, worst_k = 0;
-        bool close = true;
-        for (int c = 0; c < NB && close; c++) {
-            double v[2];
-            p1_with_factor(M_PI / 180, basic[c], v);
-            for (int k = 0; k < 2; k++) {
-                double rel = fabs(ab.got[c][k] - v[k]) / fabs(v[k]);
-                close = close && rel <= FLOAT_DIGITS;
-                if (rel > worst)
-                    worst = rel, worst_c = c, worst_k = k;
-            }
-        }
-        if (close && worst > 1e-9) {
-            double v[2];
-            char b0[40], b1[40];
-            p1_with_factor(M_PI / 180, basic[worst_c], v);
-            out->float_digits = true;
-            name_cause(f, "float", TAG_ALL, "your answers agree with the right ones to about 7 digits, "
-                       "float's precision, and no further: for alpha = %g, aspect = %g, d = %g your "
-                       "%s = %s, the right one %s (off by %.2g of itself). Some of the computation is "
-                       "in float (a float variable, tanf, a constant written 180.0f): use double "
-                       "throughout.", basic[worst_c][0], basic[worst_c][1], basic[worst_c][2],
-                       worst_k ? "h" : "w",
-                       kit_shortest_double(b0, sizeof b0, ab.got[worst_c][worst_k]),
-                       kit_shortest_double(b1, sizeof b1, v[worst_k]), worst);
-        }
-    }
-
-    if (out->have_model && p1_mistakes(m) > 0) {
-        if (m.angle == 1 || m.angle == 3)
-            name_cause(f, "degrees-as-radians", TAG_ALL, "tan was given the angle in degrees: for alpha = 90, "
-                       "aspect = 0.5, d = 3 your code returned h = %.6g, which is %s tan(%s) with %s "
-                       "read as radians. tan takes radians: multiply degrees by pi / 180 (and if your "
-                       "function treats the field of view as radians, it is given in degrees here).",
-                       g[1], m.factor2 ? "2 d" : "d", m.angle == 1 ? "45" : "90", m.angle == 1 ? "45" : "90");
-        if (m.angle >= 2)
-            name_cause(f, "full-angle", TAG_ALL, "tan of the whole field of view: h = 2 d tan(alpha / 2) "
-                       "uses half the angle (the plane spans alpha / 2 above the axis and alpha / 2 below).");
-        if (!m.factor2)
-            name_cause(f, "no-factor-2", TAG_ALL, "the factor 2 is missing: tan(alpha / 2) gives half the "
-                       "plane's height, h / (2 d); h = 2 d tan(alpha / 2).");
-        if (!m.use_d)
-            name_cause(f, "d-ignored", TAG_ALL, "the plane is sized as if d = 1 (for d = 3 your h is a third "
-                       "of the right one): h = 2 d tan(alpha / 2) grows with d. Tutorials such as "
-                       "Scratchapixel put the plane at distance 1; this lab's is at d.");
-        if (m.shape == 1)
-            name_cause(f, "aspect-inverted", TAG_ALL, "the aspect ratio is inverted: w = aspect h, with "
-                       "aspect = nx / ny (for aspect 0.5 the plane is half as wide as it is tall).");
-        if (m.shape == 2)
-            name_cause(f, "w-h-swapped", TAG_ALL, "w and h are swapped: h = 2 d tan(alpha / 2) is the "
-                       "height, and w = aspect h the width.");
-        if (m.shape == 4)
-            name_cause(f, "shorter-axis", TAG_ALL, "for tall images the field of view was taken "
-                       "along the width, the image's shorter side (pbrt's convention): in this lab "
-                       "alpha is always VERTICAL, h = 2 d tan(alpha / 2), whatever the aspect.");
-        if (m.shape == 3)
-            name_cause(f, "horizontal-fov", TAG_ALL, "the field of view is taken as the horizontal one "
-                       "(w = 2 d tan(alpha / 2), h = w / aspect): in this lab alpha is VERTICAL, so "
-                       "h = 2 d tan(alpha / 2) and w = aspect h.");
-    }
+    if (ab.answered == N_FOV_ORDINARY)
+        p1_pi_approximate(f, out, &ab);
+    if (ab.answered == N_FOV_ORDINARY && !in_float && out->factor == 0)
+        p1_float_inside(f, out, &ab);
+    if (out->have_model && p1_mistakes(m) > 0)
+        p1_model_mistakes(f, m, g);
     if (in_float && (!out->have_model || m.angle == 0)) {
         char b[40];
         name_cause(f, "float", TAG_ALL, "computed in float: every answer is a float (24 bits, about 7 digits), "
                    "e.g. h = %s for alpha = 90, aspect = 0.5, d = 3. Use double throughout "
                    "(tan, not tanf; 180.0, not 180.0f).", kit_shortest_double(b, sizeof b, g ? g[1] : 0));
     }
-
-    /* Near 180: a right formula whose rounded angle tan amplifies. */
-    if (out->have_model && m.angle == 0 && m.factor2 && m.use_d && !in_float && af.answered == NF) {
-        bool wrong = false, rounding = true;
-        double worst = 0, worst_fov = 0;
-        for (int c = 0; c < NF; c++) {
-            double h = p1_h_near_180(near180[c][0], 1);
-            double rel = fabs(af.got[c][1] - h) / h;
-            if (rel > 32 * U) {
-                wrong = true;
-                rounding = rounding && p1_angle_rounding(near180[c], af.got[c], 8);
-                if (rel > worst)
-                    worst = rel, worst_fov = near180[c][0];
-            }
-        }
-        if (wrong && rounding) {
-            out->tan90 = true;
-            name_cause(f, "tan-near-90", TAG_ALL, "your formula is right, but near 180 degrees it loses "
-                       "digits (at alpha = %.12g, h is off by %.2g of itself): alpha pi / 360 is "
-                       "rounded to a double like any number, and tan is so steep near 90 degrees that "
-                       "this rounding of 1e-16 is magnified many times. Keeping those digits is the "
-                       "handout's hard-case challenge (extra credit).%s", worst_fov, worst,
-                       ps->probes->full_hints ? " Above 45 degrees use tan(alpha / 2) = 1 / tan(90 - "
-                                                "alpha / 2): 180 - alpha is exact." : "");
-        }
-    }
+    if (out->have_model && m.angle == 0 && m.factor2 && m.use_d && !in_float && af.answered == N_FOV_NEAR180)
+        p1_tan_near_90(ps, f, out, &af);
     answers_free(&ab);
     answers_free(&af);
 }
