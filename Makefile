@@ -282,10 +282,12 @@ $(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
 # On Linux each part's program is also prebuilt as a runner (harness_load.c):
 # the grader then builds a student's file as a shared object, which costs a
 # fraction of linking a whole program, and the runner loads it (build.c).
-# runner_K holds the harness for Part K (HARNESS_PART's numbering) and, in
-# the instructor's kit, the reference for every other part.
+# runner_partP holds the harness for Part P and, in the instructor's kit,
+# the reference for every other part; HARNESS_PART numbers the parts 1 to 6
+# in PARTS' order.
+PARTS      = 1 2 3a 3b 4 5
 LOAD_RUNNERS := $(if $(filter Linux,$(SYSTEM)),1)
-RUNNERS    = $(if $(LOAD_RUNNERS),$(foreach k,1 2 3 4 5 6,$(BUILD)/grader/runner_$(k)))
+RUNNERS    = $(if $(LOAD_RUNNERS),$(foreach p,$(PARTS),$(BUILD)/grader/runner_part$(p)))
 RUNNER_DEFS = $(if $(HAVE_SOLUTIONS),-DHARNESS_REFS)
 $(BUILD)/grader/harness_load_%.o: tests/grader/harness.c tests/grader/harness_load.h \
                                   tests/grader/harness_init.h tests/grader/hexfloat.h \
@@ -294,13 +296,13 @@ $(BUILD)/grader/harness_load_%.o: tests/grader/harness.c tests/grader/harness_lo
 $(BUILD)/grader/harness_load.o: tests/grader/harness_load.c tests/grader/harness_load.h \
                                 tests/grader/contract.h $(KIT_HDR) | $$(@D)/.
 	$(Q)$(CC) $(CFLAGS) -Ilabs -c $< -o $@
-# (runner_3, Part 3a's, leaves out Part 3b's reference too: it calls
+# (runner_part3a leaves out Part 3b's reference too: it calls
 # sphere_intersect, which only the student's object defines.)
 runner_refs = $(if $(HAVE_SOLUTIONS),$(filter-out $(BUILD)/grader/ref_$(word $(1),$(STAGES)).o \
               $(if $(filter 3,$(1)),$(BUILD)/grader/ref_part3b_ray_color.o),$(GRADER_REF)))
 define RUNNER_RULE
-$(BUILD)/grader/runner_$(1): $(BUILD)/grader/harness_load_$(1).o $(BUILD)/grader/harness_load.o \
-                           $(call runner_refs,$(1))
+$(BUILD)/grader/runner_part$(word $(1),$(PARTS)): $(BUILD)/grader/harness_load_$(1).o \
+                           $(BUILD)/grader/harness_load.o $(call runner_refs,$(1))
 	$(Q)$$(CC) $$(CFLAGS) -rdynamic $$^ -o $$@ $$(LDLIBS) -ldl
 endef
 $(foreach k,1 2 3 4 5 6,$(eval $(call RUNNER_RULE,$(k))))

@@ -505,7 +505,7 @@ static int load_program(const BuildConfig *cfg, Build *b, int part, const char *
     if (from_memo[0] && access(from_memo, F_OK) != 0)
         memo_keep(memo, "student.so", so);
     char from[PATH_MAX];
-    snprintf(from, sizeof from, "%s/runner_%d", cfg->objdir, part + 1);
+    snprintf(from, sizeof from, "%s/runner_part%s", cfg->objdir, part_label(part));
     if (copy_file(from, b->runner, 16 << 20, err, errlen) || chmod(b->runner, 0755))
         return -1;
     snprintf(b->object, sizeof b->object, "%s/src/student.so", b->dir);

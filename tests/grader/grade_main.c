@@ -262,7 +262,7 @@ static int grade_one(const char *submission, const char *part, const char *resul
     /* The prebuilt runners (Linux), unless GRADE_NO_LOAD is set (the kit's
      * own tests grade both ways and compare). */
     char runner[PATH_MAX + 64];
-    snprintf(runner, sizeof runner, "%s/runner_1", objdir);
+    snprintf(runner, sizeof runner, "%s/runner_part1", objdir);
     const char *no_load = getenv("GRADE_NO_LOAD");
     BuildConfig bc = { .root = root, .cc = cc, .objdir = objdir, .reference = access(ref, R_OK) == 0,
                        .load = access(runner, X_OK) == 0 && !(no_load && *no_load),
