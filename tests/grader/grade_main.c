@@ -211,6 +211,40 @@ static bool graded_folder(const char *submission, char *out, size_t n)
     return false;
 }
 
+/* The sandbox runs programs by path: finds cc on PATH, into ccpath (n
+ * bytes); says whether it is there. */
+static bool on_path(const char *cc, char *ccpath, size_t n)
+{
+    const char *path = getenv("PATH") ? getenv("PATH") : "/usr/bin:/bin";
+    char *copy = strdup(path), *save = NULL;
+    ccpath[0] = '\0';
+    for (char *dir = strtok_r(copy, ":", &save); dir; dir = strtok_r(NULL, ":", &save)) {
+        snprintf(ccpath, n, "%s/%s", dir, cc);
+        if (access(ccpath, X_OK) == 0)
+            break;
+        ccpath[0] = '\0';
+    }
+    free(copy);
+    return ccpath[0] != '\0';
+}
+
+/* grade --cost: where the CPU time went.  The whole process: the
+ * grader's own CPU (reading the tests included) and every child it
+ * waited for. */
+static void say_cost(const Grade *g)
+{
+    double self = sandbox_cpu(true), total = self + sandbox_cpu(false);
+    printf("cost (CPU seconds): compiling %.3f, linking %.3f, tests %.3f, probes %.3f, "
+           "the grader %.3f; total %.3f = %.2f x compiling\n", g->cpu_compile, g->cpu_link,
+           g->cpu_tests, g->cpu_probes, self, total,
+           g->cpu_compile > 0 ? total / g->cpu_compile : 0);
+    int nruns;
+    double jail;
+    sandbox_jail_cost(&nruns, &jail);
+    printf("the jail: %d runs, %.3f s building their namespaces (%s)\n", nruns, jail,
+           jail_namespaces() ? "counted in the runs above" : "none: the fallback");
+}
+
 static int grade_one(const char *submission, const char *part, const char *results,
                      const char *weights, const char *page, bool quiet, bool summary)
 {
@@ -233,22 +267,10 @@ static int grade_one(const char *submission, const char *part, const char *resul
     warn_changed_headers(root);
     const char *cc = getenv("CC") && *getenv("CC") ? getenv("CC") : "cc";
     char ccpath[PATH_MAX];
-    /* The sandbox runs programs by path: find the compiler on PATH. */
-    if (!strchr(cc, '/')) {
-        const char *path = getenv("PATH") ? getenv("PATH") : "/usr/bin:/bin";
-        char *copy = strdup(path), *save = NULL;
-        ccpath[0] = '\0';
-        for (char *dir = strtok_r(copy, ":", &save); dir; dir = strtok_r(NULL, ":", &save)) {
-            snprintf(ccpath, sizeof ccpath, "%s/%s", dir, cc);
-            if (access(ccpath, X_OK) == 0)
-                break;
-            ccpath[0] = '\0';
-        }
-        free(copy);
-        if (!ccpath[0])
-            return fail(results, "no C compiler: %s is not on PATH", cc);
+    if (!strchr(cc, '/') && !on_path(cc, ccpath, sizeof ccpath))
+        return fail(results, "no C compiler: %s is not on PATH", cc);
+    if (!strchr(cc, '/'))
         cc = ccpath;
-    }
     char objdir[PATH_MAX + 32], ref[PATH_MAX + 64];
     /* The harness and reference objects, where the Makefile built them. */
 #ifndef GRADER_BUILD
@@ -288,20 +310,8 @@ static int grade_one(const char *submission, const char *part, const char *resul
     }
     if (!quiet)
         report_table(stdout, &g, &cfg, submission, every_failure);
-    if (show_cost) {
-        /* The whole process: the grader's own CPU (reading the tests
-         * included) and every child it waited for. */
-        double self = sandbox_cpu(true), total = self + sandbox_cpu(false);
-        printf("cost (CPU seconds): compiling %.3f, linking %.3f, tests %.3f, probes %.3f, "
-               "the grader %.3f; total %.3f = %.2f x compiling\n", g.cpu_compile, g.cpu_link,
-               g.cpu_tests, g.cpu_probes, self, total,
-               g.cpu_compile > 0 ? total / g.cpu_compile : 0);
-        int nruns;
-        double jail;
-        sandbox_jail_cost(&nruns, &jail);
-        printf("the jail: %d runs, %.3f s building their namespaces (%s)\n", nruns, jail,
-               jail_namespaces() ? "counted in the runs above" : "none: the fallback");
-    }
+    if (show_cost)
+        say_cost(&g);
     int status = g.total < g.total_max || g.bonus < g.bonus_max ? 1 : 0;
     if (results && (results_prairielearn ? report_prairielearn(results, &g, err, sizeof err)
                                          : report_json(results, &g, submission, err, sizeof err)) != 0) {
