@@ -617,14 +617,42 @@ static bool p2_explains(const void *ctx, int tag, const Test *t, const Case *c, 
     return true;
 }
 
+/* Part 2's probe, i j nx ny w h d: pixels not square, w / h far from
+ * nx / ny, d not 1. */
+static const double p2_cases[][7] = {
+    { 1, 0, 4, 3, 2.5, 1.2, 1.5 }, { 3, 2, 5, 4, 4, 3, 2 }, { 0, 3, 6, 4, 6.4, 2.2, 0.5 },
+    { 2, 1, 3, 5, 1.2, 2.6, 1.25 }, { 4, 0, 5, 7, 2, 3, 3 }, { 6, 5, 7, 6, 3.3, 1.7, 0.8 },
+};
+enum { N_PIXELS = sizeof p2_cases / sizeof *p2_cases };
+
+/* Right to float's digits only: float somewhere inside.  model holds
+ * the right answers. */
+static void p2_float_inside(Found *f, const Answers *a, const double (*model)[CASE_MAX_OUT])
+{
+    const double (*cases)[7] = p2_cases;
+    double worst = 0;
+    int wc = 0, wk = 0;
+    for (int c = 0; c < N_PIXELS; c++)
+        for (int k = 0; k < 3; k++) {
+            double err = fabs(a->got[c][k] - model[c][k]) / p2_scale(cases[c]);
+            if (err > worst)
+                worst = err, wc = c, wk = k;
+        }
+    char b0[40], b1[40];
+    if (worst > 1e-10 && worst <= FLOAT_DIGITS)
+        name_cause(f, "float", TAG_ALL, "your coordinates agree with the right ones to about 7 "
+                   "digits, float's precision, and no further: for pixel (%g, %g) of a %g x %g image "
+                   "your %c = %s, the right one %s. Some of the computation is in float (a float "
+                   "variable, a constant written 0.5f): use double throughout.", cases[wc][0],
+                   cases[wc][1], cases[wc][2], cases[wc][3], "xyz"[wk],
+                   kit_shortest_double(b0, sizeof b0, a->got[wc][wk]),
+                   kit_shortest_double(b1, sizeof b1, model[wc][wk]));
+}
+
 static void diagnose_part2(ProbeSet *ps, Found *f, P2Found *out)
 {
-    /* i j nx ny w h d: pixels not square, w / h far from nx / ny, d not 1 */
-    static const double cases[][7] = {
-        { 1, 0, 4, 3, 2.5, 1.2, 1.5 }, { 3, 2, 5, 4, 4, 3, 2 }, { 0, 3, 6, 4, 6.4, 2.2, 0.5 },
-        { 2, 1, 3, 5, 1.2, 2.6, 1.25 }, { 4, 0, 5, 7, 2, 3, 3 }, { 6, 5, 7, 6, 3.3, 1.7, 0.8 },
-    };
-    enum { N = sizeof cases / sizeof *cases };
+    const double (*cases)[7] = p2_cases;
+    enum { N = N_PIXELS };
     Test *t = probe_test(ps, PART2, KIND_PIXEL, "probe: pixels of images that are not square");
     for (int k = 0; k < N; k++)
         probe_case(t, cases[k], 7);
@@ -707,24 +735,7 @@ static void diagnose_part2(ProbeSet *ps, Found *f, P2Found *out)
                    "digits), e.g. x = %s. Use double throughout.",
                    kit_shortest_double(b, sizeof b, g[0]));
     } else if (x == X_RIGHT && y == Y_RIGHT && out->z == Z_RIGHT) {
-        /* Right to float's digits only: float somewhere inside. */
-        double worst = 0;
-        int wc = 0, wk = 0;
-        for (int c = 0; c < N; c++)
-            for (int k = 0; k < 3; k++) {
-                double err = fabs(a.got[c][k] - model[c][k]) / p2_scale(cases[c]);
-                if (err > worst)
-                    worst = err, wc = c, wk = k;
-            }
-        char b0[40], b1[40];
-        if (worst > 1e-10 && worst <= FLOAT_DIGITS)
-            name_cause(f, "float", TAG_ALL, "your coordinates agree with the right ones to about 7 "
-                       "digits, float's precision, and no further: for pixel (%g, %g) of a %g x %g image "
-                       "your %c = %s, the right one %s. Some of the computation is in float (a float "
-                       "variable, a constant written 0.5f): use double throughout.", cases[wc][0],
-                       cases[wc][1], cases[wc][2], cases[wc][3], "xyz"[wk],
-                       kit_shortest_double(b0, sizeof b0, a.got[wc][wk]),
-                       kit_shortest_double(b1, sizeof b1, model[wc][wk]));
+        p2_float_inside(f, &a, (const double (*)[CASE_MAX_OUT])model);
     }
     answers_free(&a);
 }
