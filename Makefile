@@ -185,16 +185,17 @@ $(PART_KS:%=$(BUILD)/grader/harness_%.o): $(BUILD)/grader/harness_%.o: tests/gra
 	$(Q)$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -c $< -o $@
 $(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
 	$(Q)cp $< $@
-# On Linux runner_K loads the student's file as a shared object (cheaper than
-# a link), with the instructor's reference of the other parts (3a's: not 3b's).
-RUNNERS    = $(if $(filter Linux,$(SYSTEM)),$(PART_KS:%=$(BUILD)/grader/runner_%))
+# On Linux runner_partP (harness_load_K.o, K = part_k of P) loads the student's
+# file as a shared object, with the reference of the other parts (3a's: no 3b).
+RUNNERS    = $(if $(filter Linux,$(SYSTEM)),$(patsubst %,$(BUILD)/grader/runner_part%,1 2 3a 3b 4 5))
 runner_refs = $(if $(HAVE_SOLUTIONS),$(filter-out $(BUILD)/grader/ref_$(word $(1),$(STAGES)).o \
               $(if $(filter 3,$(1)),$(BUILD)/grader/ref_part3b_ray_color.o),$(GRADER_REF)))
 $(PART_KS:%=$(BUILD)/grader/harness_load_%.o): $(BUILD)/grader/harness_load_%.o: tests/grader/harness.c \
         tests/grader/harness_load.h tests/grader/harness_init.h tests/grader/hexfloat.h $(KIT_HDR) | $(BUILD)/grader/.
 	$(Q)$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -DHARNESS_LOAD $(if $(HAVE_SOLUTIONS),-DHARNESS_REFS) -c $< -o $@
-$(PART_KS:%=$(BUILD)/grader/runner_%): $(BUILD)/grader/runner_%: $(BUILD)/grader/harness_load_%.o \
-        $(BUILD)/grader/harness_load.o $$(call runner_refs,$$*)
+part_k     = $(word 2,$(subst :, ,$(filter $(1):%,1:1 2:2 3a:3 3b:4 4:5 5:6)))
+$(RUNNERS): $(BUILD)/grader/runner_part%: $(BUILD)/grader/harness_load_$$(call part_k,$$*).o \
+        $(BUILD)/grader/harness_load.o $$(call runner_refs,$$(call part_k,$$*))
 	$(Q)$(CC) $(CFLAGS) -rdynamic $^ -o $@ $(LDLIBS) -ldl
 # bin/sortsubs sorts a class's download from an LMS for grade-all.
 grader: $(BUILD)/bin/grade $(HARNESS) $(GRADER_REF) $(RUNNERS) $(BUILD)/bin/sortsubs

@@ -505,7 +505,7 @@ static int load_program(const BuildConfig *cfg, Build *b, int part, const char *
     if (from_memo[0] && access(from_memo, F_OK) != 0)
         memo_keep(memo, "student.so", so);
     char from[PATH_MAX];
-    snprintf(from, sizeof from, "%s/runner_%d", cfg->objdir, part + 1);
+    snprintf(from, sizeof from, "%s/runner_part%s", cfg->objdir, part_label(part));
     if (copy_file(from, b->runner, 16 << 20, err, errlen) || chmod(b->runner, 0755))
         return -1;
     snprintf(b->object, sizeof b->object, "%s/src/student.so", b->dir);
@@ -698,6 +698,131 @@ static int link_apart(const BuildConfig *cfg, Build *b, const char *submission, 
     return rc;
 }
 
+/* b's folders: b->dir, its src (what the runs may read) and rundir. */
+static int make_build_dirs(Build *b, char *err, size_t errlen)
+{
+    memset(b, 0, sizeof *b);
+    b->messages = calloc(1, 1);
+    if (build_tempdir(b->dir, sizeof b->dir, err, errlen))
+        return -1;
+    /* src holds what the runs may read, and only the grader writes there;
+     * each run works in a fresh folder of its own, rundir (sandbox.h). */
+    snprintf(b->src, sizeof b->src, "%s/src", b->dir);
+    snprintf(b->rundir, sizeof b->rundir, "%s/run", b->dir);
+    snprintf(b->runner, sizeof b->runner, "%s/src/runner", b->dir);
+    b->visible[0] = b->src;
+    b->visible[1] = NULL;
+    const char *src = b->src;
+    /* src: the run's user may read it (its group), and no one else: in the
+     * fallback jail the runs of another submission graded at once run as
+     * another user. */
+    uid_t uid;
+    gid_t gid;
+    sandbox_ids(&uid, &gid);
+    if (chmod(b->dir, 0711) || mkdir(src, 0750) || chmod(src, 0750) ||
+        (sandbox_drops_privileges() && chown(src, 0, gid))) {
+        snprintf(err, errlen, "%s: %s", b->dir, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+/* The headers the students see, into src.  In the student kit, as the
+ * kit shipped them (tests/grader/shipped): what a student adds to
+ * labs/raytracer.h, the instructor's grader will not have, so this one
+ * does not either (grade_main.c warns of the change). */
+static int copy_headers(const BuildConfig *cfg, const char *src, char *err, size_t errlen)
+{
+    static const char *headers[] = { "raytracer.h", "vec3.h" };
+    for (int k = 0; k < 2; k++) {
+        char from[PATH_MAX], to[PATH_MAX + 700];
+        snprintf(from, sizeof from, "%s/tests/grader/shipped/%s", cfg->root, headers[k]);
+        if (access(from, R_OK) != 0)
+            snprintf(from, sizeof from, "%s/labs/%s", cfg->root, headers[k]);
+        snprintf(to, sizeof to, "%s/%s", src, headers[k]);
+        if (copy_file(from, to, BUILD_SOURCE_MAX, err, errlen))
+            return -1;
+    }
+    return 0;
+}
+
+/* Copies a submission's stage file into src, checks it and compiles it.
+ * Returns 1 when it built, 0 when it did not (b says why), -1 when the
+ * grader could not do its job (err says why). */
+static int build_stage(const BuildConfig *cfg, Build *b, const char *submission, const char *stage,
+                       bool load, MemoEntry *memo, char *err, size_t errlen)
+{
+    const char *src = b->src;
+    char path[PATH_MAX], to[PATH_MAX + 700], cfile[80], cerr[512];
+    snprintf(cfile, sizeof cfile, "%s.c", stage);
+    snprintf(path, sizeof path, "%s/%s.c", submission, stage);
+    snprintf(to, sizeof to, "%s/%s.c", src, stage);
+    int in = build_open_stage(path);
+    if (in < 0 && errno == ENOENT)
+        return missing_stage(b, submission, stage, cfile);
+    if (in < 0 && (errno == ELOOP || errno == EINVAL))
+        return not_compiled(b, errno == ELOOP ? "refused: a symbolic link, not a file (hand in the file "
+                                                "itself): " : "refused: not a regular file: ", cfile);
+    if (in < 0) {           /* unreadable, say: as the system puts it */
+        snprintf(cerr, sizeof cerr, "%s: %s", cfile, strerror(errno));
+        return not_compiled(b, "cannot read ", cerr);
+    }
+    struct stat st;
+    if (fstat(in, &st) == 0 && st.st_size > BUILD_SOURCE_MAX) {
+        close(in);
+        snprintf(cerr, sizeof cerr, "%s is %lld bytes; a stage file may be at most %d (1 MiB)",
+                 cfile, (long long)st.st_size, BUILD_SOURCE_MAX);
+        return not_compiled(b, "refused: too large: ", cerr);
+    }
+    if (copy_fd(in, path, to, BUILD_SOURCE_MAX, cerr, sizeof cerr))
+        return not_compiled(b, cerr, "");
+    /* The copy, read once for what must not reach the compiler. */
+    size_t n = 0;
+    char *text = kit_load_file(to, BUILD_SOURCE_MAX, &n);
+    if (!text) {
+        snprintf(cerr, sizeof cerr, "%s: its copy cannot be read back", cfile);
+        return not_compiled(b, "cannot read ", cerr);
+    }
+    bool utf16 = lookalike_utf16(text, n), refused = !utf16 && scan_includes(cfg, b, text, n, src);
+    if (utf16) {
+        free(text);
+        snprintf(cerr, sizeof cerr, "%s " LOOKALIKE_UTF16, cfile);
+        return not_compiled(b, "refused: ", cerr);
+    }
+    if (refused) {
+        free(text);
+        b->refused = true;          /* scan_includes said why */
+        return 0;
+    }
+    int rc = compile_stage(cfg, b, stage, load, NULL, memo, err, errlen);
+    if (rc > 0) {
+        explain_lookalikes(b, text, n, cfile);
+        explain_own_headers(b, text, n, submission, cfile);
+    }
+    free(text);
+    return rc < 0 ? -1 : rc == 0;
+}
+
+/* In the instructor's kit: the reference for every part but skip, added
+ * to the link. */
+static int add_references(const BuildConfig *cfg, const char *src, int skip, char **link, int *nlink,
+                          char (*names)[96], char *err, size_t errlen)
+{
+    char path[PATH_MAX], to[PATH_MAX + 700];
+    for (int p = 0; p < NPARTS; p++) {
+        if (p == skip)
+            continue;
+        snprintf(path, sizeof path, "%s/ref_%s.o", cfg->objdir, stage_names[p]);
+        snprintf(names[*nlink], sizeof names[*nlink], "ref_%d.o", p);
+        snprintf(to, sizeof to, "%s/%s", src, names[*nlink]);
+        if (copy_file(path, to, 16 << 20, err, errlen))
+            return -1;
+        link[*nlink] = names[*nlink];
+        (*nlink)++;
+    }
+    return 0;
+}
+
 /* Builds b->dir/src/runner from the prebuilt harness object harness (a file
  * name in cfg->objdir), the submission's stage files of the nparts parts
  * listed (each compiled here, or copied from the directory kept when it
@@ -715,46 +840,10 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
 {
     /* One student file of a part's program, on Linux: a shared object. */
     bool load = cfg->load && skip >= 0 && nparts == 1;
-    memset(b, 0, sizeof *b);
-    b->messages = calloc(1, 1);
-    if (build_tempdir(b->dir, sizeof b->dir, err, errlen))
+    if (make_build_dirs(b, err, errlen) || copy_headers(cfg, b->src, err, errlen))
         return -1;
-    /* src holds what the runs may read, and only the grader writes there;
-     * each run works in a fresh folder of its own, rundir (sandbox.h). */
-    snprintf(b->src, sizeof b->src, "%s/src", b->dir);
-    snprintf(b->rundir, sizeof b->rundir, "%s/run", b->dir);
-    snprintf(b->runner, sizeof b->runner, "%s/src/runner", b->dir);
-    b->visible[0] = b->src;
-    b->visible[1] = NULL;
     const char *src = b->src;
-    char path[PATH_MAX];
-    /* src: the run's user may read it (its group), and no one else: in the
-     * fallback jail the runs of another submission graded at once run as
-     * another user. */
-    uid_t uid;
-    gid_t gid;
-    sandbox_ids(&uid, &gid);
-    if (chmod(b->dir, 0711) || mkdir(src, 0750) || chmod(src, 0750) ||
-        (sandbox_drops_privileges() && chown(src, 0, gid))) {
-        snprintf(err, errlen, "%s: %s", b->dir, strerror(errno));
-        return -1;
-    }
-
-    /* The headers the students see, and the harness.  In the student kit,
-     * as the kit shipped them (tests/grader/shipped): what a student adds
-     * to labs/raytracer.h, the instructor's grader will not have, so this
-     * one does not either (grade_main.c warns of the change). */
-    static const char *headers[] = { "raytracer.h", "vec3.h" };
-    for (int k = 0; k < 2; k++) {
-        char from[PATH_MAX], to[PATH_MAX + 700];
-        snprintf(from, sizeof from, "%s/tests/grader/shipped/%s", cfg->root, headers[k]);
-        if (access(from, R_OK) != 0)
-            snprintf(from, sizeof from, "%s/labs/%s", cfg->root, headers[k]);
-        snprintf(to, sizeof to, "%s/%s", src, headers[k]);
-        if (copy_file(from, to, BUILD_SOURCE_MAX, err, errlen))
-            return -1;
-    }
-    char to[PATH_MAX + 700];
+    char path[PATH_MAX], to[PATH_MAX + 700];
     snprintf(path, sizeof path, "%s/%s", cfg->objdir, harness);
     snprintf(to, sizeof to, "%s/harness.o", src);
     if (!load && copy_file(path, to, 16 << 20, err, errlen))    /* loaded: the runner has it */
@@ -768,67 +857,15 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
     link[nlink++] = "harness.o";
     for (int k = 0; k < nparts; k++) {
         const char *stage = stage_names[parts[k]];
-        char cfile[80], ofile[80];
-        snprintf(cfile, sizeof cfile, "%s.c", stage);
+        char ofile[80], cerr[512];
         snprintf(ofile, sizeof ofile, "%s.o", stage);
-        char cerr[512];
-        if (kept) {
-            snprintf(path, sizeof path, "%s/%s", kept, ofile);
-            snprintf(to, sizeof to, "%s/%s", src, ofile);
-            if (access(path, R_OK) == 0 && copy_file(path, to, 64 << 20, cerr, sizeof cerr) == 0) {
-                snprintf(names[nlink], sizeof names[nlink], "%s", ofile);
-                link[nlink] = names[nlink];
-                nlink++;
-                continue;
-            }
-        }
-        snprintf(path, sizeof path, "%s/%s.c", submission, stage);
-        snprintf(to, sizeof to, "%s/%s.c", src, stage);
-        int in = build_open_stage(path);
-        if (in < 0 && errno == ENOENT)
-            return missing_stage(b, submission, stage, cfile);
-        if (in < 0 && (errno == ELOOP || errno == EINVAL))
-            return not_compiled(b, errno == ELOOP ? "refused: a symbolic link, not a file (hand in the file "
-                                                    "itself): " : "refused: not a regular file: ", cfile);
-        if (in < 0) {           /* unreadable, say: as the system puts it */
-            snprintf(cerr, sizeof cerr, "%s: %s", cfile, strerror(errno));
-            return not_compiled(b, "cannot read ", cerr);
-        }
-        struct stat st;
-        if (fstat(in, &st) == 0 && st.st_size > BUILD_SOURCE_MAX) {
-            close(in);
-            snprintf(cerr, sizeof cerr, "%s is %lld bytes; a stage file may be at most %d (1 MiB)",
-                     cfile, (long long)st.st_size, BUILD_SOURCE_MAX);
-            return not_compiled(b, "refused: too large: ", cerr);
-        }
-        if (copy_fd(in, path, to, BUILD_SOURCE_MAX, cerr, sizeof cerr))
-            return not_compiled(b, cerr, "");
-        /* The copy, read once for what must not reach the compiler. */
-        size_t n = 0;
-        char *text = kit_load_file(to, BUILD_SOURCE_MAX, &n);
-        if (!text) {
-            snprintf(cerr, sizeof cerr, "%s: its copy cannot be read back", cfile);
-            return not_compiled(b, "cannot read ", cerr);
-        }
-        bool utf16 = lookalike_utf16(text, n), refused = !utf16 && scan_includes(cfg, b, text, n, src);
-        if (utf16) {
-            free(text);
-            snprintf(cerr, sizeof cerr, "%s " LOOKALIKE_UTF16, cfile);
-            return not_compiled(b, "refused: ", cerr);
-        }
-        if (refused) {
-            free(text);
-            b->refused = true;          /* scan_includes said why */
-            return 0;
-        }
-        int rc = compile_stage(cfg, b, stage, load, NULL, &memo, err, errlen);
-        if (rc > 0) {
-            explain_lookalikes(b, text, n, cfile);
-            explain_own_headers(b, text, n, submission, cfile);
-        }
-        free(text);
-        if (rc != 0)
-            return rc < 0 ? -1 : 0;
+        snprintf(path, sizeof path, "%s/%s", kept ? kept : "", ofile);
+        snprintf(to, sizeof to, "%s/%s", src, ofile);
+        bool from_kept = kept && access(path, R_OK) == 0 &&
+                         copy_file(path, to, 64 << 20, cerr, sizeof cerr) == 0;
+        int rc = from_kept ? 1 : build_stage(cfg, b, submission, stage, load, &memo, err, errlen);
+        if (rc <= 0)
+            return rc;
         snprintf(names[nlink], sizeof names[nlink], "%s", ofile);
         link[nlink] = names[nlink];
         nlink++;
@@ -836,19 +873,8 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
     if (load)
         return load_program(cfg, b, skip, names[nlink - 1], &memo, err, errlen);
     /* In the instructor's kit: the reference for every other part. */
-    if (skip >= 0 && cfg->reference) {
-        for (int p = 0; p < NPARTS; p++) {
-            if (p == skip)
-                continue;
-            snprintf(path, sizeof path, "%s/ref_%s.o", cfg->objdir, stage_names[p]);
-            snprintf(names[nlink], sizeof names[nlink], "ref_%d.o", p);
-            snprintf(to, sizeof to, "%s/%s", src, names[nlink]);
-            if (copy_file(path, to, 16 << 20, err, errlen))
-                return -1;
-            link[nlink] = names[nlink];
-            nlink++;
-        }
-    }
+    if (skip >= 0 && cfg->reference && add_references(cfg, src, skip, link, &nlink, names, err, errlen))
+        return -1;
     char out[700];
     snprintf(out, sizeof out, "%s/runner", b->rundir);
     link[nlink++] = "-lm";

@@ -25,7 +25,7 @@ typedef struct {
     const char *objdir;        /* prebuilt harness_<k>.o and, if any,
                                   the reference objects ref_<stage>.o          */
     bool reference;            /* reference objects exist for the other parts  */
-    bool load;                 /* objdir has the prebuilt runners runner_<k>
+    bool load;                 /* objdir has the prebuilt runners runner_part<P>
                                   (Linux): a part with one student file is
                                   built as a shared object they load       */
     const char *memo;          /* NULL, or where grade --all keeps what each

@@ -336,21 +336,165 @@ static bool p1_explains(const void *ctx, int tag, const Test *t, const Case *c, 
     return p->tan90 && p1_angle_rounding(c->in, got, 8) && fabs(got[0] - c->in[1] * got[1]) <= 1e-12 * got[0];
 }
 
+/* Part 1's probes: ordinary fields of view, and those near 180 degrees. */
+static const double p1_ordinary[][3] = {
+    { 60, 2, 1.5 }, { 90, 0.5, 3 }, { 30, 1.5, 0.5 }, { 120, 1.25, 2 }, { 10, 4.0 / 3, 0.75 },
+};
+static const double p1_near180[][3] = {
+    { 179.99, 1, 1 }, { 179.9999, 1, 1 }, { 179.999999, 1, 1 }, { 179.99999999, 1, 1 },
+};
+enum { N_FOV_ORDINARY = sizeof p1_ordinary / sizeof *p1_ordinary, N_FOV_NEAR180 = sizeof p1_near180 / sizeof *p1_near180 };
+
+/* The simplest model that explains every ordinary answer. */
+static void p1_simplest_model(P1Found *out, const Answers *ab)
+{
+    int best = 99;
+    for (int angle = 0; angle < 4; angle++)
+        for (int f2 = 0; f2 < 2; f2++)
+            for (int ud = 0; ud < 2; ud++)
+                for (int shape = 0; shape < 5; shape++) {
+                    P1Model m = { angle, f2, ud, shape };
+                    bool all = true;
+                    for (int c = 0; c < N_FOV_ORDINARY && all; c++)
+                        all = p1_matches(m, p1_ordinary[c], ab->got[c]);
+                    if (all && p1_mistakes(m) < best) {
+                        best = p1_mistakes(m);
+                        out->model = m;
+                        out->have_model = true;
+                    }
+                }
+}
+
+/* A right formula with a wrong constant: the factor from degrees to
+ * radians each answer implies, k = 2 atan(h / 2 d) / alpha, is the same
+ * in every case (to double's roundings) but is not pi / 180, as with
+ * pi written 3.14159 or the factor 0.0174533. */
+static void p1_pi_approximate(Found *f, P1Found *out, const Answers *ab)
+{
+    double kmin = INFINITY, kmax = -INFINITY;
+    bool shaped = true;
+    for (int c = 0; c < N_FOV_ORDINARY; c++) {
+        const double *in = p1_ordinary[c], *got = ab->got[c];
+        double k = 2 * atan(got[1] / (2 * in[2])) / in[0];
+        shaped = shaped && got[1] > 0 && fabs(got[0] - in[1] * got[1]) <= 1e-12 * fabs(got[0]);
+        kmin = fmin(kmin, k);
+        kmax = fmax(kmax, k);
+    }
+    double k = (kmin + kmax) / 2, off = k / (M_PI / 180) - 1;
+    if (shaped && kmax - kmin <= 1e-12 * k && fabs(off) > 1e-10 && fabs(off) < 1e-2) {
+        out->factor = k;
+        name_cause(f, "pi-approximate", TAG_ALL, "the factor from degrees to radians is %s by %.2g "
+                   "of itself: every answer is that of the right formula with %.10g in place of "
+                   "pi / 180 = 0.017453292519943295, as if pi were %.9g. Use M_PI (raytracer.h "
+                   "defines it), not a value of pi or of pi / 180 written out.",
+                   off > 0 ? "too large" : "too small", fabs(off), k, k * 180);
+    }
+}
+
+/* Right to float's digits only, but not every answer a float: float
+ * somewhere inside (a float variable, tanf, a constant written 180.0f). */
+static void p1_float_inside(Found *f, P1Found *out, const Answers *ab)
+{
+    double worst = 0;
+    int worst_c = 0, worst_k = 0;
+    bool close = true;
+    for (int c = 0; c < N_FOV_ORDINARY && close; c++) {
+        double v[2];
+        p1_with_factor(M_PI / 180, p1_ordinary[c], v);
+        for (int k = 0; k < 2; k++) {
+            double rel = fabs(ab->got[c][k] - v[k]) / fabs(v[k]);
+            close = close && rel <= FLOAT_DIGITS;
+            if (rel > worst)
+                worst = rel, worst_c = c, worst_k = k;
+        }
+    }
+    if (close && worst > 1e-9) {
+        double v[2];
+        char b0[40], b1[40];
+        p1_with_factor(M_PI / 180, p1_ordinary[worst_c], v);
+        out->float_digits = true;
+        name_cause(f, "float", TAG_ALL, "your answers agree with the right ones to about 7 digits, "
+                   "float's precision, and no further: for alpha = %g, aspect = %g, d = %g your "
+                   "%s = %s, the right one %s (off by %.2g of itself). Some of the computation is "
+                   "in float (a float variable, tanf, a constant written 180.0f): use double "
+                   "throughout.", p1_ordinary[worst_c][0], p1_ordinary[worst_c][1], p1_ordinary[worst_c][2],
+                   worst_k ? "h" : "w",
+                   kit_shortest_double(b0, sizeof b0, ab->got[worst_c][worst_k]),
+                   kit_shortest_double(b1, sizeof b1, v[worst_k]), worst);
+    }
+}
+
+/* Each mistake of the model found, named; g the answer for alpha = 90,
+ * aspect = 0.5, d = 3. */
+static void p1_model_mistakes(Found *f, P1Model m, const double *g)
+{
+    if (m.angle == 1 || m.angle == 3)
+        name_cause(f, "degrees-as-radians", TAG_ALL, "tan was given the angle in degrees: for alpha = 90, "
+                   "aspect = 0.5, d = 3 your code returned h = %.6g, which is %s tan(%s) with %s "
+                   "read as radians. tan takes radians: multiply degrees by pi / 180 (and if your "
+                   "function treats the field of view as radians, it is given in degrees here).",
+                   g[1], m.factor2 ? "2 d" : "d", m.angle == 1 ? "45" : "90", m.angle == 1 ? "45" : "90");
+    if (m.angle >= 2)
+        name_cause(f, "full-angle", TAG_ALL, "tan of the whole field of view: h = 2 d tan(alpha / 2) "
+                   "uses half the angle (the plane spans alpha / 2 above the axis and alpha / 2 below).");
+    if (!m.factor2)
+        name_cause(f, "no-factor-2", TAG_ALL, "the factor 2 is missing: tan(alpha / 2) gives half the "
+                   "plane's height, h / (2 d); h = 2 d tan(alpha / 2).");
+    if (!m.use_d)
+        name_cause(f, "d-ignored", TAG_ALL, "the plane is sized as if d = 1 (for d = 3 your h is a third "
+                   "of the right one): h = 2 d tan(alpha / 2) grows with d. Tutorials such as "
+                   "Scratchapixel put the plane at distance 1; this lab's is at d.");
+    if (m.shape == 1)
+        name_cause(f, "aspect-inverted", TAG_ALL, "the aspect ratio is inverted: w = aspect h, with "
+                   "aspect = nx / ny (for aspect 0.5 the plane is half as wide as it is tall).");
+    if (m.shape == 2)
+        name_cause(f, "w-h-swapped", TAG_ALL, "w and h are swapped: h = 2 d tan(alpha / 2) is the "
+                   "height, and w = aspect h the width.");
+    if (m.shape == 4)
+        name_cause(f, "shorter-axis", TAG_ALL, "for tall images the field of view was taken "
+                   "along the width, the image's shorter side (pbrt's convention): in this lab "
+                   "alpha is always VERTICAL, h = 2 d tan(alpha / 2), whatever the aspect.");
+    if (m.shape == 3)
+        name_cause(f, "horizontal-fov", TAG_ALL, "the field of view is taken as the horizontal one "
+                   "(w = 2 d tan(alpha / 2), h = w / aspect): in this lab alpha is VERTICAL, so "
+                   "h = 2 d tan(alpha / 2) and w = aspect h.");
+}
+
+/* Near 180: a right formula whose rounded angle tan amplifies. */
+static void p1_tan_near_90(const ProbeSet *ps, Found *f, P1Found *out, const Answers *af)
+{
+    bool wrong = false, rounding = true;
+    double worst = 0, worst_fov = 0;
+    for (int c = 0; c < N_FOV_NEAR180; c++) {
+        double h = p1_h_near_180(p1_near180[c][0], 1);
+        double rel = fabs(af->got[c][1] - h) / h;
+        if (rel > 32 * U) {
+            wrong = true;
+            rounding = rounding && p1_angle_rounding(p1_near180[c], af->got[c], 8);
+            if (rel > worst)
+                worst = rel, worst_fov = p1_near180[c][0];
+        }
+    }
+    if (wrong && rounding) {
+        out->tan90 = true;
+        name_cause(f, "tan-near-90", TAG_ALL, "your formula is right, but near 180 degrees it loses "
+                   "digits (at alpha = %.12g, h is off by %.2g of itself): alpha pi / 360 is "
+                   "rounded to a double like any number, and tan is so steep near 90 degrees that "
+                   "this rounding of 1e-16 is magnified many times. Keeping those digits is the "
+                   "handout's hard-case challenge (extra credit).%s", worst_fov, worst,
+                   ps->probes->full_hints ? " Above 45 degrees use tan(alpha / 2) = 1 / tan(90 - "
+                                            "alpha / 2): 180 - alpha is exact." : "");
+    }
+}
+
 static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
 {
-    static const double basic[][3] = {
-        { 60, 2, 1.5 }, { 90, 0.5, 3 }, { 30, 1.5, 0.5 }, { 120, 1.25, 2 }, { 10, 4.0 / 3, 0.75 },
-    };
-    static const double near180[][3] = {
-        { 179.99, 1, 1 }, { 179.9999, 1, 1 }, { 179.999999, 1, 1 }, { 179.99999999, 1, 1 },
-    };
-    enum { NB = sizeof basic / sizeof *basic, NF = sizeof near180 / sizeof *near180 };
     Test *tb = probe_test(ps, PART1, KIND_PLANE, "probe: ordinary fields of view");
-    for (int k = 0; k < NB; k++)
-        probe_case(tb, basic[k], 3);
+    for (int k = 0; k < N_FOV_ORDINARY; k++)
+        probe_case(tb, p1_ordinary[k], 3);
     Test *tf = probe_test(ps, PART1, KIND_PLANE, "probe: fields of view near 180 degrees");
-    for (int k = 0; k < NF; k++)
-        probe_case(tf, near180[k], 3);
+    for (int k = 0; k < N_FOV_NEAR180; k++)
+        probe_case(tf, p1_near180[k], 3);
     Answers a2[2];
     probe_run(ps, &ps->list.tests[0], &a2[0]);
     probe_run(ps, &ps->list.tests[1], &a2[1]);
@@ -360,153 +504,29 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
         answers_free(&af);
         return;
     }
-
-    /* The simplest model that explains every ordinary answer. */
-    if (ab.answered == NB) {
-        int best = 99;
-        for (int angle = 0; angle < 4; angle++)
-            for (int f2 = 0; f2 < 2; f2++)
-                for (int ud = 0; ud < 2; ud++)
-                    for (int shape = 0; shape < 5; shape++) {
-                        P1Model m = { angle, f2, ud, shape };
-                        bool all = true;
-                        for (int c = 0; c < NB && all; c++)
-                            all = p1_matches(m, basic[c], ab.got[c]);
-                        if (all && p1_mistakes(m) < best) {
-                            best = p1_mistakes(m);
-                            out->model = m;
-                            out->have_model = true;
-                        }
-                    }
-    }
-    double model[NB][CASE_MAX_OUT];
-    for (int c = 0; c < NB; c++)
-        p1_eval(out->have_model ? out->model : (P1Model){ 0, 1, 1, 0 }, basic[c], model[c]);
-    bool in_float = all_float(&ab, 2, (const double (*)[CASE_MAX_OUT])model, NB);
+    if (ab.answered == N_FOV_ORDINARY)
+        p1_simplest_model(out, &ab);
+    double model[N_FOV_ORDINARY][CASE_MAX_OUT];
+    for (int c = 0; c < N_FOV_ORDINARY; c++)
+        p1_eval(out->have_model ? out->model : (P1Model){ 0, 1, 1, 0 }, p1_ordinary[c], model[c]);
+    bool in_float = all_float(&ab, 2, (const double (*)[CASE_MAX_OUT])model, N_FOV_ORDINARY);
 
     const P1Model m = out->model;
     const double *g = ab.answered ? ab.got[1] : NULL;     /* alpha = 90, aspect 0.5, d = 3 */
-
-    /* A right formula with a wrong constant: the factor from degrees to
-     * radians each answer implies, k = 2 atan(h / 2 d) / alpha, is the same
-     * in every case (to double's roundings) but is not pi / 180, as with
-     * pi written 3.14159 or the factor 0.0174533. */
-    if (ab.answered == NB) {
-        double kmin = INFINITY, kmax = -INFINITY;
-        bool shaped = true;
-        for (int c = 0; c < NB; c++) {
-            const double *in = basic[c], *got = ab.got[c];
-            double k = 2 * atan(got[1] / (2 * in[2])) / in[0];
-            shaped = shaped && got[1] > 0 && fabs(got[0] - in[1] * got[1]) <= 1e-12 * fabs(got[0]);
-            kmin = fmin(kmin, k);
-            kmax = fmax(kmax, k);
-        }
-        double k = (kmin + kmax) / 2, off = k / (M_PI / 180) - 1;
-        if (shaped && kmax - kmin <= 1e-12 * k && fabs(off) > 1e-10 && fabs(off) < 1e-2) {
-            out->factor = k;
-            name_cause(f, "pi-approximate", TAG_ALL, "the factor from degrees to radians is %s by %.2g "
-                       "of itself: every answer is that of the right formula with %.10g in place of "
-                       "pi / 180 = 0.017453292519943295, as if pi were %.9g. Use M_PI (raytracer.h "
-                       "defines it), not a value of pi or of pi / 180 written out.",
-                       off > 0 ? "too large" : "too small", fabs(off), k, k * 180);
-        }
-    }
-    /* Right to float's digits only, but not every answer a float: float
-     * somewhere inside (a float variable, tanf, a constant written 180.0f). */
-    if (ab.answered == NB && !in_float && out->factor == 0) {
-        double worst = 0;
-        int worst_c = 0, worst_k = 0;
-        bool close = true;
-        for (int c = 0; c < NB && close; c++) {
-            double v[2];
-            p1_with_factor(M_PI / 180, basic[c], v);
-            for (int k = 0; k < 2; k++) {
-                double rel = fabs(ab.got[c][k] - v[k]) / fabs(v[k]);
-                close = close && rel <= FLOAT_DIGITS;
-                if (rel > worst)
-                    worst = rel, worst_c = c, worst_k = k;
-            }
-        }
-        if (close && worst > 1e-9) {
-            double v[2];
-            char b0[40], b1[40];
-            p1_with_factor(M_PI / 180, basic[worst_c], v);
-            out->float_digits = true;
-            name_cause(f, "float", TAG_ALL, "your answers agree with the right ones to about 7 digits, "
-                       "float's precision, and no further: for alpha = %g, aspect = %g, d = %g your "
-                       "%s = %s, the right one %s (off by %.2g of itself). Some of the computation is "
-                       "in float (a float variable, tanf, a constant written 180.0f): use double "
-                       "throughout.", basic[worst_c][0], basic[worst_c][1], basic[worst_c][2],
-                       worst_k ? "h" : "w",
-                       kit_shortest_double(b0, sizeof b0, ab.got[worst_c][worst_k]),
-                       kit_shortest_double(b1, sizeof b1, v[worst_k]), worst);
-        }
-    }
-
-    if (out->have_model && p1_mistakes(m) > 0) {
-        if (m.angle == 1 || m.angle == 3)
-            name_cause(f, "degrees-as-radians", TAG_ALL, "tan was given the angle in degrees: for alpha = 90, "
-                       "aspect = 0.5, d = 3 your code returned h = %.6g, which is %s tan(%s) with %s "
-                       "read as radians. tan takes radians: multiply degrees by pi / 180 (and if your "
-                       "function treats the field of view as radians, it is given in degrees here).",
-                       g[1], m.factor2 ? "2 d" : "d", m.angle == 1 ? "45" : "90", m.angle == 1 ? "45" : "90");
-        if (m.angle >= 2)
-            name_cause(f, "full-angle", TAG_ALL, "tan of the whole field of view: h = 2 d tan(alpha / 2) "
-                       "uses half the angle (the plane spans alpha / 2 above the axis and alpha / 2 below).");
-        if (!m.factor2)
-            name_cause(f, "no-factor-2", TAG_ALL, "the factor 2 is missing: tan(alpha / 2) gives half the "
-                       "plane's height, h / (2 d); h = 2 d tan(alpha / 2).");
-        if (!m.use_d)
-            name_cause(f, "d-ignored", TAG_ALL, "the plane is sized as if d = 1 (for d = 3 your h is a third "
-                       "of the right one): h = 2 d tan(alpha / 2) grows with d. Tutorials such as "
-                       "Scratchapixel put the plane at distance 1; this lab's is at d.");
-        if (m.shape == 1)
-            name_cause(f, "aspect-inverted", TAG_ALL, "the aspect ratio is inverted: w = aspect h, with "
-                       "aspect = nx / ny (for aspect 0.5 the plane is half as wide as it is tall).");
-        if (m.shape == 2)
-            name_cause(f, "w-h-swapped", TAG_ALL, "w and h are swapped: h = 2 d tan(alpha / 2) is the "
-                       "height, and w = aspect h the width.");
-        if (m.shape == 4)
-            name_cause(f, "shorter-axis", TAG_ALL, "for tall images the field of view was taken "
-                       "along the width, the image's shorter side (pbrt's convention): in this lab "
-                       "alpha is always VERTICAL, h = 2 d tan(alpha / 2), whatever the aspect.");
-        if (m.shape == 3)
-            name_cause(f, "horizontal-fov", TAG_ALL, "the field of view is taken as the horizontal one "
-                       "(w = 2 d tan(alpha / 2), h = w / aspect): in this lab alpha is VERTICAL, so "
-                       "h = 2 d tan(alpha / 2) and w = aspect h.");
-    }
+    if (ab.answered == N_FOV_ORDINARY)
+        p1_pi_approximate(f, out, &ab);
+    if (ab.answered == N_FOV_ORDINARY && !in_float && out->factor == 0)
+        p1_float_inside(f, out, &ab);
+    if (out->have_model && p1_mistakes(m) > 0)
+        p1_model_mistakes(f, m, g);
     if (in_float && (!out->have_model || m.angle == 0)) {
         char b[40];
         name_cause(f, "float", TAG_ALL, "computed in float: every answer is a float (24 bits, about 7 digits), "
                    "e.g. h = %s for alpha = 90, aspect = 0.5, d = 3. Use double throughout "
                    "(tan, not tanf; 180.0, not 180.0f).", kit_shortest_double(b, sizeof b, g ? g[1] : 0));
     }
-
-    /* Near 180: a right formula whose rounded angle tan amplifies. */
-    if (out->have_model && m.angle == 0 && m.factor2 && m.use_d && !in_float && af.answered == NF) {
-        bool wrong = false, rounding = true;
-        double worst = 0, worst_fov = 0;
-        for (int c = 0; c < NF; c++) {
-            double h = p1_h_near_180(near180[c][0], 1);
-            double rel = fabs(af.got[c][1] - h) / h;
-            if (rel > 32 * U) {
-                wrong = true;
-                rounding = rounding && p1_angle_rounding(near180[c], af.got[c], 8);
-                if (rel > worst)
-                    worst = rel, worst_fov = near180[c][0];
-            }
-        }
-        if (wrong && rounding) {
-            out->tan90 = true;
-            name_cause(f, "tan-near-90", TAG_ALL, "your formula is right, but near 180 degrees it loses "
-                       "digits (at alpha = %.12g, h is off by %.2g of itself): alpha pi / 360 is "
-                       "rounded to a double like any number, and tan is so steep near 90 degrees that "
-                       "this rounding of 1e-16 is magnified many times. Keeping those digits is the "
-                       "handout's hard-case challenge (extra credit).%s", worst_fov, worst,
-                       ps->probes->full_hints ? " Above 45 degrees use tan(alpha / 2) = 1 / tan(90 - "
-                                                "alpha / 2): 180 - alpha is exact." : "");
-        }
-    }
+    if (out->have_model && m.angle == 0 && m.factor2 && m.use_d && !in_float && af.answered == N_FOV_NEAR180)
+        p1_tan_near_90(ps, f, out, &af);
     answers_free(&ab);
     answers_free(&af);
 }
@@ -597,14 +617,42 @@ static bool p2_explains(const void *ctx, int tag, const Test *t, const Case *c, 
     return true;
 }
 
+/* Part 2's probe, i j nx ny w h d: pixels not square, w / h far from
+ * nx / ny, d not 1. */
+static const double p2_cases[][7] = {
+    { 1, 0, 4, 3, 2.5, 1.2, 1.5 }, { 3, 2, 5, 4, 4, 3, 2 }, { 0, 3, 6, 4, 6.4, 2.2, 0.5 },
+    { 2, 1, 3, 5, 1.2, 2.6, 1.25 }, { 4, 0, 5, 7, 2, 3, 3 }, { 6, 5, 7, 6, 3.3, 1.7, 0.8 },
+};
+enum { N_PIXELS = sizeof p2_cases / sizeof *p2_cases };
+
+/* Right to float's digits only: float somewhere inside.  model holds
+ * the right answers. */
+static void p2_float_inside(Found *f, const Answers *a, const double (*model)[CASE_MAX_OUT])
+{
+    const double (*cases)[7] = p2_cases;
+    double worst = 0;
+    int wc = 0, wk = 0;
+    for (int c = 0; c < N_PIXELS; c++)
+        for (int k = 0; k < 3; k++) {
+            double err = fabs(a->got[c][k] - model[c][k]) / p2_scale(cases[c]);
+            if (err > worst)
+                worst = err, wc = c, wk = k;
+        }
+    char b0[40], b1[40];
+    if (worst > 1e-10 && worst <= FLOAT_DIGITS)
+        name_cause(f, "float", TAG_ALL, "your coordinates agree with the right ones to about 7 "
+                   "digits, float's precision, and no further: for pixel (%g, %g) of a %g x %g image "
+                   "your %c = %s, the right one %s. Some of the computation is in float (a float "
+                   "variable, a constant written 0.5f): use double throughout.", cases[wc][0],
+                   cases[wc][1], cases[wc][2], cases[wc][3], "xyz"[wk],
+                   kit_shortest_double(b0, sizeof b0, a->got[wc][wk]),
+                   kit_shortest_double(b1, sizeof b1, model[wc][wk]));
+}
+
 static void diagnose_part2(ProbeSet *ps, Found *f, P2Found *out)
 {
-    /* i j nx ny w h d: pixels not square, w / h far from nx / ny, d not 1 */
-    static const double cases[][7] = {
-        { 1, 0, 4, 3, 2.5, 1.2, 1.5 }, { 3, 2, 5, 4, 4, 3, 2 }, { 0, 3, 6, 4, 6.4, 2.2, 0.5 },
-        { 2, 1, 3, 5, 1.2, 2.6, 1.25 }, { 4, 0, 5, 7, 2, 3, 3 }, { 6, 5, 7, 6, 3.3, 1.7, 0.8 },
-    };
-    enum { N = sizeof cases / sizeof *cases };
+    const double (*cases)[7] = p2_cases;
+    enum { N = N_PIXELS };
     Test *t = probe_test(ps, PART2, KIND_PIXEL, "probe: pixels of images that are not square");
     for (int k = 0; k < N; k++)
         probe_case(t, cases[k], 7);
@@ -687,24 +735,7 @@ static void diagnose_part2(ProbeSet *ps, Found *f, P2Found *out)
                    "digits), e.g. x = %s. Use double throughout.",
                    kit_shortest_double(b, sizeof b, g[0]));
     } else if (x == X_RIGHT && y == Y_RIGHT && out->z == Z_RIGHT) {
-        /* Right to float's digits only: float somewhere inside. */
-        double worst = 0;
-        int wc = 0, wk = 0;
-        for (int c = 0; c < N; c++)
-            for (int k = 0; k < 3; k++) {
-                double err = fabs(a.got[c][k] - model[c][k]) / p2_scale(cases[c]);
-                if (err > worst)
-                    worst = err, wc = c, wk = k;
-            }
-        char b0[40], b1[40];
-        if (worst > 1e-10 && worst <= FLOAT_DIGITS)
-            name_cause(f, "float", TAG_ALL, "your coordinates agree with the right ones to about 7 "
-                       "digits, float's precision, and no further: for pixel (%g, %g) of a %g x %g image "
-                       "your %c = %s, the right one %s. Some of the computation is in float (a float "
-                       "variable, a constant written 0.5f): use double throughout.", cases[wc][0],
-                       cases[wc][1], cases[wc][2], cases[wc][3], "xyz"[wk],
-                       kit_shortest_double(b0, sizeof b0, a.got[wc][wk]),
-                       kit_shortest_double(b1, sizeof b1, model[wc][wk]));
+        p2_float_inside(f, &a, (const double (*)[CASE_MAX_OUT])model);
     }
     answers_free(&a);
 }
@@ -854,11 +885,11 @@ typedef struct {
     bool cancellation;
     double rel;                    /* "right" to this relative error */
     bool float_digits;             /* M_FLOAT: t right to 5-7 digits, not floats */
-} P3Found;
+} P3aFound;
 
 static bool p3_explains(const void *ctx, int tag, const Test *t, const Case *c, const double *got)
 {
-    const P3Found *p = ctx;
+    const P3aFound *p = ctx;
     if (tag == M_CANCEL)                 /* the textbook's losses: the hard cases */
         return t->hard;
     if (tag == M_NAN)
@@ -902,6 +933,70 @@ static bool p3_all_right(const Answers *a, const double (*in)[CASE_MAX_IN], int 
 
 #define SPH(cx, cy, cz, R, ex, ey, ez, rx, ry, rz) { cx, cy, cz, R, ex, ey, ez, rx, ry, rz }
 
+typedef const double (*Rays)[CASE_MAX_IN];
+
+/* Part 3a's probes, in the order they run. */
+enum { PROBE_ORDINARY, PROBE_SCALED, PROBE_BEHIND, PROBE_INSIDE, PROBE_TANGENT, PROBE_NEAR, PROBE_NAN,
+       PROBE_FAR, PROBE_ON_SPHERE, NPROBES3 };
+
+/* Ordinary hits from outside, unit directions, answers not floats. */
+static const double ordinary_rays[][CASE_MAX_IN] = {
+    SPH(0.1, 0.2, -5.3, 1.3, 0, 0, 0, 0, 0, -1),
+    SPH(4.5, 0.5, -6.2, 2.2, 0, 0, 0, 0.6, 0, -0.8),
+    SPH(-2, 0.5, -6.1, 1.7, 0.3, 0.1, 0.2, -0.28, 0, -0.96),
+    SPH(0, -1, -4.7, 1.1, 0, 0, 0, 0, -0.28, -0.96),
+    SPH(0.3, -0.7, -9.1, 2.9, 0, 0, 0, 0, 0, -1),
+    SPH(0.05, 0, -1.9, 1.7, 0, 0, 0, 0, 0, -1),         /* near: B^2 - 4 A C >= 0 */
+};
+/* Spheres wholly behind the origin (misses), then one ahead. */
+static const double behind_rays[][CASE_MAX_IN] = {
+    SPH(0, 0, 5.2, 1.3, 0, 0, 0, 0, 0, -1),
+    SPH(1, 1, 9, 2.5, 0, 0, 0, -0.6, 0, -0.8),
+    SPH(0, 0.5, 7.3, 1, 0, 0, 0, 0, 0, -2),
+    SPH(0, 0, -5.2, 1.3, 0, 0, 0, 0, 0, -1),
+};
+/* From inside: the hit is the exit point. */
+static const double inside_rays[][CASE_MAX_IN] = {
+    SPH(0, 0, 0, 10.3, 0, 0, 0, 0, 0, -1),
+    SPH(0.5, -0.2, -1, 5.1, 0, 0, 0, 0.6, 0, -0.8),
+    SPH(1, 2, 3, 50.7, 0, 0, 0, 0, 0.28, 0.96),
+    SPH(0, 0, 1.3, 5.1, 0, 0, 0, 0, 0, -1),             /* the centre behind the origin */
+    SPH(-0.5, 1, 2, 4.2, 0, 0, 0, 0.6, 0, -0.8),
+};
+/* Exact tangents: B^2 - A C is 0 in any order of operations. */
+static const double tangent_rays[][CASE_MAX_IN] = {
+    SPH(2, 0, -10, 2, 0, 0, 0, 0, 0, -1),
+    SPH(0, -3, -6, 3, 0, 0, 0, 0, 0, -2),
+    SPH(-1.5, 0, -4, 1.5, 0, 0, 0, 0, 0, -0.5),
+};
+/* Hits just ahead of the origin: e a gap g outside the sphere, so the
+ * hit is at t = g exactly (binary fractions), the far root at g + 2. */
+static const double near_gaps[] = { 0x1p-30, 0x1p-23, 0x1p-17, 0x1p-14, 0x1p-12, 0x1.4p-11,
+                                    0x1p-9, 0x1p-7, 0x1p-5, 0x1p-3, 0.5, 1.5, 4 };
+/* A zero direction, and NaN input: misses. */
+static const double nan_rays[][CASE_MAX_IN] = {
+    SPH(0, 0, -5, 1, 0, 0, 0, 0, 0, 0),
+    SPH(NAN, 0, -5, 1, 0, 0, 0, 0, 0, -1),
+};
+/* Far, small spheres: B^2 and A C agree to 16 digits; the hit is at
+ * D - sqrt(R^2 - rho^2), rho the line's distance from c. */
+static const double far_rays[][CASE_MAX_IN] = {
+    SPH(0.5, 0, -(0x1p27 + 1), 1, 0, 0, 0, 0, 0, -1),
+    SPH(0, 0.6, -(0x1p28 + 3), 1, 0, 0, 0, 0, 0, -1),
+    SPH(0.75, 0, -(0x1p29 + 5), 1, 0, 0, 0, 0, 0, -1),
+};
+/* Origins exactly on the sphere, axis-aligned unit directions: the
+ * roots are 0 and 2, 4, 6 ahead (a hit there) or behind (a miss). */
+static const double on_sphere_rays[][CASE_MAX_IN] = {
+    SPH(0, 0, -1, 1, 0, 0, 0, 0, 0, -1),
+    SPH(0, 0, -1, 1, 0, 0, 0, 0, 0, 1),
+    SPH(2, 0, 0, 2, 0, 0, 0, 1, 0, 0),
+    SPH(0, -3, 0, 3, 0, 0, 0, 0, 1, 0),
+    SPH(1, 1, -3, 3, 1, 1, 0, 0, 0, -1),
+};
+enum { N_ORDINARY = 6, N_SCALED = 8, N_BEHIND = 4, N_INSIDE = 5, N_TANGENT = 3,
+       N_NEAR = sizeof near_gaps / sizeof *near_gaps, N_NAN = 2, N_FAR = 3, N_ON_SPHERE = 5 };
+
 static void add_probe3(ProbeSet *ps, const char *name, const double (*in)[CASE_MAX_IN], int n)
 {
     Test *t = probe_test(ps, PART3A, KIND_SPHERE, name);
@@ -909,11 +1004,36 @@ static void add_probe3(ProbeSet *ps, const char *name, const double (*in)[CASE_M
         probe_case(t, in[k], 10);
 }
 
+/* Part 3a's probes, the rays computed here among them: the ordinary ones
+ * with directions scaled by 3 and by 1/4 (t scales by 1/3 and 4), and
+ * those just ahead of the origin. */
+static void add_part3a_probes(ProbeSet *ps, double (*scaled)[CASE_MAX_IN], double (*near)[CASE_MAX_IN])
+{
+    for (int k = 0; k < N_SCALED; k++) {
+        memcpy(scaled[k], ordinary_rays[k % 4], sizeof scaled[k]);
+        for (int q = 7; q < 10; q++)
+            scaled[k][q] *= k < 4 ? 3 : 0.25;
+    }
+    for (int k = 0; k < N_NEAR; k++) {
+        double row[CASE_MAX_IN] = SPH(0, 0, -2, 1, 0, 0, -1 + near_gaps[k], 0, 0, -1);
+        memcpy(near[k], row, sizeof row);
+    }
+    add_probe3(ps, "probe: ordinary hits", ordinary_rays, N_ORDINARY);
+    add_probe3(ps, "probe: directions scaled by 3 and by 1/4", (Rays)scaled, N_SCALED);
+    add_probe3(ps, "probe: spheres behind the origin", behind_rays, N_BEHIND);
+    add_probe3(ps, "probe: from inside the sphere", inside_rays, N_INSIDE);
+    add_probe3(ps, "probe: tangent rays", tangent_rays, N_TANGENT);
+    add_probe3(ps, "probe: hits just ahead of the origin", (Rays)near, N_NEAR);
+    add_probe3(ps, "probe: a zero direction and NaN input", nan_rays, N_NAN);
+    add_probe3(ps, "probe: far, small spheres", far_rays, N_FAR);
+    add_probe3(ps, "probe: rays that start on the sphere", on_sphere_rays, N_ON_SPHERE);
+}
+
 /* Rays that start on the sphere (C = 0 exactly, one root t = 0): every
  * answer right or a hit at t = 0 exactly, and one such hit, is t >= 0 taken
  * for t > 0 (Embree's inclusive tnear <= t).  Not named where roots behind
  * the origin are taken anyway (hits-behind says more). */
-static void p3_t_zero(Found *f, P3Found *out, const Answers *a, const double (*in)[CASE_MAX_IN], int n)
+static void p3_t_zero(Found *f, P3aFound *out, const Answers *a, const double (*in)[CASE_MAX_IN], int n)
 {
     if (out->model[M_BEHIND] || a->answered < n)
         return;
@@ -944,102 +1064,13 @@ static void p3_t_zero(Found *f, P3Found *out, const Answers *a, const double (*i
                z[4], z[5], z[6], z[7], z[8], z[9], z[0], z[1], z[2], z[3], right);
 }
 
-static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
+/* Float first: every t of the probes a float, where the right ones are
+ * not.  Then "right" means right to float's precision throughout (out->rel). */
+static void p3_float(Found *f, P3aFound *out, const Answers *a, Rays scaled)
 {
-    /* Ordinary hits from outside, unit directions, answers not floats. */
-    static const double basic[][CASE_MAX_IN] = {
-        SPH(0.1, 0.2, -5.3, 1.3, 0, 0, 0, 0, 0, -1),
-        SPH(4.5, 0.5, -6.2, 2.2, 0, 0, 0, 0.6, 0, -0.8),
-        SPH(-2, 0.5, -6.1, 1.7, 0.3, 0.1, 0.2, -0.28, 0, -0.96),
-        SPH(0, -1, -4.7, 1.1, 0, 0, 0, 0, -0.28, -0.96),
-        SPH(0.3, -0.7, -9.1, 2.9, 0, 0, 0, 0, 0, -1),
-        SPH(0.05, 0, -1.9, 1.7, 0, 0, 0, 0, 0, -1),         /* near: B^2 - 4 A C >= 0 */
-    };
-    /* The same rays, directions scaled by 3 and by 1/4: t scales by 1/3 and 4. */
-    double scaled[8][CASE_MAX_IN];
-    for (int k = 0; k < 8; k++) {
-        memcpy(scaled[k], basic[k % 4], sizeof scaled[k]);
-        for (int q = 7; q < 10; q++)
-            scaled[k][q] *= k < 4 ? 3 : 0.25;
-    }
-    /* Spheres wholly behind the origin (misses), then one ahead. */
-    static const double behind[][CASE_MAX_IN] = {
-        SPH(0, 0, 5.2, 1.3, 0, 0, 0, 0, 0, -1),
-        SPH(1, 1, 9, 2.5, 0, 0, 0, -0.6, 0, -0.8),
-        SPH(0, 0.5, 7.3, 1, 0, 0, 0, 0, 0, -2),
-        SPH(0, 0, -5.2, 1.3, 0, 0, 0, 0, 0, -1),
-    };
-    /* From inside: the hit is the exit point. */
-    static const double inside[][CASE_MAX_IN] = {
-        SPH(0, 0, 0, 10.3, 0, 0, 0, 0, 0, -1),
-        SPH(0.5, -0.2, -1, 5.1, 0, 0, 0, 0.6, 0, -0.8),
-        SPH(1, 2, 3, 50.7, 0, 0, 0, 0, 0.28, 0.96),
-        SPH(0, 0, 1.3, 5.1, 0, 0, 0, 0, 0, -1),             /* the centre behind the origin */
-        SPH(-0.5, 1, 2, 4.2, 0, 0, 0, 0.6, 0, -0.8),
-    };
-    /* Exact tangents: B^2 - A C is 0 in any order of operations. */
-    static const double tangent[][CASE_MAX_IN] = {
-        SPH(2, 0, -10, 2, 0, 0, 0, 0, 0, -1),
-        SPH(0, -3, -6, 3, 0, 0, 0, 0, 0, -2),
-        SPH(-1.5, 0, -4, 1.5, 0, 0, 0, 0, 0, -0.5),
-    };
-    /* Hits just ahead of the origin: e a gap g outside the sphere, so the
-     * hit is at t = g exactly (binary fractions), the far root at g + 2. */
-    static const double gaps[] = { 0x1p-30, 0x1p-23, 0x1p-17, 0x1p-14, 0x1p-12, 0x1.4p-11,
-                                   0x1p-9, 0x1p-7, 0x1p-5, 0x1p-3, 0.5, 1.5, 4 };
-    enum { NG = sizeof gaps / sizeof *gaps };
-    double near[NG][CASE_MAX_IN];
-    for (int k = 0; k < NG; k++) {
-        double row[CASE_MAX_IN] = SPH(0, 0, -2, 1, 0, 0, -1 + gaps[k], 0, 0, -1);
-        memcpy(near[k], row, sizeof row);
-    }
-    /* A zero direction, and NaN input: misses. */
-    static const double nan_cases[][CASE_MAX_IN] = {
-        SPH(0, 0, -5, 1, 0, 0, 0, 0, 0, 0),
-        SPH(NAN, 0, -5, 1, 0, 0, 0, 0, 0, -1),
-    };
-    /* Far, small spheres: B^2 and A C agree to 16 digits; the hit is at
-     * D - sqrt(R^2 - rho^2), rho the line's distance from c. */
-    static const double far[][CASE_MAX_IN] = {
-        SPH(0.5, 0, -(0x1p27 + 1), 1, 0, 0, 0, 0, 0, -1),
-        SPH(0, 0.6, -(0x1p28 + 3), 1, 0, 0, 0, 0, 0, -1),
-        SPH(0.75, 0, -(0x1p29 + 5), 1, 0, 0, 0, 0, 0, -1),
-    };
-    /* Origins exactly on the sphere, axis-aligned unit directions: the
-     * roots are 0 and 2, 4, 6 ahead (a hit there) or behind (a miss). */
-    static const double on[][CASE_MAX_IN] = {
-        SPH(0, 0, -1, 1, 0, 0, 0, 0, 0, -1),
-        SPH(0, 0, -1, 1, 0, 0, 0, 0, 0, 1),
-        SPH(2, 0, 0, 2, 0, 0, 0, 1, 0, 0),
-        SPH(0, -3, 0, 3, 0, 0, 0, 0, 1, 0),
-        SPH(1, 1, -3, 3, 1, 1, 0, 0, 0, -1),
-    };
-    enum { NB = 6, NS = 8, NBH = 4, NI = 5, NT = 3, NN = 2, NF = 3, NO = 5, NPROBES = 9 };
-    add_probe3(ps, "probe: ordinary hits", basic, NB);
-    add_probe3(ps, "probe: directions scaled by 3 and by 1/4", (const double (*)[CASE_MAX_IN])scaled, NS);
-    add_probe3(ps, "probe: spheres behind the origin", behind, NBH);
-    add_probe3(ps, "probe: from inside the sphere", inside, NI);
-    add_probe3(ps, "probe: tangent rays", tangent, NT);
-    add_probe3(ps, "probe: hits just ahead of the origin", (const double (*)[CASE_MAX_IN])near, NG);
-    add_probe3(ps, "probe: a zero direction and NaN input", nan_cases, NN);
-    add_probe3(ps, "probe: far, small spheres", far, NF);
-    add_probe3(ps, "probe: rays that start on the sphere", on, NO);
-    Answers a[NPROBES];
-    for (int k = 0; k < NPROBES; k++)
-        probe_run(ps, &ps->list.tests[k], &a[k]);
-    if (unwritten(f, ps, a, NPROBES)) {
-        for (int k = 0; k < NPROBES; k++)
-            answers_free(&a[k]);
-        return;
-    }
-    const Answers *ab = &a[0], *as = &a[1], *abh = &a[2], *ai = &a[3], *at = &a[4], *an = &a[5],
-                  *anan = &a[6], *afar = &a[7], *aon = &a[8];
-
-    /* Float first: every t of the probes a float, where the right ones are
-     * not.  Then "right" means right to float's precision throughout. */
-    const Answers *pf[] = { ab, as, ai, at };
-    const double (*pin[])[CASE_MAX_IN] = { basic, (const double (*)[CASE_MAX_IN])scaled, inside, tangent };
-    const int pn[] = { NB, NS, NI, NT };
+    const Answers *pf[] = { &a[PROBE_ORDINARY], &a[PROBE_SCALED], &a[PROBE_INSIDE], &a[PROBE_TANGENT] };
+    const double (*pin[])[CASE_MAX_IN] = { ordinary_rays, scaled, inside_rays, tangent_rays };
+    const int pn[] = { N_ORDINARY, N_SCALED, N_INSIDE, N_TANGENT };
     /* Or float inside: t not floats, but most right to float's digits and
      * no further (a double formula gets these to 1e-15; now and then one
      * comes out a float, or right, by chance). */
@@ -1070,8 +1101,8 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
         rel = 1e-5;
         name_cause(f, "float", M_FLOAT, "computed in float: every t is a float (24 bits, about 7 digits): "
                    "e.g. t = %s where the hit is at %s. Use double throughout (double, sqrt, not "
-                   "float, sqrtf).", kit_shortest_double(b0, sizeof b0, ab->got[0][1]),
-                   kit_shortest_double(b1, sizeof b1, quad(basic[0]).t0));
+                   "float, sqrtf).", kit_shortest_double(b0, sizeof b0, a[PROBE_ORDINARY].got[0][1]),
+                   kit_shortest_double(b1, sizeof b1, quad(ordinary_rays[0]).t0));
     } else if (near_t >= 3 && near_t > 2 * (exact_t + float_t)) {
         out->model[M_FLOAT] = true;
         out->float_digits = true;
@@ -1083,96 +1114,121 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
                    kit_shortest_double(b1, sizeof b1, quad(pin[wk][wc]).t0));
     }
     out->rel = rel;
+}
 
-    /* Hits just ahead: right from some gap up, wrong below: an epsilon. */
-    if (an->answered == NG) {
-        int lowest_right = NG;
-        bool threshold = true;
-        for (int c = NG - 1; c >= 0; c--) {
-            if (p3_right(an->got[c], near[c], rel) && lowest_right == c + 1)
-                lowest_right = c;
-        }
-        for (int c = 0; c < lowest_right && threshold; c++) {
-            double v[2];
-            p3_eval(M_TMIN, near[c], gaps[c] * 1.0000001, v);       /* the far root */
-            threshold = p3_same(an->got[c], v, rel) || an->got[c][0] == 0;
-        }
-        if (threshold && lowest_right > 0 && lowest_right < NG) {
-            double lo = gaps[lowest_right - 1], hi = gaps[lowest_right];
-            out->model[M_TMIN] = true;
-            out->tmin = sqrt(lo * hi);
-            const char *like = lo < 1e-3 && 1e-3 <= hi ? ": it looks like Ray Tracing in One Weekend's "
-                                                         "t_min = 0.001"
-                             : lo < 1e-4 && 1e-4 <= hi ? ": it looks like smallpt's eps = 1e-4"
-                             : lo < 1 && 1 <= hi ? ": it looks like a t_min of 1 (Computer Graphics from "
-                                                   "Scratch's, which starts rays at the projection plane)"
-                             : "";
-            double v[2];
-            p3_eval(M_RIGHT, near[lowest_right - 1], 0, v);
-            name_cause(f, "tmin-epsilon", M_TMIN, "hits closer than a tmin between %.3g and %.3g are ignored%s. "
-                       "Asked for a hit at t = %.3g (the ray starts just outside the sphere), your code "
-                       "answered %s; from t = %.3g on it was right. This lab's rule is tmin = 0: every "
-                       "hit with t > 0 counts. Tutorials use an epsilon against shadow acne, next "
-                       "week's topic.", lo, hi, like, v[1],
-                       an->got[lowest_right - 1][0] == 0 ? "a miss" : "the far root", hi);
-        }
+/* Hits just ahead: right from some gap up, wrong below: an epsilon. */
+static void p3_tmin(Found *f, P3aFound *out, const Answers *got, Rays near)
+{
+    double rel = out->rel;
+    if (got->answered != N_NEAR)
+        return;
+    int lowest_right = N_NEAR;
+    bool threshold = true;
+    for (int c = N_NEAR - 1; c >= 0; c--) {
+        if (p3_right(got->got[c], near[c], rel) && lowest_right == c + 1)
+            lowest_right = c;
     }
-    /* Ordinary hits: right (but for a tmin confirmed), or one mistake's answers. */
-    bool basic_right = p3_all_right(ab, basic, NB, rel) ||
-                       (out->model[M_TMIN] && p3_all(ab, basic, NB, M_TMIN, out->tmin, rel));
+    for (int c = 0; c < lowest_right && threshold; c++) {
+        double v[2];
+        p3_eval(M_TMIN, near[c], near_gaps[c] * 1.0000001, v);       /* the far root */
+        threshold = p3_same(got->got[c], v, rel) || got->got[c][0] == 0;
+    }
+    if (!threshold || lowest_right == 0 || lowest_right == N_NEAR)
+        return;
+    double lo = near_gaps[lowest_right - 1], hi = near_gaps[lowest_right];
+    out->model[M_TMIN] = true;
+    out->tmin = sqrt(lo * hi);
+    const char *like = lo < 1e-3 && 1e-3 <= hi ? ": it looks like Ray Tracing in One Weekend's "
+                                                 "t_min = 0.001"
+                     : lo < 1e-4 && 1e-4 <= hi ? ": it looks like smallpt's eps = 1e-4"
+                     : lo < 1 && 1 <= hi ? ": it looks like a t_min of 1 (Computer Graphics from "
+                                           "Scratch's, which starts rays at the projection plane)"
+                     : "";
+    double v[2];
+    p3_eval(M_RIGHT, near[lowest_right - 1], 0, v);
+    name_cause(f, "tmin-epsilon", M_TMIN, "hits closer than a tmin between %.3g and %.3g are ignored%s. "
+               "Asked for a hit at t = %.3g (the ray starts just outside the sphere), your code "
+               "answered %s; from t = %.3g on it was right. This lab's rule is tmin = 0: every "
+               "hit with t > 0 counts. Tutorials use an epsilon against shadow acne, next "
+               "week's topic.", lo, hi, like, v[1],
+               got->got[lowest_right - 1][0] == 0 ? "a miss" : "the far root", hi);
+}
+
+/* Ordinary hits: right (M_RIGHT, but for a tmin confirmed), or one
+ * mistake's answers (its cause named), or -1. */
+static int p3_ordinary_model(Found *f, P3aFound *out, const Answers *a)
+{
+    const Answers *ordinary = &a[PROBE_ORDINARY];
+    double rel = out->rel;
+    if (p3_all_right(ordinary, ordinary_rays, N_ORDINARY, rel) ||
+        (out->model[M_TMIN] && p3_all(ordinary, ordinary_rays, N_ORDINARY, M_TMIN, out->tmin, rel)))
+        return M_RIGHT;
     /* b-sign misses every sphere ahead: the spheres behind confirm it. */
     static const int plain[] = { M_FAR, M_HALVED, M_BSIGN, M_DISC4 };
-    int basic_model = basic_right ? M_RIGHT : -1;
-    for (int k = 0; k < 4 && basic_model < 0; k++)
-        if (p3_all(ab, basic, NB, plain[k], 0, rel) &&
-            (plain[k] != M_BSIGN || p3_all(abh, behind, NBH, M_BSIGN, 0, rel)))
-            basic_model = plain[k];
-    const double *g = ab->answered ? ab->got[0] : NULL;
-    if (basic_model == M_FAR) {
-        out->model[M_FAR] = true;
+    int model = -1;
+    for (int k = 0; k < 4 && model < 0; k++)
+        if (p3_all(ordinary, ordinary_rays, N_ORDINARY, plain[k], 0, rel) &&
+            (plain[k] != M_BSIGN || p3_all(&a[PROBE_BEHIND], behind_rays, N_BEHIND, M_BSIGN, 0, rel)))
+            model = plain[k];
+    if (model < 0)
+        return model;
+    out->model[model] = true;
+    if (model == M_FAR)
         name_cause(f, "far-root", M_FAR, "the far root: for a ray that enters the sphere at t = %.6g and "
                    "leaves at t = %.6g your code returned %.6g. The first hit is the smaller root "
-                   "t > 0, (-B - sqrt(B^2 - A C)) / A.", quad(basic[0]).t0, quad(basic[0]).t1, g[1]);
-    } else if (basic_model == M_HALVED) {
-        out->model[M_HALVED] = true;
+                   "t > 0, (-B - sqrt(B^2 - A C)) / A.", quad(ordinary_rays[0]).t0,
+                   quad(ordinary_rays[0]).t1, ordinary->got[0][1]);
+    else if (model == M_HALVED)
         name_cause(f, "t-halved", M_HALVED, "every t is half the right one: with B = f.r (not 2 f.r) the roots "
                    "are (-B -+ sqrt(B^2 - A C)) / A, without the 2 of the school formula's 2a.");
-    } else if (basic_model == M_DISC4) {
-        out->model[M_DISC4] = true;
+    else if (model == M_DISC4)
         name_cause(f, "disc-4ac", M_DISC4, "B^2 - 4 A C mixes two forms: with the lecture's B = f.r the "
                    "discriminant is B^2 - A C and t = (-B -+ sqrt(B^2 - A C)) / A; the 4 and the 2 "
                    "belong with b = 2 f.r.");
-    } else if (basic_model == M_BSIGN) {
-        out->model[M_BSIGN] = true;
+    else
         name_cause(f, "b-sign", M_BSIGN, "the sign of B: spheres ahead were missed and spheres behind were "
                    "hit, as if the ray pointed backwards. With f = e - c, B = f.r and "
                    "t = (-B -+ sqrt(B^2 - A C)) / A.");
-    }
+    return model;
+}
 
-    /* Scaled directions: A = 1 assumed, or the distance returned. */
-    if (basic_model == M_RIGHT && as->answered == NS && !p3_all_right(as, (const double (*)[CASE_MAX_IN])scaled, NS, rel)) {
-        if (p3_all(as, (const double (*)[CASE_MAX_IN])scaled, NS, M_UNIT, 0, rel)) {
-            out->model[M_UNIT] = true;
-            name_cause(f, "unit-direction", M_UNIT, "the direction is assumed to have unit length: the same "
-                       "ray with its direction r scaled by 3 must hit at a third of the t (%.6g), but "
-                       "your code returned %.6g. r need not be a unit vector, so A = r.r is not 1 "
-                       "(smallpt, Inigo Quilez's and tinyraytracer's tests assume |r| = 1).",
-                       quad(scaled[0]).t0, as->got[0][1]);
-        } else if (p3_all(as, (const double (*)[CASE_MAX_IN])scaled, NS, M_DISTANCE, 0, rel)) {
-            out->model[M_DISTANCE] = true;
-            name_cause(f, "distance-not-t", M_DISTANCE, "the distance along the ray is returned, not t: with "
-                       "the direction scaled by 3 the hit must be at a third of the t (%.6g), but "
-                       "your code returned the same %.6g. If you normalise r, divide the distance "
-                       "by |r| to get t.", quad(scaled[0]).t0, as->got[0][1]);
-        }
+/* Scaled directions: A = 1 assumed, or the distance returned. */
+static void p3_scaled(Found *f, P3aFound *out, const Answers *got, Rays scaled)
+{
+    double rel = out->rel;
+    if (got->answered != N_SCALED || p3_all_right(got, scaled, N_SCALED, rel))
+        return;
+    if (p3_all(got, scaled, N_SCALED, M_UNIT, 0, rel)) {
+        out->model[M_UNIT] = true;
+        name_cause(f, "unit-direction", M_UNIT, "the direction is assumed to have unit length: the same "
+                   "ray with its direction r scaled by 3 must hit at a third of the t (%.6g), but "
+                   "your code returned %.6g. r need not be a unit vector, so A = r.r is not 1 "
+                   "(smallpt, Inigo Quilez's and tinyraytracer's tests assume |r| = 1).",
+                   quad(scaled[0]).t0, got->got[0][1]);
+    } else if (p3_all(got, scaled, N_SCALED, M_DISTANCE, 0, rel)) {
+        out->model[M_DISTANCE] = true;
+        name_cause(f, "distance-not-t", M_DISTANCE, "the distance along the ray is returned, not t: with "
+                   "the direction scaled by 3 the hit must be at a third of the t (%.6g), but "
+                   "your code returned the same %.6g. If you normalise r, divide the distance "
+                   "by |r| to get t.", quad(scaled[0]).t0, got->got[0][1]);
     }
+}
 
-    /* Roots at t <= 0: behind the origin, or the near root from inside. */
-    bool behind_neg = false, inside_neg = false;
-    for (int c = 0; c < abh->answered; c++)
-        behind_neg = behind_neg || (abh->got[c][0] == 1 && abh->got[c][1] <= 0);
-    for (int c = 0; c < ai->answered; c++)
-        inside_neg = inside_neg || (ai->got[c][0] == 1 && ai->got[c][1] <= 0);
+/* A hit at t <= 0 among these answers? */
+static bool hit_at_or_behind_origin(const Answers *got)
+{
+    for (int c = 0; c < got->answered; c++)
+        if (got->got[c][0] == 1 && got->got[c][1] <= 0)
+            return true;
+    return false;
+}
+
+/* Roots at t <= 0: behind the origin, or the near root from inside.
+ * Says whether the near root from inside was one. */
+static bool p3_behind(Found *f, P3aFound *out, const Answers *a)
+{
+    bool behind_neg = hit_at_or_behind_origin(&a[PROBE_BEHIND]);
+    bool inside_neg = hit_at_or_behind_origin(&a[PROBE_INSIDE]);
     if (behind_neg || inside_neg) {
         out->model[M_BEHIND] = true;
         name_cause(f, "hits-behind", M_BEHIND, "a root with t <= 0 was returned as a hit (%s): t <= 0 is "
@@ -1181,61 +1237,103 @@ static void diagnose_part3a(ProbeSet *ps, Found *f, P3Found *out)
                    inside_neg ? "from inside the sphere, the near root, which is behind the origin"
                               : "a sphere wholly behind the origin");
     }
-    p3_t_zero(f, out, aon, on, NO);
-    /* From inside, a miss. */
-    bool ordinary = basic_model == M_RIGHT;
-    if (ordinary && ai->answered == NI && !inside_neg && p3_all(ai, inside, NI, M_INSIDE_MISS, 0, rel)) {
+    return inside_neg;
+}
+
+/* From inside, a miss: every ray, or those pointing away from the centre. */
+static void p3_inside(Found *f, P3aFound *out, const Answers *got)
+{
+    if (got->answered != N_INSIDE)
+        return;
+    if (p3_all(got, inside_rays, N_INSIDE, M_INSIDE_MISS, 0, out->rel)) {
         out->model[M_INSIDE_MISS] = true;
         name_cause(f, "inside-miss", M_INSIDE_MISS, "from inside the sphere (C < 0) every ray was a miss: one root is "
                    "behind the origin and the other, t = %.6g here, is where the ray leaves the "
-                   "sphere; that is the hit.", quad(inside[0]).t1);
-    }
-    if (ordinary && ai->answered == NI && !inside_neg && !out->model[M_INSIDE_MISS] &&
-        p3_all(ai, inside, NI, M_CENTRE_BEHIND, 0, rel)) {
+                   "sphere; that is the hit.", quad(inside_rays[0]).t1);
+    } else if (p3_all(got, inside_rays, N_INSIDE, M_CENTRE_BEHIND, 0, out->rel)) {
         out->model[M_CENTRE_BEHIND] = true;
         name_cause(f, "inside-miss", M_CENTRE_BEHIND, "from inside the sphere, a ray pointing away from "
                    "its centre was a miss: an early exit such as \"if (tca < 0) return false\" (the "
                    "centre behind the origin) is right only from outside. From inside, the ray leaves "
-                   "the sphere ahead, at t = %.6g here.", quad(inside[3]).t1);
+                   "the sphere ahead, at t = %.6g here.", quad(inside_rays[3]).t1);
     }
-    /* Exact tangents, missed. */
-    if (basic_model == M_RIGHT && at->answered == NT && p3_all(at, tangent, NT, M_TANGENT_MISS, 0, rel)) {
+}
+
+/* Exact tangents, missed. */
+static void p3_tangent(Found *f, P3aFound *out, const Answers *got)
+{
+    if (got->answered == N_TANGENT && p3_all(got, tangent_rays, N_TANGENT, M_TANGENT_MISS, 0, out->rel)) {
         out->model[M_TANGENT_MISS] = true;
         name_cause(f, "tangent-miss", M_TANGENT_MISS, "a tangent ray (B^2 - A C = 0 exactly) was a miss: it touches "
                    "the sphere at t = -B / A, and touching is a hit (test disc < 0 for a miss, not "
                    "disc <= 0).");
     }
-    /* A zero direction or NaN input answered as a hit at NaN. */
+}
+
+/* A zero direction or NaN input answered as a hit at NaN. */
+static void p3_nan(Found *f, P3aFound *out, const Answers *got)
+{
     bool nan_hit = false;
-    for (int c = 0; c < anan->answered; c++)
-        nan_hit = nan_hit || (anan->got[c][0] == 1 && !isfinite(anan->got[c][1]));
+    for (int c = 0; c < got->answered; c++)
+        nan_hit = nan_hit || (got->got[c][0] == 1 && !isfinite(got->got[c][1]));
     if (nan_hit) {
         out->model[M_NAN] = true;
         name_cause(f, "nan-hit", M_NAN, "a hit at t = NaN was returned (%s): with r = 0, A = 0 and the "
                    "roots are 0/0 = NaN, and every comparison with NaN is false, so a test written "
                    "as \"if (t < tmin) return false\" lets it through. Write it as "
                    "\"if (!(t > tmin)) return false\", or reject A = 0 first.",
-                   anan->answered > 0 && anan->got[0][0] == 1 ? "for a zero direction" : "for NaN input");
+                   got->answered > 0 && got->got[0][0] == 1 ? "for a zero direction" : "for NaN input");
     }
-    /* Far, small spheres: right on ordinary rays, wrong here. */
-    if (basic_model == M_RIGHT && !out->model[M_FLOAT] && afar->answered == NF) {
-        bool wrong = false;
-        for (int c = 0; c < NF; c++) {
-            double rho = hypot(far[c][0], far[c][1]), D = -far[c][2];
-            double t = D - sqrt(1 - rho * rho);
-            wrong = wrong || afar->got[c][0] != 1 || !(fabs(afar->got[c][1] - t) <= 1e-10 * t);
-        }
-        if (wrong) {
-            out->cancellation = true;
-            name_cause(f, "cancellation", M_CANCEL, "your formula is right, but it loses the sphere when it is "
-                       "small and far (a sphere of radius 1 at 2^27): B^2 and A C (or |L|^2 and "
-                       "tca^2) agree to 16 digits there, and their difference, the part that says "
-                       "where the ray is, is rounding error. Computing it without that cancellation "
-                       "is the handout's hard-case challenge (extra credit).%s",
-                       ps->probes->full_hints ? " The discriminant is A R^2 - |f x r|^2." : "");
-        }
+}
+
+/* Far, small spheres: right on ordinary rays, wrong here. */
+static void p3_far(const ProbeSet *ps, Found *f, P3aFound *out, const Answers *got)
+{
+    if (got->answered != N_FAR)
+        return;
+    bool wrong = false;
+    for (int c = 0; c < N_FAR; c++) {
+        double rho = hypot(far_rays[c][0], far_rays[c][1]), D = -far_rays[c][2];
+        double t = D - sqrt(1 - rho * rho);
+        wrong = wrong || got->got[c][0] != 1 || !(fabs(got->got[c][1] - t) <= 1e-10 * t);
     }
-    for (int k = 0; k < NPROBES; k++)
+    if (wrong) {
+        out->cancellation = true;
+        name_cause(f, "cancellation", M_CANCEL, "your formula is right, but it loses the sphere when it is "
+                   "small and far (a sphere of radius 1 at 2^27): B^2 and A C (or |L|^2 and "
+                   "tca^2) agree to 16 digits there, and their difference, the part that says "
+                   "where the ray is, is rounding error. Computing it without that cancellation "
+                   "is the handout's hard-case challenge (extra credit).%s",
+                   ps->probes->full_hints ? " The discriminant is A R^2 - |f x r|^2." : "");
+    }
+}
+
+/* The probes' answers read in order: float, an epsilon, the ordinary
+ * hits, then what only right ordinary hits let one tell apart. */
+static void diagnose_part3a(ProbeSet *ps, Found *f, P3aFound *out)
+{
+    double scaled[N_SCALED][CASE_MAX_IN], near[N_NEAR][CASE_MAX_IN];
+    add_part3a_probes(ps, scaled, near);
+    Answers a[NPROBES3];
+    for (int k = 0; k < NPROBES3; k++)
+        probe_run(ps, &ps->list.tests[k], &a[k]);
+    if (!unwritten(f, ps, a, NPROBES3)) {
+        p3_float(f, out, a, (Rays)scaled);
+        p3_tmin(f, out, &a[PROBE_NEAR], (Rays)near);
+        bool ordinary = p3_ordinary_model(f, out, a) == M_RIGHT;
+        if (ordinary)
+            p3_scaled(f, out, &a[PROBE_SCALED], (Rays)scaled);
+        bool inside_neg = p3_behind(f, out, a);
+        p3_t_zero(f, out, &a[PROBE_ON_SPHERE], on_sphere_rays, N_ON_SPHERE);
+        if (ordinary && !inside_neg)
+            p3_inside(f, out, &a[PROBE_INSIDE]);
+        if (ordinary)
+            p3_tangent(f, out, &a[PROBE_TANGENT]);
+        p3_nan(f, out, &a[PROBE_NAN]);
+        if (ordinary && !out->model[M_FLOAT])
+            p3_far(ps, f, out, &a[PROBE_FAR]);
+    }
+    for (int k = 0; k < NPROBES3; k++)
         answers_free(&a[k]);
 }
 
@@ -1287,7 +1385,7 @@ static void p3b_colour(int m, const Test *t, const double *in, double *out)
 
 typedef struct {
     int camera, colour;            /* the confirmed models, or -1 */
-} PBFound;
+} P3bFound;
 
 static bool vec_same(const double *got, const double *v, int n)
 {
@@ -1299,7 +1397,7 @@ static bool vec_same(const double *got, const double *v, int n)
 
 static bool p3b_explains(const void *ctx, int tag, const Test *t, const Case *c, const double *got)
 {
-    const PBFound *p = ctx;
+    const P3bFound *p = ctx;
     double v[6], ray[6];
     (void)tag;
     if (t->kind == KIND_CAMERA) {
@@ -1316,7 +1414,7 @@ static bool p3b_explains(const void *ctx, int tag, const Test *t, const Case *c,
     return (p->camera > 0 || p->colour > 0) && vec_same(got, v, 3);
 }
 
-static void diagnose_part3b(ProbeSet *ps, Found *f, PBFound *out)
+static void diagnose_part3b(ProbeSet *ps, Found *f, P3bFound *out)
 {
     static const double cams[][6] = {
         { 0, 0, 0, 3, 0, -4 }, { 1, 2, 3, 4, -2, 3 }, { 0, 0, 0, 0.1, 0.2, -1 }, { -1, 0.5, 2, 2, 2.5, -4 },
@@ -1456,8 +1554,8 @@ void diagnose_part(int part, const TestList *tests, const TestResult *results, c
     ProbeSet ps = { probes, { 0 } };
     P1Found p1 = { 0 };
     P2Found p2 = { -1, -1, -1 };
-    P3Found p3 = { { false }, 0, false, 1e-9, false };
-    PBFound pb = { -1, -1 };
+    P3aFound p3 = { { false }, 0, false, 1e-9, false };
+    P3bFound pb = { -1, -1 };
     switch (part) {
     case PART1:
         diagnose_part1(&ps, &f, &p1);

@@ -348,20 +348,9 @@ static int run_probe(void *ctx, const Test *t, Answers *a)
     return 0;
 }
 
-int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
-                     char *err, size_t errlen)
+/* Each test's points: its group's points shared by its tests' weights. */
+static void share_points(const GradeConfig *cfg, const TestList *tests, Grade *g)
 {
-    memset(g, 0, sizeof *g);
-    g->tests = tests;
-    g->results = calloc((size_t)tests->n + 1, sizeof *g->results);
-    if (!g->results) {
-        snprintf(err, errlen, "out of memory");
-        return -1;
-    }
-    double start = sandbox_now();
-    const GradeConfig *cfg = opt->cfg;
-
-    /* Points: each group's points shared by its tests' weights. */
     double wsum[NPARTS][2] = { { 0 } };
     for (int k = 0; k < tests->n; k++)
         wsum[tests->tests[k].part][tests->tests[k].hard] += tests->tests[k].weight;
@@ -370,123 +359,149 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
         double pts = t->hard ? cfg->hard[t->part] : cfg->core[t->part];
         g->results[k].max_score = pts * t->weight / wsum[t->part][t->hard];
     }
+}
 
-    for (int p = 0; p < NPARTS; p++) {
-        if (!opt->parts[p])
+/* The tests of Part p the batch did not pass (done), each alone, or why
+ * not; passed and named are room for what the part did so far.  Returns
+ * how many did not finish in time. */
+static int run_rest_alone(const GradeOptions *opt, const Build *b, Grade *g, int p, const bool *done,
+                          const Test **passed, const char **named, double *spent)
+{
+    const TestList *tests = g->tests;
+    const GradeConfig *cfg = opt->cfg;
+    int timeouts = 0;
+    bool first = true;
+    for (int k = 0; k < tests->n; k++) {
+        const Test *t = &tests->tests[k];
+        TestResult *r = &g->results[k];
+        if (t->part != p || done[k])
             continue;
-        g->graded[p] = true;
-        if (opt->verbose)
-            fprintf(stderr, "  building Part %s ...\n", part_label(p));
-        Build b;
-        if (build_part(opt->build, p, opt->submission, &b, err, errlen) != 0) {
-            build_remove(&b);
-            return -1;
+        if (!b->ok) {
+            char why[200];
+            grade_unbuilt_why(g, p, false, why, sizeof why);
+            r->output = xasprintf(first ? "  %s, so this part scores 0:\n%s"
+                                        : "  %s (see the first test of this part)%s",
+                                  why, first ? g->build_messages[p] : "");
+        } else if (timeouts >= 2) {
+            r->output = xasprintf("  not run: two earlier tests of this part did not finish in time");
+        } else if (*spent + cfg->timeout > cfg->part_time) {
+            r->output = xasprintf("  not run: this part's tests took %g s in all, the most a part may "
+                                  "take (its tests each took long: does the code sleep or loop?)",
+                                  cfg->part_time);
+        } else {
+            if (opt->verbose)
+                fprintf(stderr, "  %s\n", t->name);
+            PartSoFar part = { passed, 0, named, 0 };
+            for (int j = 0; j < tests->n; j++) {
+                const TestResult *rj = &g->results[j];
+                if (tests->tests[j].part != p)
+                    continue;
+                if (rj->passed)
+                    passed[part.npassed++] = &tests->tests[j];
+                else if (rj->ran && rj->answers.named)
+                    named[part.nnamed++] = rj->answers.named;
+            }
+            run_test(opt, b, t, &part, r);
+            *spent += r->seconds;
+            if (!r->passed && r->seconds >= cfg->timeout)
+                timeouts++;
         }
-        /* A part's runs (its tests together, each alone, the probes) start
-         * only while they can end within its time (weights.conf's
-         * part-time), counted as the seconds its runs took: code whose
-         * every test sleeps just under the limit costs at most that. */
-        double children = sandbox_cpu(false), spent = 0;
-        int timeouts = 0;
-        bool first = true;
-        bool *done = calloc((size_t)tests->n + 1, sizeof *done);
-        const Test **passed = calloc((size_t)tests->n + 1, sizeof *passed);
-        const char **named = calloc((size_t)tests->n + 1, sizeof *named);
-        if (!done || !passed || !named) {
+        first = false;
+    }
+    return timeouts;
+}
+
+/* The probes on Part p's code, and the diagnosis they confirm. */
+static void diagnose_built_part(const GradeOptions *opt, const Build *b, Grade *g, int p, bool stopped,
+                                double *spent)
+{
+    const TestList *tests = g->tests;
+    /* After two tests out of time, a probe would be the third. */
+    ProbeContext pc = { opt, b, stopped, spent };
+    Probes probes = { run_probe, &pc, p == PART3B && !opt->build->reference, false, opt->cfg->full_hints };
+    for (int k = 0; k < tests->n; k++)
+        probes.part3a_failed = probes.part3a_failed ||
+            (tests->tests[k].part == PART3A && !tests->tests[k].hard && g->results[k].ran &&
+             !g->results[k].passed);
+    diagnose_part(p, tests, g->results, &probes, &g->diagnosis[p], &g->diagnosis_hard[p],
+                  &g->causes[p]);
+}
+
+/* Builds Part p, runs its tests and diagnoses it. */
+static int grade_part(const GradeOptions *opt, Grade *g, int p, char *err, size_t errlen)
+{
+    const TestList *tests = g->tests;
+    g->graded[p] = true;
+    if (opt->verbose)
+        fprintf(stderr, "  building Part %s ...\n", part_label(p));
+    Build b;
+    if (build_part(opt->build, p, opt->submission, &b, err, errlen) != 0) {
+        build_remove(&b);
+        return -1;
+    }
+    /* A part's runs (its tests together, each alone, the probes) start
+     * only while they can end within its time (weights.conf's
+     * part-time), counted as the seconds its runs took: code whose
+     * every test sleeps just under the limit costs at most that. */
+    double children = sandbox_cpu(false), spent = 0;
+    bool *done = calloc((size_t)tests->n + 1, sizeof *done);
+    const Test **passed = calloc((size_t)tests->n + 1, sizeof *passed);
+    const char **named = calloc((size_t)tests->n + 1, sizeof *named);
+    if (!done || !passed || !named) {
+        free(done);
+        free(passed);
+        free(named);
+        build_remove(&b);
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    /* A loaded part's first run, the batch, also tells whether its
+     * object links; when it cannot (no batch, or it crashed), a run that
+     * only loads it does, as the build's. */
+    if (b.ok)
+        run_batch(opt, &b, tests, p, g->results, done, &spent);
+    if (b.ok && b.unchecked) {
+        double before = sandbox_cpu(false);
+        int rc = build_check(&b, err, errlen);
+        children += sandbox_cpu(false) - before;
+        if (rc != 0) {
             free(done);
             free(passed);
             free(named);
             build_remove(&b);
-            snprintf(err, errlen, "out of memory");
             return -1;
         }
-        /* A loaded part's first run, the batch, also tells whether its
-         * object links; when it cannot (no batch, or it crashed), a run that
-         * only loads it does, as the build's. */
-        if (b.ok)
-            run_batch(opt, &b, tests, p, g->results, done, &spent);
-        if (b.ok && b.unchecked) {
-            double before = sandbox_cpu(false);
-            int rc = build_check(&b, err, errlen);
-            children += sandbox_cpu(false) - before;
-            if (rc != 0) {
-                free(done);
-                free(passed);
-                free(named);
-                build_remove(&b);
-                return -1;
-            }
-        }
-        if (!b.ok && !b.refused) {
-            build_explain_undefined(&b, opt->submission, p);
-            build_explain_headers(opt->build, &b, p);
-        }
-        g->build_messages[p] = b.messages;
-        g->build_refused[p] = b.refused;
-        g->built[p] = b.ok;
-        b.messages = NULL;
-        g->cpu_compile += b.cpu_compile;
-        g->cpu_link += b.cpu_link;
-        /* The tests the batch did not pass, each alone, then the probes. */
-        for (int k = 0; k < tests->n; k++) {
-            const Test *t = &tests->tests[k];
-            TestResult *r = &g->results[k];
-            if (t->part != p || done[k])
-                continue;
-            if (!b.ok) {
-                char why[200];
-                grade_unbuilt_why(g, p, false, why, sizeof why);
-                r->output = xasprintf(first ? "  %s, so this part scores 0:\n%s"
-                                            : "  %s (see the first test of this part)%s",
-                                      why, first ? g->build_messages[p] : "");
-            } else if (timeouts >= 2) {
-                r->output = xasprintf("  not run: two earlier tests of this part did not finish in time");
-            } else if (spent + cfg->timeout > cfg->part_time) {
-                r->output = xasprintf("  not run: this part's tests took %g s in all, the most a part may "
-                                      "take (its tests each took long: does the code sleep or loop?)",
-                                      cfg->part_time);
-            } else {
-                if (opt->verbose)
-                    fprintf(stderr, "  %s\n", t->name);
-                PartSoFar part = { passed, 0, named, 0 };
-                for (int j = 0; j < tests->n; j++) {
-                    const TestResult *rj = &g->results[j];
-                    if (tests->tests[j].part != p)
-                        continue;
-                    if (rj->passed)
-                        passed[part.npassed++] = &tests->tests[j];
-                    else if (rj->ran && rj->answers.named)
-                        named[part.nnamed++] = rj->answers.named;
-                }
-                run_test(opt, &b, t, &part, r);
-                spent += r->seconds;
-                if (!r->passed && r->seconds >= cfg->timeout)
-                    timeouts++;
-            }
-            first = false;
-        }
-        check_part_again(tests, g->results, p);
-        free(done);
-        free(passed);
-        free(named);
-        g->cpu_tests += sandbox_cpu(false) - children;
-        children = sandbox_cpu(false);
-        if (b.ok) {
-            /* After two tests out of time, a probe would be the third. */
-            ProbeContext pc = { opt, &b, timeouts >= 2, &spent };
-            Probes probes = { run_probe, &pc, p == PART3B && !opt->build->reference, false, cfg->full_hints };
-            for (int k = 0; k < tests->n; k++)
-                probes.part3a_failed = probes.part3a_failed ||
-                    (tests->tests[k].part == PART3A && !tests->tests[k].hard && g->results[k].ran &&
-                     !g->results[k].passed);
-            diagnose_part(p, tests, g->results, &probes, &g->diagnosis[p], &g->diagnosis_hard[p],
-                          &g->causes[p]);
-        }
-        g->cpu_probes += sandbox_cpu(false) - children;
-        if (opt->keep_objects && b.ok)
-            build_keep_objects(&b, opt->keep_objects);
-        build_remove(&b);
     }
+    if (!b.ok && !b.refused) {
+        build_explain_undefined(&b, opt->submission, p);
+        build_explain_headers(opt->build, &b, p);
+    }
+    g->build_messages[p] = b.messages;
+    g->build_refused[p] = b.refused;
+    g->built[p] = b.ok;
+    b.messages = NULL;
+    g->cpu_compile += b.cpu_compile;
+    g->cpu_link += b.cpu_link;
+    /* The tests the batch did not pass, each alone, then the probes. */
+    int timeouts = run_rest_alone(opt, &b, g, p, done, passed, named, &spent);
+    check_part_again(tests, g->results, p);
+    free(done);
+    free(passed);
+    free(named);
+    g->cpu_tests += sandbox_cpu(false) - children;
+    children = sandbox_cpu(false);
+    if (b.ok)
+        diagnose_built_part(opt, &b, g, p, timeouts >= 2, &spent);
+    g->cpu_probes += sandbox_cpu(false) - children;
+    if (opt->keep_objects && b.ok)
+        build_keep_objects(&b, opt->keep_objects);
+    build_remove(&b);
+    return 0;
+}
+
+/* The parts' scores and the total from the tests'. */
+static void add_up(const GradeConfig *cfg, const TestList *tests, Grade *g)
+{
     for (int k = 0; k < tests->n; k++) {
         const Test *t = &tests->tests[k];
         const TestResult *r = &g->results[k];
@@ -532,6 +547,24 @@ int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
             g->total_max += g->hard_max[p];
         }
     }
+}
+
+int grade_submission(const GradeOptions *opt, const TestList *tests, Grade *g,
+                     char *err, size_t errlen)
+{
+    memset(g, 0, sizeof *g);
+    g->tests = tests;
+    g->results = calloc((size_t)tests->n + 1, sizeof *g->results);
+    if (!g->results) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    double start = sandbox_now();
+    share_points(opt->cfg, tests, g);
+    for (int p = 0; p < NPARTS; p++)
+        if (opt->parts[p] && grade_part(opt, g, p, err, errlen) != 0)
+            return -1;
+    add_up(opt->cfg, tests, g);
     g->seconds = sandbox_now() - start;
     return 0;
 }

@@ -211,6 +211,40 @@ static bool graded_folder(const char *submission, char *out, size_t n)
     return false;
 }
 
+/* The sandbox runs programs by path: finds cc on PATH, into ccpath (n
+ * bytes); says whether it is there. */
+static bool on_path(const char *cc, char *ccpath, size_t n)
+{
+    const char *path = getenv("PATH") ? getenv("PATH") : "/usr/bin:/bin";
+    char *copy = strdup(path), *save = NULL;
+    ccpath[0] = '\0';
+    for (char *dir = strtok_r(copy, ":", &save); dir; dir = strtok_r(NULL, ":", &save)) {
+        snprintf(ccpath, n, "%s/%s", dir, cc);
+        if (access(ccpath, X_OK) == 0)
+            break;
+        ccpath[0] = '\0';
+    }
+    free(copy);
+    return ccpath[0] != '\0';
+}
+
+/* grade --cost: where the CPU time went.  The whole process: the
+ * grader's own CPU (reading the tests included) and every child it
+ * waited for. */
+static void say_cost(const Grade *g)
+{
+    double self = sandbox_cpu(true), total = self + sandbox_cpu(false);
+    printf("cost (CPU seconds): compiling %.3f, linking %.3f, tests %.3f, probes %.3f, "
+           "the grader %.3f; total %.3f = %.2f x compiling\n", g->cpu_compile, g->cpu_link,
+           g->cpu_tests, g->cpu_probes, self, total,
+           g->cpu_compile > 0 ? total / g->cpu_compile : 0);
+    int nruns;
+    double jail;
+    sandbox_jail_cost(&nruns, &jail);
+    printf("the jail: %d runs, %.3f s building their namespaces (%s)\n", nruns, jail,
+           jail_namespaces() ? "counted in the runs above" : "none: the fallback");
+}
+
 static int grade_one(const char *submission, const char *part, const char *results,
                      const char *weights, const char *page, bool quiet, bool summary)
 {
@@ -233,22 +267,10 @@ static int grade_one(const char *submission, const char *part, const char *resul
     warn_changed_headers(root);
     const char *cc = getenv("CC") && *getenv("CC") ? getenv("CC") : "cc";
     char ccpath[PATH_MAX];
-    /* The sandbox runs programs by path: find the compiler on PATH. */
-    if (!strchr(cc, '/')) {
-        const char *path = getenv("PATH") ? getenv("PATH") : "/usr/bin:/bin";
-        char *copy = strdup(path), *save = NULL;
-        ccpath[0] = '\0';
-        for (char *dir = strtok_r(copy, ":", &save); dir; dir = strtok_r(NULL, ":", &save)) {
-            snprintf(ccpath, sizeof ccpath, "%s/%s", dir, cc);
-            if (access(ccpath, X_OK) == 0)
-                break;
-            ccpath[0] = '\0';
-        }
-        free(copy);
-        if (!ccpath[0])
-            return fail(results, "no C compiler: %s is not on PATH", cc);
+    if (!strchr(cc, '/') && !on_path(cc, ccpath, sizeof ccpath))
+        return fail(results, "no C compiler: %s is not on PATH", cc);
+    if (!strchr(cc, '/'))
         cc = ccpath;
-    }
     char objdir[PATH_MAX + 32], ref[PATH_MAX + 64];
     /* The harness and reference objects, where the Makefile built them. */
 #ifndef GRADER_BUILD
@@ -262,7 +284,7 @@ static int grade_one(const char *submission, const char *part, const char *resul
     /* The prebuilt runners (Linux), unless GRADE_NO_LOAD is set (the kit's
      * own tests grade both ways and compare). */
     char runner[PATH_MAX + 64];
-    snprintf(runner, sizeof runner, "%s/runner_1", objdir);
+    snprintf(runner, sizeof runner, "%s/runner_part1", objdir);
     const char *no_load = getenv("GRADE_NO_LOAD");
     BuildConfig bc = { .root = root, .cc = cc, .objdir = objdir, .reference = access(ref, R_OK) == 0,
                        .load = access(runner, X_OK) == 0 && !(no_load && *no_load),
@@ -289,20 +311,8 @@ static int grade_one(const char *submission, const char *part, const char *resul
     }
     if (!quiet)
         report_table(stdout, &g, &cfg, submission, every_failure);
-    if (show_cost) {
-        /* The whole process: the grader's own CPU (reading the tests
-         * included) and every child it waited for. */
-        double self = sandbox_cpu(true), total = self + sandbox_cpu(false);
-        printf("cost (CPU seconds): compiling %.3f, linking %.3f, tests %.3f, probes %.3f, "
-               "the grader %.3f; total %.3f = %.2f x compiling\n", g.cpu_compile, g.cpu_link,
-               g.cpu_tests, g.cpu_probes, self, total,
-               g.cpu_compile > 0 ? total / g.cpu_compile : 0);
-        int nruns;
-        double jail;
-        sandbox_jail_cost(&nruns, &jail);
-        printf("the jail: %d runs, %.3f s building their namespaces (%s)\n", nruns, jail,
-               jail_namespaces() ? "counted in the runs above" : "none: the fallback");
-    }
+    if (show_cost)
+        say_cost(&g);
     int status = g.total < g.total_max || g.bonus < g.bonus_max ? 1 : 0;
     if (results && (results_prairielearn ? report_prairielearn(results, &g, err, sizeof err)
                                          : report_json(results, &g, submission, err, sizeof err)) != 0) {
@@ -419,12 +429,24 @@ static void append_text(char *buf, size_t size, const char *text)
     buf[used + k] = '\0';
 }
 
-static int grade_all(const char *self, const char *dir, const char *out, const char *weights, int jobs)
+/* The folder of submissions, read: the submissions, and what was left out. */
+typedef struct {
+    char **names;       /* the submissions' folders, in order */
+    int n;
+    /* Folders whose names start with "." (.git, .github, a system's own)
+     * and the __MACOSX that macOS's zip tool adds are not submissions: they
+     * are left out, and the run names them, in order, the first eight. */
+    int ndots;
+    char hidden[256];
+    int loose;          /* files named like stage files, at the top */
+    int lms;            /* files named as a platform's download names them (lmsname.h) */
+} Submissions;
+
+/* Reads the folder dir into s; returns 0, or fail's status. */
+static int read_submissions(const char *dir, Submissions *s)
 {
+    memset(s, 0, sizeof *s);
     char err[1024];
-    GradeConfig cfg;
-    if (config_read(&cfg, weights, err, sizeof err) != 0)
-        return fail(NULL, "%s", err);
     DIR *d = opendir(dir);
     struct stat dst;
     if (!d && stat(dir, &dst) == 0 && S_ISREG(dst.st_mode)) {   /* a download's zip, most likely */
@@ -435,15 +457,7 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     }
     if (!d)
         return fail(NULL, "%s: cannot open the submissions directory", dir);
-    char **names = NULL;
-    int n = 0;
-    /* Folders whose names start with "." (.git, .github, a system's own)
-     * and the __MACOSX that macOS's zip tool adds are not submissions: they
-     * are left out, and the run names them, in order, the first eight. */
     char **dots = NULL;
-    int ndots = 0;
-    int loose = 0;      /* files named like stage files, at the top */
-    int lms = 0;        /* files named as a platform's download names them (lmsname.h) */
     struct dirent *e;
     while ((e = readdir(d))) {
         char path[PATH_MAX];
@@ -454,19 +468,19 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
         if (stat(path, &st) != 0)
             continue;
         LmsName named;
-        lms += lms_name(e->d_name, stage_names, NPARTS, &named);
+        s->lms += lms_name(e->d_name, stage_names, NPARTS, &named);
         if (!S_ISDIR(st.st_mode)) {
             for (int p = 0; p < NPARTS; p++) {
                 size_t ln = strlen(e->d_name), ls = strlen(stage_names[p]);
                 if (ln >= ls + 2 && strcmp(e->d_name + ln - 2, ".c") == 0 &&
                     strncmp(e->d_name + ln - 2 - ls, stage_names[p], ls) == 0)
-                    loose++;
+                    s->loose++;
             }
             continue;
         }
         bool system = e->d_name[0] == '.' || strcmp(e->d_name, "__MACOSX") == 0;
-        char ***list = system ? &dots : &names;
-        int *count = system ? &ndots : &n;
+        char ***list = system ? &dots : &s->names;
+        int *count = system ? &s->ndots : &s->n;
         char **grown = realloc(*list, (size_t)(*count + 1) * sizeof **list);
         char *name = strdup(e->d_name);
         if (!grown || !name) {
@@ -477,118 +491,141 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
         grown[(*count)++] = name;
     }
     closedir(d);
-    char hidden[256] = "";
-    if (ndots > 1)
-        qsort(dots, (size_t)ndots, sizeof *dots, by_name);
-    for (int k = 0; k < ndots; k++) {
+    if (s->ndots > 1)
+        qsort(dots, (size_t)s->ndots, sizeof *dots, by_name);
+    for (int k = 0; k < s->ndots; k++) {
         if (k > 0 && k <= 8)
-            append_text(hidden, sizeof hidden, k < 8 ? ", " : ", ...");
+            append_text(s->hidden, sizeof s->hidden, k < 8 ? ", " : ", ...");
         if (k < 8)
-            term_append(hidden, sizeof hidden, dots[k]);
+            term_append(s->hidden, sizeof s->hidden, dots[k]);
         free(dots[k]);
     }
     free(dots);
-    if (n == 0) {     /* a wrong folder, most likely: nothing is written */
-        snprintf(err, sizeof err, "%s holds no submissions: each submission is a folder of stage files in it%s%s",
-                 dir, ndots ? " (folders of the system's own, a name starting with \".\" or __MACOSX, are left "
-                              "out: " : "", hidden);
-        if (ndots)
-            append_text(err, sizeof err, ")");
-        if (lms) {        /* a platform's download: the sorter reads its names */
-            char more[700];
-            snprintf(more, sizeof more, "; %d of its files or folders are named as a Canvas, Moodle or "
-                     "Blackboard download names a class's files: make sort-submissions FROM=%s "
-                     "TO=new-folder sorts them into a folder per submission", lms, dir);
-            append_text(err, sizeof err, more);
-        } else if (loose) {      /* one folder of every student's files, as some downloads give */
-            char more[160];
-            snprintf(more, sizeof more, "; it holds %d stage file%s of its own: put each submission's files "
-                     "in a folder of its own, named after it", loose, loose == 1 ? "" : "s");
-            append_text(err, sizeof err, more);
+    if (s->n > 1)
+        qsort(s->names, (size_t)s->n, sizeof *s->names, by_name);
+    return 0;
+}
+
+/* A folder with no submissions: a wrong folder, most likely, and nothing
+ * is written.  Says what it holds instead; returns fail's status. */
+static int no_submissions(const char *dir, const Submissions *s)
+{
+    char err[1024];
+    snprintf(err, sizeof err, "%s holds no submissions: each submission is a folder of stage files in it%s%s",
+             dir, s->ndots ? " (folders of the system's own, a name starting with \".\" or __MACOSX, are left "
+                             "out: " : "", s->hidden);
+    if (s->ndots)
+        append_text(err, sizeof err, ")");
+    if (s->lms) {        /* a platform's download: the sorter reads its names */
+        char more[700];
+        snprintf(more, sizeof more, "; %d of its files or folders are named as a Canvas, Moodle or "
+                 "Blackboard download names a class's files: make sort-submissions FROM=%s "
+                 "TO=new-folder sorts them into a folder per submission", s->lms, dir);
+        append_text(err, sizeof err, more);
+    } else if (s->loose) {      /* one folder of every student's files, as some downloads give */
+        char more[160];
+        snprintf(more, sizeof more, "; it holds %d stage file%s of its own: put each submission's files "
+                 "in a folder of its own, named after it", s->loose, s->loose == 1 ? "" : "s");
+        append_text(err, sizeof err, more);
+    }
+    return fail(NULL, "%s", err);
+}
+
+/* What every child of a grade --all run is given. */
+typedef struct {
+    const char *self, *dir, *out, *weights;
+    const char *memo;           /* "", or where the distinct stage files built (memo.h) */
+    ClassRun *class_run;        /* NULL, or the class page's */
+    char (*users)[16];          /* as root: the ids the code runs as, one a place */
+    bool *busy;                 /* as root: the places taken */
+} AllRun;
+
+/* Starts grading submission k, name, in a child of its own whose summary
+ * line j->fd reads; returns 0, or fail's status. */
+static int start_job(const AllRun *run, Job *j, int k, const char *name)
+{
+    snprintf(j->name, sizeof j->name, "%s", name);
+    char sub[PATH_MAX], res[PATH_MAX], page[PATH_MAX];
+    snprintf(sub, sizeof sub, "%s/%s", run->dir, name);
+    snprintf(res, sizeof res, "%s/%s.json", run->out, name);
+    snprintf(page, sizeof page, "%s/%s.html", run->out, name);
+    char record[PATH_MAX];
+    if (run->class_run)
+        class_record_path(run->class_run, k, record, sizeof record);
+    /* As root, a free place, and with it the id the code runs as. */
+    j->slot = 0;
+    while (run->busy && run->busy[j->slot])
+        j->slot++;
+    const char *user = run->users ? run->users[j->slot] : "";
+    if (run->busy)
+        run->busy[j->slot] = true;
+    int p[2];
+    if (pipe(p) != 0)
+        return fail(NULL, "pipe: %s", strerror(errno));
+    j->pid = fork();
+    if (j->pid == 0) {
+        dup2(p[1], 1);
+        close(p[0]);
+        close(p[1]);
+        char *argv[18] = { (char *)run->self, "--submission", sub, "--results", res,
+                           "--weights", (char *)run->weights, "--report-file", page,
+                           "--quiet", "--summary" };
+        int argc = 11;
+        if (run->memo[0]) {
+            argv[argc++] = "--memo";
+            argv[argc++] = (char *)run->memo;
         }
-        return fail(NULL, "%s", err);
+        if (user[0]) {
+            argv[argc++] = "--sandbox-user";
+            argv[argc++] = (char *)user;
+        }
+        if (run->class_run) {
+            argv[argc++] = "--class-record";
+            argv[argc++] = record;
+        }
+        argv[argc] = NULL;
+        execv(run->self, argv);
+        _exit(2);
     }
-    qsort(names, (size_t)n, sizeof *names, by_name);
-    if (mkdir(out, 0755) != 0 && errno != EEXIST)
-        return fail(NULL, "%s: cannot make the output directory", out);
-    char here[PATH_MAX];
-    if (!getcwd(here, sizeof here) || jail_make_private(here, err, sizeof err) != 0 ||
-        jail_make_private(dir, err, sizeof err) != 0 || jail_make_private(out, err, sizeof err) != 0)
-        return fail(NULL, "%s", err);
-    ClassRun *class_run = class_begin(out, previous_out);      /* the class page */
+    close(p[1]);
+    j->fd = p[0];
+    return 0;
+}
 
-    /* As root, each distinct stage file is compiled once (memo.h), in a
-     * directory only root may enter; as another user every file is
-     * compiled for itself.  GRADE_NO_MEMO=1 compiles every file. */
-    char memo[PATH_MAX] = "";
-    const char *no_memo = getenv("GRADE_NO_MEMO");
-    if (sandbox_drops_privileges() && !(no_memo && *no_memo) &&
-        build_tempdir(memo, sizeof memo, err, sizeof err) != 0)
-        memo[0] = '\0';
-
-    char (*users)[16] = NULL;
-    bool *busy = NULL;
-    jobs = jobs < n ? jobs : n;      /* n > 0: an empty folder was refused above */
-    if (sandbox_drops_privileges()) {
-        jobs = jobs < MAX_ROOT_JOBS ? jobs : MAX_ROOT_JOBS;
-        users = calloc((size_t)jobs, sizeof *users);
-        busy = calloc((size_t)jobs, sizeof *busy);
-        if (!users || !busy)
-            return fail(NULL, "%s", "out of memory");
-        jobs = job_users(jobs, users);
+/* The child pid of the first next jobs has ended with status: reads its
+ * summary line and frees its place.  Returns how many jobs that ended. */
+static int end_job(const AllRun *run, Job *all, int next, pid_t pid, int status)
+{
+    int ended = 0;
+    for (int k = 0; k < next; k++) {
+        Job *j = &all[k];
+        if (j->pid != pid)
+            continue;
+        ssize_t r;
+        while ((r = read(j->fd, j->line + j->len, sizeof j->line - 1 - j->len)) > 0)
+            j->len += (size_t)r;
+        j->line[j->len] = '\0';
+        close(j->fd);
+        j->status = WIFEXITED(status) ? WEXITSTATUS(status) : 2;
+        j->pid = 0;
+        if (run->busy)
+            run->busy[j->slot] = false;
+        ended++;
     }
+    return ended;
+}
 
-    Job *all = calloc((size_t)n + 1, sizeof *all);
-    int next = 0, running = 0, done = 0;
+/* Grades the submissions, jobs at a time, into all; returns 0, or
+ * fail's status. */
+static int run_jobs(const AllRun *run, const Submissions *s, Job *all, int jobs)
+{
+    int n = s->n, next = 0, running = 0, done = 0;
     const bool show_progress = isatty(STDERR_FILENO);   /* a log gets only the summary */
     while (done < n) {
         while (running < jobs && next < n) {
-            Job *j = &all[next];
-            snprintf(j->name, sizeof j->name, "%s", names[next]);
-            char sub[PATH_MAX], res[PATH_MAX], page[PATH_MAX];
-            snprintf(sub, sizeof sub, "%s/%s", dir, names[next]);
-            snprintf(res, sizeof res, "%s/%s.json", out, names[next]);
-            snprintf(page, sizeof page, "%s/%s.html", out, names[next]);
-            char record[PATH_MAX];
-            if (class_run)
-                class_record_path(class_run, next, record, sizeof record);
-            /* As root, a free place, and with it the id the code runs as. */
-            j->slot = 0;
-            while (busy && busy[j->slot])
-                j->slot++;
-            const char *user = users ? users[j->slot] : "";
-            if (busy)
-                busy[j->slot] = true;
-            int p[2];
-            if (pipe(p) != 0)
-                return fail(NULL, "pipe: %s", strerror(errno));
-            j->pid = fork();
-            if (j->pid == 0) {
-                dup2(p[1], 1);
-                close(p[0]);
-                close(p[1]);
-                char *argv[18] = { (char *)self, "--submission", sub, "--results", res,
-                                   "--weights", (char *)weights, "--report-file", page,
-                                   "--quiet", "--summary" };
-                int argc = 11;
-                if (memo[0]) {
-                    argv[argc++] = "--memo";
-                    argv[argc++] = memo;
-                }
-                if (user[0]) {
-                    argv[argc++] = "--sandbox-user";
-                    argv[argc++] = (char *)user;
-                }
-                if (class_run) {
-                    argv[argc++] = "--class-record";
-                    argv[argc++] = record;
-                }
-                argv[argc] = NULL;
-                execv(self, argv);
-                _exit(2);
-            }
-            close(p[1]);
-            j->fd = p[0];
+            int rc = start_job(run, &all[next], next, s->names[next]);
+            if (rc != 0)
+                return rc;
             next++;
             running++;
         }
@@ -597,30 +634,85 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
         pid_t pid = wait(&status);
         if (pid < 0)
             break;
-        for (int k = 0; k < next; k++) {
-            Job *j = &all[k];
-            if (j->pid != pid)
-                continue;
-            ssize_t r;
-            while ((r = read(j->fd, j->line + j->len, sizeof j->line - 1 - j->len)) > 0)
-                j->len += (size_t)r;
-            j->line[j->len] = '\0';
-            close(j->fd);
-            j->status = WIFEXITED(status) ? WEXITSTATUS(status) : 2;
-            j->pid = 0;
-            if (busy)
-                busy[j->slot] = false;
-            running--;
-            done++;
-        }
+        int ended = end_job(run, all, next, pid, status);
+        running -= ended;
+        done += ended;
         if (show_progress)
             fprintf(stderr, "\r  graded %d of %d submissions", done, n);
     }
     if (show_progress)
         fprintf(stderr, "\n");
+    return 0;
+}
 
-    char csv[PATH_MAX], tmp[PATH_MAX + 8];
-    snprintf(csv, sizeof csv, "%s/gradebook.csv", out);
+/* What the gradebook says beyond its rows. */
+typedef struct {
+    int worst;                  /* 2 when a grading gave no summary, else 0 */
+    int nempty;                 /* submissions with no stage file */
+    char empty[200];            /* the first four of them */
+} Gradebook;
+
+/* One row of the gradebook f for job j, submission k, from its summary
+ * line; its values to the class page too. */
+static void gradebook_row(FILE *f, const GradeConfig *cfg, const AllRun *run, const Job *j, int k,
+                          int ncols, Gradebook *gb)
+{
+    /* No stage file where the grader looks (the folder, or its labs):
+     * nothing handed in, or files under other names (its .json names
+     * them), which the gradebook tells from points lost. */
+    char sub[PATH_MAX], folder[PATH_MAX];
+    snprintf(sub, sizeof sub, "%s/%s", run->dir, j->name);
+    bool none = !graded_folder(sub, folder, sizeof folder);
+    double v[NPARTS + 2];
+    int st = 2, used = 0;
+    const char *s = strstr(j->line, "summary ");
+    bool ok = s != NULL;
+    if (ok)
+        s += 7;
+    for (int c = 0; ok && c < NPARTS + 2; c++) {
+        ok = sscanf(s, "%lf%n", &v[c], &used) == 1;
+        s += used;
+    }
+    ok = ok && sscanf(s, "%d", &st) == 1;
+    class_add(run->class_run, k, j->name, ok ? v : NULL, ok ? st : j->status, none);
+    csv_field(f, j->name);
+    if (ok) {
+        for (int p = 0; p < NPARTS; p++)
+            if (cfg->parts[p])
+                fprintf(f, ",%g", v[p]);
+        fprintf(f, ",%g,%g,%s\n", v[NPARTS], v[NPARTS + 1],
+                st == 0 ? "full marks" : none ? "no stage file" : "points lost");
+        if (none && gb->nempty++ < 4) {
+            append_text(gb->empty, sizeof gb->empty, gb->nempty > 1 ? ", " : "");
+            term_append(gb->empty, sizeof gb->empty, j->name);
+        }
+    } else {
+        for (int c = 0; c < ncols + 2; c++)
+            fputc(',', f);
+        fputc(',', f);
+        char why[sizeof j->name + 32];
+        snprintf(why, sizeof why, "grader error (see %s.json)", j->name);
+        csv_field(f, why);
+        fputc('\n', f);
+        /* A grading that ended without its results (the grader killed,
+         * say) gets a results file that says so, as the row does. */
+        char res[PATH_MAX], said[200], werr[256];
+        struct stat rst;
+        snprintf(res, sizeof res, "%s/%s.json", run->out, j->name);
+        snprintf(said, sizeof said, "The grader stopped (status %d) before it wrote this "
+                 "submission's results: please tell the course staff.", j->status);
+        if (lstat(res, &rst) != 0)
+            report_json_error(res, said, werr, sizeof werr);
+    }
+    if (!ok)
+        gb->worst = 2;
+}
+
+/* Writes csv, the gradebook, a row a job; returns 0, or fail's status. */
+static int write_gradebook(const char *csv, const GradeConfig *cfg, const AllRun *run, const Job *all,
+                           int n, Gradebook *gb)
+{
+    char tmp[PATH_MAX + 8];
     snprintf(tmp, sizeof tmp, "%s.tmp", csv);
     FILE *f = fopen(tmp, "w");
     if (!f)
@@ -630,80 +722,26 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     fprintf(f, "submission");
     int ncols = 0;
     for (int p = 0; p < NPARTS; p++)
-        if (cfg.parts[p]) {
+        if (cfg->parts[p]) {
             fprintf(f, ",part%s", part_label(p));
             ncols++;
         }
     fprintf(f, ",hard,total,status\n");
-    int worst = 0, nempty = 0;
-    char empty[200] = "";          /* the first four with no stage file */
-    for (int k = 0; k < n; k++) {
-        Job *j = &all[k];
-        /* No stage file where the grader looks (the folder, or its labs):
-         * nothing handed in, or files under other names (its .json names
-         * them), which the gradebook tells from points lost. */
-        char sub[PATH_MAX], folder[PATH_MAX];
-        snprintf(sub, sizeof sub, "%s/%s", dir, j->name);
-        bool none = !graded_folder(sub, folder, sizeof folder);
-        double v[NPARTS + 2];
-        int st = 2, used = 0;
-        char *s = strstr(j->line, "summary ");
-        bool ok = s != NULL;
-        if (ok)
-            s += 7;
-        for (int c = 0; ok && c < NPARTS + 2; c++) {
-            ok = sscanf(s, "%lf%n", &v[c], &used) == 1;
-            s += used;
-        }
-        ok = ok && sscanf(s, "%d", &st) == 1;
-        class_add(class_run, k, j->name, ok ? v : NULL, ok ? st : j->status, none);
-        csv_field(f, j->name);
-        if (ok) {
-            for (int p = 0; p < NPARTS; p++)
-                if (cfg.parts[p])
-                    fprintf(f, ",%g", v[p]);
-            fprintf(f, ",%g,%g,%s\n", v[NPARTS], v[NPARTS + 1],
-                    st == 0 ? "full marks" : none ? "no stage file" : "points lost");
-            if (none && nempty++ < 4) {
-                append_text(empty, sizeof empty, nempty > 1 ? ", " : "");
-                term_append(empty, sizeof empty, j->name);
-            }
-        } else {
-            for (int c = 0; c < ncols + 2; c++)
-                fputc(',', f);
-            fputc(',', f);
-            char why[sizeof j->name + 32];
-            snprintf(why, sizeof why, "grader error (see %s.json)", j->name);
-            csv_field(f, why);
-            fputc('\n', f);
-            /* A grading that ended without its results (the grader killed,
-             * say) gets a results file that says so, as the row does. */
-            char res[PATH_MAX], said[200], werr[256];
-            struct stat rst;
-            snprintf(res, sizeof res, "%s/%s.json", out, j->name);
-            snprintf(said, sizeof said, "The grader stopped (status %d) before it wrote this "
-                     "submission's results: please tell the course staff.", j->status);
-            if (lstat(res, &rst) != 0)
-                report_json_error(res, said, werr, sizeof werr);
-        }
-        if (!ok)
-            worst = 2;
-        free(names[k]);
-    }
-    free(names);
-    free(all);
-    free(users);
-    free(busy);
-    int built = 0, files = 0;
-    if (memo[0]) {
-        count_memo(memo, &built, &files);
-        build_rmtree(memo);
-    }
+    for (int k = 0; k < n; k++)
+        gradebook_row(f, cfg, run, &all[k], k, ncols, gb);
     if (fclose(f) != 0 || rename(tmp, csv) != 0)
         return fail(NULL, "%s: cannot write", csv);
+    return 0;
+}
+
+/* What the run did, after the gradebook is written. */
+static void say_what_was_done(const Submissions *s, const char *dir, const char *csv, const Gradebook *gb,
+                              int built, int files, bool as_users, int jobs)
+{
+    int n = s->n, nempty = gb->nempty, loose = s->loose;
     if (built)
         printf("compiled %d distinct stage files once each, for %d files in all\n", built, files);
-    if (users && jobs > 1)
+    if (as_users && jobs > 1)
         printf("graded %d at a time, as root: each one's code ran as an unprivileged user of its "
                "own\n", jobs);
     if (!sandbox_drops_privileges() && jail_namespaces())
@@ -713,22 +751,87 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
         printf("graded as yourself, not as root, where this system gives no namespaces: each "
                "submission's code ran as you, and could read and change your files and stop your "
                "processes; grade code you do not trust as root (README, \"Grading a class\")\n");
-    if (ndots)
+    if (s->ndots)
         printf("left out %d folder%s of the system's own (a name starting with \".\", or macOS's __MACOSX), "
-               "not taken for a submission: %s\n", ndots, ndots == 1 ? "" : "s", hidden);
+               "not taken for a submission: %s\n", s->ndots, s->ndots == 1 ? "" : "s", s->hidden);
     if (loose)
         printf("left out %d stage file%s lying in %s itself: a submission is a folder of its own%s\n", loose,
                loose == 1 ? "" : "s", dir,
-               lms ? " (they are named as a Canvas, Moodle or Blackboard download names a class's files: "
-                     "make sort-submissions sorts them into a folder per submission)" : "");
+               s->lms ? " (they are named as a Canvas, Moodle or Blackboard download names a class's files: "
+                        "make sort-submissions sorts them into a folder per submission)" : "");
     if (nempty)
         printf("%d submission%s no stage file (status \"no stage file\": empty, or files under other "
                "names, which %s .json names): %s%s\n", nempty, nempty == 1 ? " holds" : "s hold",
-               nempty == 1 ? "its" : "each one's", empty, nempty > 4 ? ", ..." : "");
+               nempty == 1 ? "its" : "each one's", gb->empty, nempty > 4 ? ", ..." : "");
     printf("graded %d submission%s: wrote %s, and one .json and one .html (the report page) %s\n",
            n, n == 1 ? "" : "s", csv, n == 1 ? "for it" : "each");
-    class_finish(class_run, &cfg, &(ClassBuilds){ built, files }, load_tests);
-    return worst;
+}
+
+static int grade_all(const char *self, const char *dir, const char *out, const char *weights, int jobs)
+{
+    char err[1024];
+    GradeConfig cfg;
+    if (config_read(&cfg, weights, err, sizeof err) != 0)
+        return fail(NULL, "%s", err);
+    Submissions s;
+    int rc = read_submissions(dir, &s);
+    if (rc != 0)
+        return rc;
+    int n = s.n;
+    if (n == 0)
+        return no_submissions(dir, &s);
+    if (mkdir(out, 0755) != 0 && errno != EEXIST)
+        return fail(NULL, "%s: cannot make the output directory", out);
+    char here[PATH_MAX];
+    if (!getcwd(here, sizeof here) || jail_make_private(here, err, sizeof err) != 0 ||
+        jail_make_private(dir, err, sizeof err) != 0 || jail_make_private(out, err, sizeof err) != 0)
+        return fail(NULL, "%s", err);
+    AllRun run = { self, dir, out, weights, "", class_begin(out, previous_out), NULL, NULL };
+
+    /* As root, each distinct stage file is compiled once (memo.h), in a
+     * directory only root may enter; as another user every file is
+     * compiled for itself.  GRADE_NO_MEMO=1 compiles every file. */
+    char memo[PATH_MAX] = "";
+    const char *no_memo = getenv("GRADE_NO_MEMO");
+    if (sandbox_drops_privileges() && !(no_memo && *no_memo) &&
+        build_tempdir(memo, sizeof memo, err, sizeof err) != 0)
+        memo[0] = '\0';
+    run.memo = memo;
+
+    jobs = jobs < n ? jobs : n;      /* n > 0: an empty folder was refused above */
+    if (sandbox_drops_privileges()) {
+        jobs = jobs < MAX_ROOT_JOBS ? jobs : MAX_ROOT_JOBS;
+        run.users = calloc((size_t)jobs, sizeof *run.users);
+        run.busy = calloc((size_t)jobs, sizeof *run.busy);
+        if (!run.users || !run.busy)
+            return fail(NULL, "%s", "out of memory");
+        jobs = job_users(jobs, run.users);
+    }
+    Job *all = calloc((size_t)n + 1, sizeof *all);
+    rc = run_jobs(&run, &s, all, jobs);
+    if (rc != 0)
+        return rc;
+    int built = 0, files = 0;
+    if (memo[0]) {
+        count_memo(memo, &built, &files);
+        build_rmtree(memo);
+    }
+    char csv[PATH_MAX];
+    snprintf(csv, sizeof csv, "%s/gradebook.csv", out);
+    Gradebook gb = { 0, 0, "" };
+    rc = write_gradebook(csv, &cfg, &run, all, n, &gb);
+    bool as_users = run.users != NULL;
+    for (int k = 0; k < n; k++)
+        free(s.names[k]);
+    free(s.names);
+    free(all);
+    free(run.users);
+    free(run.busy);
+    if (rc != 0)
+        return rc;
+    say_what_was_done(&s, dir, csv, &gb, built, files, as_users, jobs);
+    class_finish(run.class_run, &cfg, &(ClassBuilds){ built, files }, load_tests);
+    return gb.worst;
 }
 
 int main(int argc, char **argv)

@@ -444,7 +444,7 @@ check "a failing case's input reads n.x = 0.48, n.y = 0.6, n.z = 0.64, not 17 di
 # the classes above compiled each distinct file once (memo.h) and graded
 # the reference's files from that one object; here the reference's are
 # compiled for the reference alone, and must keep full marks.
-if [ -x out/build/grader/runner_1 ]; then
+if [ -x out/build/grader/runner_part1 ]; then
     # parity PART SUBMISSION...: grades them on PART alone, linked whole.
     parity() {
         p=$1
