@@ -666,8 +666,13 @@ int sandbox_run(const SandboxSpec *spec, SandboxResult *res, char *err, size_t e
         clean_up(spec);
         return -1;
     }
-    double start = sandbox_now(), cpu_start = sandbox_cpu(false);
+    double cpu_start = sandbox_cpu(false);
     pid_t pid = spawn(spec, p[0][0], p[1][1], p[2][1], p[3][1], err, errlen);
+    /* The time limit counts from here, when the child has started the
+     * program (spawn returns once it has): building its jail, which the
+     * kernel may keep waiting while it ends other runs' namespaces, is the
+     * kit's time, not the code's. */
+    double start = sandbox_now();
     /* The child's ends: stdin's read end, the others' write ends. */
     for (int k = 0; k < 4; k++)
         if (p[k][0] >= 0)
