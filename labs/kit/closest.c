@@ -237,12 +237,13 @@ bool closest_rows(const Scene *scene, const Bvh *bvh, Image *img, double w, doub
                   const double nudge[2], int j0, int j1)
 {
     const int nx = scene->nx, ny = scene->ny;
+    const bool nudged = nudge[0] != 0 || nudge[1] != 0;
     bool stray = false;
     for (int j = j0; j < j1; j++) {
         unsigned char *px = img->rgb + (size_t)3 * nx * (size_t)j;
         for (int i = 0; i < nx; i++) {
             Vec3 s = pixel_coordinates(i, j, nx, ny, w, h, scene->d);
-            if (nudge[0] != 0 || nudge[1] != 0)
+            if (nudged)
                 s = vec3(s.x + nudge[0], s.y + nudge[1], s.z);
             Ray ray = camera_ray(scene->eye, s);
             Vec3 color = bvh ? closest_color_bvh(scene, bvh, &ray, &stray) : closest_color(scene, &ray);
