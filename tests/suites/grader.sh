@@ -7,10 +7,13 @@
 set -u
 root=$(pwd)
 grade=${GRADE:-out/build/bin/grade}   # make sanitize-grader: the sanitized one
+check_html=out/build/bin/htmlcheck
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtselftest.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
 . tests/lib/checks.sh
+. tests/lib/class_page.sh
+. tests/lib/browser.sh
 
 max1=20; max2=20; max3a=30; max3b=30; max4=20; max5=20     # tests/weights.conf
 # The same points with the optional Parts 4 and 5 turned on.
@@ -157,11 +160,12 @@ status=$?
 check "a weights file that starts with a byte-order mark is read (exit $status)" \
     sh -c "[ $status -eq 0 ] && grep -q '^summary 25 ' '$tmp/bom.out'"
 
-# -- faulty and hostile submissions, graded as two classes -------------------
-# Those of Parts 1-3b with the default points (Parts 1-3b), those of the
-# optional parts alone (files part4_* or part5_* only) with Parts 4 and 5.  Every
-# part is graded on its own, so the parts left out could only be the
-# reference's full marks.
+# -- faulty and hostile submissions, graded as one class -------------------
+# Every self-test submission, every part turned on: each part is graded on
+# its own, so a part whose file is the reference's keeps full marks.  Two
+# of them are copied again under hostile names (a control byte, quotes,
+# angle brackets, an ampersand, a space, a percent sign), and an empty
+# folder is handed in too, for the class page (tests/lib/class_page.sh).
 # A test's time limit is 0.25 s here, not the default 2: the submissions
 # that loop (hostile-infinite-loop, hostile-ignore-alarm) wait out the
 # limit three times each (their batch, then two tests alone), burning CPU
@@ -174,40 +178,28 @@ check "a weights file that starts with a byte-order mark is read (exit $status)"
 # of its 68 tests alone (17 MiB in all instead of 272).
 core=$tmp/core.conf
 sed -e 's/^\(timeout\) .*/\1 0.25/' -e 's/^\(output\) .*/\1 256/' tests/weights.conf >"$core"
-check "the test classes' weights set a test's time and output" \
+check "the test class's weights set a test's time and output" \
     sh -c "grep -q '^timeout 0.25\$' '$core' && grep -q '^output 256\$' '$core'"  # portable: text
-only45=$tmp/parts45.conf
-sed 's/^parts .*/parts 4 5/' "$core" >"$only45"
-mkdir "$tmp/subs" "$tmp/subs45" "$tmp/reference"
-cp solutions/part*.c "$tmp/reference/"
-# Each submission: a copy of the reference, then its own files over it (two
-# processes; the shell itself tells the classes apart).
+classconf=$tmp/class.conf
+sed 's/^parts .*/parts 1 2 3a 3b 4 5/' "$core" >"$classconf"
+class=$tmp/class
+mkdir "$class"
+# Each submission: a copy of the reference, then its own files over it.
 for dir in tests/selftest/*/; do
     name=${dir%/}
-    name=${name##*/}
-    # The optional parts' class: files part4_* or part5_* only.
-    has45=no hasother=no
-    for f in "$dir"part*; do
-        case ${f##*/} in
-        part4_* | part5_*) has45=yes ;;
-        part\*) ;;
-        *) hasother=yes ;;
-        esac
+    sub="$class/${name##*/}"
+    mkdir "$sub"
+    cp solutions/part*.c "$sub/"
+    for f in "$dir"part*.c "$dir"*.h; do   # *.h: a student's own headers (build-own-header)
+        [ -f "$f" ] && cp "$f" "$sub/"
     done
-    class=subs
-    [ "$has45" = yes ] && [ "$hasother" = no ] && class=subs45
-    sub="$tmp/$class/$name"
-    cp -R "$tmp/reference" "$sub"
-    set -- "$dir"part*.c
-    [ -f "$1" ] && cp "$@" "$sub/"
-    set -- "$dir"*.h                    # a student's own headers (build-own-header)
-    [ -f "$1" ] && cp "$@" "$sub/"
     [ -f "$dir/MISSING" ] && rm -f "$sub/$(cat "$dir/MISSING")"
 done
 # A file that includes the reference by its absolute path must be refused.
-cp -R "$tmp/reference" "$tmp/subs/hostile-include-reference"
+mkdir "$class/hostile-include-reference"
+cp solutions/part*.c "$class/hostile-include-reference/"
 printf '#include "%s/solutions/part1_image_plane.c"\n' "$root" \
-    >"$tmp/subs/hostile-include-reference/part1_image_plane.c"
+    >"$class/hostile-include-reference/part1_image_plane.c"
 mkdir -p "$tmp/expect/hostile-include-reference"
 printf 'part 1\noutput refused\n' >"$tmp/expect/hostile-include-reference/expect"
 # The same, where the compiler cannot read the file (a kit inside a directory
@@ -215,46 +207,39 @@ printf 'part 1\noutput refused\n' >"$tmp/expect/hostile-include-reference/expect
 # The refusal must not depend on that.
 mkdir -p out/tests/private && chmod 700 out/tests/private
 cp solutions/part1_image_plane.c out/tests/private/secret.c
-cp -R "$tmp/reference" "$tmp/subs/hostile-include-unreadable"
+mkdir "$class/hostile-include-unreadable"
+cp solutions/part*.c "$class/hostile-include-unreadable/"
 printf '#include "%s/out/tests/private/secret.c"\n' "$root" \
-    >"$tmp/subs/hostile-include-unreadable/part1_image_plane.c"
+    >"$class/hostile-include-unreadable/part1_image_plane.c"
 mkdir -p "$tmp/expect/hostile-include-unreadable"
 printf 'part 1\noutput refused\n' >"$tmp/expect/hostile-include-unreadable/expect"
-chmod -R a+rX "$tmp/subs" "$tmp/subs45"
+nsubs=$(ls "$class" | wc -l | tr -d ' ')
+hostile1=$(printf 'p1 <b>"q\047&amp;\001x')
+cp -R "$class/p1-degrees-to-tan" "$class/$hostile1"
+cp -R "$class/p2-no-half" "$class/=50% <i>"
+mkdir "$class/empty-folder"
+chmod -R a+rX "$class"
 
-for class in subs subs45; do
-    conf=$core
-    header=submission,part1,part2,part3a,part3b,hard,total,status
-    if [ "$class" = subs45 ]; then
-        conf=$only45
-        header=submission,part4,part5,hard,total,status
-    fi
-    start=$(date +%s)
-    # The large class one at a time, the other two at once.  Beside the
-    # other lane of make test both cores are busy anyway, and two gradings
-    # at once making processes on both of them cost the 65 submissions
-    # 21.6 CPU-seconds against 14.7 one at a time (12 s against 15 s when
-    # nothing else runs); make test took 72-78 s against 70-75, two runs
-    # each way taken in turn.  signals.sh grades hostile code two at a time.
-    jobs=2
-    [ "$class" = subs ] && jobs=1
-    $grade --all "$tmp/$class" --out "$tmp/grades-$class" --weights "$conf" --jobs $jobs >"$tmp/all.out" 2>&1
-    status=$?
-    elapsed=$(( $(date +%s) - start ))
-    check "grade --all ran (exit $status)" [ "$status" -le 1 ]
-    check "gradebook.csv written" [ -f "$tmp/grades-$class/gradebook.csv" ]
-    check "the gradebook has a column per graded part ($header)" \
-        grep -q "^$header\$" "$tmp/grades-$class/gradebook.csv"
-    # As root each distinct stage file is built once per run (memo.h):
-    # here the reference's files are the same in every submission.
-    if [ "$(id -u)" = 0 ]; then
-        check "as root, grade --all builds identical files once ($(grep -e '^compiled ' "$tmp/all.out"))" \
-            awk '/^compiled [0-9]+ distinct stage files once each, for [0-9]+ files in all$/ {
-                     if ($2 > 0 && $2 < $9) ok = 1 }
-                 END { exit !ok }' "$tmp/all.out"
-    fi
-    echo "   graded $(ls "$tmp/$class" | wc -l | tr -d ' ') submissions in ${elapsed} s ($conf)"
-done
+# Graded one at a time: beside the other lane of make test both cores are
+# busy anyway, and two gradings at once making processes on both of them
+# cost more CPU-seconds than one at a time.
+start=$(date +%s)
+$grade --all "$class" --out "$tmp/grades" --weights "$classconf" --jobs 1 >"$tmp/all.out" 2>&1
+status=$?
+echo "   graded $(ls "$class" | wc -l | tr -d ' ') submissions in $(( $(date +%s) - start )) s"
+check "grade --all ran (exit $status)" [ "$status" -le 1 ]
+check "the gradebook has a column per graded part" \
+    grep -q "^submission,part1,part2,part3a,part3b,part4,part5,hard,total,status\$" "$tmp/grades/gradebook.csv"
+# As root each distinct stage file is built once per run (memo.h): here
+# the reference's files are the same in every submission.
+if [ "$(id -u)" = 0 ]; then
+    check "as root, grade --all builds identical files once ($(grep -e '^compiled ' "$tmp/all.out"))" \
+        awk '/^compiled [0-9]+ distinct stage files once each, for [0-9]+ files in all$/ {
+                 if ($2 > 0 && $2 < $9) ok = 1 }
+             END { exit !ok }' "$tmp/all.out"
+fi
+check_class_page "$tmp/grades" "$classconf" "$tmp/all.out"
+page_renders "$tmp/grades/index.html" "the class page" "$tmp"
 
 # Two gradings at once reaching the same file compile it once: the one that
 # finds the other's entry waits for its object.  A compiler made slow (a
@@ -335,27 +320,26 @@ diagnosis_check() {
             }
         }' "$2" "$3"
 }
-# Every gradebook's rows, read once: "CLASS NAME POINTS..." with the points
-# of Parts 1, 2, 3a, 3b, 4 and 5 ("-" for a part not graded).
-for class in subs subs45; do
-    awk -F, -v class="$class" 'NR == 1 { for (k = 1; k <= NF; k++) col[$k] = k; next }
-        { line = class " " $1
-          split("1 2 3a 3b 4 5", p, " ")
-          for (k = 1; k <= 6; k++) line = line " " ((("part" p[k]) in col) ? $col["part" p[k]] : "-")
-          print line }' "$tmp/grades-$class/gradebook.csv"
-done >"$tmp/points"
-check "every submission has its row in a gradebook" \
-    [ "$(wc -l <"$tmp/points" | tr -d ' ')" -eq "$(ls "$tmp/subs" "$tmp/subs45" | grep -c -v -e '^$' -e ':$')" ]
+# The gradebook's rows of the self-test submissions, read once: "NAME
+# POINTS..." with the points of Parts 1, 2, 3a, 3b, 4 and 5 (the hostile
+# names and the empty folder are the class page's).
+awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) col[$k] = k; next }
+    $1 ~ /^[A-Za-z0-9][A-Za-z0-9._-]*$/ && $1 != "empty-folder" {
+        line = $1
+        split("1 2 3a 3b 4 5", p, " ")
+        for (k = 1; k <= 6; k++) line = line " " $col["part" p[k]]
+        print line }' "$tmp/grades/gradebook.csv" >"$tmp/points"
+check "every submission has its row in the gradebook" [ "$(wc -l <"$tmp/points" | tr -d ' ')" -eq "$nsubs" ]
 # It can fail: the reference fails no hard case.
 if hard_failed "$tmp/ref.json" 3a || hard_failed "$tmp/ref.json" 1; then
     fail "the reference's results show a failed hard case"
 else
     pass
 fi
-while read -r class sname g1 g2 g3a g3b g4 g5; do
+while read -r sname g1 g2 g3a g3b g4 g5; do
     expect="tests/selftest/$sname/expect"
     [ -f "$expect" ] || expect="$tmp/expect/$sname/expect"
-    json="$tmp/grades-$class/$sname.json"
+    json="$tmp/grades/$sname.json"
     core_full=no part="" hardpart=""
     while read -r key rest; do
         case "$key $rest" in
@@ -412,7 +396,7 @@ done <"$tmp/points"
 # skeleton, which passes no test with a hit in it, is told the fact alone.
 tiny="Part 5: hard: tiny triangle far away"
 awk -v name="\"name\": \"$tiny" 'index($0, name) { p = 1 } p && /"output":/ { print; exit }' \
-    "$tmp/grades-subs45/p5-det-epsilon.json" >"$tmp/tiny-epsilon"
+    "$tmp/grades/p5-det-epsilon.json" >"$tmp/tiny-epsilon"
 check "p5-det-epsilon: the far tiny triangles' misses are put down to the epsilon on det" \
     grep -q "hint: *a hit was missed where det is small.*no epsilon on det" "$tmp/tiny-epsilon"
 awk -v name="FAIL  $tiny" 'index($0, name) { p = 1; next } p && /^  (PASS|FAIL)/ { exit } p' \
@@ -425,23 +409,23 @@ check "the skeleton's far tiny triangles: every case answered as a miss, no mist
 # hit as one-sided code would, but passes every test of both sides: the
 # epsilon is named, never the sides (named before the epsilon had a hint).
 check "p4-epsilon: no hint says the plane has two sides" \
-    sh -c "! grep -q 'two sides' '$tmp/grades-subs45/p4-epsilon.json'"
+    sh -c "! grep -q 'two sides' '$tmp/grades/p4-epsilon.json'"
 
 # A case's numbers are shown in the fewest digits that read back as the
 # same double (kit_shortest_double, labs/kit/numtext.c): the test's normal (0.48, 0.6,
 # 0.64) as written, not as %.17g's 0.47999999999999998.
 check "a failing case's input reads n.x = 0.48, n.y = 0.6, n.z = 0.64, not 17 digits" \
-    sh -c "grep -q 'n.x = 0.48, n.y = 0.6, n.z = 0.64' '$tmp/grades-subs45/p4-one-sided.json' &&
-           ! grep -q '0.47999999999999998' '$tmp/grades-subs45/p4-one-sided.json'"
+    sh -c "grep -q 'n.x = 0.48, n.y = 0.6, n.z = 0.64' '$tmp/grades/p4-one-sided.json' &&
+           ! grep -q '0.47999999999999998' '$tmp/grades/p4-one-sided.json'"
 
 # On Linux a part with one student file is built as a shared object that a
 # prebuilt runner loads; GRADE_NO_LOAD=1 links the whole program as
 # elsewhere.  Both ways must give the same grades, link errors included.
 # Each submission below differs from the reference in one part's file, and
-# each part is graded on its own (the classes above check that the other
+# each part is graded on its own (the class above checks that the other
 # parts keep full marks), so each is graded whole on that part alone; the
 # reference itself is graded whole on every part.  Identical files: as root
-# the classes above compiled each distinct file once (memo.h) and graded
+# the class above compiled each distinct file once (memo.h) and graded
 # the reference's files from that one object; here the reference's are
 # compiled for the reference alone, and must keep full marks.
 if [ -x out/build/grader/runner_part1 ]; then
@@ -451,7 +435,7 @@ if [ -x out/build/grader/runner_part1 ]; then
         shift
         mkdir -p "$tmp/parity-$p"
         for sname in "$@"; do
-            cp -R "$tmp/subs/$sname" "$tmp/parity-$p/"
+            cp -R "$class/$sname" "$tmp/parity-$p/"
         done
         chmod -R a+rX "$tmp/parity-$p"
         sed "s/^parts .*/parts $p/" tests/weights.conf >"$tmp/parity-$p.conf"
@@ -459,10 +443,10 @@ if [ -x out/build/grader/runner_part1 ]; then
             --weights "$tmp/parity-$p.conf" --jobs 2 >"$tmp/parity-$p.out" 2>&1
         for sname in "$@"; do
             # The gradebook's row: "name,points,hard,total,status"; the
-            # classes' row has a column per part.
+            # class's row has a column per part.
             got=$(grep "^$sname," "$tmp/grades-parity-$p/gradebook.csv" | cut -d, -f2)
             want=$(awk -F, -v s="$sname" -v col="part$p" 'NR == 1 { for (k = 1; k <= NF; k++) if ($k == col) c = k }
-                                                       $1 == s { print $c }' "$tmp/grades-subs/gradebook.csv")
+                                                       $1 == s { print $c }' "$tmp/grades/gradebook.csv")
             check "$sname: the same Part $p grade linked whole as loaded ($got, loaded $want)" \
                 [ -n "$got" -a "$got" = "$want" ]
         done
@@ -482,7 +466,7 @@ fi
 # Code that works for a test's calls but not for a whole part's in one process:
 # the tests run together fail, and each runs alone (grade --verbose says so).
 for sname in hostile-crash-across-tests hostile-state-across-tests; do
-    $grade --submission "$tmp/subs/$sname" --part 1 --verbose --quiet >"$tmp/$sname.verbose" 2>&1
+    $grade --submission "$class/$sname" --part 1 --verbose --quiet >"$tmp/$sname.verbose" 2>&1
     check "$sname: the tests run together fail, and run alone" \
         grep -q "^  Part 1: the [0-9]* tests together: .*run.* alone" "$tmp/$sname.verbose"
     check "$sname: not every test passed together" \
@@ -491,7 +475,7 @@ done
 # The table marks the hard cases too (one submission is enough to see it),
 # after the core tests, under a heading of their own, and a part with its
 # core points is never told what went wrong.
-$grade --submission "$tmp/subs/rw-rtiow-camera" --part 1 >"$tmp/rw-rtiow-camera.table" 2>&1
+$grade --submission "$class/rw-rtiow-camera" --part 1 >"$tmp/rw-rtiow-camera.table" 2>&1
 check "the table marks a failed hard case [hard]" grep -q "FAIL  Part 1: .*\[hard\]" "$tmp/rw-rtiow-camera.table"
 core_line=$(grep -n '^  PASS  Part 1: hidden: random' "$tmp/rw-rtiow-camera.table" | cut -d: -f1)
 hard_line=$(grep -n '^  Hard cases (extra credit): 1.04 / 2.5$' "$tmp/rw-rtiow-camera.table" | cut -d: -f1)
@@ -500,27 +484,27 @@ check "the hard cases after the core tests, as extra credit (lines ${core_line:-
     sh -c "[ -n '$core_line' ] && [ -n '$hard_line' ] && [ -n '$fail_line' ] &&
            [ '$core_line' -lt '$hard_line' ] && [ '$hard_line' -lt '$fail_line' ]"
 check "a part with its core points is never told what went wrong" \
-    sh -c "! grep -qi 'what went wrong' '$tmp/rw-rtiow-camera.table' '$tmp/grades-subs/rw-rtiow-camera.json'"
+    sh -c "! grep -qi 'what went wrong' '$tmp/rw-rtiow-camera.table' '$tmp/grades/rw-rtiow-camera.json'"
 # The hard-case challenges' answers are the handout's, hidden behind its
 # hint: by default no results file or page gives them (Part 1's
 # complement of the angle, Part 3a's discriminant); with "hints full" in
 # the weights, the cause gives it.
 check "with the default hints, no results file or page gives a hard-case challenge's formula" \
-    sh -c "! grep -rlF -e 'tan(90 - alpha' -e 'f x r|' '$tmp/grades-subs' '$tmp/grades-subs45'"
+    sh -c "! grep -rlF -e 'tan(90 - alpha' -e 'f x r|' '$tmp/grades'"
 sed 's/^hints .*/hints full/' "$core" >"$tmp/full-hints.conf"
 for sname in rw-rtiow-camera textbook; do
-    $grade --submission "$tmp/subs/$sname" --weights "$tmp/full-hints.conf" --results "$tmp/full-$sname.json" \
+    $grade --submission "$class/$sname" --weights "$tmp/full-hints.conf" --results "$tmp/full-$sname.json" \
         --quiet >/dev/null 2>&1
 done
 check "with hints full, the causes give the challenges' formulas" \
     sh -c "grep -qF 'tan(90 - alpha / 2)' '$tmp/full-rw-rtiow-camera.json' && grep -qF 'A R^2 - |f x r|^2' '$tmp/full-textbook.json'"
 check "forged results: the grader's own score stands" \
-    grep -q '"score": *[0-9.]*,' "$tmp/grades-subs/hostile-forge-results.json"
-check "forged results: no score of 1000 anywhere" sh -c "! grep -rq '\"score\": 1000' '$tmp/grades-subs'"
+    grep -q '"score": *[0-9.]*,' "$tmp/grades/hostile-forge-results.json"
+check "forged results: no score of 1000 anywhere" sh -c "! grep -rq '\"score\": 1000' '$tmp/grades'"
 # grade --all writes gradebook.csv, the class page and causes.csv, and, per
 # submission, NAME.json and NAME.html (the report page).
 check "forged results: nothing written beside the submissions" \
-    sh -c "[ \$(ls '$tmp/grades-subs' | wc -l) -eq \$(( 2 * \$(ls '$tmp/subs' | wc -l) + 3 )) ]"
+    sh -c "[ \$(ls '$tmp/grades' | wc -l) -eq \$(( 2 * \$(ls '$class' | wc -l) + 3 )) ]"
 
 # Folder names a spreadsheet would take for a formula, or that hold a
 # comma, are written so that it reads them as text; folders whose names
@@ -704,12 +688,12 @@ done
 $grade --submission solutions --format prairielearn --results "$tmp/pl-ref.json" --quiet >/dev/null 2>&1
 check "PrairieLearn: the reference scores 1, gradable" \
     sh -c "grep -q '\"score\": 1,\$' '$tmp/pl-ref.json' && grep -q '\"gradable\": true' '$tmp/pl-ref.json'"
-$grade --submission "$tmp/subs/p1-no-factor-2" --format prairielearn --results "$tmp/pl-bad.json" --quiet \
+$grade --submission "$class/p1-no-factor-2" --format prairielearn --results "$tmp/pl-bad.json" --quiet \
     >/dev/null 2>&1
 check "PrairieLearn: Part 1 with its factor 2 missing scores between 0 and 1, and says what went wrong" \
     sh -c "grep -q '\"score\": 0\\.[0-9]*,\$' '$tmp/pl-bad.json' && grep -q 'What went wrong' '$tmp/pl-bad.json'"
 : >"$tmp/classroom.out"
-$grade --submission "$tmp/subs/p1-no-factor-2" --part 1 --classroom "$tmp/classroom.out" --quiet >/dev/null 2>&1
+$grade --submission "$class/p1-no-factor-2" --part 1 --classroom "$tmp/classroom.out" --quiet >/dev/null 2>&1
 check "Classroom: one line per Part 1 test and one for the hard cases, each its name = base64" \
     sh -c "[ \$(grep -c '^part1test' '$tmp/classroom.out') -ge 5 ] && grep -q '^hard=' '$tmp/classroom.out' &&
            ! grep -v -q -E '^(part1test[0-9]+|hard)=[A-Za-z0-9+/]+=*\$' '$tmp/classroom.out'"
