@@ -159,7 +159,7 @@ $(PROGRAMS:%=$(BUILD)/bin/%): | $(BUILD)/bin/.
 $(BUILD)/bin/compare: $(BUILD)/kit/compare_main.o $(BUILD)/kit/libkit.a
 $(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
 # The report page's checker (tests/suites/report.sh).
-$(BUILD)/bin/htmlcheck: $(BUILD)/tools/htmlcheck_main.o
+$(BUILD)/bin/htmlcheck: $(BUILD)/tools/htmlcheck_main.o $(BUILD)/tools/libtools.a
 # The oracle's programs: the public tests' values (commit them), accuracy tables.
 $(BUILD)/bin/gentests: $(BUILD)/oracle/gentests_main.o $(BUILD)/oracle/liboracle.a \
                        $(BUILD)/grader/libgrader.a $(BUILD)/kit/libkit.a

@@ -33,6 +33,7 @@
 #include <string.h>
 #include <strings.h>
 #include <unistd.h>
+#include "base64.h"
 
 #define MAX_DEPTH 256
 #define MAX_IDS   20000
@@ -83,36 +84,6 @@ static bool is_void(const char *name)
     return false;
 }
 
-/* Whether s[0 .. n-1] is base64 (with = padding at the end only). */
-static bool base64_ok(const char *s, size_t n, unsigned char *first, size_t nfirst)
-{
-    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    if (n == 0 || n % 4 != 0)
-        return false;
-    size_t out = 0;
-    unsigned acc = 0;
-    int bits = 0;
-    for (size_t k = 0; k < n; k++) {
-        const char *d = strchr(digits, s[k]);
-        if (s[k] == '=') {
-            if (k < n - 2 || (k == n - 2 && s[n - 1] != '='))
-                return false;
-            continue;
-        }
-        if (!d || !s[k])
-            return false;
-        acc = (acc << 6) | (unsigned)(d - digits);
-        bits += 6;
-        if (bits >= 8) {
-            bits -= 8;
-            if (out < nfirst)
-                first[out] = (unsigned char)(acc >> bits);
-            out++;
-        }
-    }
-    return true;
-}
-
 static char *ids[MAX_IDS];
 static size_t id_at[MAX_IDS];
 static int nids;
@@ -156,14 +127,16 @@ static void check_address(const char *attr, const char *v, size_t at)
             problem(at, "a data: URI without a comma", attr);
             return;
         }
-        size_t meta = (size_t)(comma - v);
-        bool b64 = meta >= 7 && strncmp(comma - 7, ";base64", 7) == 0;
-        unsigned char head[8] = { 0 };
-        if (b64 && !base64_ok(comma + 1, strlen(comma + 1), head, sizeof head))
+        size_t meta = (size_t)(comma - v), n = 0;
+        if (meta < 7 || strncmp(comma - 7, ";base64", 7) != 0)
+            return;
+        char err[100];
+        unsigned char *data = base64_decode(comma + 1, strlen(comma + 1), &n, err, sizeof err);
+        if (!data)
             problem(at, "a data: URI whose base64 is not valid", attr);
-        else if (b64 && strncmp(v, "data:image/png", 14) == 0
-                 && memcmp(head, "\x89PNG\r\n\x1a\n", 8) != 0)
+        else if (strncmp(v, "data:image/png", 14) == 0 && (n < 8 || memcmp(data, "\x89PNG\r\n\x1a\n", 8) != 0))
             problem(at, "a data: URI that says PNG but is not one", attr);
+        free(data);
         return;
     }
     if (v[0] == '#') {
@@ -221,6 +194,223 @@ static void check_text_refs(size_t from, size_t to)
     }
 }
 
+
+/* The elements open, innermost last, and what the page holds. */
+static char stack[MAX_DEPTH][32];
+static size_t stack_at[MAX_DEPTH];
+static int depth, svg_depth, figures, images, elements;
+
+/* A tag as read: <name ...>, </name>, or <name .../>. */
+typedef struct {
+    char name[32];
+    size_t at;                  /* where its < is */
+    bool closing, self_close, is_case;
+} Tag;
+
+/* Checks the attribute an="v" of tag (v may be changed). */
+static void check_attribute(Tag *tag, const char *an, char *v)
+{
+    if (tag->closing)
+        problem(tag->at, "an end tag with attributes", tag->name);
+    if (strncmp(an, "on", 2) == 0)
+        problem(tag->at, "an event attribute (JavaScript)", an);
+    if (find_ci(v, "javascript:"))
+        problem(tag->at, "a javascript: address", an);
+    if (strcmp(an, "id") == 0) {
+        for (int q = 0; q < nids; q++)
+            if (strcmp(ids[q], v) == 0) {
+                char msg[200];
+                snprintf(msg, sizeof msg, "%.60s (first at line %d)", v, line_of(id_at[q]));
+                problem(tag->at, "an id used twice", msg);
+            }
+        if (nids < MAX_IDS) {
+            ids[nids] = strdup(v);
+            id_at[nids++] = tag->at;
+        }
+    }
+    if (strcmp(an, "src") == 0 || strcmp(an, "href") == 0 || strcmp(an, "xlink:href") == 0) {
+        check_address(an, v, tag->at);
+        images += strcmp(tag->name, "img") == 0 || strcmp(tag->name, "image") == 0;
+    }
+    if (strcmp(an, "class") == 0 && strcmp(tag->name, "figure") == 0)
+        for (char *w = strtok(v, " \t\n"); w; w = strtok(NULL, " \t\n"))
+            tag->is_case = tag->is_case || strcmp(w, "case") == 0;
+}
+
+/* Reads tag's attributes from text[p] to its > (or />); returns the place
+ * after it, or 0 when the tag is broken and the page cannot be read on. */
+static size_t read_attributes(Tag *tag, size_t p)
+{
+    char seen[64][40];
+    int nseen = 0;
+    while (p < len) {
+        while (p < len && isspace((unsigned char)text[p]))
+            p++;
+        if (text[p] == '>')
+            return p + 1;
+        if (text[p] == '/' && text[p + 1] == '>') {
+            tag->self_close = true;
+            return p + 2;
+        }
+        char an[40];
+        size_t al = 0;
+        while (p < len && !isspace((unsigned char)text[p]) && text[p] != '=' && text[p] != '>'
+               && text[p] != '/' && al < 39)
+            an[al++] = (char)tolower((unsigned char)text[p++]);
+        an[al] = '\0';
+        if (al == 0) {
+            problem(p, "a broken tag", tag->name);
+            return 0;
+        }
+        for (int q = 0; q < nseen; q++)
+            if (strcmp(seen[q], an) == 0)
+                problem(p, "an attribute given twice", an);
+        if (nseen < 64)
+            strcpy(seen[nseen++], an);
+        if (text[p] != '=') {
+            problem(p, "an attribute without a quoted value", an);
+            continue;
+        }
+        char quote = text[++p];
+        if (quote != '"' && quote != '\'') {
+            problem(p, "an attribute value that is not quoted", an);
+            while (p < len && !isspace((unsigned char)text[p]) && text[p] != '>')
+                p++;
+            continue;
+        }
+        const char *end = memchr(text + p + 1, quote, len - p - 1);
+        if (!end) {
+            problem(p, "an attribute value that never ends", an);
+            return 0;
+        }
+        size_t vfrom = p + 1, vto = (size_t)(end - text);
+        check_text_refs(vfrom, vto);
+        char *v = strndup(text + vfrom, vto - vfrom);
+        if (v)
+            check_attribute(tag, an, v);
+        free(v);
+        p = vto + 1;
+    }
+    return p;
+}
+
+/* An end tag: closes the element open innermost, or says it is out of
+ * order and closes up to the element it names, if one is open. */
+static void close_element(const Tag *tag)
+{
+    if (depth == 0 || strcmp(stack[depth - 1], tag->name) != 0) {
+        char msg[120];
+        snprintf(msg, sizeof msg, "</%s> where %s%s%s is open", tag->name, depth ? "<" : "nothing",
+                 depth ? stack[depth - 1] : "", depth ? ">" : "");
+        problem(tag->at, "an end tag out of order", msg);
+        for (int q = depth - 1; q >= 0; q--)
+            if (strcmp(stack[q], tag->name) == 0) {
+                depth = q;
+                break;
+            }
+    } else {
+        depth--;
+    }
+    if (strcmp(tag->name, "svg") == 0 && svg_depth > 0)
+        svg_depth--;
+}
+
+/* An element of raw text (style, script, textarea; title outside SVG):
+ * returns the place after its end tag, or 0 when it never ends.  A style
+ * sheet must load nothing. */
+static size_t skip_raw_text(const Tag *tag, size_t k)
+{
+    char endtag[40];
+    snprintf(endtag, sizeof endtag, "</%s>", tag->name);
+    const char *end = find_ci(text + k, endtag);
+    if (!end) {
+        problem(tag->at, "an element that never ends", tag->name);
+        return 0;
+    }
+    if (strcmp(tag->name, "style") == 0) {
+        char *css = strndup(text + k, (size_t)(end - text) - k);
+        if (css && (find_ci(css, "url(") || find_ci(css, "@import") || strstr(css, "//")))
+            problem(tag->at, "the style sheet loads something (url(), @import or //)", NULL);
+        free(css);
+    }
+    return (size_t)(end - text) + strlen(endtag);
+}
+
+/* The tag at text[k], which is '<': reads and checks it; returns the place
+ * after it (after its raw text, for style and the like), or 0 when the
+ * page cannot be read on. */
+static size_t read_tag(size_t k)
+{
+    Tag tag = { .at = k, .closing = text[k + 1] == '/' };
+    size_t p = k + 1 + tag.closing, nl = 0;
+    while (p < len && (isalnum((unsigned char)text[p]) || text[p] == '-' || text[p] == ':') && nl < 31)
+        tag.name[nl++] = (char)tolower((unsigned char)text[p++]);
+    tag.name[nl] = '\0';
+    if (nl == 0) {
+        problem(k, "a < that does not start a tag (write &lt;)", NULL);
+        return k + 1;
+    }
+    p = read_attributes(&tag, p);
+    if (p == 0)
+        return 0;
+    if (strcmp(tag.name, "script") == 0)
+        problem(k, "a <script> (the page must need no JavaScript)", NULL);
+    if (tag.closing) {
+        close_element(&tag);
+        return p;
+    }
+    elements++;
+    figures += strcmp(tag.name, "figure") == 0 && tag.is_case;
+    if (tag.self_close) {
+        if (!svg_depth && !is_void(tag.name))
+            problem(k, "a non-void element closed with />, which HTML ignores", tag.name);
+        return p;
+    }
+    if (!svg_depth && is_void(tag.name))
+        return p;
+    if (strcmp(tag.name, "svg") == 0)
+        svg_depth++;
+    if (strcmp(tag.name, "style") == 0 || strcmp(tag.name, "script") == 0 || strcmp(tag.name, "textarea") == 0
+        || (strcmp(tag.name, "title") == 0 && !svg_depth))
+        return skip_raw_text(&tag, p);
+    if (depth == MAX_DEPTH) {
+        problem(k, "elements nested too deep", tag.name);
+        return 0;
+    }
+    snprintf(stack[depth], sizeof stack[depth], "%s", tag.name);
+    stack_at[depth++] = k;
+    return p;
+}
+
+/* The page at path, whole and NUL-terminated, in text and len. */
+static char *read_page(void)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        fprintf(stderr, "htmlcheck: cannot open %s\n", path);
+        return NULL;
+    }
+    size_t cap = 1 << 20, n;
+    char *buf = malloc(cap + 1);
+    len = 0;
+    while (buf && (n = fread(buf + len, 1, cap - len, f)) > 0) {
+        len += n;
+        if (len == cap) {
+            char *grown = realloc(buf, 2 * cap + 1);
+            if (!grown)
+                free(buf);
+            buf = grown;
+            cap *= 2;
+        }
+    }
+    fclose(f);
+    if (!buf)
+        fprintf(stderr, "htmlcheck: out of memory\n");
+    else
+        buf[len] = '\0';
+    return buf;
+}
+
 /* Checks the page named; the exit status says whether it passed. */
 int main(int argc, char **argv)
 {
@@ -229,34 +419,9 @@ int main(int argc, char **argv)
         return 2;
     }
     path = argv[1];
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        fprintf(stderr, "htmlcheck: cannot open %s\n", path);
+    char *buf = read_page();
+    if (!buf)
         return 1;
-    }
-    size_t cap = 1 << 20;
-    char *buf = malloc(cap + 1);
-    size_t n;
-    len = 0;
-    while (buf && (n = fread(buf + len, 1, cap - len, f)) > 0) {
-        len += n;
-        if (len == cap) {
-            char *nb = realloc(buf, 2 * cap + 1);
-            if (!nb) {
-                free(buf);
-                buf = NULL;
-                break;
-            }
-            buf = nb;
-            cap *= 2;
-        }
-    }
-    fclose(f);
-    if (!buf) {
-        fprintf(stderr, "htmlcheck: out of memory\n");
-        return 1;
-    }
-    buf[len] = '\0';
     text = buf;
     snprintf(dir, sizeof dir, "%s", path);
     char *slash = strrchr(dir, '/');
@@ -265,187 +430,29 @@ int main(int argc, char **argv)
     else
         snprintf(dir, sizeof dir, ".");
 
-    if (strncasecmp(text, "<!DOCTYPE html>", 15) != 0)
+    size_t k = 0;
+    if (strncasecmp(text, "<!DOCTYPE html>", 15) == 0)
+        k = 15;
+    else
         problem(0, "the page does not start with <!DOCTYPE html>", NULL);
-    char stack[MAX_DEPTH][32];
-    size_t stack_at[MAX_DEPTH];
-    int depth = 0, svg_depth = 0, figures = 0, images = 0, elements = 0;
-    size_t k = strncasecmp(text, "<!DOCTYPE html>", 15) == 0 ? 15 : 0, text_from = k;
+    size_t text_from = k;
     while (k < len) {
         if (text[k] != '<') {
             k++;
             continue;
         }
         check_text_refs(text_from, k);
-        size_t at = k;
         if (strncmp(text + k, "<!--", 4) == 0) {
             const char *end = strstr(text + k + 4, "-->");
             if (!end) {
-                problem(at, "a comment that never ends", NULL);
+                problem(k, "a comment that never ends", NULL);
                 break;
             }
             k = (size_t)(end - text) + 3;
-            text_from = k;
-            continue;
-        }
-        bool closing = text[k + 1] == '/';
-        size_t p = k + 1 + closing;
-        char name[32];
-        size_t nl = 0;
-        while (p < len && (isalnum((unsigned char)text[p]) || text[p] == '-' || text[p] == ':') && nl < 31)
-            name[nl++] = (char)tolower((unsigned char)text[p++]);
-        name[nl] = '\0';
-        if (nl == 0) {
-            problem(at, "a < that does not start a tag (write &lt;)", NULL);
-            k++;
-            continue;
-        }
-        /* the attributes */
-        char attrs[64][40];
-        int nattr = 0;
-        bool self_close = false, is_case = false, broken = false;
-        while (p < len) {
-            while (p < len && isspace((unsigned char)text[p]))
-                p++;
-            if (text[p] == '>') {
-                p++;
-                break;
-            }
-            if (text[p] == '/' && text[p + 1] == '>') {
-                self_close = true;
-                p += 2;
-                break;
-            }
-            char an[40];
-            size_t al = 0;
-            while (p < len && !isspace((unsigned char)text[p]) && text[p] != '=' && text[p] != '>'
-                   && text[p] != '/' && al < 39)
-                an[al++] = (char)tolower((unsigned char)text[p++]);
-            an[al] = '\0';
-            if (al == 0) {
-                problem(p, "a broken tag", name);
-                broken = true;
-                break;
-            }
-            for (int q = 0; q < nattr; q++)
-                if (strcmp(attrs[q], an) == 0)
-                    problem(p, "an attribute given twice", an);
-            if (nattr < 64)
-                strcpy(attrs[nattr++], an);
-            if (text[p] != '=') {
-                problem(p, "an attribute without a quoted value", an);
-                continue;
-            }
-            p++;
-            char quote = text[p];
-            if (quote != '"' && quote != '\'') {
-                problem(p, "an attribute value that is not quoted", an);
-                while (p < len && !isspace((unsigned char)text[p]) && text[p] != '>')
-                    p++;
-                continue;
-            }
-            const char *end = memchr(text + p + 1, quote, len - p - 1);
-            if (!end) {
-                problem(p, "an attribute value that never ends", an);
-                broken = true;
-                break;
-            }
-            size_t vfrom = p + 1, vto = (size_t)(end - text);
-            check_text_refs(vfrom, vto);
-            char *v = strndup(text + vfrom, vto - vfrom);
-            if (closing)
-                problem(at, "an end tag with attributes", name);
-            if (strncmp(an, "on", 2) == 0)
-                problem(at, "an event attribute (JavaScript)", an);
-            if (find_ci(v, "javascript:"))
-                problem(at, "a javascript: address", an);
-            if (strcmp(an, "id") == 0) {
-                for (int q = 0; q < nids; q++)
-                    if (strcmp(ids[q], v) == 0) {
-                        char msg[200];
-                        snprintf(msg, sizeof msg, "%.60s (first at line %d)", v, line_of(id_at[q]));
-                        problem(at, "an id used twice", msg);
-                    }
-                if (nids < MAX_IDS) {
-                    ids[nids] = strdup(v);
-                    id_at[nids++] = at;
-                }
-            }
-            if (strcmp(an, "src") == 0 || strcmp(an, "href") == 0 || strcmp(an, "xlink:href") == 0) {
-                check_address(an, v, at);
-                if (strcmp(name, "img") == 0 || strcmp(name, "image") == 0)
-                    images++;
-            }
-            if (strcmp(an, "class") == 0 && strcmp(name, "figure") == 0) {
-                /* the words of the class */
-                for (char *w = strtok(v, " \t\n"); w; w = strtok(NULL, " \t\n"))
-                    is_case = is_case || strcmp(w, "case") == 0;
-            }
-            free(v);
-            p = vto + 1;
-        }
-        if (broken)
+        } else if ((k = read_tag(k)) == 0) {
             break;
-        k = p;
+        }
         text_from = k;
-        if (strcmp(name, "script") == 0)
-            problem(at, "a <script> (the page must need no JavaScript)", NULL);
-        if (closing) {
-            if (depth == 0 || strcmp(stack[depth - 1], name) != 0) {
-                char msg[120];
-                snprintf(msg, sizeof msg, "</%s> where %s%s%s is open", name, depth ? "<" : "nothing",
-                         depth ? stack[depth - 1] : "", depth ? ">" : "");
-                problem(at, "an end tag out of order", msg);
-                /* recover: pop to the matching element if there is one */
-                for (int q = depth - 1; q >= 0; q--)
-                    if (strcmp(stack[q], name) == 0) {
-                        depth = q;
-                        break;
-                    }
-            } else {
-                depth--;
-            }
-            if (strcmp(name, "svg") == 0 && svg_depth > 0)
-                svg_depth--;
-            continue;
-        }
-        elements++;
-        figures += strcmp(name, "figure") == 0 && is_case;
-        if (self_close) {
-            if (!svg_depth && !is_void(name))
-                problem(at, "a non-void element closed with />, which HTML ignores", name);
-            continue;
-        }
-        if (!svg_depth && is_void(name))
-            continue;
-        if (strcmp(name, "svg") == 0)
-            svg_depth++;
-        /* raw text: everything up to the end tag */
-        if (strcmp(name, "style") == 0 || strcmp(name, "script") == 0 || strcmp(name, "textarea") == 0
-            || (strcmp(name, "title") == 0 && !svg_depth)) {
-            char endtag[40];
-            snprintf(endtag, sizeof endtag, "</%s>", name);
-            const char *end = find_ci(text + k, endtag);
-            if (!end) {
-                problem(at, "an element that never ends", name);
-                break;
-            }
-            if (strcmp(name, "style") == 0) {
-                char *css = strndup(text + k, (size_t)(end - text) - k);
-                if (find_ci(css, "url(") || find_ci(css, "@import") || strstr(css, "//"))
-                    problem(at, "the style sheet loads something (url(), @import or //)", NULL);
-                free(css);
-            }
-            k = (size_t)(end - text) + strlen(endtag);
-            text_from = k;
-            continue;
-        }
-        if (depth == MAX_DEPTH) {
-            problem(at, "elements nested too deep", name);
-            break;
-        }
-        snprintf(stack[depth], sizeof stack[depth], "%s", name);
-        stack_at[depth++] = at;
     }
     check_text_refs(text_from, len);
     for (int q = depth - 1; q >= 0; q--)
