@@ -294,6 +294,106 @@ static bool take_text(char *dst, size_t n, char *s)
     return true;
 }
 
+/* A line "test PART KIND GROUP WEIGHT": a new test in list, in *t; NULL,
+ * or what is wrong. */
+static const char *read_test_line(TestList *list, const char *p, bool hidden, Test **t)
+{
+    char part[8], kind[16], group[8];
+    double weight;
+    if (sscanf(p, "%7s %15s %7s %lf", part, kind, group, &weight) != 4)
+        return "test needs: part kind group weight";
+    int pt = part_from_label(part), kd = -1;
+    for (int k = 0; k < NKINDS; k++)
+        if (strcmp(kind, kind_names[k]) == 0)
+            kd = k;
+    if (pt < 0 || kd < 0 || (strcmp(group, "core") && strcmp(group, "hard")) ||
+        !(weight > 0 && weight <= TEST_MAX_WEIGHT))
+        return "bad part, kind, group or weight (more than 0, at most 1000000)";
+    *t = testlist_add(list, pt, (Kind)kd, "");
+    (*t)->hard = strcmp(group, "hard") == 0;
+    (*t)->hidden = hidden;
+    (*t)->weight = weight;
+    return NULL;
+}
+
+/* A line "case IN | WANT | TOL | ALT | FLAGS" of t; NULL, or what is wrong. */
+static const char *read_case_line(Test *t, char *p, Case **last)
+{
+    int nin = kind_in[t->kind], nout = kind_out[t->kind];
+    Case *c = *last = test_add_case(t);
+    double flags;
+    if (get_numbers(&p, c->in, nin) || get_numbers(&p, c->want, nout) || get_numbers(&p, c->tol, nout) ||
+        get_numbers(&p, c->alt, nout) || get_numbers(&p, &flags, 1))
+        return "case needs: inputs | wanted | tolerances | alternatives | flags";
+    if (flags != 0 && flags != CASE_EITHER_HIT)
+        return "case flags must be 0, or 1 (a hit or a miss both accepted)";
+    c->flags = (unsigned)flags;
+    return NULL;
+}
+
+/* A line "nx N": the width of a render test's image; NULL, or what is wrong. */
+static const char *read_nx_line(Test *t, const char *p)
+{
+    char *q;
+    errno = 0;
+    long nx = strtol(p, &q, 10);
+    while (*q == ' ' || *q == '\t' || *q == '\r' || *q == '\n')
+        q++;
+    if (errno || q == p || *q || nx < 1 || nx > TEST_MAX_NX)
+        return "nx needs a whole number from 1 to 16384";
+    t->image_nx = (int)nx;
+    return NULL;
+}
+
+/* A line inside test *t (after "test", up to "end"); NULL, or what is
+ * wrong.  Sets *t to NULL at its end; *last is its latest case. */
+static const char *read_body_line(Test **t, char *p, Case **last)
+{
+    double v[9];
+    if (strncmp(p, "name ", 5) == 0)
+        return take_text((*t)->name, sizeof (*t)->name, p + 5) ? NULL : "name longer than 127 bytes";
+    if (strncmp(p, "note ", 5) == 0)
+        return take_text((*t)->note, sizeof (*t)->note, p + 5) ? NULL : "note longer than 159 bytes";
+    if (strncmp(p, "background", 10) == 0) {
+        p += 10;
+        return get_numbers(&p, (*t)->background, 3) ? "background needs 3 numbers" : NULL;
+    }
+    if (strncmp(p, "sphere", 6) == 0) {
+        p += 6;
+        if (get_numbers(&p, v, 7))
+            return "sphere needs 7 numbers";
+        test_add_sphere(*t, v, v[3], v + 4);
+        return NULL;
+    }
+    if (strncmp(p, "triangle", 8) == 0 && (*t)->kind == KIND_MESH) {
+        p += 8;
+        if (get_numbers(&p, v, 9))
+            return "triangle needs 9 numbers";
+        test_add_triangle(*t, v);
+        return NULL;
+    }
+    if (strncmp(p, "nx ", 3) == 0)
+        return read_nx_line(*t, p + 3);
+    if (strncmp(p, "case", 4) == 0)
+        return read_case_line(*t, p + 4, last);
+    if (strncmp(p, "hint", 4) == 0) {
+        if (!*last || (*last)->nhints == CASE_MAX_HINTS)
+            return "hint without a case, or too many hints";
+        Hint *h = case_add_hint(*last);
+        p += 4;
+        if (get_numbers(&p, h->out, kind_out[(*t)->kind]))
+            return "hint needs the mistake's outputs, then | and its text";
+        return take_text(h->text, sizeof h->text, p) ? NULL : "hint text longer than 159 bytes";
+    }
+    if (strncmp(p, "end", 3) == 0) {
+        if ((*t)->ncases == 0)
+            return "a test without cases";
+        *t = NULL;
+        return NULL;
+    }
+    return "unknown line";
+}
+
 int tests_read(TestList *list, const char *path, bool hidden, char *err, size_t errlen)
 {
     FILE *f = fopen(path, "r");
@@ -303,11 +403,11 @@ int tests_read(TestList *list, const char *path, bool hidden, char *err, size_t 
     }
     char *line = NULL;
     size_t cap = 0;
-    int lineno = 0, status = 0;
+    int lineno = 0;
     Test *t = NULL;
     Case *last = NULL;
-#define BAD(msg) do { snprintf(err, errlen, "%s:%d: %s", path, lineno, msg); status = -1; goto done; } while (0)
-    while (getline(&line, &cap, f) > 0) {
+    const char *wrong = NULL;
+    while (!wrong && getline(&line, &cap, f) > 0) {
         lineno++;
         char *p = line;
         while (*p == ' ')
@@ -315,93 +415,17 @@ int tests_read(TestList *list, const char *path, bool hidden, char *err, size_t 
         if (*p == '#' || *p == '\n' || *p == '\0')
             continue;
         if (strncmp(p, "test ", 5) == 0) {
-            char part[8], kind[16], group[8];
-            double weight;
-            if (t)
-                BAD("test inside a test (missing end)");
-            if (sscanf(p + 5, "%7s %15s %7s %lf", part, kind, group, &weight) != 4)
-                BAD("test needs: part kind group weight");
-            int pt = part_from_label(part), kd = -1;
-            for (int k = 0; k < NKINDS; k++)
-                if (strcmp(kind, kind_names[k]) == 0)
-                    kd = k;
-            if (pt < 0 || kd < 0 || (strcmp(group, "core") && strcmp(group, "hard")) ||
-                !(weight > 0 && weight <= TEST_MAX_WEIGHT))
-                BAD("bad part, kind, group or weight (more than 0, at most 1000000)");
-            t = testlist_add(list, pt, (Kind)kd, "");
-            t->hard = strcmp(group, "hard") == 0;
-            t->hidden = hidden;
-            t->weight = weight;
+            wrong = t ? "test inside a test (missing end)" : read_test_line(list, p + 5, hidden, &t);
             last = NULL;
-            continue;
-        }
-        if (!t)
-            BAD("expected 'test'");
-        if (strncmp(p, "name ", 5) == 0) {
-            if (!take_text(t->name, sizeof t->name, p + 5))
-                BAD("name longer than 127 bytes");
-        } else if (strncmp(p, "note ", 5) == 0) {
-            if (!take_text(t->note, sizeof t->note, p + 5))
-                BAD("note longer than 159 bytes");
-        } else if (strncmp(p, "background", 10) == 0) {
-            p += 10;
-            if (get_numbers(&p, t->background, 3))
-                BAD("background needs 3 numbers");
-        } else if (strncmp(p, "sphere", 6) == 0) {
-            double v[7];
-            p += 6;
-            if (get_numbers(&p, v, 7))
-                BAD("sphere needs 7 numbers");
-            test_add_sphere(t, v, v[3], v + 4);
-        } else if (strncmp(p, "triangle", 8) == 0 && t->kind == KIND_MESH) {
-            double v[9];
-            p += 8;
-            if (get_numbers(&p, v, 9))
-                BAD("triangle needs 9 numbers");
-            test_add_triangle(t, v);
-        } else if (strncmp(p, "nx ", 3) == 0) {
-            char *q;
-            errno = 0;
-            long nx = strtol(p + 3, &q, 10);
-            while (*q == ' ' || *q == '\t' || *q == '\r' || *q == '\n')
-                q++;
-            if (errno || q == p + 3 || *q || nx < 1 || nx > TEST_MAX_NX)
-                BAD("nx needs a whole number from 1 to 16384");
-            t->image_nx = (int)nx;
-        } else if (strncmp(p, "case", 4) == 0) {
-            int nin = kind_in[t->kind], nout = kind_out[t->kind];
-            last = test_add_case(t);
-            p += 4;
-            double flags;
-            if (get_numbers(&p, last->in, nin) || get_numbers(&p, last->want, nout) ||
-                get_numbers(&p, last->tol, nout) || get_numbers(&p, last->alt, nout) ||
-                get_numbers(&p, &flags, 1))
-                BAD("case needs: inputs | wanted | tolerances | alternatives | flags");
-            if (flags != 0 && flags != CASE_EITHER_HIT)
-                BAD("case flags must be 0, or 1 (a hit or a miss both accepted)");
-            last->flags = (unsigned)flags;
-        } else if (strncmp(p, "hint", 4) == 0) {
-            if (!last || last->nhints == CASE_MAX_HINTS)
-                BAD("hint without a case, or too many hints");
-            Hint *h = case_add_hint(last);
-            p += 4;
-            if (get_numbers(&p, h->out, kind_out[t->kind]))
-                BAD("hint needs the mistake's outputs, then | and its text");
-            if (!take_text(h->text, sizeof h->text, p))
-                BAD("hint text longer than 159 bytes");
-        } else if (strncmp(p, "end", 3) == 0) {
-            if (t->ncases == 0)
-                BAD("a test without cases");
-            t = NULL;
         } else {
-            BAD("unknown line");
+            wrong = t ? read_body_line(&t, p, &last) : "expected 'test'";
         }
     }
-    if (t)
-        BAD("missing end at the end of the file");
-done:
-#undef BAD
+    if (!wrong && t)
+        wrong = "missing end at the end of the file";
+    if (wrong)
+        snprintf(err, errlen, "%s:%d: %s", path, lineno, wrong);
     free(line);
     fclose(f);
-    return status;
+    return wrong ? -1 : 0;
 }
