@@ -49,6 +49,59 @@ static bool either_word(const char *line, const char *a, const char *b, bool *fi
     return true;
 }
 
+/* A setting, its keyword word the line's first: NULL when it is read into
+ * cfg, else what was expected (in wanted, of size n, when it is made up). */
+static const char *read_setting(GradeConfig *cfg, const char *line, const char *word, char *wanted, size_t n)
+{
+    char label[8];
+    double x = 0, hard = 0;
+    unsigned long long seed = 0;
+    long kib = 0;
+    int used = 0;               /* where the line's words ended: only blanks may follow */
+    if (strcmp(word, "part") == 0) {
+        if (sscanf(line, " part %7s core %lf hard %lf %n", label, &x, &hard, &used) != 3 || used == 0 ||
+            line[used] || part_from_label(label) < 0 || x < 0 || hard < 0 || !isfinite(x + hard))
+            return "'part P core N hard M': P one of 1 2 3a 3b 4 5, N and M points, 0 or more";
+        cfg->core[part_from_label(label)] = x;
+        cfg->hard[part_from_label(label)] = hard;
+    } else if (strcmp(word, "hard") == 0) {
+        if (!either_word(line, "bonus", "core", &cfg->hard_is_bonus))
+            return "'hard bonus' or 'hard core'";
+    } else if (strcmp(word, "hints") == 0) {
+        bool challenge;
+        if (!either_word(line, "challenge", "full", &challenge))
+            return "'hints challenge' or 'hints full'";
+        cfg->full_hints = !challenge;
+    } else if (strcmp(word, "timeout") == 0) {
+        if (sscanf(line, " timeout %lf %n", &x, &used) != 1 || used == 0 || line[used] || !(x > 0 && x <= 600))
+            return "'timeout S': S seconds, more than 0 and at most 600";
+        cfg->timeout = x;
+    } else if (strcmp(word, "part-time") == 0) {
+        if (sscanf(line, " part-time %lf %n", &x, &used) != 1 || used == 0 || line[used] ||
+            !(x > 0 && x <= 3600))
+            return "'part-time S': S seconds, more than 0 and at most 3600";
+        cfg->part_time = x;
+    } else if (strcmp(word, "output") == 0) {
+        if (sscanf(line, " output %ld %n", &kib, &used) != 1 || used == 0 || line[used] || kib < 1 ||
+            kib > CONFIG_OUTPUT_KIB_MAX) {
+            snprintf(wanted, n, "'output KIB': KIB a whole number of KiB from 1 to %d", CONFIG_OUTPUT_KIB_MAX);
+            return wanted;
+        }
+        cfg->output_kib = kib;
+    } else if (strcmp(word, "seed") == 0) {
+        if (sscanf(line, " seed %llu %n", &seed, &used) != 1 || used == 0 || line[used] || strchr(line, '-'))
+            return "'seed N': N a whole number, 0 or more";
+        cfg->seed = seed;
+    } else if (strcmp(word, "parts") == 0) {
+        if (!parse_parts(line, cfg->parts))
+            return "'parts P...': each of 1 2 3a 3b 4 5 at most once";
+    } else {
+        return "'part P core N hard M', 'parts P...', 'hard bonus|core', 'hints challenge|full', "
+               "'timeout S', 'part-time S', 'output KIB' or 'seed N'";
+    }
+    return NULL;
+}
+
 int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
 {
     memset(cfg, 0, sizeof *cfg);
@@ -63,95 +116,29 @@ int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
         snprintf(err, errlen, "%s: %s", path, strerror(errno));
         return -1;
     }
-    char line[512];
-    int lineno = 0;
-    while (fgets(line, sizeof line, f)) {
-        lineno++;
+    char line[512], word[32], wanted[100];
+    const char *want = NULL;
+    for (int lineno = 1; !want && fgets(line, sizeof line, f); lineno++) {
         /* A line longer than the buffer: the rest of a comment is skipped;
          * a setting that long is refused rather than read as two lines. */
         if (!strchr(line, '\n') && !feof(f)) {
-            bool comment = strchr(line, '#') != NULL;
             int c;
             while ((c = getc(f)) != EOF && c != '\n')
                 ;
-            if (!comment) {
-                snprintf(err, errlen, "%s:%d: the line is longer than %d characters", path, lineno,
-                         (int)sizeof line - 2);
-                fclose(f);
-                return -1;
+            if (!strchr(line, '#')) {
+                snprintf(wanted, sizeof wanted, "the line is longer than %d characters", (int)sizeof line - 2);
+                want = wanted;
             }
         }
         size_t bom = lineno == 1 ? text_bom_length(line, strlen(line)) : 0;
         if (bom)
             memmove(line, line + bom, strlen(line + bom) + 1);      /* not text */
         line[strcspn(line, "#")] = '\0';
-        char word[32], label[8];
-        double core = 0, hard = 0;
-        unsigned long long seed = 0;
-        long kib = 0;
-        int used = 0;           /* where the line's words ended: only blanks may follow */
-        if (sscanf(line, "%31s", word) != 1)
-            continue;
-        const char *want = NULL;
-        char wanted[100];
-        if (strcmp(word, "part") == 0) {
-            if (sscanf(line, " part %7s core %lf hard %lf %n", label, &core, &hard, &used) == 3 &&
-                used > 0 && !line[used] && part_from_label(label) >= 0 && core >= 0 && hard >= 0 &&
-                isfinite(core + hard)) {
-                cfg->core[part_from_label(label)] = core;
-                cfg->hard[part_from_label(label)] = hard;
-            } else {
-                want = "'part P core N hard M': P one of 1 2 3a 3b 4 5, N and M points, 0 or more";
-            }
-        } else if (strcmp(word, "hard") == 0) {
-            if (!either_word(line, "bonus", "core", &cfg->hard_is_bonus))
-                want = "'hard bonus' or 'hard core'";
-        } else if (strcmp(word, "hints") == 0) {
-            bool challenge;
-            if (either_word(line, "challenge", "full", &challenge))
-                cfg->full_hints = !challenge;
-            else
-                want = "'hints challenge' or 'hints full'";
-        } else if (strcmp(word, "timeout") == 0) {
-            if (sscanf(line, " timeout %lf %n", &core, &used) == 1 && used > 0 && !line[used] &&
-                core > 0 && core <= 600)
-                cfg->timeout = core;
-            else
-                want = "'timeout S': S seconds, more than 0 and at most 600";
-        } else if (strcmp(word, "part-time") == 0) {
-            if (sscanf(line, " part-time %lf %n", &core, &used) == 1 && used > 0 && !line[used] &&
-                core > 0 && core <= 3600)
-                cfg->part_time = core;
-            else
-                want = "'part-time S': S seconds, more than 0 and at most 3600";
-        } else if (strcmp(word, "output") == 0) {
-            if (sscanf(line, " output %ld %n", &kib, &used) == 1 && used > 0 && !line[used] &&
-                kib >= 1 && kib <= CONFIG_OUTPUT_KIB_MAX)
-                cfg->output_kib = kib;
-            else {
-                snprintf(wanted, sizeof wanted, "'output KIB': KIB a whole number of KiB from 1 to %d",
-                         CONFIG_OUTPUT_KIB_MAX);
-                want = wanted;
-            }
-        } else if (strcmp(word, "seed") == 0) {
-            if (sscanf(line, " seed %llu %n", &seed, &used) == 1 && used > 0 && !line[used] &&
-                !strchr(line, '-'))
-                cfg->seed = seed;
-            else
-                want = "'seed N': N a whole number, 0 or more";
-        } else if (strcmp(word, "parts") == 0) {
-            if (!parse_parts(line, cfg->parts))
-                want = "'parts P...': each of 1 2 3a 3b 4 5 at most once";
-        } else {
-            want = "'part P core N hard M', 'parts P...', 'hard bonus|core', 'hints challenge|full', "
-                   "'timeout S', 'part-time S', 'output KIB' or 'seed N'";
-        }
-        if (want) {
+        if (!want && sscanf(line, "%31s", word) == 1 && (want = read_setting(cfg, line, word, wanted, sizeof wanted)))
             snprintf(err, errlen, "%s:%d: expected %s", path, lineno, want);
-            fclose(f);
-            return -1;
-        }
+        else if (want)
+            snprintf(err, errlen, "%s:%d: %s", path, lineno, want);
     }
     fclose(f);
-    return 0;
+    return want ? -1 : 0;
 }
