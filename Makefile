@@ -229,15 +229,18 @@ gradescope: $(BUILD)/bin/pack
 prairielearn:
 	sh tests/prairielearn/question.sh out/prairielearn/raytracer-lab
 # The student kit: no solutions/, hidden tests, oracle or other instructor's
-# test material, nor the hidden seed; the scenes' reference renders.
+# test material, nor the hidden seed, nor the instructor's pages (the
+# instructor guide, the grader's README); the scenes' reference renders.
 KIT_DIR    = out/student-kit
 student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 	rm -rf $(KIT_DIR) && mkdir -p $(KIT_DIR)/tests/unit $(KIT_DIR)/labs/reference
 	cp -R Makefile .gitattributes .gitignore labs handouts $(KIT_DIR)/
 	mv $(KIT_DIR)/handouts/student-readme.md $(KIT_DIR)/README.md
+	rm -f $(KIT_DIR)/handouts/instructor-guide.md
 	mkdir -p $(KIT_DIR)/.github/workflows
 	sh tests/classroom/workflow.sh >$(KIT_DIR)/.github/workflows/classroom.yml
 	cp -R tests/grader tests/public tests/tools tests/run.sh $(KIT_DIR)/tests/
+	rm -f $(KIT_DIR)/tests/grader/README.md
 	sed 's/^[ 	]*seed[ 	].*/# seed: the hidden cases'"'"' seed is the instructor'"'"'s (the student kit has no hidden tests)/' \
 	    tests/weights.conf >$(KIT_DIR)/tests/weights.conf
 	mkdir -p $(KIT_DIR)/tests/grader/shipped && cp labs/raytracer.h labs/vec3.h $(KIT_DIR)/tests/grader/shipped/

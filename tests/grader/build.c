@@ -31,10 +31,10 @@
 #define MEMO_WAIT_SECONDS (CC_SECONDS + 10)
 
 
-/* The compiler's limits, per run (tests/grader/README in the kit's README,
- * "Limits").  Compiling a stage file takes gcc 0.2 s and 30 MiB resident
- * (49 MiB of address space), clang 0.5 s and 98 MiB (228 MiB of address
- * space); linking the test program less.  Objects are a few KiB. */
+/* The compiler's limits, per run (tests/grader/README.md, "Limits").
+ * Compiling a stage file takes gcc 0.2 s and 30 MiB resident (49 MiB of
+ * address space), clang 0.5 s and 98 MiB (228 MiB of address space);
+ * linking the test program less.  Objects are a few KiB. */
 #define CC_SECONDS   20             /* wall clock: a pipe can only be timed out */
 #define LOAD_SECONDS 5              /* runner --check: loading the object      */
 #define LOAD_MEMORY_MB 64           /* as a test's                              */
@@ -625,7 +625,7 @@ enum { APART_MAX = 4 };
  * one program links (Part 3b with the student's own Part 3a, in the
  * student kit): the linker refuses it, where the instructor's grader,
  * which links each stage file with the reference's others, does not, and
- * the README promises full marks.  Its output is what b->messages holds
+ * tests/grader/README.md promises full marks.  Its output is what b->messages holds
  * from before (the length before the link).  Each of the files after the
  * first that defines such a name is compiled again with the name made its
  * own (-Dname=name_in_<stage>), the program (link) linked again, and the

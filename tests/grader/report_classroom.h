@@ -22,8 +22,8 @@
  * The reporter shows a runner's points as (tests passed / tests) x
  * max_score and sends GitHub Classroom the sum of the tests' scores; with
  * one test a runner both are that test's score, so both totals are the sum
- * of the core tests' scores: the kit's core score (README, "GitHub
- * Classroom").  A runner of max_score 0 counts in neither total, so the
+ * of the core tests' scores: the kit's core score (handouts/instructor-guide.md,
+ * "GitHub Classroom").  A runner of max_score 0 counts in neither total, so the
  * hard cases are shown but never counted, and "hard" never fails the
  * workflow.
  *

@@ -75,7 +75,7 @@ static int render_submission(const ReportRenderOptions *o, const Scene *scene, R
     char *input = scene_input(scene, &len);
     size_t want = (size_t)scene->nx * (size_t)scene->ny * 3;
     char *argv[] = { b.runner, NULL };
-    /* A test's limits, as the README says, and its jail. */
+    /* A test's limits, as tests/grader/README.md says, and its jail. */
     SandboxSpec spec = {
         .argv = argv, .workdir = b.rundir, .visible = b.visible, .input = input, .input_len = len,
         .timeout = o->timeout, .answer_max = want, .output_max = 4096,

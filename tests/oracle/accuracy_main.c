@@ -1,7 +1,7 @@
 /*
  * accuracy_main.c - how accurate the reference solutions are on the hard
  * families, next to the lecture's textbook formulas; Markdown tables for the
- * README and the handouts.
+ * benchmark's page (tests/bench/README.md) and the handouts.
  *
  *     out/build/bin/accuracy [cases per family [seed]]     (default 2000, 1)
  *

@@ -3,7 +3,6 @@
 # - labs/ and solutions/ carry the same contract comments: outside the
 #   function bodies the stage files are identical;
 # - the committed public tests match what the oracle writes now;
-# - README.md and tests/bench/README.md show the same benchmark table;
 # - labs/scenes/cracks.obj and knot.obj are what tests/tools/cracks-mesh.sh
 #   and knot-mesh.sh write;
 # - labs/raytracer.h keeps the lab contract (when the contract probe is
@@ -43,17 +42,6 @@ for mesh in cracks knot; do
             cmp -s "labs/scenes/$mesh.obj" "$tmp/$mesh.obj"
     fi
 done
-
-# The benchmark's latest table stands in README.md and tests/bench/README.md:
-# the two copies must be the same (update both after `make bench`).
-bench_table() { awk '/^\| method \| precision/ { on = 1 } on && !/^\|/ { exit } on { print }' "$1"; }
-if [ -f tests/bench/README.md ]; then
-    bench_table README.md >"$tmp/bench-top"
-    bench_table tests/bench/README.md >"$tmp/bench-dir"
-    check "README.md shows the benchmark's table" test -s "$tmp/bench-top"
-    check "the benchmark's table in README.md and tests/bench/README.md differ" \
-        cmp -s "$tmp/bench-top" "$tmp/bench-dir"
-fi
 
 probe=../shared/contract/probe.c
 if [ -f "$probe" ]; then

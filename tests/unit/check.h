@@ -62,7 +62,7 @@ size_t __sanitizer_get_current_allocated_bytes(void);
 
 /* A shell script's first lines that write its CPU limit, soft and hard, to
  * its descriptor 3: "limit N\nhard N\n" (shell builtins alone, for tests
- * whose children may not start processes: test_sandbox, test_serve). */
+ * whose children may not start processes: test_sandbox). */
 #define CHECK_SAY_CPU_LIMIT \
     "printf 'limit ' >&3; ulimit -S -t >&3; printf 'hard ' >&3; ulimit -H -t >&3; "
 

@@ -230,7 +230,7 @@ static void test_killed_reported(void)
  * costs a CPU-second; the sanitized build, whose sandbox code runs the same
  * either way, has its child send itself the limit's signal instead
  * (CHECK_SANITIZED).  This is the kit's one check that the system's limit
- * stops a spinning child: test_serve's served children only say theirs. */
+ * stops a spinning child. */
 static void test_cpu_limit(void)
 {
     SandboxResult res;
