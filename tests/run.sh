@@ -8,10 +8,9 @@
 # Suites that build the same thing share a lane (student_kit.sh and
 # classroom.sh both make the student kit), and so do the unit tests.  As
 # many workers as the machine has cores take lanes in a set order (below)
-# until none is left.  (Starting all twelve lanes at once on 2 cores took 163 s
-# and 311 CPU-seconds, against 151 s and 284 with two workers.)  Each
-# suite's output is kept apart and shown whole, in a fixed order, once all
-# have finished.
+# until none is left (more at once would only share the cores).  Each
+# suite's output is kept apart and shown whole, in a fixed order, once
+# all have finished.
 # Usage: sh tests/run.sh            (after make; `make test` does both)
 #        sh tests/run.sh SUITE...    only these (names as shown, e.g. grader.sh)
 #        TEST_WORKERS=n              n workers instead of one per core
