@@ -835,78 +835,73 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     return gb.worst;
 }
 
+/* A whole number from v, lo to hi; false when v is anything else. */
+static bool whole_number(const char *v, long lo, long hi, long *n)
+{
+    char *end;
+    errno = 0;
+    *n = strtol(v, &end, 10);
+    return end != v && !*end && !errno && *n >= lo && *n <= hi;
+}
+
 int main(int argc, char **argv)
 {
     const char *submission = "labs", *part = NULL, *results = NULL, *all = NULL, *out = "out/grades";
-    const char *weights = "tests/weights.conf", *format = NULL, *page = NULL;
+    const char *weights = "tests/weights.conf", *format = NULL, *page = NULL, *report = NULL, *user = NULL;
     char page_buf[PATH_MAX];
-    bool quiet = false, summary = false, user_given = false;
-    long jobs = sysconf(_SC_NPROCESSORS_ONLN);
+    bool quiet = false, summary = false, jail = false;
+    long jobs = sysconf(_SC_NPROCESSORS_ONLN), user_id = 0;
+    enum { TAKE, EMPTY_IS_NULL, EMPTY_IS_DEFAULT };
+    const struct { const char *name; const char **to; int empty; } words[] = {
+        { "--submission", &submission, TAKE },  { "--part", &part, TAKE },
+        { "--results", &results, EMPTY_IS_NULL }, { "--all", &all, TAKE },
+        { "--out", &out, EMPTY_IS_DEFAULT },     { "--report", &report, TAKE },
+        { "--report-file", &page, EMPTY_IS_NULL }, { "--weights", &weights, TAKE },
+        { "--format", &format, TAKE },           { "--memo", &memo_dir, TAKE },
+        { "--class-record", &class_record, TAKE }, /* from grade --all */
+        { "--previous", &previous_out, EMPTY_IS_NULL },
+        { "--sandbox-user", &user, TAKE },       /* from grade --all, as root */
+        { "--classroom", &classroom_path, EMPTY_IS_NULL },
+        { "--jobs", NULL, TAKE },
+    };
+    const struct { const char *name; bool *to; } flags[] = {
+        { "--quiet", &quiet }, { "--summary", &summary }, { "--cost", &show_cost }, { "--jail", &jail },
+        { "--verbose", &verbose }, { "--all-failures", &every_failure },
+    };
     for (int k = 1; k < argc; k++) {
-        const char *a = argv[k];
-        const char *v = k + 1 < argc ? argv[k + 1] : NULL;
-        if (!strcmp(a, "--submission") && v)
-            submission = v, k++;
-        else if (!strcmp(a, "--part") && v)
-            part = v, k++;
-        else if (!strcmp(a, "--results") && v)
-            results = *v ? v : NULL, k++;
-        else if (!strcmp(a, "--all") && v)
-            all = v, k++;
-        else if (!strcmp(a, "--out") && v)
-            out = *v ? v : out, k++;
-        else if (!strcmp(a, "--report") && v) {
-            snprintf(page_buf, sizeof page_buf, "%s/index.html", v);
-            page = page_buf, k++;
-        } else if (!strcmp(a, "--report-file") && v)
-            page = *v ? v : NULL, k++;
-        else if (!strcmp(a, "--weights") && v)
-            weights = v, k++;
-        else if (!strcmp(a, "--jobs") && v) {
-            char *end;
-            errno = 0;
-            jobs = strtol(v, &end, 10);
-            if (end == v || *end || errno || jobs < 1 || jobs > 1024) {
+        bool known = false;
+        for (size_t w = 0; w < sizeof words / sizeof words[0] && !known; w++) {
+            if (strcmp(argv[k], words[w].name) != 0 || k + 1 >= argc)
+                continue;
+            const char *v = argv[++k];
+            known = true;
+            if (!words[w].to && !whole_number(v, 1, 1024, &jobs)) {
                 fprintf(stderr, "grade: --jobs %s: want a whole number of submissions at a time, 1 to 1024\n", v);
                 return 2;
             }
-            k++;
+            if (words[w].to && (*v || words[w].empty == TAKE))
+                *words[w].to = v;
+            else if (words[w].to && words[w].empty == EMPTY_IS_NULL)
+                *words[w].to = NULL;
         }
-        else if (!strcmp(a, "--quiet"))
-            quiet = true;
-        else if (!strcmp(a, "--summary"))
-            summary = true;
-        else if (!strcmp(a, "--cost"))
-            show_cost = true;
-        else if (!strcmp(a, "--jail")) {
-            printf("%s\n", jail_describe());
-            return 0;
-        }
-        else if (!strcmp(a, "--verbose"))
-            verbose = true;
-        else if (!strcmp(a, "--all-failures"))
-            every_failure = true;
-        else if (!strcmp(a, "--format") && v)
-            format = v, k++;
-        else if (!strcmp(a, "--memo") && v)
-            memo_dir = v, k++;
-        else if (!strcmp(a, "--class-record") && v)        /* from grade --all */
-            class_record = v, k++;
-        else if (!strcmp(a, "--previous") && v)
-            previous_out = *v ? v : NULL, k++;
-        else if (!strcmp(a, "--sandbox-user") && v) {      /* from grade --all, as root */
-            char *end;
-            unsigned long id = strtoul(v, &end, 10);
-            if (*end || id == 0 || id != (unsigned long)(uid_t)id || (uid_t)id == (uid_t)-1)
-                usage();
-            sandbox_set_user((uid_t)id, true);     /* held by grade --all for this one */
-            user_given = true;
-            k++;
-        }
-        else if (!strcmp(a, "--classroom") && v)
-            classroom_path = *v ? v : NULL, k++;
-        else
+        for (size_t w = 0; w < sizeof flags / sizeof flags[0] && !known; w++)
+            if (strcmp(argv[k], flags[w].name) == 0)
+                known = *flags[w].to = true;
+        if (!known)
             usage();
+    }
+    if (jail) {
+        printf("%s\n", jail_describe());
+        return 0;
+    }
+    if (report) {
+        snprintf(page_buf, sizeof page_buf, "%s/index.html", report);
+        page = page_buf;
+    }
+    if (user) {
+        if (!whole_number(user, 1, LONG_MAX, &user_id) || user_id != (long)(uid_t)user_id || (uid_t)user_id == (uid_t)-1)
+            usage();
+        sandbox_set_user((uid_t)user_id, true);     /* held by grade --all for this one */
     }
     if (format && *format && strcmp(format, "gradescope") != 0 && strcmp(format, "prairielearn") != 0) {
         fprintf(stderr, "grade: FORMAT must be gradescope or prairielearn, not '%s'\n", format);
@@ -932,7 +927,7 @@ int main(int argc, char **argv)
      * tests of another grading run at the same time, nor the system's
      * processes that run as nobody.  Where the system gives no spare id,
      * as nobody. */
-    if (!user_given && sandbox_drops_privileges()) {
+    if (!user && sandbox_drops_privileges()) {
         uid_t id;
         const char *unclaimed = NULL;
         if (sandbox_spare_users(&id, 1, &unclaimed) == 1) {
