@@ -232,7 +232,7 @@ prairielearn:
 # test material, nor the hidden seed, nor the instructor's pages (the
 # instructor guide, the grader's README); the scenes' reference renders.
 KIT_DIR    = out/student-kit
-student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
+student-kit: $(BUILD)/sub/solutions/render
 	rm -rf $(KIT_DIR) && mkdir -p $(KIT_DIR)/tests/unit $(KIT_DIR)/labs/reference
 	cp -R Makefile .gitattributes .gitignore labs handouts $(KIT_DIR)/
 	mv $(KIT_DIR)/handouts/student-readme.md $(KIT_DIR)/README.md
@@ -250,7 +250,7 @@ student-kit: $(BUILD)/bin/pack $(BUILD)/sub/solutions/render
 	    n=$(KIT_DIR)/labs/reference/$$(basename $$s .scene); \
 	    $(BUILD)/sub/solutions/render $$s --quiet -o $$n.png --edges $$n.edges || exit 1; \
 	done
-	$(BUILD)/bin/pack targz out/student-kit.tar.gz $(KIT_DIR) student-kit
+	tar -czf out/student-kit.tar.gz.tmp -C out student-kit && mv out/student-kit.tar.gz.tmp out/student-kit.tar.gz
 	@echo "wrote $(KIT_DIR)/ and out/student-kit.tar.gz"
 # The handouts' figures (handouts/figures/make-figures.sh; commit the PNGs).
 handouts: $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render $(BUILD)/bin/compare grader)

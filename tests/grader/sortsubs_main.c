@@ -175,7 +175,7 @@ static int read_download(Sorting *s, const char *from, const ArchiveLimits *lim)
         snprintf(err, sizeof err, "%s", from);
         return fail(err, strerror(errno));
     }
-    int status = S_ISDIR(st.st_mode) ? archive_add_tree(&s->in, from, NULL, why, sizeof why)
+    int status = S_ISDIR(st.st_mode) ? archive_add_tree(&s->in, from, why, sizeof why)
                                      : archive_load_within(&s->in, from, lim, why, sizeof why);
     if (status != 0)
         return fail(S_ISDIR(st.st_mode) ? "the download's folder could not be read" : "the download could not be read",
@@ -322,7 +322,7 @@ static int write_sorted(const Sorting *s, const char *from, const char *to, bool
 {
     char why[ERR_MAX];
     Archive out;
-    archive_init(&out, ARCHIVE_ZIP);
+    archive_init(&out);
     int status = pack_sorted(s, from, &out, why, sizeof why);
     if (status == 0)
         status = write_beside(&out, to, exists, why, sizeof why);
@@ -441,7 +441,7 @@ int main(int argc, char **argv)
         return fail(err, why);
     }
     Sorting s = { 0 };
-    archive_init(&s.in, ARCHIVE_ZIP);
+    archive_init(&s.in);
     int status = read_download(&s, from, &lim);
     if (status == 0)
         status = name_files(&s, from);

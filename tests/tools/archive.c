@@ -1,5 +1,5 @@
 /*
- * archive.c - ZIP and .tar.gz archives: building, encoding, decoding and
+ * archive.c - ZIP archives: building, encoding, decoding and
  * extracting them.  See archive.h.
  */
 #define _POSIX_C_SOURCE 200809L
@@ -34,16 +34,11 @@
 #define ZIP_DOS_DATE     ((40u << 9) | (1u << 5) | 1u)   /* 2020-01-01   */
 #define ZIP_MAX32        0xFFFFFFFFu
 
-/* Unix file types as stored in ZIP external attributes and tar modes. */
+/* Unix file types as stored in ZIP external attributes. */
 #define UNIX_TYPE_MASK   0170000u
 #define UNIX_TYPE_FILE   0100000u
 #define UNIX_TYPE_DIR    0040000u
 #define UNIX_TYPE_LINK   0120000u
-
-#define TAR_BLOCK        512
-#define TAR_RECORD       10240
-#define TAR_NAME_MAX     100
-#define TAR_PREFIX_MAX   155
 
 /* ---- small helpers ------------------------------------------------------------ */
 
@@ -61,7 +56,7 @@ static int arc_fail(char *err, size_t errlen, const char *fmt, ...)
     return -1;
 }
 
-/* Little-endian numbers, as ZIP and gzip store them. */
+/* Little-endian numbers, as ZIP stores them. */
 static void arc_put16(unsigned char *p, unsigned v)
 {
     p[0] = (unsigned char)v;
@@ -148,9 +143,8 @@ static int arc_write_all(int fd, const unsigned char *p, size_t n)
 /* ---- entries -------------------------------------------------------------------- */
 
 /* Starts an empty archive. */
-void archive_init(Archive *a, ArchiveFormat format)
+void archive_init(Archive *a)
 {
-    a->format = format;
     a->entries = NULL;
     a->count = 0;
     a->cap = 0;
@@ -164,7 +158,7 @@ void archive_free(Archive *a)
         free(a->entries[k].data);
     }
     free(a->entries);
-    archive_init(a, a->format);
+    archive_init(a);
 }
 
 /* Relative, no empty, "." or ".." component, no backslash. */
@@ -312,123 +306,15 @@ static int arc_walk(Archive *a, const char *disk, const char *inside, char *err,
     return rc;
 }
 
-/* Adds dir's contents, under prefix/ if there is a prefix.  Returns 0, or
- * -1 with a reason. */
-int archive_add_tree(Archive *a, const char *dir, const char *prefix, char *err, size_t errlen)
+/* Adds dir's contents.  Returns 0, or -1 with a reason. */
+int archive_add_tree(Archive *a, const char *dir, char *err, size_t errlen)
 {
     struct stat st;
     if (stat(dir, &st) != 0)
         return arc_fail(err, errlen, "%s: %s", dir, strerror(errno));
     if (!S_ISDIR(st.st_mode))
         return arc_fail(err, errlen, "%s: not a directory", dir);
-    if (prefix && prefix[0] != '\0') {
-        if (archive_add_dir(a, prefix, (unsigned)st.st_mode, err, errlen) != 0)
-            return -1;
-    } else {
-        prefix = "";
-    }
-    return arc_walk(a, dir, prefix, err, errlen);
-}
-
-/* ---- gzip (RFC 1952) --------------------------------------------------------------- */
-
-#define GZIP_FHCRC    0x02u
-#define GZIP_FEXTRA   0x04u
-#define GZIP_FNAME    0x08u
-#define GZIP_FCOMMENT 0x10u
-#define GZIP_RESERVED 0xE0u
-
-/* Header (deflate, no flags, time 0, Unix), deflate data, CRC-32, size.
- * Returns 0, or -1 if memory runs out (out restored). */
-int archive_gzip(const void *data, size_t n, KitBuf *out)
-{
-    static const unsigned char header[10] = {0x1F, 0x8B, 8, 0, 0, 0, 0, 0, 0, 3};
-    unsigned char trailer[8];
-    size_t old_len = out->len;
-    arc_put32(trailer, kit_crc32(0, data, n));
-    arc_put32(trailer + 4, (uint32_t)(n & 0xFFFFFFFFu));
-    if (kit_buf_append(out, header, sizeof header) != 0 || kit_deflate(data, n, out) != 0 ||
-        kit_buf_append(out, trailer, sizeof trailer) != 0) {
-        out->len = old_len;
-        return -1;
-    }
-    return 0;
-}
-
-/* Skips the optional header fields given by flags, from *at.  Returns 0,
- * or -1 if they run past the end. */
-static int arc_gzip_skip_fields(const unsigned char *p, size_t n, unsigned flags, size_t *at)
-{
-    if (flags & GZIP_FEXTRA) {
-        if (n - *at < 2 || arc_get16(p + *at) > n - *at - 2)
-            return -1;
-        *at += 2 + arc_get16(p + *at);
-    }
-    for (unsigned field = GZIP_FNAME; field <= GZIP_FCOMMENT; field <<= 1) {
-        if (!(flags & field))
-            continue;
-        const unsigned char *end = memchr(p + *at, 0, n - *at);
-        if (!end)
-            return -1;
-        *at = (size_t)(end - p) + 1;
-    }
-    return 0;
-}
-
-/* Decodes one gzip member starting at *at, appending to out at most limit
- * bytes in all (counted from base), and moves *at past it.  Returns 0, or
- * -1 with a reason. */
-static int arc_gunzip_member(const unsigned char *p, size_t n, size_t *at, size_t base,
-                             size_t limit, KitBuf *out, char *err, size_t errlen)
-{
-    size_t start = *at, pos = start + 10, used = 0, before = out->len;
-    if (n - start < 10 || p[start] != 0x1F || p[start + 1] != 0x8B)
-        return arc_fail(err, errlen, "not gzip data");
-    unsigned flags = p[start + 3];
-    if (p[start + 2] != 8 || (flags & GZIP_RESERVED))
-        return arc_fail(err, errlen, "gzip header: unknown method or flags");
-    if (arc_gzip_skip_fields(p, n, flags, &pos) != 0)
-        return arc_fail(err, errlen, "gzip data is truncated (in the header)");
-    if (flags & GZIP_FHCRC) {
-        if (n - pos < 2)
-            return arc_fail(err, errlen, "gzip data is truncated (in the header)");
-        if (arc_get16(p + pos) != (kit_crc32(0, p + start, pos - start) & 0xFFFFu))
-            return arc_fail(err, errlen, "gzip header CRC mismatch");
-        pos += 2;
-    }
-    if (kit_inflate(p + pos, n - pos, limit - (out->len - base), out, &used, err, errlen) != 0)
-        return -1;
-    pos += used;
-    size_t got = out->len - before;
-    uint32_t crc = kit_crc32(0, got ? out->data + before : NULL, got);
-    if (n - pos < 8 || arc_get32(p + pos) != crc ||
-        arc_get32(p + pos + 4) != (uint32_t)(got & 0xFFFFFFFFu)) {
-        out->len = before;
-        return arc_fail(err, errlen, n - pos < 8 ? "gzip data is truncated (no trailer)"
-                                                 : "gzip data is corrupt (CRC-32 or size mismatch)");
-    }
-    *at = pos + 8;
-    return 0;
-}
-
-/* Decodes the members one after another.  Returns 0, or -1 with a reason
- * (out restored). */
-int archive_gunzip(const void *data, size_t n, size_t max_out, KitBuf *out,
-                   char *err, size_t errlen)
-{
-    const unsigned char *p = data;
-    size_t at = 0, base = out->len;
-    if (n == 0)
-        return arc_fail(err, errlen, "not gzip data (empty)");
-    while (at < n) {
-        if (arc_gunzip_member(p, n, &at, base, max_out, out, err, errlen) != 0) {
-            out->len = base;
-            if (at > 0 && (n - at < 2 || p[at] != 0x1F || p[at + 1] != 0x8B))
-                return arc_fail(err, errlen, "unexpected bytes after the gzip data");
-            return -1;
-        }
-    }
-    return 0;
+    return arc_walk(a, dir, "", err, errlen);
 }
 
 /* ---- ZIP ------------------------------------------------------------------------------ */
@@ -691,248 +577,13 @@ static int zip_decode(Archive *a, const unsigned char *p, size_t n, const Archiv
     return 0;
 }
 
-/* ---- tar (POSIX ustar) ------------------------------------------------------------- */
-
-/* Writes v in octal into field[0 .. width-1]: width-1 digits and a NUL.
- * Returns 0, or -1 if it does not fit. */
-static int tar_octal(unsigned char *field, size_t width, unsigned long long v)
-{
-    field[width - 1] = '\0';
-    for (size_t k = width - 1; k-- > 0; v >>= 3)
-        field[k] = (unsigned char)('0' + (v & 7u));
-    return v == 0 ? 0 : -1;
-}
-
-/* Reads an octal field: optional leading spaces, digits, then NULs or
- * spaces to its end.  Returns the value, or -1 if malformed. */
-static long long tar_parse_octal(const unsigned char *field, size_t width)
-{
-    size_t k = 0;
-    long long v = 0;
-    while (k < width && field[k] == ' ')
-        k++;
-    size_t first = k;
-    while (k < width && field[k] >= '0' && field[k] <= '7') {
-        if (v > (LLONG_MAX >> 3))
-            return -1;
-        v = (v << 3) | (field[k++] - '0');
-    }
-    if (k == first)
-        return -1;
-    for (; k < width; k++)
-        if (field[k] != '\0' && field[k] != ' ')
-            return -1;
-    return v;
-}
-
-/* The sum of a header's bytes with its checksum field counted as spaces,
- * reading bytes as unsigned (or, as some old writers did, signed). */
-static unsigned long tar_checksum(const unsigned char *h, bool as_signed)
-{
-    long sum = 0;
-    for (int k = 0; k < TAR_BLOCK; k++) {
-        int b = k >= 148 && k < 156 ? ' ' : h[k];
-        sum += as_signed ? (signed char)b : b;
-    }
-    return (unsigned long)sum;
-}
-
-/* Splits an entry's name into the ustar name and prefix fields.  Returns
- * 0, or -1 with a reason if no split fits. */
-static int tar_put_name(unsigned char *h, const ArchiveEntry *e, char *err, size_t errlen)
-{
-    size_t plen = strlen(e->path), len = plen + (e->is_dir ? 1 : 0);
-    char full[TAR_NAME_MAX + TAR_PREFIX_MAX + 2];
-    if (len > sizeof full - 1)
-        return arc_fail(err, errlen, "%s: path too long for a ustar archive (at most 255 bytes)",
-                        e->path);
-    memcpy(full, e->path, plen);
-    if (e->is_dir)
-        full[plen] = '/';
-    full[len] = '\0';
-    if (len <= TAR_NAME_MAX) {
-        memcpy(h, full, len);
-        return 0;
-    }
-    for (size_t cut = len - 1; cut > 0; cut--) {        /* full[cut] == '/' is dropped */
-        if (full[cut] != '/' || cut > TAR_PREFIX_MAX || len - cut - 1 > TAR_NAME_MAX ||
-            len - cut - 1 == 0)
-            continue;
-        memcpy(h + 345, full, cut);
-        memcpy(h, full + cut + 1, len - cut - 1);
-        return 0;
-    }
-    return arc_fail(err, errlen, "%s: path cannot be split into ustar's 155 + 100 bytes",
-                    e->path);
-}
-
-/* Appends one entry's header and padded data.  Returns 0, or -1 with a
- * reason. */
-static int tar_put_entry(const ArchiveEntry *e, KitBuf *tar, char *err, size_t errlen)
-{
-    unsigned char h[TAR_BLOCK] = {0};
-    static const unsigned char zeros[TAR_BLOCK] = {0};
-    if (tar_put_name(h, e, err, errlen) != 0)
-        return -1;
-    size_t size = e->is_dir ? 0 : e->size;
-    if (tar_octal(h + 124, 12, size) != 0)
-        return arc_fail(err, errlen, "%s: too large for a ustar archive", e->path);
-    tar_octal(h + 100, 8, e->mode);
-    tar_octal(h + 108, 8, 0);                    /* uid */
-    tar_octal(h + 116, 8, 0);                    /* gid */
-    tar_octal(h + 136, 12, (unsigned long long)ARCHIVE_MTIME);
-    h[156] = e->is_dir ? '5' : '0';
-    memcpy(h + 257, "ustar", 6);                 /* magic, with its NUL */
-    memcpy(h + 263, "00", 2);                    /* version */
-    tar_octal(h + 329, 8, 0);                    /* devmajor */
-    tar_octal(h + 337, 8, 0);                    /* devminor */
-    tar_octal(h + 148, 7, tar_checksum(h, false));
-    h[155] = ' ';
-    size_t pad = (TAR_BLOCK - size % TAR_BLOCK) % TAR_BLOCK;
-    if (kit_buf_append(tar, h, TAR_BLOCK) != 0 || kit_buf_append(tar, e->data, size) != 0 ||
-        kit_buf_append(tar, zeros, pad) != 0)
-        return arc_fail(err, errlen, "out of memory");
-    return 0;
-}
-
-/* The ustar data, two zero blocks, padding to a whole record, all gzipped.
- * Returns 0, or -1 with a reason. */
-static int targz_encode(const Archive *a, KitBuf *out, char *err, size_t errlen)
-{
-    KitBuf tar = {0};
-    int rc = 0;
-    for (size_t k = 0; k < a->count && rc == 0; k++)
-        rc = tar_put_entry(&a->entries[k], &tar, err, errlen);
-    if (rc == 0) {
-        size_t len = tar.len + 2 * TAR_BLOCK;
-        len += (TAR_RECORD - len % TAR_RECORD) % TAR_RECORD;
-        if (kit_buf_reserve(&tar, len - tar.len) != 0) {
-            rc = arc_fail(err, errlen, "out of memory");
-        } else {
-            memset(tar.data + tar.len, 0, len - tar.len);
-            tar.len = len;
-            if (archive_gzip(tar.data, tar.len, out) != 0)
-                rc = arc_fail(err, errlen, "out of memory");
-        }
-    }
-    kit_buf_free(&tar);
-    return rc;
-}
-
-/* Whether the 512 bytes at h are all zero (an end-of-archive block). */
-static bool tar_zero_block(const unsigned char *h)
-{
-    for (int k = 0; k < TAR_BLOCK; k++)
-        if (h[k])
-            return false;
-    return true;
-}
-
-/* The entry's path from a header: its name field, after "prefix/" when
- * a POSIX ustar header has a prefix.  malloc'd; NULL if memory runs out. */
-static char *tar_path(const unsigned char *h)
-{
-    size_t nlen = strnlen((const char *)h, TAR_NAME_MAX);
-    bool posix = memcmp(h + 257, "ustar\0" "00", 8) == 0;   /* GNU's layout has no prefix */
-    size_t plen = posix ? strnlen((const char *)h + 345, TAR_PREFIX_MAX) : 0;
-    char *path = malloc(plen + nlen + 2), *at = path;
-    if (!path)
-        return NULL;
-    if (plen) {
-        memcpy(at, h + 345, plen);
-        at += plen;
-        *at++ = '/';
-    }
-    memcpy(at, h, nlen);
-    at[nlen] = '\0';
-    return path;
-}
-
-/* Reads the entry whose header is at tar[at], adding it to a.  Returns the
- * bytes it occupies, or -1 with a reason. */
-static long long tar_read_entry(Archive *a, const unsigned char *tar, size_t len, size_t at,
-                                char *err, size_t errlen)
-{
-    const unsigned char *h = tar + at;
-    long long sum = tar_parse_octal(h + 148, 8);
-    if (sum < 0 || ((unsigned long)sum != tar_checksum(h, false) &&
-                    (unsigned long)sum != tar_checksum(h, true)))
-        return arc_fail(err, errlen, "tar header at byte %zu is corrupt (checksum mismatch)", at);
-    if (memcmp(h + 257, "ustar", 5) != 0)
-        return arc_fail(err, errlen, "not a ustar archive (header at byte %zu)", at);
-    long long size = tar_parse_octal(h + 124, 12), mode = tar_parse_octal(h + 100, 8);
-    if (size < 0 || mode < 0)
-        return arc_fail(err, errlen, "tar header at byte %zu is corrupt (size or mode)", at);
-    if ((unsigned long long)size > len - at - TAR_BLOCK)
-        return arc_fail(err, errlen, "tar data is truncated (header at byte %zu)", at);
-    char type = (char)h[156];
-    char *path = tar_path(h);
-    if (!path)
-        return arc_fail(err, errlen, "out of memory");
-    size_t plen = strlen(path);
-    bool is_dir = type == '5';
-    if (is_dir && plen > 0 && path[plen - 1] == '/')
-        path[plen - 1] = '\0';
-    int rc;
-    if (type == '0' || type == '\0' || type == '7' || is_dir)
-        rc = arc_add(a, path, is_dir, tar + at + TAR_BLOCK, is_dir ? 0 : (size_t)size,
-                     (unsigned)mode, err, errlen);
-    else if (type == 'x' || type == 'g')
-        rc = arc_fail(err, errlen, "%s: pax extended headers are not supported", path);
-    else if (type == 'L' || type == 'K')
-        rc = arc_fail(err, errlen, "%s: GNU long names are not supported", path);
-    else if (type == '1' || type == '2')
-        rc = arc_fail(err, errlen, "%s: links are not supported", path);
-    else
-        rc = arc_fail(err, errlen, "%s: entry type '%c' is not supported", path,
-                      type >= 0x20 && type < 0x7F ? type : '?');
-    free(path);
-    if (rc != 0)
-        return -1;
-    return TAR_BLOCK + ((size + TAR_BLOCK - 1) / TAR_BLOCK) * TAR_BLOCK;
-}
-
-/* Unzips, then reads headers up to the first zero block.  Returns 0, or -1
- * with a reason. */
-static int targz_decode(Archive *a, const unsigned char *p, size_t n, const ArchiveLimits *lim,
-                        char *err, size_t errlen)
-{
-    KitBuf tar = {0};
-    /* The whole tar, bounded by the size and the ratio at once. */
-    size_t most = n > (lim->max_unpacked - ARCHIVE_RATIO_FREE) / lim->max_ratio
-                      ? lim->max_unpacked : n * lim->max_ratio + ARCHIVE_RATIO_FREE;
-    if (archive_gunzip(p, n, most, &tar, err, errlen) != 0) {
-        kit_buf_free(&tar);             /* its length restored, but not its memory */
-        return -1;
-    }
-    size_t at = 0;
-    int rc = -1;
-    for (;;) {
-        if (tar.len - at < TAR_BLOCK) {
-            arc_fail(err, errlen, "tar data is truncated (no end-of-archive block)");
-            break;
-        }
-        if (tar_zero_block(tar.data + at)) {
-            rc = 0;
-            break;
-        }
-        long long used = tar_read_entry(a, tar.data, tar.len, at, err, errlen);
-        if (used < 0)
-            break;
-        at += (size_t)used < tar.len - at ? (size_t)used : tar.len - at;
-    }
-    kit_buf_free(&tar);
-    return rc;
-}
-
 /* ---- whole archives -------------------------------------------------------------------- */
 
-/* Encodes in the archive's format.  Returns 0, or -1 with a reason. */
+/* Encodes as a ZIP.  Returns 0, or -1 with a reason. */
 int archive_encode(const Archive *a, KitBuf *out, char *err, size_t errlen)
 {
     size_t old_len = out->len;
-    int rc = a->format == ARCHIVE_ZIP ? zip_encode(a, out, err, errlen)
-                                      : targz_encode(a, out, err, errlen);
+    int rc = zip_encode(a, out, err, errlen);
     if (rc != 0)
         out->len = old_len;
     return rc;
@@ -956,7 +607,7 @@ int archive_save(const Archive *a, const char *path, char *err, size_t errlen)
 
 const ArchiveLimits archive_no_limits = { ARCHIVE_MAX_SIZE, ARCHIVE_MAX_SIZE };
 
-/* Tells the format by the first bytes and decodes.  Returns 0, or -1 with
+/* Decodes a ZIP, told by its first bytes.  Returns 0, or -1 with
  * a reason (a left empty). */
 int archive_decode_within(Archive *a, const void *data, size_t n, const ArchiveLimits *lim,
                           char *err, size_t errlen)
@@ -969,14 +620,11 @@ int archive_decode_within(Archive *a, const void *data, size_t n, const ArchiveL
         within.max_ratio = 1;
     int rc;
     if (n >= 4 && p[0] == 'P' && p[1] == 'K' && ((p[2] == 3 && p[3] == 4) || (p[2] == 5 && p[3] == 6))) {
-        archive_init(a, ARCHIVE_ZIP);
+        archive_init(a);
         rc = zip_decode(a, p, n, &within, err, errlen);
-    } else if (n >= 2 && p[0] == 0x1F && p[1] == 0x8B) {
-        archive_init(a, ARCHIVE_TARGZ);
-        rc = targz_decode(a, p, n, &within, err, errlen);
     } else {
-        archive_init(a, ARCHIVE_ZIP);
-        rc = arc_fail(err, errlen, "not a ZIP or .tar.gz archive");
+        archive_init(a);
+        rc = arc_fail(err, errlen, "not a ZIP archive");
     }
     if (rc != 0)
         archive_free(a);
@@ -998,7 +646,7 @@ int archive_load_within(Archive *a, const char *path, const ArchiveLimits *lim, 
 {
     KitBuf bytes = {0};
     char why[512];
-    archive_init(a, ARCHIVE_ZIP);
+    archive_init(a);
     if (arc_read_file(path, &bytes, err, errlen) != 0) {
         kit_buf_free(&bytes);
         return -1;

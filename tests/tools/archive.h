@@ -1,5 +1,6 @@
 /*
- * archive.h - ZIP and gzip-compressed ustar (.tar.gz) archives, in memory.
+ * archive.h - ZIP archives, in memory: what sort-submissions reads from a
+ * class's download and writes back, and Gradescope's autograder.zip.
  *
  * An Archive is a list of entries (files with their bytes and directories,
  * each with a relative path and Unix permission bits).  Fill one with
@@ -10,16 +11,12 @@
  *
  * Written archives are reproducible: entries keep the order they were
  * added in (archive_add_tree adds a directory's contents sorted by name)
- * and every time stamp is ARCHIVE_MTIME.
+ * and every time stamp is 2020-01-01 00:00.
  *
  *   ZIP (APPNOTE 6.3): each file deflated when that makes it smaller, else
  *   stored; CRC-32; local headers, central directory, end record; "version
  *   made by" Unix, with the mode in the external attributes, so unzip keeps
  *   the executable bit.  No ZIP64: at most 65535 entries and 4 GiB.
- *
- *   .tar.gz: POSIX ustar headers (paths up to 255 bytes through the prefix
- *   field), padded to 10240-byte records, in one gzip member (RFC 1952)
- *   with no name and time 0.
  *
  * Paths in an archive must be relative: not empty, no leading '/', no
  * empty, "." or ".." component, no backslash.  Adding or reading any other
@@ -33,13 +30,12 @@
 #include <stddef.h>
 #include "../../labs/kit/zlib.h"
 
-#define ARCHIVE_MTIME 1577836800L              /* 2020-01-01 00:00:00 UTC */
 #define ARCHIVE_MAX_SIZE ((size_t)1 << 30)     /* the most bytes read or unpacked */
 #define ARCHIVE_RATIO_FREE ((size_t)1 << 20)   /* bytes any entry may unpack to,
                                                   whatever its ratio           */
 
 /* What reading an archive may unpack: at most max_unpacked bytes in all
- * (up to ARCHIVE_MAX_SIZE), and no entry (and no .tar.gz) more than
+ * (up to ARCHIVE_MAX_SIZE), and no entry more than
  * max_ratio times its packed size beyond ARCHIVE_RATIO_FREE: a small
  * archive that would fill the memory or the disk is refused. */
 typedef struct {
@@ -47,8 +43,6 @@ typedef struct {
     unsigned max_ratio;
 } ArchiveLimits;
 extern const ArchiveLimits archive_no_limits;   /* ARCHIVE_MAX_SIZE, any ratio */
-
-typedef enum { ARCHIVE_ZIP, ARCHIVE_TARGZ } ArchiveFormat;
 
 typedef struct {
     char *path;              /* relative, '/'-separated, no trailing '/'   */
@@ -59,13 +53,12 @@ typedef struct {
 } ArchiveEntry;
 
 typedef struct {
-    ArchiveFormat format;
     ArchiveEntry *entries;
     size_t count, cap;
 } Archive;
 
-/* Starts an empty archive of the given format. */
-void archive_init(Archive *a, ArchiveFormat format);
+/* Starts an empty archive. */
+void archive_init(Archive *a);
 /* Frees all entries; a is empty afterwards. */
 void archive_free(Archive *a);
 
@@ -82,13 +75,12 @@ int archive_add_file(Archive *a, const char *path, const void *data, size_t size
 int archive_add_dir(Archive *a, const char *path, unsigned mode, char *err, size_t errlen);
 
 /* Adds everything below the directory dir on disk, each directory's
- * entries sorted by name (byte order), with the modes they have on disk.
- * With a prefix (not NULL or ""), the entries go under prefix/ and a
- * directory entry prefix comes first; without, they are at the root.
+ * entries sorted by name (byte order), with the modes they have on disk,
+ * at the archive's root.
  * Returns 0, or -1 with a reason naming the file at fault in err. */
-int archive_add_tree(Archive *a, const char *dir, const char *prefix, char *err, size_t errlen);
+int archive_add_tree(Archive *a, const char *dir, char *err, size_t errlen);
 
-/* Appends the archive's bytes in its format to out.  Returns 0, or -1
+/* Appends the archive's bytes to out.  Returns 0, or -1
  * with a reason in err (out keeps its old length). */
 int archive_encode(const Archive *a, KitBuf *out, char *err, size_t errlen);
 
@@ -97,7 +89,7 @@ int archive_encode(const Archive *a, KitBuf *out, char *err, size_t errlen);
  * "path: reason" in err (no temporary file left behind). */
 int archive_save(const Archive *a, const char *path, char *err, size_t errlen);
 
-/* Reads a ZIP or .tar.gz archive (told apart by its first bytes) from
+/* Reads a ZIP archive from
  * data[0 .. n-1] into a, which is initialised here.  Every CRC and size is
  * checked.  Returns 0, or -1 with a reason in err (a is then empty). */
 int archive_decode(Archive *a, const void *data, size_t n, char *err, size_t errlen);
@@ -116,15 +108,5 @@ int archive_load_within(Archive *a, const char *path, const ArchiveLimits *lim, 
  * symbolic link found inside destdir.  Returns 0, or -1 with a reason
  * naming the file at fault in err. */
 int archive_extract(const Archive *a, const char *destdir, char *err, size_t errlen);
-
-/* Appends data[0 .. n-1] as one gzip member (RFC 1952: no name, time 0,
- * CRC-32 and size in the trailer).  Returns 0, or -1 if memory runs out. */
-int archive_gzip(const void *data, size_t n, KitBuf *out);
-
-/* Decodes gzip data (one or more members, each checked against its CRC-32
- * and size), appending at most max_out bytes to out.  Returns 0, or -1
- * with a reason in err (out keeps its old length). */
-int archive_gunzip(const void *data, size_t n, size_t max_out, KitBuf *out,
-                   char *err, size_t errlen);
 
 #endif

@@ -1,11 +1,10 @@
 /*
  * pack_main.c - the `pack` command: makes, lists and unpacks the kit's ZIP
- * and .tar.gz archives (see archive.h).
+ * archives (see archive.h): Gradescope's autograder.zip, and the tests'
+ * downloads of a class.
  *
  *     pack zip    OUT.zip    DIR          DIR's contents at the archive's root
- *     pack targz  OUT.tar.gz DIR PREFIX   DIR's contents under PREFIX/
  *     pack unzip  FILE.zip    DESTDIR
- *     pack untargz FILE.tar.gz DESTDIR
  *     pack list   FILE                    one line per entry: mode, size, path
  *
  * Archives are written to a temporary file renamed into place.  Exit status:
@@ -23,9 +22,7 @@ static int pack_usage(void)
 {
     fprintf(stderr,
             "usage: pack zip OUT.zip DIR\n"
-            "       pack targz OUT.tar.gz DIR PREFIX\n"
             "       pack unzip FILE.zip DESTDIR\n"
-            "       pack untargz FILE.tar.gz DESTDIR\n"
             "       pack list FILE\n");
     return 2;
 }
@@ -37,33 +34,27 @@ static int pack_error(const char *message)
     return 1;
 }
 
-/* Archives the tree dir (under prefix, if any) into out.  Returns the exit
- * status. */
-static int pack_make(ArchiveFormat format, const char *out, const char *dir, const char *prefix)
+/* Archives the tree dir into out.  Returns the exit status. */
+static int pack_make(const char *out, const char *dir)
 {
     Archive a;
     char err[PACK_ERR];
-    archive_init(&a, format);
-    int rc = archive_add_tree(&a, dir, prefix, err, sizeof err) == 0 &&
+    archive_init(&a);
+    int rc = archive_add_tree(&a, dir, err, sizeof err) == 0 &&
              archive_save(&a, out, err, sizeof err) == 0 ? 0 : pack_error(err);
     archive_free(&a);
     return rc;
 }
 
-/* Unpacks file, which must be in the given format, below dest.  Returns
- * the exit status. */
-static int pack_unpack(ArchiveFormat format, const char *file, const char *dest)
+/* Unpacks file below dest.  Returns the exit status. */
+static int pack_unpack(const char *file, const char *dest)
 {
     Archive a;
     char err[PACK_ERR];
     if (archive_load(&a, file, err, sizeof err) != 0)
         return pack_error(err);
     int rc = 0;
-    if (a.format != format) {
-        snprintf(err, sizeof err, "%s: not a %s archive", file,
-                 format == ARCHIVE_ZIP ? "ZIP" : ".tar.gz");
-        rc = pack_error(err);
-    } else if (archive_extract(&a, dest, err, sizeof err) != 0) {
+    if (archive_extract(&a, dest, err, sizeof err) != 0) {
         rc = pack_error(err);
     }
     archive_free(&a);
@@ -101,16 +92,9 @@ int main(int argc, char **argv)
         return pack_usage();
     const char *cmd = argv[1];
     if (strcmp(cmd, "zip") == 0 && argc == 4)
-        return pack_make(ARCHIVE_ZIP, argv[2], argv[3], NULL);
-    if (strcmp(cmd, "targz") == 0 && argc == 5) {
-        if (!archive_path_ok(argv[4]))
-            return pack_error("PREFIX must be a relative path without . or .. parts");
-        return pack_make(ARCHIVE_TARGZ, argv[2], argv[3], argv[4]);
-    }
+        return pack_make(argv[2], argv[3]);
     if (strcmp(cmd, "unzip") == 0 && argc == 4)
-        return pack_unpack(ARCHIVE_ZIP, argv[2], argv[3]);
-    if (strcmp(cmd, "untargz") == 0 && argc == 4)
-        return pack_unpack(ARCHIVE_TARGZ, argv[2], argv[3]);
+        return pack_unpack(argv[2], argv[3]);
     if (strcmp(cmd, "list") == 0 && argc == 3)
         return pack_list(argv[2]);
     return pack_usage();

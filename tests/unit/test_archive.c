@@ -1,4 +1,4 @@
-/* The ZIP and .tar.gz archives of tests/tools/archive.h. */
+/* The ZIP archives of tests/tools/archive.h. */
 #include "check.h"            /* first: it sets the POSIX feature level */
 
 #include <dirent.h>
@@ -29,17 +29,11 @@ static unsigned le16(const unsigned char *p)
 }
 
 /* A path of exactly len bytes made of 9-letter directories and a file
- * name, with a '/' 101 bytes from the end (where a ustar header can split
- * any path of up to 255 bytes). */
+ * name. */
 static void long_path(char *out, size_t len)
 {
     for (size_t k = 0; k < len; k++)
         out[k] = k % 10 == 9 ? '/' : (char)('a' + k % 10);
-    if (len > 102) {
-        out[len - 102] = 'k';
-        out[len - 101] = '/';
-        out[len - 100] = 'k';
-    }
     out[len - 1] = 'z';                   /* never end on a '/' */
     out[len] = '\0';
 }
@@ -93,7 +87,6 @@ static void encode_decode(const Archive *a, KitBuf *bytes, Archive *b)
     CHECK_MSG(archive_encode(a, bytes, err, sizeof err) == 0, "encode: %s", err);
     int rc = archive_decode(b, bytes->data, bytes->len, err, sizeof err);
     CHECK_MSG(rc == 0, "decode: %s", err);
-    CHECK_EQ_INT(b->format, a->format);
 }
 
 /* Writes a file of n bytes with the given mode (exactly). */
@@ -132,7 +125,7 @@ static void test_zip_round_trip(void)
     Archive a, b;
     Fixture f;
     KitBuf bytes = {0};
-    archive_init(&a, ARCHIVE_ZIP);
+    archive_init(&a);
     add_standard_entries(&a, &f);
     encode_decode(&a, &bytes, &b);
     check_standard_entries(&b, &f);
@@ -148,34 +141,16 @@ static void test_zip_round_trip(void)
     free(f.big);
 }
 
-static void test_targz_round_trip(void)
+static void test_empty_archive(void)
 {
     Archive a, b;
-    Fixture f;
     KitBuf bytes = {0};
-    archive_init(&a, ARCHIVE_TARGZ);
-    add_standard_entries(&a, &f);
+    archive_init(&a);
     encode_decode(&a, &bytes, &b);
-    check_standard_entries(&b, &f);
+    CHECK_EQ_INT(b.count, 0);
+    CHECK_EQ_INT(bytes.len, 22);         /* just the end record */
     archive_free(&b);
-    archive_free(&a);
     kit_buf_free(&bytes);
-    free(f.big);
-}
-
-static void test_empty_archives(void)
-{
-    for (int fmt = 0; fmt < 2; fmt++) {
-        Archive a, b;
-        KitBuf bytes = {0};
-        archive_init(&a, fmt ? ARCHIVE_TARGZ : ARCHIVE_ZIP);
-        encode_decode(&a, &bytes, &b);
-        CHECK_EQ_INT(b.count, 0);
-        if (!fmt)
-            CHECK_EQ_INT(bytes.len, 22);         /* just the end record */
-        archive_free(&b);
-        kit_buf_free(&bytes);
-    }
 }
 
 /* ---- the bytes of a ZIP ------------------------------------------------------------- */
@@ -186,7 +161,7 @@ static void test_zip_layout(void)
     Fixture f;
     KitBuf z = {0};
     char err[300];
-    archive_init(&a, ARCHIVE_ZIP);
+    archive_init(&a);
     add_standard_entries(&a, &f);
     CHECK_EQ_INT(archive_encode(&a, &z, err, sizeof err), 0);
     const unsigned char *p = z.data;
@@ -237,7 +212,7 @@ static void test_zip_layout(void)
     CHECK(found_digits && found_exec);
     /* random data is stored, not deflated */
     Archive r;
-    archive_init(&r, ARCHIVE_ZIP);
+    archive_init(&r);
     unsigned char noise[5000];
     for (size_t k = 0; k < sizeof noise; k++)
         noise[k] = (unsigned char)(rng_next() >> 24);
@@ -253,157 +228,6 @@ static void test_zip_layout(void)
     free(f.big);
 }
 
-/* ---- the bytes of a .tar.gz ----------------------------------------------------------- */
-
-/* The tar inside a .tar.gz, checked with the kit's inflate. */
-static void gunzip_by_hand(const KitBuf *gz, KitBuf *tar)
-{
-    char err[200] = "";
-    size_t used = 0;
-    kit_buf_init(tar);
-    CHECK(gz->len > 18 && gz->data[0] == 0x1F && gz->data[1] == 0x8B && gz->data[2] == 8);
-    CHECK_EQ_INT(gz->data[3], 0);                          /* no name, no comment */
-    CHECK_EQ_INT(le32(gz->data + 4), 0);                   /* time 0 */
-    int rc = kit_inflate(gz->data + 10, gz->len - 10, 1 << 28, tar, &used, err, sizeof err);
-    CHECK_MSG(rc == 0, "%s", err);
-    CHECK_EQ_INT(10 + used + 8, gz->len);
-    CHECK_EQ_INT(le32(gz->data + gz->len - 8), kit_crc32(0, tar->data, tar->len));
-    CHECK_EQ_INT(le32(gz->data + gz->len - 4), tar->len);
-}
-
-/* The unsigned sum of a header with its checksum field as spaces. */
-static unsigned long header_sum(const unsigned char *h)
-{
-    unsigned long sum = 0;
-    for (int k = 0; k < 512; k++)
-        sum += k >= 148 && k < 156 ? ' ' : h[k];
-    return sum;
-}
-
-static void test_tar_layout(void)
-{
-    Archive a;
-    Fixture f;
-    KitBuf gz = {0}, tar;
-    char err[300];
-    archive_init(&a, ARCHIVE_TARGZ);
-    add_standard_entries(&a, &f);
-    CHECK_EQ_INT(archive_encode(&a, &gz, err, sizeof err), 0);
-    gunzip_by_hand(&gz, &tar);
-    CHECK_EQ_INT(tar.len % 10240, 0);
-    size_t at = 0;
-    int headers = 0;
-    while (at + 512 <= tar.len) {
-        const unsigned char *h = tar.data + at;
-        int zero = 1;
-        for (int k = 0; k < 512; k++)
-            zero &= h[k] == 0;
-        if (zero)
-            break;
-        headers++;
-        CHECK(memcmp(h + 257, "ustar\0" "00", 8) == 0);
-        CHECK_EQ_INT(strtoul((const char *)h + 148, NULL, 8), header_sum(h));
-        CHECK_EQ_INT(strtoul((const char *)h + 136, NULL, 8), ARCHIVE_MTIME);
-        size_t size = strtoul((const char *)h + 124, NULL, 8);
-        char name[256] = "";
-        if (h[345])
-            snprintf(name, sizeof name, "%.155s/", (const char *)h + 345);
-        snprintf(name + strlen(name), sizeof name - strlen(name), "%.100s", (const char *)h);
-        if (strcmp(name, "run_autograder") == 0)
-            CHECK(memcmp(h + 100, "0000755", 8) == 0 && h[156] == '0');
-        if (strcmp(name, "docs/") == 0)
-            CHECK(h[156] == '5' && size == 0);
-        if (strlen(name) == 150) {
-            CHECK(strcmp(name, f.long_name) == 0);
-            CHECK(h[345] != 0);                          /* the prefix field is used */
-        }
-        at += 512 + (size + 511) / 512 * 512;
-    }
-    CHECK_EQ_INT(headers, 6);
-    archive_free(&a);
-    kit_buf_free(&gz);
-    kit_buf_free(&tar);
-    free(f.big);
-}
-
-static void test_tar_path_lengths(void)
-{
-    char path[400], err[1000] = "";
-    for (size_t len = 95; len <= 300; len += 5) {
-        Archive a, b;
-        KitBuf bytes = {0};
-        long_path(path, len);
-        archive_init(&a, ARCHIVE_TARGZ);
-        CHECK_EQ_INT(archive_add_file(&a, path, "x", 1, 0644, err, sizeof err), 0);
-        int rc = archive_encode(&a, &bytes, err, sizeof err);
-        if (len <= 255) {
-            CHECK_MSG(rc == 0, "length %zu: %s", len, err);
-            CHECK_EQ_INT(archive_decode(&b, bytes.data, bytes.len, err, sizeof err), 0);
-            CHECK(b.count == 1 && strcmp(b.entries[0].path, path) == 0);
-            archive_free(&b);
-        } else {
-            CHECK_EQ_INT(rc, -1);
-            CHECK_STR_CONTAINS(err, "too long");
-        }
-        archive_free(&a);
-        kit_buf_free(&bytes);
-    }
-    /* a long last component cannot be split */
-    Archive a;
-    KitBuf bytes = {0};
-    memset(path, 'q', 120);
-    path[120] = '\0';
-    archive_init(&a, ARCHIVE_TARGZ);
-    archive_add_file(&a, path, "x", 1, 0644, err, sizeof err);
-    CHECK_EQ_INT(archive_encode(&a, &bytes, err, sizeof err), -1);
-    CHECK_STR_CONTAINS(err, "split");
-    archive_free(&a);
-}
-
-static void test_gzip(void)
-{
-    KitBuf gz = {0}, back = {0};
-    char err[200] = "";
-    static const char text[] = "gzip me, gzip me, gzip me";
-    CHECK_EQ_INT(archive_gzip(text, sizeof text - 1, &gz), 0);
-    CHECK_EQ_INT(archive_gunzip(gz.data, gz.len, 1000, &back, err, sizeof err), 0);
-    CHECK(back.len == sizeof text - 1 && memcmp(back.data, text, back.len) == 0);
-    /* two members decode to their concatenation */
-    size_t one = gz.len;
-    kit_buf_append(&gz, gz.data, one);
-    back.len = 0;
-    CHECK_EQ_INT(archive_gunzip(gz.data, gz.len, 1000, &back, err, sizeof err), 0);
-    CHECK_EQ_INT(back.len, 2 * (sizeof text - 1));
-    /* the size limit */
-    back.len = 0;
-    CHECK_EQ_INT(archive_gunzip(gz.data, gz.len, 30, &back, err, sizeof err), -1);
-    CHECK_EQ_INT(back.len, 0);
-    gz.len = one;
-    /* a wrong CRC, trailing junk, truncation */
-    gz.data[one - 5] ^= 1;
-    CHECK_EQ_INT(archive_gunzip(gz.data, gz.len, 1000, &back, err, sizeof err), -1);
-    CHECK_STR_CONTAINS(err, "CRC");
-    gz.data[one - 5] ^= 1;
-    kit_buf_append(&gz, "junk", 4);
-    CHECK_EQ_INT(archive_gunzip(gz.data, gz.len, 1000, &back, err, sizeof err), -1);
-    CHECK_STR_CONTAINS(err, "after the gzip data");
-    for (size_t n = 0; n < one; n++)
-        CHECK_EQ_INT(archive_gunzip(gz.data, n, 1000, &back, err, sizeof err), -1);
-    CHECK_EQ_INT(back.len, 0);
-    /* a header with a name and a comment (made by hand) */
-    KitBuf named = {0};
-    static const unsigned char head[] = {0x1F, 0x8B, 8, 0x18, 0, 0, 0, 0, 0, 3,
-                                         'f', '.', 't', 'x', 't', 0, 'h', 'i', 0};
-    kit_buf_append(&named, head, sizeof head);
-    kit_buf_append(&named, gz.data + 10, one - 10);
-    back.len = 0;
-    CHECK_EQ_INT(archive_gunzip(named.data, named.len, 1000, &back, err, sizeof err), 0);
-    CHECK(back.len == sizeof text - 1 && memcmp(back.data, text, back.len) == 0);
-    kit_buf_free(&named);
-    kit_buf_free(&gz);
-    kit_buf_free(&back);
-}
-
 /* ---- refusing bad paths and bad data ---------------------------------------------------- */
 
 static void test_bad_paths_refused_when_adding(void)
@@ -412,7 +236,7 @@ static void test_bad_paths_refused_when_adding(void)
                                 "a/.", "a/", "a\\b"};
     Archive a;
     char err[300];
-    archive_init(&a, ARCHIVE_ZIP);
+    archive_init(&a);
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
         CHECK_MSG(!archive_path_ok(bad[k]), "\"%s\" accepted", bad[k]);
         CHECK_EQ_INT(archive_add_file(&a, bad[k], "x", 1, 0644, err, sizeof err), -1);
@@ -447,7 +271,7 @@ static void test_zip_refuses_unsafe_paths(void)
         Archive a, b;
         KitBuf z = {0};
         char err[300] = "";
-        archive_init(&a, ARCHIVE_ZIP);
+        archive_init(&a);
         archive_add_file(&a, "xx/evil", "bad", 3, 0644, err, sizeof err);
         archive_encode(&a, &z, err, sizeof err);
         CHECK_EQ_INT(replace_bytes(&z, "xx/evil", evil[k]), 2);    /* local and central */
@@ -459,78 +283,51 @@ static void test_zip_refuses_unsafe_paths(void)
     }
 }
 
-static void test_targz_refuses_unsafe_paths(void)
+static void test_damaged_archive(void)
 {
-    static const char *evil[] = {"../evil", "/x/evil", "x/../ev"};
-    for (int k = 0; k < 3; k++) {
-        Archive a, b;
-        KitBuf gz = {0}, tar, again = {0};
-        char err[300] = "";
-        archive_init(&a, ARCHIVE_TARGZ);
-        archive_add_file(&a, "xx/evil", "bad", 3, 0644, err, sizeof err);
-        archive_encode(&a, &gz, err, sizeof err);
-        gunzip_by_hand(&gz, &tar);
-        CHECK_EQ_INT(replace_bytes(&tar, "xx/evil", evil[k]), 1);
-        snprintf((char *)tar.data + 148, 8, "%06lo", header_sum(tar.data));
-        tar.data[155] = ' ';
-        archive_gzip(tar.data, tar.len, &again);
-        CHECK_EQ_INT(archive_decode(&b, again.data, again.len, err, sizeof err), -1);
-        CHECK_STR_CONTAINS(err, "unsafe");
-        /* a wrong checksum is refused too */
-        tar.data[148] ^= 1;
-        again.len = 0;
-        archive_gzip(tar.data, tar.len, &again);
-        CHECK_EQ_INT(archive_decode(&b, again.data, again.len, err, sizeof err), -1);
-        CHECK_STR_CONTAINS(err, "checksum");
-        archive_free(&a);
-        kit_buf_free(&gz);
-        kit_buf_free(&tar);
-        kit_buf_free(&again);
+    Archive a, b;
+    KitBuf bytes = {0};
+    char err[300];
+    archive_init(&a);
+    archive_add_dir(&a, "d", 0755, err, sizeof err);
+    archive_add_file(&a, "d/text", "hello hello hello hello hello", 29, 0644, err, sizeof err);
+    archive_add_file(&a, "d/raw", "q", 1, 0755, err, sizeof err);
+    archive_encode(&a, &bytes, err, sizeof err);
+    /* every truncation is refused */
+    for (size_t n = 0; n < bytes.len; n++) {
+        CHECK_MSG(archive_decode(&b, bytes.data, n, err, sizeof err) == -1,
+                  "%zu of %zu bytes accepted", n, bytes.len);
+        CHECK_EQ_INT(b.count, 0);
     }
+    /* random damage: an error or an archive, never a crash */
+    for (int k = 0; k < 4000; k++) {
+        KitBuf bad = {0};
+        kit_buf_append(&bad, bytes.data, bytes.len);
+        for (int f = 0; f < 1 + k % 3; f++)
+            bad.data[rng_next() % bad.len] ^= (unsigned char)(1 + rng_next() % 255);
+        if (archive_decode(&b, bad.data, bad.len, err, sizeof err) == 0)
+            archive_free(&b);
+        kit_buf_free(&bad);
+    }
+    archive_free(&a);
+    kit_buf_free(&bytes);
 }
 
-static void test_corrupt_archives(void)
+/* A stored entry whose data changed: the CRC catches it; and bytes that are
+ * no archive. */
+static void test_changed_data(void)
 {
-    for (int fmt = 0; fmt < 2; fmt++) {
-        Archive a, b;
-        KitBuf bytes = {0};
-        char err[300];
-        archive_init(&a, fmt ? ARCHIVE_TARGZ : ARCHIVE_ZIP);
-        archive_add_dir(&a, "d", 0755, err, sizeof err);
-        archive_add_file(&a, "d/text", "hello hello hello hello hello", 29, 0644, err, sizeof err);
-        archive_add_file(&a, "d/raw", "q", 1, 0755, err, sizeof err);
-        archive_encode(&a, &bytes, err, sizeof err);
-        /* every truncation is refused */
-        for (size_t n = 0; n < bytes.len; n++) {
-            CHECK_MSG(archive_decode(&b, bytes.data, n, err, sizeof err) == -1,
-                      "format %d: %zu of %zu bytes accepted", fmt, n, bytes.len);
-            CHECK_EQ_INT(b.count, 0);
-        }
-        /* random damage: an error or an archive, never a crash */
-        for (int k = 0; k < 4000; k++) {
-            KitBuf bad = {0};
-            kit_buf_append(&bad, bytes.data, bytes.len);
-            for (int f = 0; f < 1 + k % 3; f++)
-                bad.data[rng_next() % bad.len] ^= (unsigned char)(1 + rng_next() % 255);
-            if (archive_decode(&b, bad.data, bad.len, err, sizeof err) == 0)
-                archive_free(&b);
-            kit_buf_free(&bad);
-        }
-        archive_free(&a);
-        kit_buf_free(&bytes);
-    }
-    /* a stored ZIP entry whose data changed: the CRC catches it */
     Archive a, b;
     KitBuf z = {0};
     char err[300];
-    archive_init(&a, ARCHIVE_ZIP);
+    archive_init(&a);
     archive_add_file(&a, "f", "abcdefgh", 8, 0644, err, sizeof err);
     archive_encode(&a, &z, err, sizeof err);
     CHECK_EQ_INT(replace_bytes(&z, "abcdefgh", "abcdefgX"), 1);
     CHECK_EQ_INT(archive_decode(&b, z.data, z.len, err, sizeof err), -1);
     CHECK_STR_CONTAINS(err, "CRC");
     CHECK_EQ_INT(archive_decode(&b, "hello", 5, err, sizeof err), -1);
-    CHECK_STR_CONTAINS(err, "not a ZIP or .tar.gz");
+    CHECK_STR_CONTAINS(err, "not a ZIP");
     archive_free(&a);
     kit_buf_free(&z);
 }
@@ -583,37 +380,27 @@ static void test_tree_save_load_extract(void)
     char dir[512], src[600], out[700], dest[700], err[1500] = "";
     check_temp_dir(dir, sizeof dir, "archive");
     make_source_tree(dir, src, sizeof src);
-    for (int fmt = 0; fmt < 2; fmt++) {
-        const char *prefix = fmt ? "kit" : NULL;
-        Archive a, b;
-        archive_init(&a, fmt ? ARCHIVE_TARGZ : ARCHIVE_ZIP);
-        CHECK_MSG(archive_add_tree(&a, src, prefix, err, sizeof err) == 0, "%s", err);
-        /* sorted by name, directories before their contents */
-        static const char *zip_order[] = {"Zero.txt", "empty", "lib", "lib/a.c", "lib/b.h",
-                                          "run_autograder"};
-        size_t base = prefix ? 1 : 0;
-        CHECK_EQ_INT(a.count, 6 + base);
-        for (size_t k = 0; k < 6 && k + base < a.count; k++) {
-            char want[100];
-            snprintf(want, sizeof want, "%s%s%s", prefix ? prefix : "", prefix ? "/" : "", zip_order[k]);
-            CHECK_MSG(strcmp(a.entries[k + base].path, want) == 0, "entry %zu is %s, want %s",
-                      k + base, a.entries[k + base].path, want);
-        }
-        snprintf(out, sizeof out, "%s/out.%s", dir, fmt ? "tar.gz" : "zip");
-        CHECK_MSG(archive_save(&a, out, err, sizeof err) == 0, "%s", err);
-        CHECK_MSG(archive_load(&b, out, err, sizeof err) == 0, "%s", err);
-        CHECK_EQ_INT(b.count, a.count);
-        snprintf(dest, sizeof dest, "%s/dest%d/deeper", dir, fmt);
-        CHECK_MSG(archive_extract(&b, dest, err, sizeof err) == 0, "%s", err);
-        char root[800];
-        snprintf(root, sizeof root, "%s%s%s", dest, prefix ? "/" : "", prefix ? prefix : "");
-        check_source_tree(root);
-        /* extracting again over the same files works, read-only files included */
-        CHECK_MSG(archive_extract(&b, dest, err, sizeof err) == 0, "%s", err);
-        check_source_tree(root);
-        archive_free(&a);
-        archive_free(&b);
-    }
+    Archive a, b;
+    archive_init(&a);
+    CHECK_MSG(archive_add_tree(&a, src, err, sizeof err) == 0, "%s", err);
+    /* sorted by name, directories before their contents */
+    static const char *order[] = {"Zero.txt", "empty", "lib", "lib/a.c", "lib/b.h", "run_autograder"};
+    CHECK_EQ_INT(a.count, 6);
+    for (size_t k = 0; k < 6 && k < a.count; k++)
+        CHECK_MSG(strcmp(a.entries[k].path, order[k]) == 0, "entry %zu is %s, want %s", k,
+                  a.entries[k].path, order[k]);
+    snprintf(out, sizeof out, "%s/out.zip", dir);
+    CHECK_MSG(archive_save(&a, out, err, sizeof err) == 0, "%s", err);
+    CHECK_MSG(archive_load(&b, out, err, sizeof err) == 0, "%s", err);
+    CHECK_EQ_INT(b.count, a.count);
+    snprintf(dest, sizeof dest, "%s/dest/deeper", dir);
+    CHECK_MSG(archive_extract(&b, dest, err, sizeof err) == 0, "%s", err);
+    check_source_tree(dest);
+    /* extracting again over the same files works, read-only files included */
+    CHECK_MSG(archive_extract(&b, dest, err, sizeof err) == 0, "%s", err);
+    check_source_tree(dest);
+    archive_free(&a);
+    archive_free(&b);
     check_remove_tree(dir);
 }
 
@@ -626,13 +413,13 @@ static void test_add_tree_refuses_links(void)
     snprintf(q, sizeof q, "%s/link", dir);
     CHECK_EQ_INT(symlink("file", q), 0);
     Archive a;
-    archive_init(&a, ARCHIVE_ZIP);
-    CHECK_EQ_INT(archive_add_tree(&a, dir, NULL, err, sizeof err), -1);
+    archive_init(&a);
+    CHECK_EQ_INT(archive_add_tree(&a, dir, err, sizeof err), -1);
     CHECK_STR_CONTAINS(err, "link");
     CHECK_STR_CONTAINS(err, q);
     archive_free(&a);
     snprintf(p, sizeof p, "%s/missing", dir);
-    CHECK_EQ_INT(archive_add_tree(&a, p, NULL, err, sizeof err), -1);
+    CHECK_EQ_INT(archive_add_tree(&a, p, err, sizeof err), -1);
     CHECK_STR_CONTAINS(err, p);
     check_remove_tree(dir);
 }
@@ -648,13 +435,13 @@ static void test_extract_refuses_symlinks_in_dest(void)
     snprintf(link, sizeof link, "%s/sub", dest);
     CHECK_EQ_INT(symlink(outside, link), 0);
     Archive a;
-    archive_init(&a, ARCHIVE_ZIP);
+    archive_init(&a);
     archive_add_file(&a, "sub/planted", "x", 1, 0644, err, sizeof err);
     CHECK_EQ_INT(archive_extract(&a, dest, err, sizeof err), -1);
     CHECK_STR_CONTAINS(err, "symbolic link");
     archive_free(&a);
     /* a link in the place of the file itself is replaced, not followed */
-    archive_init(&a, ARCHIVE_ZIP);
+    archive_init(&a);
     archive_add_file(&a, "sub", "data", 4, 0644, err, sizeof err);
     CHECK_EQ_INT(archive_extract(&a, dest, err, sizeof err), 0);
     struct stat st;
@@ -676,9 +463,9 @@ static void test_save_failure_leaves_nothing(void)
     char dir[512], path[700], err[1500] = "";
     check_temp_dir(dir, sizeof dir, "archive");
     Archive a;
-    archive_init(&a, ARCHIVE_TARGZ);
+    archive_init(&a);
     archive_add_file(&a, "f", "x", 1, 0644, err, sizeof err);
-    snprintf(path, sizeof path, "%s/no/such/out.tar.gz", dir);
+    snprintf(path, sizeof path, "%s/no/such/out.zip", dir);
     CHECK_EQ_INT(archive_save(&a, path, err, sizeof err), -1);
     CHECK_STR_CONTAINS(err, path);
     snprintf(path, sizeof path, "%s/taken", dir);
@@ -703,16 +490,12 @@ static void test_save_failure_leaves_nothing(void)
 
 static const CheckTest tests[] = {
     CHECK_TEST(test_zip_round_trip),
-    CHECK_TEST(test_targz_round_trip),
-    CHECK_TEST(test_empty_archives),
+    CHECK_TEST(test_empty_archive),
     CHECK_TEST(test_zip_layout),
-    CHECK_TEST(test_tar_layout),
-    CHECK_TEST(test_tar_path_lengths),
-    CHECK_TEST(test_gzip),
     CHECK_TEST(test_bad_paths_refused_when_adding),
     CHECK_TEST(test_zip_refuses_unsafe_paths),
-    CHECK_TEST(test_targz_refuses_unsafe_paths),
-    CHECK_TEST(test_corrupt_archives),
+    CHECK_TEST(test_damaged_archive),
+    CHECK_TEST(test_changed_data),
     CHECK_TEST(test_tree_save_load_extract),
     CHECK_TEST(test_add_tree_refuses_links),
     CHECK_TEST(test_extract_refuses_symlinks_in_dest),
