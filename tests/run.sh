@@ -28,15 +28,18 @@ start=$(date +%s)
 # The items, in the order they are shown: "name|command".
 items=$dir/items
 : >"$items"
-for t in out/build/tests/test_*; do
-    [ -x "$t" ] && printf 'unit: %s|%s\n' "${t##*/}" "$t" >>"$items"
+# The unit tests are those of tests/unit (a program left in out/ by a test
+# since deleted is not one).
+units=$(for c in tests/unit/test_*.c; do n=${c##*/}; echo "${n%.c}"; done)
+for n in $units; do
+    [ -x "out/build/tests/$n" ] && printf 'unit: %s|%s\n' "$n" "out/build/tests/$n" >>"$items"
 done
 # The sandbox's test again in the jail's fallback (jail.h), as where the
 # system refuses namespaces.
 [ -x out/build/tests/test_sandbox ] &&
     printf 'unit: test_sandbox, fallback|GRADE_JAIL=fallback out/build/tests/test_sandbox\n' >>"$items"
-for t in out/asan/tests/test_*; do
-    [ -x "$t" ] && printf 'unit, sanitizers: %s|%s\n' "${t##*/}" "$t" >>"$items"
+for n in $units; do
+    [ -x "out/asan/tests/$n" ] && printf 'unit, sanitizers: %s|%s\n' "$n" "out/asan/tests/$n" >>"$items"
 done
 for s in tests/suites/*.sh; do
     [ -f "$s" ] && printf '%s|sh %s\n' "${s##*/}" "$s" >>"$items"

@@ -18,8 +18,7 @@
 #    macOS lacks or hides, and the shell scripts for GNU-only tools and flags.
 #
 # Every grep check is first run on a planted violation, so that a check
-# that could never fail fails here.  PORT_FULL=1 runs the other compiler's
-# unit tests even when they passed before unchanged; MACOS_SDK=dir (a macOS
+# that could never fail fails here.  MACOS_SDK=dir (a macOS
 # SDK, dir/usr/include) also compiles every C file against Apple's headers
 # with clang.
 set -u
@@ -195,32 +194,19 @@ fi
 # shellcheck disable=SC2086
 bashisms $scripts >"$tmp/found"
 check "no bashisms in the kit's scripts (grep check): $(tr '\n' ' ' <"$tmp/found")" test ! -s "$tmp/found"
-# The linters again only when a script changed since they last passed.
-lint_stamp=out/port/scripts.linted
-mkdir -p out/port
-# shellcheck disable=SC2086
-if [ -z "${PORT_FULL:-}" ] && [ -f "$lint_stamp" ] && [ -z "$(find $scripts -newer "$lint_stamp")" ]; then
-    echo "   checkbashisms, shellcheck: no script changed since they last passed"
-    # Counted as they counted then, so that the count is the same either way.
-    have checkbashisms && pass
-    have shellcheck && pass
+if have checkbashisms; then
+    # shellcheck disable=SC2086
+    checkbashisms -f -p $scripts >"$tmp/cb" 2>&1
+    check "checkbashisms: $(tr '\n' ' ' <"$tmp/cb")" test ! -s "$tmp/cb"
 else
-    lint_ok=1
-    if have checkbashisms; then
-        # shellcheck disable=SC2086
-        checkbashisms -f -p $scripts >"$tmp/cb" 2>&1
-        check "checkbashisms: $(tr '\n' ' ' <"$tmp/cb")" test ! -s "$tmp/cb" || lint_ok=0
-    else
-        echo "   skipped checkbashisms: not installed (Debian's devscripts has it)"
-    fi
-    if have shellcheck; then
-        # shellcheck disable=SC2086
-        shellcheck -s sh -f gcc $scripts 2>/dev/null | grep -E 'SC3[0-9]{3}' >"$tmp/sc"
-        check "shellcheck -s sh finds no non-POSIX feature: $(tr '\n' ' ' <"$tmp/sc")" test ! -s "$tmp/sc" || lint_ok=0
-    else
-        echo "   skipped shellcheck: not installed"
-    fi
-    [ "$lint_ok" -eq 1 ] && : >"$lint_stamp"
+    echo "   skipped checkbashisms: not installed (Debian's devscripts has it)"
+fi
+if have shellcheck; then
+    # shellcheck disable=SC2086
+    shellcheck -s sh -f gcc $scripts 2>/dev/null | grep -E 'SC3[0-9]{3}' >"$tmp/sc"
+    check "shellcheck -s sh finds no non-POSIX feature: $(tr '\n' ' ' <"$tmp/sc")" test ! -s "$tmp/sc"
+else
+    echo "   skipped shellcheck: not installed"
 fi
 # shellcheck disable=SC2086
 gnu_only $scripts >"$tmp/found"
@@ -275,41 +261,13 @@ fi
 cflags=$(printf 'portability-flags:\n\t@echo $(CFLAGS) $(THREADS)\n' | ${MAKE:-make} -s -f Makefile -f - portability-flags)
 
 # The default compiler, -Werror, every C file (the main build compiled them
-# without it); only those changed since the last clean pass, or all of them
-# when a header changed.
-mkdir -p out/port
-stamp=out/port/$(basename "$cc").werror-passed
-if [ -n "${PORT_FULL:-}" ] || [ ! -f "$stamp" ] || [ -n "$(find $(cat "$tmp/csrc") -name '*.h' -newer "$stamp")" ]; then
-    grep '\.c$' "$tmp/csrc" >"$tmp/werror.list"
-else
-    # shellcheck disable=SC2046
-    find $(grep '\.c$' "$tmp/csrc") -newer "$stamp" >"$tmp/werror.list"
-fi
-if [ ! -s "$tmp/werror.list" ]; then
-    echo "   $cc -Werror: no C file changed since the last clean pass"
-    pass
-else
-    # shellcheck disable=SC2046
-    set -- $(cat "$tmp/werror.list")
-    half=$(( ($# + 1) / 2 ))
-    first="" second="" k=0
-    for f in "$@"; do
-        k=$((k + 1))
-        if [ "$k" -le "$half" ]; then first="$first $f"; else second="$second $f"; fi
-    done
-    # shellcheck disable=SC2086
-    $cc $cflags -Werror -fsyntax-only -Ilabs -DHARNESS_PART=1 -DGRADER_ORACLE $first >"$tmp/werror1.log" 2>&1 &
-    # shellcheck disable=SC2086
-    [ -z "$second" ] || $cc $cflags -Werror -fsyntax-only -Ilabs -DHARNESS_PART=1 -DGRADER_ORACLE $second \
-        >"$tmp/werror2.log" 2>&1
-    status2=$?
-    wait $!
-    status1=$?
-    cat "$tmp/werror1.log" "$tmp/werror2.log" 2>/dev/null >"$tmp/werror.log"
-    check "$cc -std=c11 -pedantic -Werror compiles $# C files: $(grep -E 'error:|warning:' "$tmp/werror.log" | head -n 5 | tr '\n' ' ')" \
-        test "$status1" -eq 0 -a "$status2" -eq 0
-    [ "$status1" -eq 0 ] && [ "$status2" -eq 0 ] && : >"$stamp"
-fi
+# without it).
+# shellcheck disable=SC2046
+set -- $(grep '\.c$' "$tmp/csrc")
+$cc $cflags -Werror -fsyntax-only -Ilabs -DHARNESS_PART=1 -DGRADER_ORACLE "$@" >"$tmp/werror.log" 2>&1
+status=$?
+check "$cc -std=c11 -pedantic -Werror compiles $# C files: $(grep -E 'error:|warning:' "$tmp/werror.log" | head -n 5 | tr '\n' ' ')" \
+    test "$status" -eq 0
 echo "   $cc: $($cc --version 2>/dev/null | head -n 1)"
 
 if [ -z "$other" ]; then
@@ -323,54 +281,24 @@ else
     status=$?
     check "make all with $other -std=c11 -pedantic -Werror (exit $status): $(grep -E 'error:|warning:' "$tmp/other.log" | head -n 5 | tr '\n' ' ')" \
         test "$status" -eq 0
-    # Its unit tests, two at a time; one that passed before and was not
-    # rebuilt since is not run again.  Each runner writes "pass NAME",
-    # "kept NAME" or "fail NAME STATUS" lines.
-    units() {
-        for t in "$@"; do
-            stamp="$t.passed"
-            if [ -z "${PORT_FULL:-}" ] && [ -f "$stamp" ] && [ -z "$(find "$t" -newer "$stamp")" ]; then
-                echo "kept ${t##*/}"
-                continue
-            fi
-            rm -f "$stamp"
-            "$t" >"$tmp/unit-${t##*/}.out" 2>&1
-            status=$?
-            if [ "$status" -eq 0 ] && tail -n 1 "$tmp/unit-${t##*/}.out" | grep -q ' 0 failed'; then
-                : >"$stamp"
-                echo "pass ${t##*/}"
-            else
-                echo "fail ${t##*/} $status"
-            fi
-        done
-    }
-    first="" second="" k=0
-    for t in "$root"/build/tests/test_*; do
-        case $t in *.passed) continue ;; esac
+    # Its unit tests.
+    ran=0
+    for c in tests/unit/test_*.c; do
+        t=${c##*/}
+        t=$root/build/tests/${t%.c}
         [ -x "$t" ] || continue
-        k=$((k + 1))
-        if [ $((k % 2)) -eq 1 ]; then first="$first $t"; else second="$second $t"; fi
+        ran=$((ran + 1))
+        "$t" >"$tmp/unit.out" 2>&1
+        status=$?
+        if [ "$status" -eq 0 ] && tail -n 1 "$tmp/unit.out" | grep -q ' 0 failed'; then
+            pass
+        else
+            fail "${t##*/} built with $other (exit $status)"
+            grep -E 'FAIL|: ' "$tmp/unit.out" | head -n 10
+        fi
     done
-    # shellcheck disable=SC2086
-    units $first >"$tmp/units1" &
-    # shellcheck disable=SC2086
-    units $second >"$tmp/units2"
-    wait $!
-    ran=0 kept=0
-    cat "$tmp/units1" "$tmp/units2" >"$tmp/units"
-    while read -r verdict unit status; do
-        case $verdict in
-        kept) kept=$((kept + 1)); pass ;;
-        pass) ran=$((ran + 1)); pass ;;
-        *)
-            ran=$((ran + 1))
-            fail "$unit built with $other (exit $status)"
-            grep -E 'FAIL|: ' "$tmp/unit-$unit.out" | head -n 10
-            ;;
-        esac
-    done <"$tmp/units"
-    echo "   ran $ran unit tests built with $name; $kept unchanged since they passed"
-    check "the unit tests were built with $other" test $((ran + kept)) -gt 0
+    echo "   ran $ran unit tests built with $name"
+    check "the unit tests were built with $other" test "$ran" -gt 0
 fi
 
 # A second C library and its maths, when installed: musl (musl-gcc, from
