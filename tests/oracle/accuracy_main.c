@@ -20,63 +20,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include "hard.h"
+#include "textbook.h"
 
 #define U ORACLE_U
-
-/* ---- the textbook formulas (the lecture's, as most students write them) --- */
-
-static void textbook_image_plane(double fov, double aspect, double d, double *w, double *h)
-{
-    *h = 2 * d * tan(fov / 2 * M_PI / 180);
-    *w = aspect * *h;
-}
-
-static Vec3 textbook_pixel(int i, int j, int nx, int ny, double w, double h, double d)
-{
-    return vec3(-w / 2 + w * (i + 0.5) / nx, -h / 2 + h * (ny - 0.5 - j) / ny, -d);
-}
-
-static bool textbook_intersect(const Sphere *sp, const Ray *ray, double *t)
-{
-    Vec3 r = ray->direction, f = vec3_sub(ray->origin, sp->center);
-    double A = vec3_dot(r, r), B = vec3_dot(f, r);
-    double C = vec3_dot(f, f) - sp->radius * sp->radius;
-    double disc = B * B - A * C;
-    if (!(A > 0) || !(disc >= 0))
-        return false;
-    double t1 = (-B - sqrt(disc)) / A, t2 = (-B + sqrt(disc)) / A;
-    *t = t1 > 0 ? t1 : t2;
-    return *t > 0;
-}
-
-/* Part 4 as t = (p.n - e.n) / (r.n), with the plane's constant first. */
-static bool textbook_plane(const Plane *pl, const Ray *ray, double *t)
-{
-    double rn = vec3_dot(ray->direction, pl->normal);
-    double tt = (vec3_dot(pl->point, pl->normal) - vec3_dot(ray->origin, pl->normal)) / rn;
-    if (!(tt > 0 && tt < INFINITY))
-        return false;
-    *t = tt;
-    return true;
-}
-
-/* Part 5 as the skeleton's comment writes it (Moller-Trumbore). */
-static bool textbook_triangle(const Triangle *tr, const Ray *ray, double *t)
-{
-    Vec3 e1 = vec3_sub(tr->b, tr->a), e2 = vec3_sub(tr->c, tr->a), s = vec3_sub(ray->origin, tr->a);
-    Vec3 q = vec3_cross(ray->direction, e2);
-    double det = vec3_dot(e1, q);
-    if (det == 0)
-        return false;
-    double beta = vec3_dot(s, q) / det;
-    Vec3 sx = vec3_cross(s, e1);
-    double gamma = vec3_dot(ray->direction, sx) / det;
-    double tt = vec3_dot(e2, sx) / det;
-    if (beta < 0 || gamma < 0 || beta + gamma > 1 || !(tt > 0 && tt < INFINITY))
-        return false;
-    *t = tt;
-    return true;
-}
 
 /* ---- statistics per family ------------------------------------------------ */
 
