@@ -49,6 +49,20 @@ static bool either_word(const char *line, const char *a, const char *b, bool *fi
     return true;
 }
 
+/* Whether line is "KEY S" with S seconds, more than 0 and at most max:
+ * true, with *seconds set; false otherwise. */
+static bool seconds_word(const char *line, double max, double *seconds)
+{
+    char key[32];
+    double s = 0;
+    int used = 0;
+    if (sscanf(line, " %31s %lf %n", key, &s, &used) != 2 || used == 0 || line[used] ||
+        !(s > 0 && s <= max))
+        return false;
+    *seconds = s;
+    return true;
+}
+
 int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
 {
     memset(cfg, 0, sizeof *cfg);
@@ -113,16 +127,10 @@ int config_read(GradeConfig *cfg, const char *path, char *err, size_t errlen)
             else
                 want = "'hints challenge' or 'hints full'";
         } else if (strcmp(word, "timeout") == 0) {
-            if (sscanf(line, " timeout %lf %n", &core, &used) == 1 && used > 0 && !line[used] &&
-                core > 0 && core <= 600)
-                cfg->timeout = core;
-            else
+            if (!seconds_word(line, 600, &cfg->timeout))
                 want = "'timeout S': S seconds, more than 0 and at most 600";
         } else if (strcmp(word, "part-time") == 0) {
-            if (sscanf(line, " part-time %lf %n", &core, &used) == 1 && used > 0 && !line[used] &&
-                core > 0 && core <= 3600)
-                cfg->part_time = core;
-            else
+            if (!seconds_word(line, 3600, &cfg->part_time))
                 want = "'part-time S': S seconds, more than 0 and at most 3600";
         } else if (strcmp(word, "output") == 0) {
             if (sscanf(line, " output %ld %n", &kib, &used) == 1 && used > 0 && !line[used] &&
