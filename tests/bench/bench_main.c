@@ -182,12 +182,18 @@ typedef struct {
     uint64_t seed;
 } Options;
 
+/* Loads the scenes' default.scene, its path in path.  0, or -1 with err. */
+static int load_default(const Options *o, Scene *scene, char *path, size_t size, char *err, size_t errlen)
+{
+    snprintf(path, size, "%s/default.scene", o->scenes);
+    return scene_load(scene, path, err, errlen) != 0 ? -1 : 0;
+}
+
 static int stage_throughput(const Options *o, BenchResults *br, char *err, size_t errlen)
 {
     char path[1024];
-    snprintf(path, sizeof path, "%s/default.scene", o->scenes);
     Scene scene;
-    if (scene_load(&scene, path, err, errlen) != 0)
+    if (load_default(o, &scene, path, sizeof path, err, errlen) != 0)
         return -1;
     RaySet rs;
     FastScene fs;
@@ -279,9 +285,8 @@ static int stage_throughput(const Options *o, BenchResults *br, char *err, size_
 static int stage_errors(const Options *o, BenchResults *br, char *err, size_t errlen)
 {
     char path[1024];
-    snprintf(path, sizeof path, "%s/default.scene", o->scenes);
     Scene scene;
-    if (scene_load(&scene, path, err, errlen) != 0)
+    if (load_default(o, &scene, path, sizeof path, err, errlen) != 0)
         return -1;
     Case *cases[FAMILY_COUNT];
     int n[FAMILY_COUNT];

@@ -41,16 +41,6 @@ Rayf rayf_from(const Ray *r)
 #define SAFE_HI 0x1p+900
 #define NAME(x) x##_d
 #include "methods_body.h"
-#undef REAL
-#undef VEC
-#undef SPHERE
-#undef RAY
-#undef SQRT
-#undef COPYSIGN
-#undef TINY
-#undef SAFE_LO
-#undef SAFE_HI
-#undef NAME
 
 #define REAL float
 #define VEC Vec3f

@@ -8,6 +8,7 @@
  *   TINY                     the smallest normal number
  *   SAFE_LO, SAFE_HI         the range where A R^2 is formed safely
  *   NAME(x)                  x with the precision's suffix (_d or _f)
+ * and this file undefines them at its end.
  *
  * Notation (the lecture's): ray x(t) = e + t r, sphere centre c, radius R,
  * f = e - c, A = r.r, B = f.r, C = f.f - R^2.  Every method returns the
@@ -189,3 +190,14 @@ bool NAME(isect_reference)(const SPHERE *sphere, const RAY *ray, REAL *t)
     *t = root;
     return true;
 }
+
+#undef REAL
+#undef VEC
+#undef SPHERE
+#undef RAY
+#undef SQRT
+#undef COPYSIGN
+#undef TINY
+#undef SAFE_LO
+#undef SAFE_HI
+#undef NAME

@@ -84,21 +84,10 @@ int render_bench(const char *path, int nx, int ny, int reps, RenderResult *res,
     RaySet row;
     int rowok = rayset_alloc(&row, nx) == 0;
     int fsok = fast_build(&fs, scene.spheres, scene.nspheres, scene.eye) == 0;
+    int status = -1;
     if (!sf || !idx || !trow || !samples || !ex.exact || !ex.alt || !ex.amb || !rowok || !fsok) {
         snprintf(err, errlen, "%s: out of memory", path);
-        free(sf);
-        free(idx);
-        free(trow);
-        free(samples);
-        free(ex.exact);
-        free(ex.alt);
-        free(ex.amb);
-        if (rowok)
-            rayset_free(&row);
-        if (fsok)
-            fast_free(&fs);
-        scene_free(&scene);
-        return -1;
+        goto done;
     }
     for (int k = 0; k < scene.nspheres; k++)
         sf[k] = spheref_from(&scene.spheres[k]);
@@ -150,7 +139,9 @@ int render_bench(const char *path, int nx, int ny, int reps, RenderResult *res,
     for (int m = 0; m < bench_nmethods; m++)
         res->seconds[m] = median(samples + m * reps, reps);
     res->rays_seconds = median(samples + bench_nmethods * reps, reps);
+    status = 0;
 
+done:
     free(sf);
     free(idx);
     free(trow);
@@ -158,8 +149,10 @@ int render_bench(const char *path, int nx, int ny, int reps, RenderResult *res,
     free(ex.exact);
     free(ex.alt);
     free(ex.amb);
-    rayset_free(&row);
-    fast_free(&fs);
+    if (rowok)
+        rayset_free(&row);
+    if (fsok)
+        fast_free(&fs);
     scene_free(&scene);
-    return 0;
+    return status;
 }

@@ -48,14 +48,6 @@ static float dot_f(Vec3f a, Vec3f b)
 #define DOT vec3_dot
 #define NAME tri_moller_trumbore_d
 #include "tri_methods_body.h"
-#undef REAL
-#undef VEC
-#undef TRI
-#undef RAY
-#undef SUB
-#undef CROSS
-#undef DOT
-#undef NAME
 
 #define REAL float
 #define VEC Vec3f
@@ -66,14 +58,6 @@ static float dot_f(Vec3f a, Vec3f b)
 #define DOT dot_f
 #define NAME tri_moller_trumbore_f
 #include "tri_methods_body.h"
-#undef REAL
-#undef VEC
-#undef TRI
-#undef RAY
-#undef SUB
-#undef CROSS
-#undef DOT
-#undef NAME
 
 bool tri_wbw_plain_d(const Triangle *tri, const Ray *ray, double *t)
 {

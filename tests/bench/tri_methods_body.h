@@ -1,7 +1,8 @@
 /*
  * tri_methods_body.h - Moller-Trumbore's test written once for double and
  * float (tri_methods.c includes it twice), so the two cannot drift apart.
- * Before including: REAL, VEC, TRI, RAY, SUB, CROSS, DOT and NAME.
+ * Before including: REAL, VEC, TRI, RAY, SUB, CROSS, DOT and NAME; it
+ * undefines them at its end.
  */
 bool NAME(const TRI *tri, const RAY *ray, REAL *t)
 {
@@ -23,3 +24,12 @@ bool NAME(const TRI *tri, const RAY *ray, REAL *t)
     *t = tt;
     return true;
 }
+
+#undef REAL
+#undef VEC
+#undef TRI
+#undef RAY
+#undef SUB
+#undef CROSS
+#undef DOT
+#undef NAME

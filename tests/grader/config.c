@@ -49,6 +49,19 @@ static bool either_word(const char *line, const char *a, const char *b, bool *fi
     return true;
 }
 
+/* Whether line is "KEY S" with S seconds, more than 0 and at most max:
+ * true, with *seconds set; false otherwise. */
+static bool seconds_word(const char *line, double max, double *seconds)
+{
+    char key[32];
+    double s = 0;
+    int used = 0;
+    if (sscanf(line, " %31s %lf %n", key, &s, &used) != 2 || used == 0 || line[used] || !(s > 0 && s <= max))
+        return false;
+    *seconds = s;
+    return true;
+}
+
 /* A setting, its keyword word the line's first: NULL when it is read into
  * cfg, else what was expected (in wanted, of size n, when it is made up). */
 static const char *read_setting(GradeConfig *cfg, const char *line, const char *word, char *wanted, size_t n)
@@ -73,14 +86,11 @@ static const char *read_setting(GradeConfig *cfg, const char *line, const char *
             return "'hints challenge' or 'hints full'";
         cfg->full_hints = !challenge;
     } else if (strcmp(word, "timeout") == 0) {
-        if (sscanf(line, " timeout %lf %n", &x, &used) != 1 || used == 0 || line[used] || !(x > 0 && x <= 600))
+        if (!seconds_word(line, 600, &cfg->timeout))
             return "'timeout S': S seconds, more than 0 and at most 600";
-        cfg->timeout = x;
     } else if (strcmp(word, "part-time") == 0) {
-        if (sscanf(line, " part-time %lf %n", &x, &used) != 1 || used == 0 || line[used] ||
-            !(x > 0 && x <= 3600))
+        if (!seconds_word(line, 3600, &cfg->part_time))
             return "'part-time S': S seconds, more than 0 and at most 3600";
-        cfg->part_time = x;
     } else if (strcmp(word, "output") == 0) {
         if (sscanf(line, " output %ld %n", &kib, &used) != 1 || used == 0 || line[used] || kib < 1 ||
             kib > CONFIG_OUTPUT_KIB_MAX) {

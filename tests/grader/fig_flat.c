@@ -52,16 +52,14 @@ static void square_to(const double *u, double *p, double *q)
     p[2] = u[0] * q[1] - u[1] * q[0];
 }
 
-/* A figure with no drawing: the input itself makes the answer a miss. */
-static void plain_figure(Markup *m, const char *title, const char *line1, const char *line2,
-                         const Case *c, const double *got)
+/* The legend at y: the expected answer (a hit's followed by "(or a miss)"
+ * where either is right) and the code's. */
+static void answer_legend(Markup *m, double y, const Case *c, const double *got)
 {
-    char b[40], wt[80], gt[80];
-    fig_begin(m, 760, 100, title);
-    svg_text(m, 12, 28, "start", 14, COL_TEXT, true, "%s", line1);
-    svg_text(m, 12, 50, "start", 13, COL_TEXT, false, "%s", line2);
+    char b[40], wt[120], gt[120];
     if (c->want[0] != 0)
-        snprintf(wt, sizeof wt, "expected: a hit at t = %s", fig_num(b, sizeof b, c->want[1], 10));
+        snprintf(wt, sizeof wt, "expected: a hit at t = %s%s", fig_num(b, sizeof b, c->want[1], 10),
+                 c->flags & CASE_EITHER_HIT ? " (or a miss)" : "");
     else
         snprintf(wt, sizeof wt, "expected: a miss");
     if (!got)
@@ -70,7 +68,17 @@ static void plain_figure(Markup *m, const char *title, const char *line1, const 
         snprintf(gt, sizeof gt, "your code: a hit at t = %s", fig_num(b, sizeof b, got[1], 10));
     else
         snprintf(gt, sizeof gt, "your code: %s", got[0] == 0 ? "a miss" : "neither true nor false");
-    fig_legend(m, 12, 84, wt, gt);
+    fig_legend(m, 12, y, wt, gt);
+}
+
+/* A figure with no drawing: the input itself makes the answer a miss. */
+static void plain_figure(Markup *m, const char *title, const char *line1, const char *line2,
+                         const Case *c, const double *got)
+{
+    fig_begin(m, 760, 100, title);
+    svg_text(m, 12, 28, "start", 14, COL_TEXT, true, "%s", line1);
+    svg_text(m, 12, 50, "start", 13, COL_TEXT, false, "%s", line2);
+    answer_legend(m, 84, c, got);
     fig_end(m);
 }
 
@@ -80,6 +88,27 @@ static bool any_nan(const double *v, int n)
     for (int k = 0; k < n; k++)
         if (isnan(v[k]))
             return true;
+    return false;
+}
+
+/* The plain figure of an input that makes the answer a miss whatever the
+ * shape (what: "plane", "triangle"): a NaN among its nin numbers, or a ray
+ * r with no direction.  Returns whether it drew one; if not, u is r's unit
+ * vector. */
+static bool plain_ray_figure(Markup *m, const Case *c, int nin, const double *r, double *u, const char *what,
+                             const double *got)
+{
+    if (any_nan(c->in, nin)) {
+        plain_figure(m, "NaN input", "A number of the input is NaN (not a number).",
+                     "No point can be computed from it: the answer must be a miss.", c, got);
+        return true;
+    }
+    if (!unit3(r, u)) {
+        char line[100];
+        snprintf(line, sizeof line, "A ray that goes nowhere meets no %s: the answer must be a miss.", what);
+        plain_figure(m, "no direction", "The ray has no direction: r = (0, 0, 0).", line, c, got);
+        return true;
+    }
     return false;
 }
 
@@ -126,16 +155,8 @@ void fig_planehit(Markup *m, const Test *t, const Case *c, const double *got)
     (void)t;
     const double *p = c->in, *n = c->in + 3, *e = c->in + 6, *r = c->in + 9;
     double u[3], nh[3];
-    if (any_nan(c->in, 12)) {
-        plain_figure(m, "NaN input", "A number of the input is NaN (not a number).",
-                     "No point can be computed from it: the answer must be a miss.", c, got);
+    if (plain_ray_figure(m, c, 12, r, u, "plane", got))
         return;
-    }
-    if (!unit3(r, u)) {
-        plain_figure(m, "no direction", "The ray has no direction: r = (0, 0, 0).",
-                     "A ray that goes nowhere meets no plane: the answer must be a miss.", c, got);
-        return;
-    }
     if (!unit3(n, nh)) {
         plain_figure(m, "no normal", "The plane's normal is zero: there is no plane.",
                      "The answer must be a miss.", c, got);
@@ -157,19 +178,7 @@ void fig_planehit(Markup *m, const Test *t, const Case *c, const double *got)
     f.line_A = along;
     f.line_B = dot3(nh, v);
     f.line_C = plane_height(p, n, e);
-    f.want_hit = c->want[0] != 0;
-    f.want_t = c->want[1];
-    f.got_known = got != NULL;
-    f.got_hit = got && got[0] == 1;
-    f.got_t = got ? got[1] : 0;
-    char wt[140];
-    if (c->flags & CASE_EITHER_HIT) {
-        snprintf(wt, sizeof wt, "expected: %s (within rounding: a miss is right too)",
-                 f.want_hit ? "a hit" : "a miss");
-        f.want_text = wt;
-    }
-    if (got && got[0] != 0 && got[0] != 1)
-        f.got_text = "your code: neither true nor false";
+    ray_answers(&f, c->want, got, c->flags & CASE_EITHER_HIT ? "within rounding" : NULL);
     f.note = along < 0 ? "The ray comes at the plane from the side its normal points to (r.n < 0)."
              : along > 0 ? "The ray comes at the plane from behind, against its normal (r.n > 0)."
              : f.line_C == 0 ? "The ray is parallel to the plane (r.n = 0), and lies in it ((p - e).n = 0)."
@@ -255,16 +264,8 @@ void fig_triangle(Markup *m, const Test *t, const Case *c, const double *got)
     const double *e = mesh ? c->in : c->in + 9, *r = mesh ? c->in + 3 : c->in + 12;
     char b1[40], b2[40];
     double u[3], p[3], q[3];
-    if (any_nan(c->in, kind_nin(t->kind))) {
-        plain_figure(m, "NaN input", "A number of the input is NaN (not a number).",
-                     "No point can be computed from it: the answer must be a miss.", c, got);
+    if (plain_ray_figure(m, c, kind_nin(t->kind), r, u, "triangle", got))
         return;
-    }
-    if (!unit3(r, u)) {
-        plain_figure(m, "no direction", "The ray has no direction: r = (0, 0, 0).",
-                     "A ray that goes nowhere meets no triangle: the answer must be a miss.", c, got);
-        return;
-    }
     square_to(u, p, q);
     int nf = mesh ? t->ntriangles : 1;
     Flat *fl = calloc((size_t)nf + 1, sizeof *fl);
@@ -368,19 +369,7 @@ void fig_triangle(Markup *m, const Test *t, const Case *c, const double *got)
                  : turn < 0 ? "a, b, c run clockwise: the ray comes at the triangle from behind (det < 0)."
                  : "the triangle is edge on (det = 0).");
     }
-    char wt[120], gt[120];
-    if (c->want[0] != 0)
-        snprintf(wt, sizeof wt, "expected: a hit at t = %s%s", fig_num(b1, sizeof b1, c->want[1], 10),
-                 c->flags & CASE_EITHER_HIT ? " (or a miss)" : "");
-    else
-        snprintf(wt, sizeof wt, "expected: a miss");
-    if (!got)
-        snprintf(gt, sizeof gt, "your code: no answer");
-    else if (got[0] == 1)
-        snprintf(gt, sizeof gt, "your code: a hit at t = %s", fig_num(b2, sizeof b2, got[1], 10));
-    else
-        snprintf(gt, sizeof gt, "your code: %s", got[0] == 0 ? "a miss" : "neither true nor false");
-    fig_legend(m, 12, 340, wt, gt);
+    answer_legend(m, 340, c, got);
     fig_end(m);
     free(fl);
 }

@@ -600,6 +600,22 @@ static void ray_legend(Markup *m, const RayFig *f, int digits)
         svg_text(m, 12, TOP + WH + 60, "start", 11, COL_NOTE, false, "%s", f->note);
 }
 
+void ray_answers(RayFig *f, const double want[2], const double *got, const char *either)
+{
+    f->want_hit = want[0] != 0;
+    f->want_t = want[1];
+    f->got_known = got != NULL;
+    f->got_hit = got && got[0] == 1;
+    f->got_t = got ? got[1] : 0;
+    if (got && got[0] != 0 && got[0] != 1)
+        f->got_text = "your code: neither true nor false";
+    if (either) {
+        snprintf(f->want_buf, sizeof f->want_buf, "expected: %s (%s: a miss is right too)",
+                 f->want_hit ? "a hit" : "a miss", either);
+        f->want_text = f->want_buf;
+    }
+}
+
 void ray_figure(Markup *m, const RayFig *given)
 {
     /* a grazing plane is drawn with heights stretched: b becomes k b, so

@@ -41,6 +41,7 @@ typedef struct {
     const char *want_text;     /* the legend's words (NULL: "expected hit ...")   */
     const char *got_text;
     const char *note;          /* a line under the legend, or NULL                */
+    char want_buf[120];        /* want_text's words, where ray_answers makes them */
 } RayFig;
 
 /* Fills the frame of a sphere (centre c, radius R) seen from the ray
@@ -56,6 +57,13 @@ double ray_norm(const double v[3]);
 /* The smaller root t > 0 of the ray and the sphere, computed in double
  * (for display); false when the ray misses it or it lies behind. */
 bool ray_sphere_t(const double e[3], const double r[3], const double c[3], double R, double *t);
+
+/* Fills f's answers from a case's: want[0] nonzero for a hit at want[1];
+ * got NULL for no answer, else got[0] 1 for a hit at got[1], 0 for a miss,
+ * and any other value "neither true nor false" (f->got_text).  either:
+ * NULL, or why a miss is right too (the legend then says "expected: a hit
+ * (WHY: a miss is right too)", or a miss). */
+void ray_answers(RayFig *f, const double want[2], const double *got, const char *either);
 
 /* Draws the figure (an inline <svg>). */
 void ray_figure(Markup *m, const RayFig *f);

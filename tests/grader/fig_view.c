@@ -24,6 +24,21 @@ static bool drawable(double v)
     return v > 0 && isfinite(v);
 }
 
+/* The legend at y: the expected pair c->want[0], [1] in want_fmt, the
+ * code's got[0], [1] and then got_note in got_fmt, or no answer. */
+static void pair_legend(Markup *m, double y, const Case *c, const double *got, const char *want_fmt,
+                        const char *got_fmt, const char *got_note)
+{
+    char b1[40], b2[40], wt[120], gt[160];
+    snprintf(wt, sizeof wt, want_fmt, fig_num(b1, sizeof b1, c->want[0], 8), fig_num(b2, sizeof b2, c->want[1], 8));
+    if (!got)
+        snprintf(gt, sizeof gt, "your code: no answer");
+    else
+        snprintf(gt, sizeof gt, got_fmt, fig_num(b1, sizeof b1, got[0], 8), fig_num(b2, sizeof b2, got[1], 8),
+                 got_note);
+    fig_legend(m, 12, y, wt, gt);
+}
+
 void fig_plane(Markup *m, const Test *t, const Case *c, const double *got)
 {
     (void)t;
@@ -31,7 +46,7 @@ void fig_plane(Markup *m, const Test *t, const Case *c, const double *got)
     double ww = c->want[0], hw = c->want[1];
     bool gw = got && drawable(got[0]), gh = got && drawable(got[1]);
     double wg = gw ? got[0] : 0, hg = gh ? got[1] : 0;
-    char b1[40], b2[40], b3[40];
+    char b1[40], b2[40];
     fig_begin(m, 760, 336, "the view frustum from the side, and the image plane face on");
     svg_text(m, 10, 19, "start", 14, COL_TEXT, true, "From the side: the eye and the image plane");
     svg_text(m, 470, 19, "start", 14, COL_TEXT, true, "The image plane, face on");
@@ -95,14 +110,8 @@ void fig_plane(Markup *m, const Test *t, const Case *c, const double *got)
     if (hw * f.s < 2 || ww * f.s < 2)
         svg_text(m, 476, 46, "start", 11, COL_NOTE, false, "too thin to see: drawn as a line");
 
-    char wt[120], gt[160];
-    snprintf(wt, sizeof wt, "expected: w = %s, h = %s", fig_num(b1, sizeof b1, ww, 8), fig_num(b2, sizeof b2, hw, 8));
-    if (!got)
-        snprintf(gt, sizeof gt, "your code: no answer");
-    else
-        snprintf(gt, sizeof gt, "your code: w = %s, h = %s%s", fig_num(b1, sizeof b1, got[0], 8),
-                 fig_num(b3, sizeof b3, got[1], 8), gw && gh ? "" : " (not a size > 0: not drawn)");
-    fig_legend(m, 12, 306, wt, gt);
+    pair_legend(m, 306, c, got, "expected: w = %s, h = %s", "your code: w = %s, h = %s%s",
+                gw && gh ? "" : " (not a size > 0: not drawn)");
     svg_text(m, 12, 328, "start", 11, COL_NOTE, false, "Drawn to scale: h = 2 d tan(fov / 2) is the "
              "plane's height; the lines from the eye are the edges of the field of view.");
     fig_end(m);
@@ -119,7 +128,7 @@ void fig_pixel(Markup *m, const Test *t, const Case *c, const double *got)
     bool have = got && isfinite(got[0]) && isfinite(got[1]);
     double xg = have ? got[0] : 0, yg = have ? got[1] : 0;
     double pw = w / nx, ph = h / ny;             /* a pixel's size on the plane */
-    char b1[40], b2[40], b3[40];
+    char b1[40], b2[40];
 
     /* In pixels: columns from the left, rows from the top. */
     double Xw = (xw + w / 2) / pw, Yw = (h / 2 - yw) / ph;
@@ -218,14 +227,7 @@ void fig_pixel(Markup *m, const Test *t, const Case *c, const double *got)
     if (got && got[2] != c->want[2])
         svg_text(m, 12, 316, "start", 12, COL_GOT, true, "z: expected -d = %s, yours %s",
                  fig_num(b1, sizeof b1, -d, 8), fig_num(b2, sizeof b2, got[2], 8));
-    char wt[120], gt[120];
-    snprintf(wt, sizeof wt, "expected centre (%s, %s)", fig_num(b1, sizeof b1, xw, 8), fig_num(b2, sizeof b2, yw, 8));
-    if (!got)
-        snprintf(gt, sizeof gt, "your code: no answer");
-    else
-        snprintf(gt, sizeof gt, "your point (%s, %s)", fig_num(b1, sizeof b1, got[0], 8),
-                 fig_num(b3, sizeof b3, got[1], 8));
-    fig_legend(m, 12, 340, wt, gt);
+    pair_legend(m, 340, c, got, "expected centre (%s, %s)", "your point (%s, %s)%s", "");
     fig_end(m);
 }
 

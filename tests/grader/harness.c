@@ -135,6 +135,15 @@ static void put(const double *v, int n)
         fflush(answers);
 }
 
+#if HARNESS_PART == 3 || HARNESS_PART == 5 || HARNESS_PART == 6
+/* The answer of Parts 3a, 4 and 5: 1 and t for a hit, 0 and 0 for a miss. */
+static void put_hit(bool hit, double t)
+{
+    double out[2] = { hit ? 1 : 0, hit ? t : 0 };
+    put(out, 2);
+}
+#endif
+
 static int get(double *v, int n)
 {
     for (int k = 0; k < n; k++) {
@@ -200,17 +209,18 @@ static int one_test(const char *kind, int n)
     }
 #endif
     for (int c = 0; c < n; c++) {
-        double in[15], out[6];
+        double in[15];
 #if HARNESS_PART == 1
         if (get(in, 3))
             return 3;
+        double out[2];
         image_plane_size(in[0], in[1], in[2], &out[0], &out[1]);
         put(out, 2);
 #elif HARNESS_PART == 2
         if (get(in, 7))
             return 3;
         Vec3 p = pixel_coordinates((int)in[0], (int)in[1], (int)in[2], (int)in[3], in[4], in[5], in[6]);
-        out[0] = p.x, out[1] = p.y, out[2] = p.z;
+        double out[3] = { p.x, p.y, p.z };
         put(out, 3);
 #elif HARNESS_PART == 3
         if (get(in, 10))
@@ -219,10 +229,9 @@ static int one_test(const char *kind, int n)
         Ray r = { vec3(in[4], in[5], in[6]), vec3(in[7], in[8], in[9]) };
         double t = 0;
         bool hit = sphere_intersect(&s, &r, &t);
-        out[0] = hit ? 1 : 0;
-        out[1] = hit ? t : 0;
-        put(out, 2);
+        put_hit(hit, t);
 #elif HARNESS_PART == 4
+        double out[6];
         if (strcmp(kind, "camera") == 0) {
             if (get(in, 6))
                 return 3;
@@ -252,9 +261,7 @@ static int one_test(const char *kind, int n)
         Ray r = { vec3(in[6], in[7], in[8]), vec3(in[9], in[10], in[11]) };
         double t = 0;
         bool hit = plane_intersect(&pl, &r, &t);
-        out[0] = hit ? 1 : 0;
-        out[1] = hit ? t : 0;
-        put(out, 2);
+        put_hit(hit, t);
 #elif HARNESS_PART == 6
         bool hit = false;
         double t = 0;
@@ -278,9 +285,7 @@ static int one_test(const char *kind, int n)
             Ray r = { vec3(in[9], in[10], in[11]), vec3(in[12], in[13], in[14]) };
             hit = triangle_intersect(&tr, &r, &t);
         }
-        out[0] = hit ? 1 : 0;
-        out[1] = hit ? t : 0;
-        put(out, 2);
+        put_hit(hit, t);
 #else
 #error "HARNESS_PART must be 1, 2, 3 (Part 3a), 4 (Part 3b), 5 (Part 4) or 6 (Part 5)"
 #endif

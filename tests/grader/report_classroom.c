@@ -81,26 +81,38 @@ static int add_line(KitBuf *out, const char *name, JsonWriter *j)
     return status;
 }
 
+/* A runner's JSON up to its list of tests, which runner_end ends. */
+static void runner_begin(JsonWriter *j, const char *status, double max_score)
+{
+    json_init(j, 0);
+    json_begin_object(j);
+    json_key(j, "version");
+    json_int(j, 1);
+    json_key(j, "status");
+    json_string(j, status);
+    json_key(j, "max_score");
+    json_number(j, max_score);
+    json_key(j, "tests");
+    json_begin_array(j);
+}
+
+/* Ends the runner's JSON and appends its line (add_line). */
+static int runner_end(KitBuf *out, const char *name, JsonWriter *j)
+{
+    json_end_array(j);
+    json_end_object(j);
+    int status = add_line(out, name, j);
+    json_free(j);
+    return status;
+}
+
 /* The runner of one core test. */
 static int core_runner(KitBuf *out, const char *name, const Test *t, const TestResult *r)
 {
     JsonWriter j;
-    json_init(&j, 0);
-    json_begin_object(&j);
-    json_key(&j, "version");
-    json_int(&j, 1);
-    json_key(&j, "status");
-    json_string(&j, status_word(r));
-    json_key(&j, "max_score");
-    json_number(&j, r->max_score);
-    json_key(&j, "tests");
-    json_begin_array(&j);
+    runner_begin(&j, status_word(r), r->max_score);
     test_entry(&j, t, r, true, MESSAGE_MAX);
-    json_end_array(&j);
-    json_end_object(&j);
-    int status = add_line(out, name, &j);
-    json_free(&j);
-    return status;
+    return runner_end(out, name, &j);
 }
 
 /* The runner "hard": every hard-case test of the graded parts, worth 0
@@ -109,16 +121,7 @@ static int core_runner(KitBuf *out, const char *name, const Test *t, const TestR
 static int hard_runner(KitBuf *out, const Grade *g)
 {
     JsonWriter j;
-    json_init(&j, 0);
-    json_begin_object(&j);
-    json_key(&j, "version");
-    json_int(&j, 1);
-    json_key(&j, "status");
-    json_string(&j, "pass");              /* extra credit never fails the workflow */
-    json_key(&j, "max_score");
-    json_int(&j, 0);
-    json_key(&j, "tests");
-    json_begin_array(&j);
+    runner_begin(&j, "pass", 0);          /* extra credit never fails the workflow */
     int n = 0;
     for (int k = 0; k < g->tests->n; k++) {
         const Test *t = &g->tests->tests[k];
@@ -139,11 +142,7 @@ static int hard_runner(KitBuf *out, const Grade *g)
         json_int(&j, 0);
         json_end_object(&j);
     }
-    json_end_array(&j);
-    json_end_object(&j);
-    int status = add_line(out, "hard", &j);
-    json_free(&j);
-    return status;
+    return runner_end(out, "hard", &j);
 }
 
 int report_classroom(const char *path, const Grade *g, char *err, size_t errlen)

@@ -388,37 +388,55 @@ JAIL_CHILD_CODE static int jailed_child(void *arg)
     return 127;
 }
 
-/* Appends what fd has to (buf, len), keeping at most max bytes and adding
- * to *total all it read; returns 0 at end of file, 1 if it read or would
- * block, -1 on error. */
-static int pump(int fd, char **buf, size_t *len, size_t *cap, size_t max, bool *truncated,
-                size_t *total)
+/* A pipe the grader reads (the answer's or the output's): its end, and
+ * the result's buffer that collects at most max of its bytes. */
+typedef struct {
+    int fd;                     /* -1 once closed                  */
+    char **buf;
+    size_t *len, cap, max;
+    bool *truncated;
+    size_t total;               /* all it read, kept or not         */
+} Pipe;
+
+/* Appends what p has to its buffer; returns 0 at end of file, 1 if it
+ * read or would block, -1 on error. */
+static int pump(Pipe *p)
 {
     char chunk[65536];
-    ssize_t n = read(fd, chunk, sizeof chunk);
+    ssize_t n = read(p->fd, chunk, sizeof chunk);
     if (n == 0)
         return 0;
     if (n < 0)
         return errno == EAGAIN || errno == EINTR ? 1 : -1;
-    *total += (size_t)n;
+    p->total += (size_t)n;
     size_t keep = (size_t)n;
-    if (*len + keep > max) {
-        keep = max > *len ? max - *len : 0;
-        *truncated = true;
+    if (*p->len + keep > p->max) {
+        keep = p->max > *p->len ? p->max - *p->len : 0;
+        *p->truncated = true;
     }
     if (keep) {
-        if (*len + keep + 1 > *cap) {
-            size_t ncap = (*len + keep + 1) * 2;
-            char *nb = realloc(*buf, ncap);
+        if (*p->len + keep + 1 > p->cap) {
+            size_t ncap = (*p->len + keep + 1) * 2;
+            char *nb = realloc(*p->buf, ncap);
             if (!nb)
                 return -1;
-            *buf = nb;
-            *cap = ncap;
+            *p->buf = nb;
+            p->cap = ncap;
         }
-        memcpy(*buf + *len, chunk, keep);
-        *len += keep;
+        memcpy(*p->buf + *p->len, chunk, keep);
+        *p->len += keep;
     }
     return 1;
+}
+
+/* Pumps each of the pipes still open, closing it at its end or an error. */
+static void pump_open(Pipe *pipes, int n)
+{
+    for (int k = 0; k < n; k++)
+        if (pipes[k].fd >= 0 && pump(&pipes[k]) <= 0) {
+            close(pipes[k].fd);
+            pipes[k].fd = -1;
+        }
 }
 
 /* ---- watching a run ----------------------------------------------------------- */
@@ -449,7 +467,12 @@ static void watch(const SandboxSpec *spec, pid_t pid, int *status, SandboxResult
     fcntl(in_fd, F_SETFL, O_NONBLOCK);
     fcntl(ans_fd, F_SETFL, O_NONBLOCK);
     fcntl(out_fd, F_SETFL, O_NONBLOCK);
-    size_t in_off = 0, ans_cap = 0, out_cap = 0, ans_total = 0, out_total = 0;
+    Pipe pipes[2] = {
+        { ans_fd, &res->answer, &res->answer_len, 0, spec->answer_max, &res->answer_truncated, 0 },
+        { out_fd, &res->output, &res->output_len, 0, spec->output_max, &res->output_truncated, 0 },
+    };
+    Pipe *ans = &pipes[0], *out = &pipes[1];
+    size_t in_off = 0;
     if (!spec->input_len) {
         close(in_fd);
         in_fd = -1;
@@ -462,10 +485,10 @@ static void watch(const SandboxSpec *spec, pid_t pid, int *status, SandboxResult
         int n = 0;
         if (in_fd >= 0)
             pf[n++] = (struct pollfd){ in_fd, POLLOUT, 0 };
-        if (ans_fd >= 0)
-            pf[n++] = (struct pollfd){ ans_fd, POLLIN, 0 };
-        if (out_fd >= 0)
-            pf[n++] = (struct pollfd){ out_fd, POLLIN, 0 };
+        if (ans->fd >= 0)
+            pf[n++] = (struct pollfd){ ans->fd, POLLIN, 0 };
+        if (out->fd >= 0)
+            pf[n++] = (struct pollfd){ out->fd, POLLIN, 0 };
         /* With the pipes closed only the child's exit is left to wait for. */
         poll(pf, (nfds_t)n, n ? 20 : 1);
         if (in_fd >= 0) {
@@ -477,20 +500,11 @@ static void watch(const SandboxSpec *spec, pid_t pid, int *status, SandboxResult
                 in_fd = -1;
             }
         }
-        if (ans_fd >= 0 && pump(ans_fd, &res->answer, &res->answer_len, &ans_cap,
-                                spec->answer_max, &res->answer_truncated, &ans_total) <= 0) {
-            close(ans_fd);
-            ans_fd = -1;
-        }
-        if (out_fd >= 0 && pump(out_fd, &res->output, &res->output_len, &out_cap,
-                                spec->output_max, &res->output_truncated, &out_total) <= 0) {
-            close(out_fd);
-            out_fd = -1;
-        }
+        pump_open(pipes, 2);
         /* Ended, out of time, over its output or its memory? */
         if (waitpid(pid, status, WNOHANG) == pid) {
             ended = over = true;
-        } else if (spec->output_stop && out_total > spec->output_stop) {
+        } else if (spec->output_stop && out->total > spec->output_stop) {
             res->output_exceeded = over = true;
         } else if (sandbox_now() > deadline) {
             res->timed_out = over = true;
@@ -502,29 +516,20 @@ static void watch(const SandboxSpec *spec, pid_t pid, int *status, SandboxResult
     }
     stop(pid, status, &ended);
     /* What is already in the pipes, without waiting for anyone to close them. */
-    for (int round = 0; round < 64 && (ans_fd >= 0 || out_fd >= 0); round++) {
-        if (ans_fd >= 0 && pump(ans_fd, &res->answer, &res->answer_len, &ans_cap,
-                                spec->answer_max, &res->answer_truncated, &ans_total) <= 0) {
-            close(ans_fd);
-            ans_fd = -1;
-        }
-        if (out_fd >= 0 && pump(out_fd, &res->output, &res->output_len, &out_cap,
-                                spec->output_max, &res->output_truncated, &out_total) <= 0) {
-            close(out_fd);
-            out_fd = -1;
-        }
-        if (ans_fd >= 0 || out_fd >= 0) {
-            struct pollfd pf[2] = { { ans_fd, POLLIN, 0 }, { out_fd, POLLIN, 0 } };
+    for (int round = 0; round < 64 && (ans->fd >= 0 || out->fd >= 0); round++) {
+        pump_open(pipes, 2);
+        if (ans->fd >= 0 || out->fd >= 0) {
+            struct pollfd pf[2] = { { ans->fd, POLLIN, 0 }, { out->fd, POLLIN, 0 } };
             if (poll(pf, 2, round < 4 ? 5 : 0) == 0)
                 break;
         }
     }
     if (in_fd >= 0)
         close(in_fd);
-    if (ans_fd >= 0)
-        close(ans_fd);
-    if (out_fd >= 0)
-        close(out_fd);
+    if (ans->fd >= 0)
+        close(ans->fd);
+    if (out->fd >= 0)
+        close(out->fd);
 }
 
 /* The result's last fields, from how the run ended; 0, or -1 out of memory. */

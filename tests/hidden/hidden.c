@@ -17,9 +17,8 @@
 
 static Test *hidden_test(TestList *l, int part, Kind kind, const char *name, const char *note)
 {
-    Test *t = testlist_add(l, part, kind, name);
+    Test *t = tg_test(l, part, kind, 1, name, note);
     t->hidden = true;
-    snprintf(t->note, sizeof t->note, "%s", note);
     return t;
 }
 

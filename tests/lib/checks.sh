@@ -9,6 +9,13 @@
 #                            tests/run.sh reads, and exits 0 if none failed
 #   need_built PROGRAM...    ends the suite as one failed check, naming the
 #                            first PROGRAM that is not built
+#   temp_dir NAME            sets tmp to a new directory NAME.XXXXXX under
+#                            $TMPDIR (or /tmp), or ends the suite as one
+#                            failed check
+#   fail_showing FILE N PREFIX WHAT
+#                            counts a failure as fail does, then shows the
+#                            first N lines of FILE (if not empty), each after
+#                            PREFIX: a suite's own fail, showing its output
 # (Not in tests/suites itself: tests/run.sh runs every file there.)
 passed=0
 failed=0
@@ -19,6 +26,22 @@ finish() {
     echo "$passed passed, $failed failed"
     [ "$failed" -eq 0 ] && exit 0
     exit 1
+}
+temp_dir() {
+    tmp=$(mktemp -d "${TMPDIR:-/tmp}/$1.XXXXXX") || {
+        echo "cannot make a temporary directory"
+        echo "0 passed, 1 failed"
+        exit 1
+    }
+}
+fail_showing() {
+    _show_file=$1 _show_lines=$2 _show_prefix=$3
+    shift 3
+    failed=$((failed + 1))
+    echo "FAIL: $*"
+    if [ -s "$_show_file" ]; then
+        sed -n "1,${_show_lines}s/^/${_show_prefix}/p" "$_show_file"
+    fi
 }
 need_built() {
     for f in "$@"; do

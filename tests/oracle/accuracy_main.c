@@ -20,63 +20,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include "hard.h"
+#include "textbook.h"
 
 #define U ORACLE_U
-
-/* ---- the textbook formulas (the lecture's, as most students write them) --- */
-
-static void textbook_image_plane(double fov, double aspect, double d, double *w, double *h)
-{
-    *h = 2 * d * tan(fov / 2 * M_PI / 180);
-    *w = aspect * *h;
-}
-
-static Vec3 textbook_pixel(int i, int j, int nx, int ny, double w, double h, double d)
-{
-    return vec3(-w / 2 + w * (i + 0.5) / nx, -h / 2 + h * (ny - 0.5 - j) / ny, -d);
-}
-
-static bool textbook_intersect(const Sphere *sp, const Ray *ray, double *t)
-{
-    Vec3 r = ray->direction, f = vec3_sub(ray->origin, sp->center);
-    double A = vec3_dot(r, r), B = vec3_dot(f, r);
-    double C = vec3_dot(f, f) - sp->radius * sp->radius;
-    double disc = B * B - A * C;
-    if (!(A > 0) || !(disc >= 0))
-        return false;
-    double t1 = (-B - sqrt(disc)) / A, t2 = (-B + sqrt(disc)) / A;
-    *t = t1 > 0 ? t1 : t2;
-    return *t > 0;
-}
-
-/* Part 4 as t = (p.n - e.n) / (r.n), with the plane's constant first. */
-static bool textbook_plane(const Plane *pl, const Ray *ray, double *t)
-{
-    double rn = vec3_dot(ray->direction, pl->normal);
-    double tt = (vec3_dot(pl->point, pl->normal) - vec3_dot(ray->origin, pl->normal)) / rn;
-    if (!(tt > 0 && tt < INFINITY))
-        return false;
-    *t = tt;
-    return true;
-}
-
-/* Part 5 as the skeleton's comment writes it (Moller-Trumbore). */
-static bool textbook_triangle(const Triangle *tr, const Ray *ray, double *t)
-{
-    Vec3 e1 = vec3_sub(tr->b, tr->a), e2 = vec3_sub(tr->c, tr->a), s = vec3_sub(ray->origin, tr->a);
-    Vec3 q = vec3_cross(ray->direction, e2);
-    double det = vec3_dot(e1, q);
-    if (det == 0)
-        return false;
-    double beta = vec3_dot(s, q) / det;
-    Vec3 sx = vec3_cross(s, e1);
-    double gamma = vec3_dot(ray->direction, sx) / det;
-    double tt = vec3_dot(e2, sx) / det;
-    if (beta < 0 || gamma < 0 || beta + gamma > 1 || !(tt > 0 && tt < INFINITY))
-        return false;
-    *t = tt;
-    return true;
-}
 
 /* ---- statistics per family ------------------------------------------------ */
 
@@ -131,9 +77,56 @@ static double rel_u(double got, double want)
     return want == 0 ? (got == 0 ? 0 : INFINITY) : fabs(got - want) / fabs(want) / U;
 }
 
+/* One part's table: per family, the reference's and the textbook's answers
+ * and, where the part counts them, the oracle's hits and ambiguous cases. */
+typedef struct {
+    int nf;
+    Stat *ref, *tb;
+    int *hits, *amb;
+} Table;
+
+static Table table_new(int nf, int per)
+{
+    Table tab = {nf, stats_new(nf, per), stats_new(nf, per),
+                 calloc((size_t)nf, sizeof(int)), calloc((size_t)nf, sizeof(int))};
+    return tab;
+}
+
+static void table_free(Table *tab)
+{
+    stats_free(tab->ref, tab->nf);
+    stats_free(tab->tb, tab->nf);
+    free(tab->hits);
+    free(tab->amb);
+}
+
+/* Family f's stats: the reference's (m 0) or the textbook's (m 1). */
+static Stat *table_stat(Table *tab, int m, int f)
+{
+    return m ? &tab->tb[f] : &tab->ref[f];
+}
+
+/* A row: the family (then its hits and ambiguous cases where counts), then
+ * the reference and the textbook. */
+static void table_row(Table *tab, int f, const char *family, bool counts)
+{
+    printf("| %s |", family);
+    if (counts)
+        printf(" %d | %d |", tab->hits[f], tab->amb[f]);
+    stat_print(&tab->ref[f]);
+    stat_print(&tab->tb[f]);
+    printf("\n");
+}
+
 static const char HEADER[] =
     "| family | reference worst | median | worst/tol | fails | textbook worst | median | worst/tol | fails |\n"
     "|---|---|---|---|---|---|---|---|---|\n";
+
+/* Parts 3a, 4 and 5: hit count, ambiguous count, then the reference and
+ * the textbook (named). */
+static const char HIT_HEADER[] =
+    "| family | hits | ambiguous | reference worst | median | worst/tol | fails | %s worst | median | worst/tol | fails |\n"
+    "|---|---|---|---|---|---|---|---|---|---|---|\n";
 
 /* ---- the parts -------------------------------------------------------------- */
 
@@ -142,11 +135,11 @@ static void part1(uint64_t seed, int per)
     int nf = HARD_PART1_FAMILIES, n = nf * per;
     HardCase1 *c = malloc((size_t)n * sizeof *c);
     hard_part1(seed, c, n);
-    Stat *ref = stats_new(nf, per), *tb = stats_new(nf, per);
+    Table tab = table_new(nf, per);
     for (int k = 0; k < n; k++) {
         double w, h;
         for (int m = 0; m < 2; m++) {
-            Stat *s = m ? &tb[k % nf] : &ref[k % nf];
+            Stat *s = table_stat(&tab, m, k % nf);
             (m ? textbook_image_plane : image_plane_size)(c[k].fov_degrees, c[k].aspect, c[k].d, &w, &h);
             double e = fmax(rel_u(w, c[k].w), rel_u(h, c[k].h));
             stat_add(s, e, e * U / HARD_PART1_REL_TOL);
@@ -155,14 +148,9 @@ static void part1(uint64_t seed, int per)
     }
     printf("\n### Part 1: image_plane_size (relative error of w and h, in u; tolerance %g u)\n\n%s",
            HARD_PART1_REL_TOL / U, HEADER);
-    for (int f = 0; f < nf; f++) {
-        printf("| %s |", c[f].family);
-        stat_print(&ref[f]);
-        stat_print(&tb[f]);
-        printf("\n");
-    }
-    stats_free(ref, nf);
-    stats_free(tb, nf);
+    for (int f = 0; f < nf; f++)
+        table_row(&tab, f, c[f].family, false);
+    table_free(&tab);
     free(c);
 }
 
@@ -171,10 +159,10 @@ static void part2(uint64_t seed, int per)
     int nf = HARD_PART2_FAMILIES, n = nf * per;
     HardCase2 *c = malloc((size_t)n * sizeof *c);
     hard_part2(seed, c, n);
-    Stat *ref = stats_new(nf, per), *tb = stats_new(nf, per);
+    Table tab = table_new(nf, per);
     for (int k = 0; k < n; k++) {
         for (int m = 0; m < 2; m++) {
-            Stat *s = m ? &tb[k % nf] : &ref[k % nf];
+            Stat *s = table_stat(&tab, m, k % nf);
             Vec3 p = (m ? textbook_pixel : pixel_coordinates)(c[k].i, c[k].j, c[k].nx, c[k].ny, c[k].w, c[k].h, c[k].d);
             double e = fmax(rel_u(p.x, c[k].p.x), rel_u(p.y, c[k].p.y));
             stat_add(s, e, e / HARD_PART2_TOL_U);
@@ -183,14 +171,9 @@ static void part2(uint64_t seed, int per)
     }
     printf("\n### Part 2: pixel_coordinates (error of x in u |x|, of y in u |y|; tolerance %g)\n\n%s",
            HARD_PART2_TOL_U, HEADER);
-    for (int f = 0; f < nf; f++) {
-        printf("| %s |", c[f].family);
-        stat_print(&ref[f]);
-        stat_print(&tb[f]);
-        printf("\n");
-    }
-    stats_free(ref, nf);
-    stats_free(tb, nf);
+    for (int f = 0; f < nf; f++)
+        table_row(&tab, f, c[f].family, false);
+    table_free(&tab);
     free(c);
 }
 
@@ -199,14 +182,13 @@ static void part3a(uint64_t seed, int per)
     int nf = HARD_PART3A_FAMILIES, n = nf * per;
     HardCase3a *c = malloc((size_t)n * sizeof *c);
     hard_part3a(seed, c, n);
-    Stat *ref = stats_new(nf, per), *tb = stats_new(nf, per);
-    int *hits = calloc((size_t)nf, sizeof *hits), *amb = calloc((size_t)nf, sizeof *amb);
+    Table tab = table_new(nf, per);
     for (int k = 0; k < n; k++) {
         const OracleHit *o = &c[k].expect;
-        hits[k % nf] += o->hit;
-        amb[k % nf] += o->ambiguous;
+        tab.hits[k % nf] += o->hit;
+        tab.amb[k % nf] += o->ambiguous;
         for (int m = 0; m < 2; m++) {
-            Stat *s = m ? &tb[k % nf] : &ref[k % nf];
+            Stat *s = table_stat(&tab, m, k % nf);
             double t = 0;
             bool hit = (m ? textbook_intersect : sphere_intersect)(&c[k].sphere, &c[k].ray, &t);
             s->fails += !hard_check3a(&c[k], hit, t);
@@ -216,19 +198,11 @@ static void part3a(uint64_t seed, int per)
             }
         }
     }
-    printf("\n### Part 3a: sphere_intersect (relative error of t, in u; tolerance %g u kappa)\n\n"
-           "| family | hits | ambiguous | reference worst | median | worst/tol | fails | textbook worst | median | worst/tol | fails |\n"
-           "|---|---|---|---|---|---|---|---|---|---|---|\n", ORACLE_K_T);
-    for (int f = 0; f < nf; f++) {
-        printf("| %s | %d | %d |", c[f].family, hits[f], amb[f]);
-        stat_print(&ref[f]);
-        stat_print(&tb[f]);
-        printf("\n");
-    }
-    free(hits);
-    free(amb);
-    stats_free(ref, nf);
-    stats_free(tb, nf);
+    printf("\n### Part 3a: sphere_intersect (relative error of t, in u; tolerance %g u kappa)\n\n", ORACLE_K_T);
+    printf(HIT_HEADER, "textbook");
+    for (int f = 0; f < nf; f++)
+        table_row(&tab, f, c[f].family, true);
+    table_free(&tab);
     free(c);
 }
 
@@ -263,16 +237,6 @@ static void part3b(uint64_t seed, int per)
     free(c);
 }
 
-/* Parts 4 and 5 share the table's shape: hit count, ambiguous count, then
- * the reference and the textbook. */
-static void flat_row(const char *family, int hits, int amb, Stat *ref, Stat *tb)
-{
-    printf("| %s | %d | %d |", family, hits, amb);
-    stat_print(ref);
-    stat_print(tb);
-    printf("\n");
-}
-
 static void flat_answer(Stat *s, const OracleFlat *o, bool ok, bool hit, double t)
 {
     s->fails += !ok;
@@ -280,34 +244,26 @@ static void flat_answer(Stat *s, const OracleFlat *o, bool ok, bool hit, double 
         stat_add(s, rel_u(t, o->t), fabs(t - o->t) / o->tol);
 }
 
-static const char FLAT_HEADER[] =
-    "| family | hits | ambiguous | reference worst | median | worst/tol | fails | %s worst | median | worst/tol | fails |\n"
-    "|---|---|---|---|---|---|---|---|---|---|---|\n";
-
 static void part4(uint64_t seed, int per)
 {
     int nf = HARD_PART4_FAMILIES, n = nf * per;
     HardCase4 *c = malloc((size_t)n * sizeof *c);
     hard_part4(seed, c, n);
-    Stat *ref = stats_new(nf, per), *tb = stats_new(nf, per);
-    int *hits = calloc((size_t)nf, sizeof *hits), *amb = calloc((size_t)nf, sizeof *amb);
+    Table tab = table_new(nf, per);
     for (int k = 0; k < n; k++) {
-        hits[k % nf] += c[k].expect.hit;
-        amb[k % nf] += c[k].expect.ambiguous;
+        tab.hits[k % nf] += c[k].expect.hit;
+        tab.amb[k % nf] += c[k].expect.ambiguous;
         for (int m = 0; m < 2; m++) {
             double t = 0;
             bool hit = (m ? textbook_plane : plane_intersect)(&c[k].plane, &c[k].ray, &t);
-            flat_answer(m ? &tb[k % nf] : &ref[k % nf], &c[k].expect, hard_check4(&c[k], hit, t), hit, t);
+            flat_answer(table_stat(&tab, m, k % nf), &c[k].expect, hard_check4(&c[k], hit, t), hit, t);
         }
     }
     printf("\n### Part 4: plane_intersect (relative error of t, in u; tolerance %g u kappa)\n\n", ORACLE_K_T);
-    printf(FLAT_HEADER, "p.n - e.n");
+    printf(HIT_HEADER, "p.n - e.n");
     for (int f = 0; f < nf; f++)
-        flat_row(c[f].family, hits[f], amb[f], &ref[f], &tb[f]);
-    free(hits);
-    free(amb);
-    stats_free(ref, nf);
-    stats_free(tb, nf);
+        table_row(&tab, f, c[f].family, true);
+    table_free(&tab);
     free(c);
 }
 
@@ -316,25 +272,25 @@ static void part5(uint64_t seed, int per)
     int nf = HARD_PART5_FAMILIES, n = nf * per;
     HardCase5 *c = malloc((size_t)n * sizeof *c);
     hard_part5(seed, c, n);
-    Stat *ref = stats_new(nf + HARD_MESH_FAMILIES, per + HARD_MESH_RAYS);
-    Stat *tb = stats_new(nf + HARD_MESH_FAMILIES, per + HARD_MESH_RAYS);
-    int *hits = calloc((size_t)nf, sizeof *hits), *amb = calloc((size_t)nf, sizeof *amb);
+    /* the triangles' families, then the meshes' */
+    Table tab = table_new(nf + HARD_MESH_FAMILIES, per + HARD_MESH_RAYS);
     for (int k = 0; k < n; k++) {
-        hits[k % nf] += c[k].expect.hit;
-        amb[k % nf] += c[k].expect.ambiguous;
+        tab.hits[k % nf] += c[k].expect.hit;
+        tab.amb[k % nf] += c[k].expect.ambiguous;
         for (int m = 0; m < 2; m++) {
             double t = 0;
             bool hit = (m ? textbook_triangle : triangle_intersect)(&c[k].tri, &c[k].ray, &t);
-            flat_answer(m ? &tb[k % nf] : &ref[k % nf], &c[k].expect, hard_check5(&c[k], hit, t), hit, t);
+            flat_answer(table_stat(&tab, m, k % nf), &c[k].expect, hard_check5(&c[k], hit, t), hit, t);
         }
     }
     printf("\n### Part 5: triangle_intersect (relative error of t, in u; tolerance %g u kappa)\n\n", ORACLE_K_T);
-    printf(FLAT_HEADER, "Moller-Trumbore");
+    printf(HIT_HEADER, "Moller-Trumbore");
     for (int f = 0; f < nf; f++)
-        flat_row(c[f].family, hits[f], amb[f], &ref[f], &tb[f]);
+        table_row(&tab, f, c[f].family, true);
 
     /* Closed meshes: per rays of HARD_MESH_RAYS, the first hit over the
-     * mesh must be where the ray enters. */
+     * mesh must be where the ray enters.  Their rows count the rays in the
+     * hits column (none is ambiguous). */
     int nm = (per + HARD_MESH_RAYS - 1) / HARD_MESH_RAYS * HARD_MESH_FAMILIES;
     HardMesh *ms = malloc((size_t)nm * sizeof *ms);
     hard_meshes(seed, ms, nm);
@@ -342,6 +298,7 @@ static void part5(uint64_t seed, int per)
     for (int k = 0; k < nm; k++) {
         int f = k % HARD_MESH_FAMILIES;
         snprintf(name[f], sizeof name[f], "%s", ms[k].family);
+        tab.hits[nf + f] += HARD_MESH_RAYS;
         for (int r = 0; r < HARD_MESH_RAYS; r++)
             for (int m = 0; m < 2; m++) {
                 bool any = false;
@@ -354,17 +311,14 @@ static void part5(uint64_t seed, int per)
                         any = true;
                     }
                 }
-                flat_answer(m ? &tb[nf + f] : &ref[nf + f], &ms[k].expect[r],
+                flat_answer(table_stat(&tab, m, nf + f), &ms[k].expect[r],
                             hard_check_mesh(&ms[k], r, any, best), any, best);
             }
     }
     for (int f = 0; f < HARD_MESH_FAMILIES; f++)
-        flat_row(name[f], nm / HARD_MESH_FAMILIES * HARD_MESH_RAYS, 0, &ref[nf + f], &tb[nf + f]);
+        table_row(&tab, nf + f, name[f], true);
     free(ms);
-    free(hits);
-    free(amb);
-    stats_free(ref, nf + HARD_MESH_FAMILIES);
-    stats_free(tb, nf + HARD_MESH_FAMILIES);
+    table_free(&tab);
     free(c);
 }
 

@@ -25,6 +25,7 @@
 #ifndef DD_H
 #define DD_H
 
+#include <limits.h>
 #include <math.h>
 #include <stdbool.h>
 
@@ -92,6 +93,22 @@ static inline dd dd_ldexp(dd a, int e)
 {
     dd r = { ldexp(a.hi, e), ldexp(a.lo, e) };
     return r;
+}
+
+/* The exponent e with max |v[k]| in [2^(e-1), 2^e), or 0 when all are 0:
+ * inputs divided by 2^e (exact) lie near 1. */
+static inline int dd_max_exponent(const double *v, int n)
+{
+    int emax = INT_MIN;
+    for (int k = 0; k < n; k++) {
+        if (v[k] != 0) {
+            int e;
+            frexp(v[k], &e);
+            if (e > emax)
+                emax = e;
+        }
+    }
+    return emax == INT_MIN ? 0 : emax;
 }
 
 /* ---- arithmetic ---------------------------------------------------------- */

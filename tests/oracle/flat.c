@@ -40,26 +40,10 @@
  * that, written as an absolute tolerance that stays finite as t -> 0.
  */
 #include <float.h>
-#include <limits.h>
 #include "oracle.h"
 #include "expansion.h"
 
 #define U ORACLE_U
-
-/* The exponent e with max |v[k]| in [2^(e-1), 2^e), or 0 when all are 0. */
-static int exponent_of(const double *v, int n)
-{
-    int emax = INT_MIN;
-    for (int k = 0; k < n; k++) {
-        if (v[k] != 0) {
-            int e;
-            frexp(v[k], &e);
-            if (e > emax)
-                emax = e;
-        }
-    }
-    return emax == INT_MIN ? 0 : emax;
-}
 
 /* NaN anywhere: 1; infinity anywhere: 2; else 0. */
 static int bad_input(const double *v, int n)
@@ -201,7 +185,7 @@ OracleFlat oracle_plane(const Plane *plane, const Ray *ray)
 
     /* Scale by powers of two (exact): positions, normal and direction each
      * to a largest component in [1/2, 1). */
-    int ep = exponent_of(pos, 6), en = exponent_of(nrm, 3), ed = exponent_of(dir, 3);
+    int ep = dd_max_exponent(pos, 6), en = dd_max_exponent(nrm, 3), ed = dd_max_exponent(dir, 3);
     double p[3], o[3], n[3], d[3];
     for (int k = 0; k < 3; k++) {
         p[k] = ldexp(pos[k], -ep);
@@ -270,7 +254,7 @@ OracleFlat oracle_triangle(const Triangle *tri, const Ray *ray)
         return answer(&F);
     bool exact = all_small_dyadic(pos, 12) && all_small_dyadic(dir, 3) && along_axis(dir);
 
-    int ep = exponent_of(pos, 12), ed = exponent_of(dir, 3);
+    int ep = dd_max_exponent(pos, 12), ed = dd_max_exponent(dir, 3);
     double v[3][3], o[3], d[3];
     for (int k = 0; k < 3; k++) {
         for (int i = 0; i < 3; i++)

@@ -8,27 +8,11 @@
  * double can hold.
  */
 #include <float.h>
-#include <limits.h>
 #include <stdlib.h>
 #include "oracle.h"
 #include "dd.h"
 
 #define U ORACLE_U
-
-/* The exponent e with max |v[k]| in [2^(e-1), 2^e), or 0 when all are 0. */
-static int max_exponent(const double *v, int n)
-{
-    int emax = INT_MIN;
-    for (int k = 0; k < n; k++) {
-        if (v[k] != 0) {
-            int e;
-            frexp(v[k], &e);
-            if (e > emax)
-                emax = e;
-        }
-    }
-    return emax == INT_MIN ? 0 : emax;
-}
 
 /* ---- Part 1 -------------------------------------------------------------- */
 
@@ -261,7 +245,7 @@ static void solve_sphere(const Sphere *sp, const Ray *ray, SphereSolution *S)
     /* Scale positions so the largest is in [1/2, 1), the direction so its
      * largest component is: exact (barring components 2^1000 times smaller
      * than the largest, which contribute nothing at this precision). */
-    int ep = max_exponent(pos, 7), er = max_exponent(dir, 3);
+    int ep = dd_max_exponent(pos, 7), er = dd_max_exponent(dir, 3);
     dd f[3];
     double r[3];
     for (int k = 0; k < 3; k++) {
@@ -473,7 +457,7 @@ Vec3 oracle_unit(Vec3 v)
         return vec3(NAN, NAN, NAN);
     if (c[0] == 0 && c[1] == 0 && c[2] == 0)
         return v;                       /* zero stays zero, as vec3_normalize */
-    int e = max_exponent(c, 3);
+    int e = dd_max_exponent(c, 3);
     for (int k = 0; k < 3; k++)
         c[k] = ldexp(c[k], -e);
     dd n2 = dd_add(dd_add(dd_two_prod(c[0], c[0]), dd_two_prod(c[1], c[1])), dd_two_prod(c[2], c[2]));

@@ -172,6 +172,14 @@ void tg_color(Test *t, const double e[3], const double r[3])
     free(spheres);
 }
 
+Test *tg_test(TestList *list, int part, Kind kind, double weight, const char *name, const char *note)
+{
+    Test *t = testlist_add(list, part, kind, name);
+    t->weight = weight;
+    snprintf(t->note, sizeof t->note, "%s", note);
+    return t;
+}
+
 Test *tg_image(TestList *list, const char *name, const char *scene_path, int nx, int ny)
 {
     Scene file;

@@ -18,6 +18,9 @@ void testgen_public(TestList *list);
  * from seed, so the same seed always gives the same tests. */
 void testgen_hidden(TestList *list, uint64_t seed);
 
+/* A test of list, of the given weight, with the note shown beside it. */
+Test *tg_test(TestList *list, int part, Kind kind, double weight, const char *name, const char *note);
+
 /* Building blocks, shared by the public and hidden tests.  Each adds one
  * case to t with its expected value, tolerance and hints. */
 void tg_plane(Test *t, double fov, double aspect, double d);

@@ -16,11 +16,7 @@ set -u
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 . tests/lib/checks.sh
 top=$(pwd)
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/line_ends.XXXXXX") || {
-    echo "cannot make a temporary directory"
-    echo "0 passed, 1 failed"
-    exit 1
-}
+temp_dir line_ends
 trap 'rm -rf "$tmp"' EXIT
 trap 'exit 1' HUP INT TERM
 cr=$(printf '\r')

@@ -17,11 +17,7 @@ RENDER_ASAN=${RENDER_ASAN:-out/asan/bin/render-solutions}
 COMPARE=${COMPARE:-out/build/bin/compare}
 
 . tests/lib/checks.sh
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/render_cli.XXXXXX") || {
-    echo "cannot make a temporary directory"
-    echo "0 passed, 1 failed"
-    exit 1
-}
+temp_dir render_cli
 # `make compare SUBMISSION=$tmp/...` builds in out/build/sub/<path with / as _>.
 trap 'rm -rf "$tmp" "$top/out/build/sub/$(printf "%s" "$tmp" | tr / _)"_*' EXIT
 trap 'exit 1' HUP INT TERM
@@ -39,13 +35,7 @@ RENDER_ASAN=$(absolute "$RENDER_ASAN")
 COMPARE=$(absolute "$COMPARE")
 
 # fail WHAT: counts a failure, shown with what went wrong.
-fail() {
-    failed=$((failed + 1))
-    echo "FAIL: $*"
-    if [ -s "$tmp/stderr" ]; then
-        sed -n '1,5s/^/    stderr: /p' "$tmp/stderr"
-    fi
-}
+fail() { fail_showing "$tmp/stderr" 5 '    stderr: ' "$@"; }
 
 # run PROGRAM ARGS...: runs it; sets status, keeps stdout and stderr in
 # files.  Also sets stderr_text (all of stderr) and stderr_lines (the lines
@@ -152,19 +142,26 @@ else
 fi
 
 # ---- bad command lines: exit 2 and the usage ------------------------------
-bad_usage() {   # bad_usage WHAT ARGS...
+# refused WHAT PROGRAM ARGS...: passes when PROGRAM exits 2 without a crash,
+# render with its usage on stderr; WHAT names the run in a failure.
+refused() {
     what=$1
     shift
-    run "$RENDER" "$@"
+    run "$@"
     if crashed; then
-        fail "render $what crashed (exit $status)"
+        fail "$what crashed (exit $status)"
     elif [ "$status" -ne 2 ]; then
-        fail "render $what: exit $status, want 2"
-    elif ! grep -q "usage: render" "$tmp/stderr"; then
-        fail "render $what: no usage on stderr"
+        fail "$what: exit $status, want 2"
+    elif [ "$1" = "$RENDER" ] && ! grep -q "usage: render" "$tmp/stderr"; then
+        fail "$what: no usage on stderr"
     else
         pass
     fi
+}
+bad_usage() {   # bad_usage WHAT ARGS...
+    what=$1
+    shift
+    refused "render $what" "$RENDER" "$@"
 }
 bad_usage "(no arguments)"
 bad_usage "--size 0x5" labs/scenes/default.scene --size 0x5 -o "$tmp/u.png"
@@ -675,14 +672,7 @@ fi
 compare_error() {   # compare_error WHAT ARGS...
     what=$1
     shift
-    run "$COMPARE" "$@"
-    if crashed; then
-        fail "compare $what crashed (exit $status)"
-    elif [ "$status" -ne 2 ]; then
-        fail "compare $what: exit $status, want 2"
-    else
-        pass
-    fi
+    refused "compare $what" "$COMPARE" "$@"
 }
 compare_error "(no arguments)"
 compare_error "(one image)" "$tmp/ref.png"

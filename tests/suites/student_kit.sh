@@ -33,22 +33,12 @@ unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 
 top=$(pwd)
 . tests/lib/checks.sh
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/student_kit.XXXXXX") || {
-    echo "cannot make a temporary directory"
-    echo "0 passed, 1 failed"
-    exit 1
-}
+temp_dir student_kit
 trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
 trap 'exit 1' HUP INT TERM
 
 # fail WHAT: counts a failure; shows the start of the last output, if any.
-fail() {
-    failed=$((failed + 1))
-    echo "FAIL: $*"
-    if [ -s "$tmp/out" ]; then
-        sed -n '1,15s/^/    | /p' "$tmp/out"
-    fi
-}
+fail() { fail_showing "$tmp/out" 15 '    | ' "$@"; }
 # check WHAT COMMAND...: passes when the command succeeds.
 check() {
     what=$1

@@ -169,6 +169,20 @@ static inline int check_remove_tree(const char *path)
     return unlink(path);
 }
 
+/* The number of entries in the directory path but "." and ".." (0 when it
+ * cannot be opened). */
+static inline int check_count_entries(const char *path)
+{
+    DIR *d = opendir(path);
+    int n = 0;
+    struct dirent *e;
+    while (d && (e = readdir(d)) != NULL)
+        n += strcmp(e->d_name, ".") && strcmp(e->d_name, "..");
+    if (d)
+        closedir(d);
+    return n;
+}
+
 static int check_main(int argc, char **argv, const CheckTest *tests, int ntests)
 {
     const char *suite = strrchr(argv[0], '/') ? strrchr(argv[0], '/') + 1 : argv[0];

@@ -1,7 +1,6 @@
 /* The ZIP archives of tests/tools/archive.h. */
 #include "check.h"            /* first: it sets the POSIX feature level */
 
-#include <dirent.h>
 #include <errno.h>
 #include <stdint.h>
 #include <sys/stat.h>
@@ -447,14 +446,7 @@ static void test_extract_refuses_symlinks_in_dest(void)
     struct stat st;
     CHECK(lstat(link, &st) == 0 && S_ISREG(st.st_mode));
     archive_free(&a);
-    DIR *d = opendir(outside);
-    int entries = 0;
-    struct dirent *e;
-    while (d && (e = readdir(d)) != NULL)
-        entries += strcmp(e->d_name, ".") && strcmp(e->d_name, "..");
-    if (d)
-        closedir(d);
-    CHECK_EQ_INT(entries, 0);
+    CHECK_EQ_INT(check_count_entries(outside), 0);
     check_remove_tree(dir);
 }
 
@@ -472,14 +464,7 @@ static void test_save_failure_leaves_nothing(void)
     CHECK_EQ_INT(mkdir(path, 0755), 0);
     CHECK_EQ_INT(archive_save(&a, path, err, sizeof err), -1);
     CHECK_STR_CONTAINS(err, path);
-    DIR *d = opendir(dir);
-    int entries = 0;
-    struct dirent *e;
-    while (d && (e = readdir(d)) != NULL)
-        entries += strcmp(e->d_name, ".") && strcmp(e->d_name, "..");
-    if (d)
-        closedir(d);
-    CHECK_EQ_INT(entries, 1);                 /* just "taken" */
+    CHECK_EQ_INT(check_count_entries(dir), 1);     /* just "taken" */
     snprintf(path, sizeof path, "%s/missing.zip", dir);
     Archive b;
     CHECK_EQ_INT(archive_load(&b, path, err, sizeof err), -1);

@@ -12,6 +12,7 @@
 #include "../oracle/dd.h"
 #include "../oracle/hard.h"
 #include "../oracle/testgen.h"
+#include "../oracle/textbook.h"
 #include "../grader/cases.c"           /* the test lists testgen fills */
 
 #define U ORACLE_U
@@ -51,44 +52,11 @@ static f128 f128_tan_degrees(double deg)
 }
 #endif
 
-/* ---- the textbook formulas: written here, never in the oracle ------------ */
-
-/* The lecture's B^2 - A C with the quadratic formula, near root first. */
-static bool textbook_intersect(const Sphere *sphere, const Ray *ray, double *t)
-{
-    Vec3 r = ray->direction, f = vec3_sub(ray->origin, sphere->center);
-    double A = vec3_dot(r, r), B = vec3_dot(f, r);
-    double C = vec3_dot(f, f) - sphere->radius * sphere->radius;
-    double disc = B * B - A * C;
-    if (!(A > 0) || !(disc >= 0))
-        return false;
-    *t = (-B - sqrt(disc)) / A;
-    if (*t > 0)
-        return true;
-    *t = (-B + sqrt(disc)) / A;
-    return *t > 0;
-}
-
-/* The same with an absolute epsilon, t > 0.001, as some tutorials write. */
+/* The lecture's formula with an absolute epsilon, t > 0.001, as some
+ * tutorials write. */
 static bool textbook_eps_intersect(const Sphere *sphere, const Ray *ray, double *t)
 {
-    Vec3 r = ray->direction, f = vec3_sub(ray->origin, sphere->center);
-    double A = vec3_dot(r, r), B = vec3_dot(f, r);
-    double C = vec3_dot(f, f) - sphere->radius * sphere->radius;
-    double disc = B * B - A * C;
-    if (!(A > 0) || !(disc >= 0))
-        return false;
-    *t = (-B - sqrt(disc)) / A;
-    if (*t > 1e-3)
-        return true;
-    *t = (-B + sqrt(disc)) / A;
-    return *t > 1e-3;
-}
-
-static void textbook_image_plane(double fov, double aspect, double d, double *w, double *h)
-{
-    *h = 2 * d * tan(fov / 2 * M_PI / 180);
-    *w = aspect * *h;
+    return textbook_sphere_above(sphere, ray, 1e-3, t);
 }
 
 /* ---- helpers ------------------------------------------------------------ */
@@ -697,9 +665,7 @@ static void test_reference_part2_hard(void)
         Vec3 p = pixel_coordinates(c[k].i, c[k].j, c[k].nx, c[k].ny, c[k].w, c[k].h, c[k].d);
         CHECK_MSG(hard_check2(&c[k], p), "%s: pixel (%d, %d) of %dx%d, w %a h %a: (%a, %a), want (%a, %a)",
                   c[k].family, c[k].i, c[k].j, c[k].nx, c[k].ny, c[k].w, c[k].h, p.x, p.y, c[k].p.x, c[k].p.y);
-        int i = c[k].i, j = c[k].j, nx = c[k].nx, ny = c[k].ny;
-        double w = c[k].w, h = c[k].h;
-        Vec3 q = vec3(-w / 2 + w * (i + 0.5) / nx, -h / 2 + h * (ny - 0.5 - j) / ny, -c[k].d);
+        Vec3 q = textbook_pixel(c[k].i, c[k].j, c[k].nx, c[k].ny, c[k].w, c[k].h, c[k].d);
         lecture_fails[k % HARD_PART2_FAMILIES] += !hard_check2(&c[k], q);
     }
     for (int f = 0; f < HARD_PART2_FAMILIES; f++)

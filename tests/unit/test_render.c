@@ -70,6 +70,20 @@ static const Vec3 BACKGROUND = { 0.1, 0.2, 0.3 };
 static const Vec3 RED = { 0.9, 0.2, 0.25 };
 static const Vec3 GREEN = { 0.2, 0.8, 0.4 };
 
+/* Renders scene with the given number of threads and checks that columns
+ * i0 .. i1-1 of rows j0 .. j1-1 are all colour c, every other pixel the
+ * background. */
+static void check_region(const Scene *scene, int threads, int i0, int i1, int j0, int j1, Vec3 c)
+{
+    Image img;
+    if (render_with(scene, threads, &img, NULL) < 0)
+        return;
+    int area = (i1 - i0) * (j1 - j0);
+    CHECK_EQ_INT(count_color(&img, i0, i1, j0, j1, c), area);
+    CHECK_EQ_INT(count_color(&img, 0, img.width, 0, img.height, BACKGROUND), img.width * img.height - area);
+    image_free(&img);
+}
+
 /* One sphere straight ahead: the centre pixel (on the axis, the image
  * being odd-sized) is the sphere's colour, the four corners the background. */
 static void test_sphere_straight_ahead(void)
@@ -122,11 +136,7 @@ static void test_sphere_behind_eye(void)
         { { 0.5, -0.5, 20 }, 15, GREEN },     /* spans z = 5 .. 35 */
     };
     Scene scene = make_scene(40, 30, 170, BACKGROUND, spheres, 2);
-    Image img;
-    if (render_with(&scene, 2, &img, NULL) < 0)
-        return;
-    CHECK_EQ_INT(count_color(&img, 0, 40, 0, 30, BACKGROUND), 40 * 30);
-    image_free(&img);
+    check_region(&scene, 2, 0, 0, 0, 0, RED);                 /* nothing but the background */
 }
 
 /* With the eye inside a sphere every ray meets its inside wall. */
@@ -137,44 +147,34 @@ static void test_eye_inside_sphere(void)
         { { 1, -2, 0.5 }, 50, GREEN },        /* around the first: farther wall */
     };
     Scene scene = make_scene(40, 30, 120, BACKGROUND, spheres, 2);
-    Image img;
-    if (render_with(&scene, 4, &img, NULL) < 0)
-        return;
-    CHECK_EQ_INT(count_color(&img, 0, 40, 0, 30, RED), 40 * 30);
-    image_free(&img);
+    check_region(&scene, 4, 0, 40, 0, 30, RED);
 
     scene.spheres = &spheres[1];
     scene.nspheres = 1;
-    if (render_with(&scene, 1, &img, NULL) < 0)
-        return;
-    CHECK_EQ_INT(count_color(&img, 0, 40, 0, 30, GREEN), 40 * 30);
-    image_free(&img);
+    check_region(&scene, 1, 0, 40, 0, 30, GREEN);
 }
 
 /* A 1x1 image looks straight ahead; a one-row and a one-column image work. */
 static void test_tiny_images(void)
 {
+    /* the size, the threads, and a pixel at an end that is the background
+     * (none in a 1x1 image); the middle pixel is the sphere */
+    static const struct { int nx, ny, threads, end_i, end_j; } sizes[] = {
+        { 1, 1, 8, -1, -1 },
+        { 101, 1, 2, 0, 0 },
+        { 1, 101, 2, 0, 100 },
+    };
     Sphere sphere = { { 0, 0, -5 }, 1, RED };
-    Scene scene = make_scene(1, 1, 60, BACKGROUND, &sphere, 1);
-    Image img;
-    if (render_with(&scene, 8, &img, NULL) < 0)
-        return;
-    CHECK_PIXEL(&img, 0, 0, RED, "the sphere");
-    image_free(&img);
-
-    scene = make_scene(101, 1, 60, BACKGROUND, &sphere, 1);
-    if (render_with(&scene, 2, &img, NULL) < 0)
-        return;
-    CHECK_PIXEL(&img, 50, 0, RED, "the sphere");
-    CHECK_PIXEL(&img, 0, 0, BACKGROUND, "the background");
-    image_free(&img);
-
-    scene = make_scene(1, 101, 60, BACKGROUND, &sphere, 1);
-    if (render_with(&scene, 2, &img, NULL) < 0)
-        return;
-    CHECK_PIXEL(&img, 0, 50, RED, "the sphere");
-    CHECK_PIXEL(&img, 0, 100, BACKGROUND, "the background");
-    image_free(&img);
+    for (int k = 0; k < CHECK_COUNT(sizes); k++) {
+        Scene scene = make_scene(sizes[k].nx, sizes[k].ny, 60, BACKGROUND, &sphere, 1);
+        Image img;
+        if (render_with(&scene, sizes[k].threads, &img, NULL) < 0)
+            return;
+        CHECK_PIXEL(&img, sizes[k].nx / 2, sizes[k].ny / 2, RED, "the sphere");
+        if (sizes[k].end_i >= 0)
+            CHECK_PIXEL(&img, sizes[k].end_i, sizes[k].end_j, BACKGROUND, "the background");
+        image_free(&img);
+    }
 }
 
 /* Loads a shipped scene and sets its image size to nx x ny.  Returns 0, or
@@ -308,12 +308,7 @@ static void test_ground_plane_halves(void)
         Scene scene = make_scene(40, 30, 60, BACKGROUND, NULL, 0);
         scene.planes = &ground;
         scene.nplanes = 1;
-        Image img;
-        if (render_with(&scene, 2, &img, NULL) < 0)
-            return;
-        CHECK_EQ_INT(count_color(&img, 0, 40, 0, 15, BACKGROUND), 40 * 15);
-        CHECK_EQ_INT(count_color(&img, 0, 40, 15, 30, GREEN), 40 * 15);
-        image_free(&img);
+        check_region(&scene, 2, 0, 40, 15, 30, GREEN);
     }
 }
 
@@ -326,12 +321,7 @@ static void test_triangle_left_half(void)
     Scene scene = make_scene(40, 30, 60, BACKGROUND, NULL, 0);
     scene.triangles = &tri;
     scene.ntriangles = 1;
-    Image img;
-    if (render_with(&scene, 2, &img, NULL) < 0)
-        return;
-    CHECK_EQ_INT(count_color(&img, 0, 20, 0, 30, RED), 20 * 30);
-    CHECK_EQ_INT(count_color(&img, 20, 40, 0, 30, BACKGROUND), 20 * 30);
-    image_free(&img);
+    check_region(&scene, 2, 0, 20, 0, 30, RED);
 }
 
 /* The closest hit across kinds: a wall z = -5, a triangle at z = -4 over
