@@ -9,6 +9,9 @@
 #                            tests/run.sh reads, and exits 0 if none failed
 #   need_built PROGRAM...    ends the suite as one failed check, naming the
 #                            first PROGRAM that is not built
+#   need_selftests DIR       writes the grader's self-test submissions into
+#                            DIR, a folder each (tests/lib/selftests.sh), or
+#                            ends the suite as one failed check, with why
 # (Not in tests/suites itself: tests/run.sh runs every file there.)
 passed=0
 failed=0
@@ -28,4 +31,12 @@ need_built() {
             exit 1
         fi
     done
+}
+need_selftests() {
+    if ! selftests_said=$(sh tests/lib/selftests.sh "$1" 2>&1); then
+        printf '%s\n' "$selftests_said"
+        echo "FAIL: the self-tests of tests/selftest could not be written out (tests/lib/selftests.sh)"
+        echo "$passed passed, $((failed + 1)) failed"
+        exit 1
+    fi
 }

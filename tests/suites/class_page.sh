@@ -1,12 +1,13 @@
 #!/bin/sh
 # The class page (OUT/index.html) and OUT/causes.csv that grade --all
 # writes (tests/grader/report_class.h).  Every self-test submission of
-# tests/selftest (the reference with its own files over it) is graded as
-# one class, every part turned on, with two of them copied again under
-# hostile names (a control byte, quotes, angle brackets, an ampersand, a
-# space, a percent sign) and an empty folder.  Each count of the page and of
-# causes.csv is then checked against the results files (OUT/<name>.json)
-# and the gradebook, read here with awk:
+# tests/selftest (as tests/lib/selftests.sh writes them out), the reference
+# with its own files over it, is graded as one class, every part turned
+# on, with two of them copied again under hostile names (a control byte,
+# quotes, angle brackets, an ampersand, a space, a percent sign) and an
+# empty folder.  Each count of the page and of causes.csv is then checked
+# against the results files (OUT/<name>.json) and the gradebook, read here
+# with awk:
 #   - causes.csv holds exactly the causes of the results' extra_data, each
 #     under exactly the submissions that have it, with their number;
 #   - so does the page's table of causes, most common first in each part,
@@ -38,6 +39,8 @@ fi
 LC_ALL=C
 export LC_ALL
 tab=$(printf '\t')
+selftest=$tmp/selftest
+need_selftests "$selftest"
 
 # ---- the class ----------------------------------------------------------------
 # A test's time limit 0.25 s and output 256 KiB, as in grader.sh (the
@@ -47,7 +50,7 @@ sed -e 's/^parts .*/parts 1 2 3a 3b 4 5/' -e 's/^\(timeout\) .*/\1 0.25/' -e 's/
     tests/weights.conf >"$conf"
 class=$tmp/class
 mkdir "$class"
-for dir in tests/selftest/*/; do
+for dir in "$selftest"/*/; do
     sub=${dir%/}
     sub="$class/${sub##*/}"
     mkdir "$sub"

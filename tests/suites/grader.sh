@@ -1,9 +1,11 @@
 #!/bin/sh
 # The grader's self-test: the reference scores full marks, the untouched
 # skeleton 0 on every part, and every faulty or hostile submission under
-# tests/selftest loses its own part's points and no other's, with the hint
-# or message its expect file names.  By default the optional Parts 4 and 5
-# are not graded at all; turned on, they are graded like the others.
+# tests/selftest (its folders, and the records of tests/selftest/mistakes
+# written out as folders by tests/lib/selftests.sh) loses its own part's
+# points and no other's, with the hint or message its expect file names.
+# By default the optional Parts 4 and 5 are not graded at all; turned on,
+# they are graded like the others.
 set -u
 root=$(pwd)
 grade=${GRADE:-out/build/bin/grade}   # make sanitize-grader: the sanitized one
@@ -11,6 +13,9 @@ tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtselftest.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
 . tests/lib/checks.sh
+# The self-test submissions, a folder each.
+selftest=$tmp/selftest
+need_selftests "$selftest"
 
 max1=20; max2=20; max3a=30; max3b=30; max4=20; max5=20     # tests/weights.conf
 # The same points with the optional Parts 4 and 5 turned on.
@@ -182,7 +187,7 @@ mkdir "$tmp/subs" "$tmp/subs45" "$tmp/reference"
 cp solutions/part*.c "$tmp/reference/"
 # Each submission: a copy of the reference, then its own files over it (two
 # processes; the shell itself tells the classes apart).
-for dir in tests/selftest/*/; do
+for dir in "$selftest"/*/; do
     name=${dir%/}
     name=${name##*/}
     # The optional parts' class: files part4_* or part5_* only.
@@ -353,7 +358,7 @@ else
     pass
 fi
 while read -r class sname g1 g2 g3a g3b g4 g5; do
-    expect="tests/selftest/$sname/expect"
+    expect="$selftest/$sname/expect"
     [ -f "$expect" ] || expect="$tmp/expect/$sname/expect"
     json="$tmp/grades-$class/$sname.json"
     core_full=no part="" hardpart=""

@@ -392,12 +392,13 @@ else
         test "$status" -eq 0
     if [ "$status" -eq 0 ]; then
         sed 's/^parts .*/parts 1 2 3a 3b 4 5/' tests/weights.conf >"$tmp/all-parts.conf"
+        need_selftests "$tmp/selftest"
         same=0 differ=""
         for name in reference p1-float p1-pi-approximate rw-tinyraytracer rw-tinyraytracer-camera rw-pbrt-v4 \
             rw-rtiow-v1 rw-wikipedia-moller-trumbore textbook; do
             sub=$tmp/musl-$name
             mkdir "$sub" && cp solutions/part*.c "$sub/"
-            [ "$name" = reference ] || cp tests/selftest/"$name"/part*.c "$sub/"
+            [ "$name" = reference ] || cp "$tmp"/selftest/"$name"/part*.c "$sub/"
             a=$(out/build/bin/grade --submission "$sub" --weights "$tmp/all-parts.conf" --summary --quiet 2>/dev/null |
                 grep '^summary')
             b=$(CC=musl-gcc "$mroot"/build/bin/grade --submission "$sub" --weights "$tmp/all-parts.conf" --summary \
