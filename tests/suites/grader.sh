@@ -17,6 +17,46 @@ chmod 755 "$tmp"
 selftest=$tmp/selftest
 need_selftests "$selftest"
 
+# -- the table of self-tests (tests/selftest/mistakes) -------------------------
+# A record whose lines to change are no longer in its base stops the
+# writing, naming the table's line and the record, and nothing is written:
+# here in a copy of the kit with a line of the reference changed (one that
+# p4-t-infinite changes), a line of the table's plain Part 3a changed (one
+# that several records change), and two records added, one whose line is
+# in its base twice and one with a line of no kind.
+kit=$tmp/kit
+mkdir -p "$kit/tests"
+cp -R tests/selftest "$kit/tests/"
+cp -R solutions "$kit/"
+old='    if (!(root > 0 && root < INFINITY))'
+sed 's/root < INFINITY))$/root < HUGE_VAL))/' solutions/part4_plane_intersect.c >"$kit/solutions/part4_plane_intersect.c"
+base_line='    if (disc < 0 || A == 0)'
+{
+    sed 's/^|    if (disc < 0 || A == 0)$/|    if (!(disc >= 0) || A == 0)/' tests/selftest/mistakes
+    printf '\ntest extra-twice part4_plane_intersect.c\npart 4\n-        return false;\n+        return true;\n'
+    printf '\ntest extra-typo part1_image_plane.c\nparts 1\n'
+} >"$kit/tests/selftest/mistakes"
+n=$(wc -l <tests/selftest/mistakes | tr -d ' ')
+sh tests/lib/selftests.sh "$tmp/unwritten" "$kit" >"$tmp/unwritten.out" 2>&1
+status=$?
+table=$kit/tests/selftest/mistakes
+at=$(grep -n -x -F -e "-$old" tests/selftest/mistakes | cut -d: -f1)
+check "a reference line a record changes, edited: refused, naming the record and its line $at (exit $status)" \
+    sh -c "[ $status -eq 1 ] && [ ! -e '$tmp/unwritten' ] &&
+           grep -q -x -F -e '$table:$at: p4-t-infinite: the line to change ($old) is not in the reference part4_plane_intersect.c' '$tmp/unwritten.out'"
+at=$(grep -n -x -F -e "-$base_line" tests/selftest/mistakes | cut -d: -f1 | tr '\n' ' ')
+said=$(grep -F -e " to change ($base_line" "$tmp/unwritten.out" | grep -F -e " not in the base part3a_sphere_intersect.c" |
+       sed 's/^.*mistakes:\([0-9]*\): .*/\1/' | tr '\n' ' ')
+check "a line of a base of the table, edited: every record that changes it is named, at lines ${at:-none} (said: ${said:-none})" \
+    sh -c "[ -n '$at' ] && [ '$at' = '$said' ] &&
+           grep -q -F -e ': p3a-tangent-miss: the line to change ($base_line) is not in the base' '$tmp/unwritten.out'"
+check "a line to change that is in its base twice is refused, how many times said" \
+    grep -q -x -F -e "$table:$((n + 4)): extra-twice: the line to change (        return false;) is in the base part4_plane_intersect.c 2 times: say which with a line beside (=)" \
+    "$tmp/unwritten.out"
+check "a line of no kind in a record is refused" \
+    grep -q -F -e "$table:$((n + 8)): extra-typo: not an expect line" "$tmp/unwritten.out"
+[ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/unwritten.out"
+
 max1=20; max2=20; max3a=30; max3b=30; max4=20; max5=20     # tests/weights.conf
 # The same points with the optional Parts 4 and 5 turned on.
 all=$tmp/all-parts.conf
