@@ -241,6 +241,21 @@ for mesh in cracks knot; do
         fi
     done
 done
+# The self-tests written out from their table (tests/lib/selftests.sh), the
+# same under every shell as under /bin/sh.
+if [ -f tests/selftest/mistakes ] && sh tests/lib/selftests.sh "$tmp/selftest-sh" 2>"$tmp/selftest.err"; then
+    for shell in dash "bash --posix" ksh mksh posh yash "busybox sh"; do
+        set -- $shell
+        if have "$1"; then
+            rm -rf "$tmp/selftest-other"
+            $shell tests/lib/selftests.sh "$tmp/selftest-other" 2>"$tmp/selftest.err"
+            check "$shell tests/lib/selftests.sh writes the self-tests as sh does" \
+                diff -r "$tmp/selftest-sh" "$tmp/selftest-other"
+        fi
+    done
+elif [ -f tests/selftest/mistakes ]; then
+    fail "sh tests/lib/selftests.sh: $(head -n 3 "$tmp/selftest.err" | tr '\n' ' ')"
+fi
 
 # ---- 3. the Makefile ---------------------------------------------------------
 make_features Makefile >"$tmp/found"
