@@ -49,7 +49,7 @@ function err(line, text) {
     errors++
 }
 # The end of a hunk: its lines in order, "-" and "=" the old, "=" and "+" the new.
-function end_hunk() {
+function end_hunk(   h) {    # portable: awk
     if (nh_lines > 0) {
         nhunks[rec]++
         h = rec SUBSEP nhunks[rec]
@@ -60,7 +60,7 @@ function end_hunk() {
     nh_lines = 0
     hunk_body = ""
 }
-function end_block() {
+function end_block() {    # portable: awk
     end_hunk()
     if (in_header)
         err(header_line, rec ": the comment is not closed (*/)")
