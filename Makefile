@@ -63,7 +63,7 @@ GRADER_LIB_SRC = $(filter-out %_main.c tests/grader/harness%,$(wildcard tests/gr
 GRADER_HDR = $(wildcard tests/grader/*.h) $(KIT_HDR)
 
 .PHONY: all help render compare grade grade-all gradescope prairielearn student-kit bench \
-        handouts test test-build unit-tests clean grader public-tests fuzz sanitize-grader \
+        handouts test test-build unit-tests clean grader public-tests fuzz sanitize-grader selftests \
         submission-dir sort-submissions print-cflags
 .DELETE_ON_ERROR:
 .SECONDARY:                             # keep the objects a chain of rules makes (the renderer's lto/)
@@ -86,7 +86,7 @@ help:
 ifneq ($(HAVE_SOLUTIONS),)
 	@echo "make grade-all SUBMISSIONS=dir [OUT=dir] [JOBS=n] [PREVIOUS=dir]"
 	@echo "make sort-submissions FROM=download.zip|dir TO=newdir [MAX_MB=n] [MAX_RATIO=n]"
-	@echo "make gradescope | prairielearn | student-kit | bench | fuzz | sanitize-grader | handouts | test | clean"
+	@echo "make gradescope | prairielearn | student-kit | bench | fuzz | sanitize-grader | handouts | selftests | test | clean"
 else
 	@echo "make test | clean"
 endif
@@ -392,6 +392,15 @@ sanitize-grader: all $(BUILD)/bin/pack $(ASAN)/bin/grade $(ASAN)/bin/sortsubs
 else
 sanitize-grader:
 	@echo "make sanitize-grader: only the instructor's kit has the grader's suites (tests/suites)"; exit 2
+endif
+# The grader's self-test submissions written out, a folder each, in
+# out/selftest (tests/selftest/README.md); each suite writes its own.
+ifneq ($(wildcard tests/selftest/mistakes),)
+selftests:
+	sh tests/lib/selftests.sh out/selftest
+else
+selftests:
+	@echo "make selftests: only the instructor's kit has the self-tests (tests/selftest)"; exit 2
 endif
 # What the tests need built (`make -j2 test-build` builds it on two cores).
 test-build: all $(BUILD)/bin/pack $(UNIT_NAMES:%=$(ASAN)/tests/%) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)

@@ -7,12 +7,13 @@
 #   scene-NAME.png       the reference solution's render of labs/scenes/NAME.scene;
 #   mistake-*.png        a common mistake next to the reference: a submission
 #                        assembled in a temporary directory from solutions/
-#                        plus one faulty stage file from tests/selftest/CASE/,
+#                        plus the faulty stage file of self-test CASE
+#                        (tests/lib/selftests.sh writes them out),
 #                        rendered with `make render`, then compare's
 #                        side-by-side image: the mistake | the reference |
 #                        a heat map of their difference;
 #   hard-*.png           the same for the hard cases: far.scene with the
-#                        lecture's textbook quadratic (tests/selftest/textbook),
+#                        lecture's textbook quadratic (self-test textbook),
 #                        in double and, made from it here, in float; and
 #                        cracks.scene with Moller-Trumbore's triangle test.
 #   report-*.svg         a figure of the report page `make grade` writes
@@ -41,6 +42,9 @@ work=$(mktemp -d "$top/out/figures.XXXXXX")
 builds="$top/out/build/sub/$(printf '%s' "$work" | tr / _)"
 trap 'rm -rf "$work" "$builds"_*' EXIT
 trap 'exit 1' HUP INT TERM
+# The self-test submissions, a folder each.
+selftest=$work/selftest
+sh tests/lib/selftests.sh "$selftest"
 
 # reference SCENE SIZE: the reference's render, as figure scene-SCENE.png.
 reference() {
@@ -49,11 +53,11 @@ reference() {
 }
 
 # assemble NAME CASE: a submission directory $work/NAME holding the reference
-# stage files with those of tests/selftest/CASE in their place.
+# stage files with those of self-test CASE in their place.
 assemble() {
     mkdir -p "$work/$1"
     cp solutions/*.c "$work/$1/"
-    cp "tests/selftest/$2/"*.c "$work/$1/"
+    cp "$selftest/$2/"*.c "$work/$1/"
 }
 
 # side_by_side NAME SCENE SIZE: renders the submission $work/NAME with
@@ -112,12 +116,12 @@ mistake hard-far-textbook textbook far 256x256
 # a declaration in the body becomes "float", and sqrt becomes sqrtf.
 assemble hard-far-textbook-float textbook
 sed 's/^\( *\)double /\1float /; s/sqrt(/sqrtf(/g' \
-    tests/selftest/textbook/part3a_sphere_intersect.c \
+    "$selftest"/textbook/part3a_sphere_intersect.c \
     >"$work/hard-far-textbook-float/part3a_sphere_intersect.c"
 side_by_side hard-far-textbook-float far 256x256
 
 # ---- Part 5's hard case: a closed box whose edges lie along pixel rays -----
-# Moller-Trumbore in double (tests/selftest/moller-trumbore), the skeleton's
+# Moller-Trumbore in double (self-test moller-trumbore), the skeleton's
 # formula: rays slip through between triangles that share an edge.
 mistake hard-cracks-moller-trumbore moller-trumbore cracks 320x240
 

@@ -16,6 +16,9 @@
 #                            counts a failure as fail does, then shows the
 #                            first N lines of FILE (if not empty), each after
 #                            PREFIX: a suite's own fail, showing its output
+#   need_selftests DIR       writes the grader's self-test submissions into
+#                            DIR, a folder each (tests/lib/selftests.sh), or
+#                            ends the suite as one failed check, with why
 # (Not in tests/suites itself: tests/run.sh runs every file there.)
 passed=0
 failed=0
@@ -51,4 +54,12 @@ need_built() {
             exit 1
         fi
     done
+}
+need_selftests() {
+    if ! selftests_said=$(sh tests/lib/selftests.sh "$1" 2>&1); then
+        printf '%s\n' "$selftests_said"
+        echo "FAIL: the self-tests of tests/selftest could not be written out (tests/lib/selftests.sh)"
+        echo "$passed passed, $((failed + 1)) failed"
+        exit 1
+    fi
 }

@@ -25,6 +25,8 @@ fi
 LC_ALL=C
 export LC_ALL
 sed -e 's/^parts .*/parts 1/' -e 's/^\(timeout\) .*/\1 0.25/' tests/weights.conf >"$tmp/p1.conf"
+selftest=$tmp/selftest
+need_selftests "$selftest"
 
 # ---- a regrade, with --previous ------------------------------------------------------------
 # Three submissions of Part 1 graded, then graded again with Part 1's core
@@ -34,7 +36,7 @@ sed -e 's/^parts .*/parts 1/' -e 's/^\(timeout\) .*/\1 0.25/' tests/weights.conf
 small=$tmp/small
 for s in p1-degrees-to-tan p1-float p1-w-h-swapped; do
     mkdir -p "$small/$s"
-    cp "tests/selftest/$s/part1_image_plane.c" "$small/$s/"
+    cp "$selftest/$s/part1_image_plane.c" "$small/$s/"
 done
 mkdir "$small/reference-like"
 cp solutions/part1_image_plane.c "$small/reference-like/"
@@ -79,7 +81,7 @@ check "with a --previous that holds no gradebook, the page says so and compares 
 
 # ---- a class of one, and a class with no points lost ----------------------------------------------
 mkdir -p "$tmp/one/only" "$tmp/allfull/a" "$tmp/allfull/b"
-cp tests/selftest/p1-degrees-to-tan/part1_image_plane.c "$tmp/one/only/"
+cp "$selftest/p1-degrees-to-tan/part1_image_plane.c" "$tmp/one/only/"
 cp solutions/part1_image_plane.c "$tmp/allfull/a/"
 cp solutions/part1_image_plane.c "$tmp/allfull/b/"
 chmod -R a+rX "$tmp/one" "$tmp/allfull"

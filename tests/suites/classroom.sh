@@ -29,6 +29,9 @@ top=$(pwd)
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtclassroom.XXXXXX") || { echo "0 passed, 1 failed"; exit 1; }
 trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
+# The self-test submissions, a folder each.
+selftest=$tmp/selftest
+need_selftests "$selftest"
 
 # ---- the reporter's rules -----------------------------------------------------
 # decode RUNNERS ENVFILE: each runner's results as the reporter reads them,
@@ -202,9 +205,9 @@ js_checks() {
 mkdir -p "$tmp/full" "$tmp/partial" "$tmp/broken"
 cp solutions/*.c "$tmp/full/"
 cp solutions/*.c "$tmp/partial/"
-cp tests/selftest/p1-aspect-inverted/*.c tests/selftest/p3a-tangent-miss/*.c "$tmp/partial/"
+cp "$selftest"/p1-aspect-inverted/*.c "$selftest"/p3a-tangent-miss/*.c "$tmp/partial/"
 cp solutions/*.c "$tmp/broken/"
-cp tests/selftest/hostile-compile-error/*.c tests/selftest/p1-aspect-inverted/*.c "$tmp/broken/"
+cp "$selftest"/hostile-compile-error/*.c "$selftest"/p1-aspect-inverted/*.c "$tmp/broken/"
 chmod -R a+rX "$tmp/full" "$tmp/partial" "$tmp/broken"
 
 # ---- the student kit: its workflow, its grader ------------------------------

@@ -1,9 +1,11 @@
 #!/bin/sh
 # The grader's self-test: the reference scores full marks, the untouched
 # skeleton 0 on every part, and every faulty or hostile submission under
-# tests/selftest loses its own part's points and no other's, with the hint
-# or message its expect file names.  By default the optional Parts 4 and 5
-# are not graded at all; turned on, they are graded like the others.
+# tests/selftest (its folders, and the records of tests/selftest/mistakes
+# written out as folders by tests/lib/selftests.sh) loses its own part's
+# points and no other's, with the hint or message its expect file names.
+# By default the optional Parts 4 and 5 are not graded at all; turned on,
+# they are graded like the others.
 set -u
 root=$(pwd)
 grade=${GRADE:-out/build/bin/grade}   # make sanitize-grader: the sanitized one
@@ -14,6 +16,49 @@ chmod 755 "$tmp"
 . tests/lib/checks.sh
 . tests/lib/class_page.sh
 . tests/lib/browser.sh
+# The self-test submissions, a folder each.
+selftest=$tmp/selftest
+need_selftests "$selftest"
+
+# -- the table of self-tests (tests/selftest/mistakes) -------------------------
+# A record whose lines to change are no longer in its base stops the
+# writing, naming the table's line and the record, and nothing is written:
+# here in a copy of the kit with a line of the reference changed (one that
+# p4-t-infinite changes), a line of the table's plain Part 3a changed (one
+# that several records change), and two records added, one whose line is
+# in its base twice and one with a line of no kind.
+kit=$tmp/kit
+mkdir -p "$kit/tests"
+cp -R tests/selftest "$kit/tests/"
+cp -R solutions "$kit/"
+old='    if (!(root > 0 && root < INFINITY))'
+sed 's/root < INFINITY))$/root < HUGE_VAL))/' solutions/part4_plane_intersect.c >"$kit/solutions/part4_plane_intersect.c"
+base_line='    if (disc < 0 || A == 0)'
+{
+    sed 's/^|    if (disc < 0 || A == 0)$/|    if (!(disc >= 0) || A == 0)/' tests/selftest/mistakes
+    printf '\ntest extra-twice part4_plane_intersect.c\npart 4\n-        return false;\n+        return true;\n'
+    printf '\ntest extra-typo part1_image_plane.c\nparts 1\n'
+} >"$kit/tests/selftest/mistakes"
+n=$(wc -l <tests/selftest/mistakes | tr -d ' ')
+sh tests/lib/selftests.sh "$tmp/unwritten" "$kit" >"$tmp/unwritten.out" 2>&1
+status=$?
+table=$kit/tests/selftest/mistakes
+at=$(grep -n -x -F -e "-$old" tests/selftest/mistakes | cut -d: -f1)
+check "a reference line a record changes, edited: refused, naming the record and its line $at (exit $status)" \
+    sh -c "[ $status -eq 1 ] && [ ! -e '$tmp/unwritten' ] &&
+           grep -q -x -F -e '$table:$at: p4-t-infinite: the line to change ($old) is not in the reference part4_plane_intersect.c' '$tmp/unwritten.out'"
+at=$(grep -n -x -F -e "-$base_line" tests/selftest/mistakes | cut -d: -f1 | tr '\n' ' ')
+said=$(grep -F -e " to change ($base_line" "$tmp/unwritten.out" | grep -F -e " not in the base part3a_sphere_intersect.c" |
+       sed 's/^.*mistakes:\([0-9]*\): .*/\1/' | tr '\n' ' ')
+check "a line of a base of the table, edited: every record that changes it is named, at lines ${at:-none} (said: ${said:-none})" \
+    sh -c "[ -n '$at' ] && [ '$at' = '$said' ] &&
+           grep -q -F -e ': p3a-tangent-miss: the line to change ($base_line) is not in the base' '$tmp/unwritten.out'"
+check "a line to change that is in its base twice is refused, how many times said" \
+    grep -q -x -F -e "$table:$((n + 4)): extra-twice: the line to change (        return false;) is in the base part4_plane_intersect.c 2 times: say which with a line beside (=)" \
+    "$tmp/unwritten.out"
+check "a line of no kind in a record is refused" \
+    grep -q -F -e "$table:$((n + 8)): extra-typo: not an expect line" "$tmp/unwritten.out"
+[ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/unwritten.out"
 
 max1=20; max2=20; max3a=30; max3b=30; max4=20; max5=20     # tests/weights.conf
 # The same points with the optional Parts 4 and 5 turned on.
@@ -185,7 +230,7 @@ sed 's/^parts .*/parts 1 2 3a 3b 4 5/' "$core" >"$classconf"
 class=$tmp/class
 mkdir "$class"
 # Each submission: a copy of the reference, then its own files over it.
-for dir in tests/selftest/*/; do
+for dir in "$selftest"/*/; do
     name=${dir%/}
     sub="$class/${name##*/}"
     mkdir "$sub"
@@ -337,7 +382,7 @@ else
     pass
 fi
 while read -r sname g1 g2 g3a g3b g4 g5; do
-    expect="tests/selftest/$sname/expect"
+    expect="$selftest/$sname/expect"
     [ -f "$expect" ] || expect="$tmp/expect/$sname/expect"
     json="$tmp/grades/$sname.json"
     core_full=no part="" hardpart=""

@@ -89,8 +89,12 @@ same() {
     done
 }
 
-subs="solutions tests/selftest/textbook"
-for f in tests/selftest/*/part5_triangle_intersect.c; do
+# The self-test submissions, written out where their paths stay the same
+# (and hold no space: $subs is split on them).
+selftest=out/tests/hierarchy/selftest
+need_selftests "$selftest"
+subs="solutions $selftest/textbook"
+for f in "$selftest"/*/part5_triangle_intersect.c; do
     subs="$subs ${f%/part5_triangle_intersect.c}"
 done
 for sub in $subs; do

@@ -227,6 +227,21 @@ for mesh in cracks knot; do
         fi
     done
 done
+# The self-tests written out from their table (tests/lib/selftests.sh), the
+# same under every shell as under /bin/sh.
+if [ -f tests/selftest/mistakes ] && sh tests/lib/selftests.sh "$tmp/selftest-sh" 2>"$tmp/selftest.err"; then
+    for shell in dash "bash --posix" ksh mksh posh yash "busybox sh"; do
+        set -- $shell
+        if have "$1"; then
+            rm -rf "$tmp/selftest-other"
+            $shell tests/lib/selftests.sh "$tmp/selftest-other" 2>"$tmp/selftest.err"
+            check "$shell tests/lib/selftests.sh writes the self-tests as sh does" \
+                diff -r "$tmp/selftest-sh" "$tmp/selftest-other"
+        fi
+    done
+elif [ -f tests/selftest/mistakes ]; then
+    fail "sh tests/lib/selftests.sh: $(head -n 3 "$tmp/selftest.err" | tr '\n' ' ')"
+fi
 
 # ---- 3. the Makefile ---------------------------------------------------------
 make_features Makefile >"$tmp/found"
@@ -320,12 +335,13 @@ else
         test "$status" -eq 0
     if [ "$status" -eq 0 ]; then
         sed 's/^parts .*/parts 1 2 3a 3b 4 5/' tests/weights.conf >"$tmp/all-parts.conf"
+        need_selftests "$tmp/selftest"
         same=0 differ=""
         for name in reference p1-float p1-pi-approximate rw-tinyraytracer rw-tinyraytracer-camera rw-pbrt-v4 \
             rw-rtiow-v1 rw-wikipedia-moller-trumbore textbook; do
             sub=$tmp/musl-$name
             mkdir "$sub" && cp solutions/part*.c "$sub/"
-            [ "$name" = reference ] || cp tests/selftest/"$name"/part*.c "$sub/"
+            [ "$name" = reference ] || cp "$tmp"/selftest/"$name"/part*.c "$sub/"
             a=$(out/build/bin/grade --submission "$sub" --weights "$tmp/all-parts.conf" --summary --quiet 2>/dev/null |
                 grep '^summary')
             b=$(CC=musl-gcc "$mroot"/build/bin/grade --submission "$sub" --weights "$tmp/all-parts.conf" --summary \

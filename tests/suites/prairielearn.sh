@@ -28,6 +28,9 @@ unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtprairielearn.XXXXXX") || { echo "0 passed, 1 failed"; exit 1; }
 trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
+# The self-test submissions, a folder each.
+selftest=$tmp/selftest
+need_selftests "$selftest"
 
 expected=tests/prairielearn/expected
 # same FILE EXPECTED: FILE is the committed EXPECTED, or the difference is shown.
@@ -109,7 +112,7 @@ check "reference: the files in a folder were found" grep -q 'found: part1_image_
 # the score must be.
 rm -rf "$job/student"/*
 cp solutions/*.c "$job/student/"
-cp tests/selftest/p1-aspect-inverted/*.c tests/selftest/p3a-tangent-miss/*.c "$job/student/"
+cp "$selftest"/p1-aspect-inverted/*.c "$selftest"/p3a-tangent-miss/*.c "$job/student/"
 mkdir "$tmp/partial" && cp "$job/student"/*.c "$tmp/partial/" && chmod -R a+rX "$tmp/partial"
 run partial
 check "partial: results.json is $expected/partial.json" same "$tmp/partial.json" "$expected/partial.json"

@@ -353,6 +353,10 @@ else
     pass
 fi
 
+# The self-test submissions, a folder each (the instructor's kit).
+selftest=$tmp/selftest
+[ -d solutions ] && [ -d tests/selftest ] && need_selftests "$selftest"
+
 # A correct submission written independently of solutions/
 # (tests/selftest/independent: the geometric method, the plain pixel
 # formula, a plane through its constant n.p) renders, through `make
@@ -362,14 +366,14 @@ fi
 # shows the cracks of a triangle test that is not watertight: its Part 5
 # is Moller-Trumbore (tests/selftest/moller-trumbore, the skeleton's
 # formula).
-if [ -d solutions ] && [ -d tests/selftest/independent ] && [ -d tests/selftest/moller-trumbore ]; then
+if [ -d solutions ] && [ -d "$selftest/independent" ] && [ -d "$selftest/moller-trumbore" ]; then
     # In out/tests, not in $tmp: its path is the same from one run to the
     # next, so the suites' compile memo serves its compiles (the path is
     # in each compile's arguments).
     sub=$PWD/out/tests/independent
     rm -rf "$sub"
     mkdir -p "$sub"
-    cp tests/selftest/independent/*.c tests/selftest/moller-trumbore/*.c "$sub/"
+    cp "$selftest"/independent/*.c "$selftest"/moller-trumbore/*.c "$sub/"
     for scene in labs/scenes/*.scene; do
         name=$(basename "$scene" .scene)
         run ${MAKE:-make} --no-print-directory compare SUBMISSION="$sub" SCENE="$scene"
@@ -398,12 +402,12 @@ fi
 # takes the reference's pixels on an edge (render --edges) in their other
 # colour as equal: identical on every shipped scene.  Without them the
 # same renders differ (the check has something to forgive).
-if [ -d solutions ] && [ -d tests/selftest/textbook-ground ]; then
+if [ -d solutions ] && [ -d "$selftest/textbook-ground" ]; then
     sub=$PWD/out/tests/textbook-ground
     rm -rf "$sub"
     mkdir -p "$sub"
     cp solutions/*.c "$sub/"
-    cp tests/selftest/textbook-ground/*.c "$sub/"
+    cp "$selftest"/textbook-ground/*.c "$sub/"
     for scene in labs/scenes/*.scene; do
         name=$(basename "$scene" .scene)
         run ${MAKE:-make} --no-print-directory compare SUBMISSION="$sub" SCENE="$scene"

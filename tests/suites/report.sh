@@ -31,6 +31,8 @@ if [ ! -d solutions ]; then
     echo "0 passed, 1 failed"
     exit 1
 fi
+selftest=$tmp/selftest
+need_selftests "$selftest"
 
 # ---- the checker itself: it must be able to fail ---------------------------
 # One page that passes, then pages with one fault each, which must not.
@@ -84,7 +86,7 @@ core="p1-w-h-swapped p2-y-not-flipped p3a-far-root p3a-tangent-miss p3b-first-hi
 flat="p4-hits-behind p4-one-sided p4-float p4-no-parallel-check p4-no-parallel-check-nan-safe"
 flat="$flat p5-one-sided p5-strict-edges"
 for name in $core $flat; do
-    dir=tests/selftest/$name
+    dir=$selftest/$name
     case " $flat " in *" $name "*) to=$tmp/subs45/$name ;; *) to=$tmp/subs/$name ;; esac
     mkdir "$to"
     cp solutions/part*.c "$to/"
@@ -117,7 +119,7 @@ start=$(date +%s)
 mkdir "$tmp/grades"
 running=0
 for name in $core reference; do
-    p=$(sed -n 's/^part //p; s/^hard lost //p' "tests/selftest/$name/expect" 2>/dev/null | head -n 1)
+    p=$(sed -n 's/^part //p; s/^hard lost //p' "$selftest/$name/expect" 2>/dev/null | head -n 1)
     [ "$name" = markup-printer ] && p=1
     $grade --submission "$tmp/subs/$name" --part "${p:-1}" --results "$tmp/grades/$name.json" \
         --report-file "$tmp/grades/$name.html" --quiet >"$tmp/grades/$name.out" 2>&1 &

@@ -17,6 +17,8 @@ pack=out/build/bin/pack
 sortsubs=${SORTSUBS:-out/build/bin/sortsubs}   # make sanitize-grader: the sanitized one
 grade=${GRADE:-out/build/bin/grade}
 need_built "$sortsubs" "$pack" "$grade"
+selftest=$tmp/selftest
+need_selftests "$selftest"
 sort_subs() {   # sort_subs FROM TO: the sorter, its output in $tmp/out
     "$sortsubs" "$1" "$2" >"$tmp/out" 2>&1
 }
@@ -36,7 +38,7 @@ done
 # wellslane uploaded Part 1 again: the skeleton first, the reference after it
 cp labs/part1_image_plane.c "$dl/wellslane_LATE_334244_394803489_part1_image_plane.c"
 cp solutions/part1_image_plane.c "$dl/wellslane_LATE_334244_394803489_part1_image_plane-1.c"
-cp tests/selftest/p2-no-half/part2_pixel_coordinates.c "$dl/leeann_77_88_part2_pixel_coordinates.c"
+cp "$selftest"/p2-no-half/part2_pixel_coordinates.c "$dl/leeann_77_88_part2_pixel_coordinates.c"
 echo notes >"$dl/leeann_77_88_notes-2.txt"
 echo stray >"$dl/README.txt"
 mkdir "$dl/__MACOSX" && echo x >"$dl/__MACOSX/._smithbob_340934_208490284_part1_image_plane.c"

@@ -36,6 +36,9 @@ top=$(pwd)
 temp_dir student_kit
 trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
 trap 'exit 1' HUP INT TERM
+# The self-test submissions, a folder each.
+selftest=$tmp/selftest
+need_selftests "$selftest"
 
 # fail WHAT: counts a failure; shows the start of the last output, if any.
 fail() { fail_showing "$tmp/out" 15 '    | ' "$@"; }
@@ -236,7 +239,7 @@ check "the kit's make help lists render, compare, grade, test and clean, and not
     sh -c "[ $status -eq 0 ] && grep -q '^make render' '$tmp/out' && grep -q '^make compare' '$tmp/out' &&
            grep -q '^make grade ' '$tmp/out' && grep -q 'make test | clean' '$tmp/out' &&
            ! grep -q -e grade-all -e sort-submissions -e 'make gradescope' -e student-kit -e bench -e fuzz \
-                     -e sanitize-grader -e handouts '$tmp/out'"
+                     -e sanitize-grader -e handouts -e selftests '$tmp/out'"
 
 # ---- the untouched skeleton: 0 on every part, status 1 --------------------
 mk "$kit" grade
@@ -385,10 +388,10 @@ done
 # The lecture's Part 2 and the textbook's Part 4 (tests/selftest/textbook-
 # ground), right but for rounding where the wall meets the ground and along
 # the box's outline: identical, with the stored pixels on an edge.
-if [ -d tests/selftest/textbook-ground ]; then
+if [ -d "$selftest/textbook-ground" ]; then
     mkdir -p "$tmp/textbook"
     cp solutions/*.c "$tmp/textbook/"
-    cp tests/selftest/textbook-ground/*.c "$tmp/textbook/"
+    cp "$selftest"/textbook-ground/*.c "$tmp/textbook/"
     for name in ground cracks; do
         mk "$kit" compare SUBMISSION="$tmp/textbook" SCENE="labs/scenes/$name.scene"
         check "make compare in the kit: the textbook's $name.scene is identical to the stored reference (exit $status)" \
@@ -414,7 +417,7 @@ else
     echo "skipped: git is not installed (the kit as a repository keeps its builds out)"
 fi
 
-cp tests/selftest/textbook/part3a_sphere_intersect.c "$kit/labs/"
+cp "$selftest"/textbook/part3a_sphere_intersect.c "$kit/labs/"
 mk "$kit" grade PART=3a
 check "make grade with the textbook's Part 3a: full core points, and why make says Error 1 (exit $status, grader $ran)" \
     sh -c "[ $ran -eq 1 ] && grep -q '^Score: 30 / 30 ' '$tmp/out' &&
@@ -430,7 +433,7 @@ check "... and with the reference's, not a word of it (exit $status)" \
 # 3a, and the linker refuses two dot()s; the grader builds it with each
 # file's dot its own, as the instructor's grader does (with the
 # reference's Part 3a), and says what make render says: write static.
-cp tests/selftest/link-shared-helper/part*.c "$kit/labs/"
+cp "$selftest"/link-shared-helper/part*.c "$kit/labs/"
 mk "$kit" grade PART=3b
 check "a non-static helper in Parts 3a and 3b: Part 3b keeps its 30 points, and is told to write static (exit $status, grader $ran)" \
     sh -c "grep -q '^Part 3b: .*  30 / 30' '$tmp/out' && ! grep -q 'did not build' '$tmp/out' &&

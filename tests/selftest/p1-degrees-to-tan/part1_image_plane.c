@@ -1,8 +1,0 @@
-/* Self-test of the grader: p1-degrees-to-tan. */
-#include "raytracer.h"
-
-void image_plane_size(double fov_degrees, double aspect, double d, double *w, double *h)
-{
-    *h = 2 * d * tan(fov_degrees / 2);
-    *w = aspect * *h;
-}
