@@ -119,71 +119,161 @@ void fig_plane(Markup *m, const Test *t, const Case *c, const double *got)
 
 /* ---- Part 2 --------------------------------------------------------------------- */
 
-void fig_pixel(Markup *m, const Test *t, const Case *c, const double *got)
+/* A Part 2 case on the image plane, and where the two points are on it. */
+typedef struct {
+    int i, j, nx, ny;           /* the pixel, of nx x ny                     */
+    double w, h;                /* the plane's size                          */
+    double pw, ph;              /* a pixel's size on the plane               */
+    double xw, yw, xg, yg;      /* the expected and the returned point (0, 0
+                                   when there is none)                       */
+    double Xw, Yw, Xg, Yg;      /* the same in pixels: columns from the left,
+                                   rows from the top                         */
+    bool have;                  /* a returned point, finite                  */
+    bool whole;                 /* it is so far off the figure shows the whole
+                                   plane                                     */
+    bool far;                   /* it is too far off to draw                 */
+} PixelCase;
+
+static PixelCase pixel_case(const Case *c, const double *got)
 {
-    (void)t;
-    int i = (int)c->in[0], j = (int)c->in[1], nx = (int)c->in[2], ny = (int)c->in[3];
-    double w = c->in[4], h = c->in[5], d = c->in[6];
+    PixelCase pc;
+    int nx = (int)c->in[2], ny = (int)c->in[3];
+    double w = c->in[4], h = c->in[5];
     double xw = c->want[0], yw = c->want[1];
     bool have = got && isfinite(got[0]) && isfinite(got[1]);
     double xg = have ? got[0] : 0, yg = have ? got[1] : 0;
-    double pw = w / nx, ph = h / ny;             /* a pixel's size on the plane */
-    char b1[40], b2[40];
-
-    /* In pixels: columns from the left, rows from the top. */
+    double pw = w / nx, ph = h / ny;
     double Xw = (xw + w / 2) / pw, Yw = (h / 2 - yw) / ph;
     double Xg = (xg + w / 2) / pw, Yg = (h / 2 - yg) / ph;
     double span = have ? fmax(fabs(Xg - Xw), fabs(Yg - Yw)) : 0;
-    bool whole = have && span > 24;              /* the offset is large: the whole plane */
-    bool far = have && fabs(Xg - Xw) + fabs(Yg - Yw) > 60.0 * (nx + ny);
+    pc.i = (int)c->in[0], pc.j = (int)c->in[1], pc.nx = nx, pc.ny = ny;
+    pc.w = w, pc.h = h, pc.pw = pw, pc.ph = ph;
+    pc.xw = xw, pc.yw = yw, pc.xg = xg, pc.yg = yg;
+    pc.Xw = Xw, pc.Yw = Yw, pc.Xg = Xg, pc.Yg = Yg;
+    pc.have = have;
+    pc.whole = have && span > 24;               /* the offset is large: the whole plane */
+    pc.far = have && fabs(Xg - Xw) + fabs(Yg - Yw) > 60.0 * (nx + ny);
+    return pc;
+}
 
-    fig_begin(m, 760, 356, "the image plane's pixel grid with the expected and the returned pixel centre");
-    svg_text(m, 10, 19, "start", 14, COL_TEXT, true, whole ? "The whole image plane (%dx%d pixels), "
-             "with pixel (%d, %d)" : "The image plane's pixels around pixel (i = %d, j = %d)",
-             whole ? nx : i, whole ? ny : j, i, j);
-    /* world: the plane's x and y */
-    FigView v;
+/* The figure's view of the plane (its x and y): the whole plane and both
+ * points, or the pixels around the expected one (and the returned one,
+ * where it is near). */
+static void fit_pixel_view(FigView *v, const PixelCase *pc)
+{
+    double w = pc->w, h = pc->h, pw = pc->pw, ph = pc->ph;
+    double xw = pc->xw, yw = pc->yw, xg = pc->xg, yg = pc->yg;
     double x0, y0, x1, y1;
-    if (whole && !far) {
+    if (pc->whole && !pc->far) {
         x0 = fmin(-w / 2, fmin(xw, xg)), x1 = fmax(w / 2, fmax(xw, xg));
         y0 = fmin(-h / 2, fmin(yw, yg)), y1 = fmax(h / 2, fmax(yw, yg));
     } else {
-        double ci = i + 0.5, cj = j + 0.5;
+        double ci = pc->i + 0.5, cj = pc->j + 0.5;
         double X0 = ci - 2.5, X1 = ci + 2.5, Y0 = cj - 2, Y1 = cj + 2;
-        if (have && !far) {
+        if (pc->have && !pc->far) {
+            double Xg = pc->Xg, Yg = pc->Yg;
             X0 = fmin(X0, Xg - 1), X1 = fmax(X1, Xg + 1), Y0 = fmin(Y0, Yg - 1), Y1 = fmax(Y1, Yg + 1);
         }
         x0 = -w / 2 + X0 * pw, x1 = -w / 2 + X1 * pw;
         y0 = h / 2 - Y1 * ph, y1 = h / 2 - Y0 * ph;
     }
-    fig_fit(&v, x0, y0, x1, y1, 0.05, 10, 30, 740, 250);
-    fig_window(m, &v, "#ffffff");
-    /* the plane, the pixel, the grid */
-    svg_rect(m, fig_px(&v, -w / 2), fig_py(&v, h / 2), w * v.s, h * v.s, "#f3f3f3", "none", 0);
-    svg_rect(m, fig_px(&v, -w / 2 + i * pw), fig_py(&v, h / 2 - j * ph), pw * v.s, ph * v.s, "#fff1b8",
+    fig_fit(v, x0, y0, x1, y1, 0.05, 10, 30, 740, 250);
+}
+
+/* The pixel grid's lines in view: columns ia to ib and rows ja to jb, a
+ * line drawn every every-th column and every every_j-th row. */
+typedef struct {
+    int ia, ib, ja, jb;
+    int every, every_j;
+} GridLines;
+
+/* Draws the plane, the pixel, the grid's lines and the plane's axes in v. */
+static GridLines draw_pixel_grid(Markup *m, const FigView *v, const PixelCase *pc)
+{
+    int i = pc->i, j = pc->j, nx = pc->nx, ny = pc->ny;
+    double w = pc->w, h = pc->h, pw = pc->pw, ph = pc->ph;
+    GridLines g;
+    svg_rect(m, fig_px(v, -w / 2), fig_py(v, h / 2), w * v->s, h * v->s, "#f3f3f3", "none", 0);
+    svg_rect(m, fig_px(v, -w / 2 + i * pw), fig_py(v, h / 2 - j * ph), pw * v->s, ph * v->s, "#fff1b8",
              "none", 0);
-    double vx0 = v.cx - v.pw / 2 / v.s, vx1 = v.cx + v.pw / 2 / v.s;
-    double vy0 = v.cy - v.ph / 2 / v.s, vy1 = v.cy + v.ph / 2 / v.s;
-    int ia = (int)fmax(0, floor((vx0 + w / 2) / pw)), ib = (int)fmin(nx, ceil((vx1 + w / 2) / pw));
-    int ja = (int)fmax(0, floor((h / 2 - vy1) / ph)), jb = (int)fmin(ny, ceil((h / 2 - vy0) / ph));
+    double vx0 = v->cx - v->pw / 2 / v->s, vx1 = v->cx + v->pw / 2 / v->s;
+    double vy0 = v->cy - v->ph / 2 / v->s, vy1 = v->cy + v->ph / 2 / v->s;
+    g.ia = (int)fmax(0, floor((vx0 + w / 2) / pw)), g.ib = (int)fmin(nx, ceil((vx1 + w / 2) / pw));
+    g.ja = (int)fmax(0, floor((h / 2 - vy1) / ph)), g.jb = (int)fmin(ny, ceil((h / 2 - vy0) / ph));
     /* every line, or every 2nd, 4th ... where they would crowd (each way on its own) */
-    int every = 1, every_j = 1;
-    while ((ib - ia) / every > 48)
-        every *= 2;
-    while ((jb - ja) / every_j > 48)
-        every_j *= 2;
-    for (int k = ia - ia % every; k <= ib; k += every)
-        fig_segment(m, &v, -w / 2 + k * pw, fmax(-h / 2, vy0), -w / 2 + k * pw, fmin(h / 2, vy1),
+    g.every = 1, g.every_j = 1;
+    while ((g.ib - g.ia) / g.every > 48)
+        g.every *= 2;
+    while ((g.jb - g.ja) / g.every_j > 48)
+        g.every_j *= 2;
+    for (int k = g.ia - g.ia % g.every; k <= g.ib; k += g.every)
+        fig_segment(m, v, -w / 2 + k * pw, fmax(-h / 2, vy0), -w / 2 + k * pw, fmin(h / 2, vy1),
                     k == 0 || k == nx ? "#555555" : COL_GRID, k == 0 || k == nx ? 2 : 1, NULL);
-    for (int k = ja - ja % every_j; k <= jb; k += every_j)
-        fig_segment(m, &v, fmax(-w / 2, vx0), h / 2 - k * ph, fmin(w / 2, vx1), h / 2 - k * ph,
+    for (int k = g.ja - g.ja % g.every_j; k <= g.jb; k += g.every_j)
+        fig_segment(m, v, fmax(-w / 2, vx0), h / 2 - k * ph, fmin(w / 2, vx1), h / 2 - k * ph,
                     k == 0 || k == ny ? "#555555" : COL_GRID, k == 0 || k == ny ? 2 : 1, NULL);
     /* the plane's axes (x = 0, y = 0) */
-    fig_segment(m, &v, 0, vy0, 0, vy1, "#9a9a9a", 1, "3 3");
-    fig_segment(m, &v, vx0, 0, vx1, 0, "#9a9a9a", 1, "3 3");
-    double pwx = fig_px(&v, xw), pwy = fig_py(&v, yw);
-    if (have && !far) {
-        double pgx = fig_px(&v, xg), pgy = fig_py(&v, yg);
+    fig_segment(m, v, 0, vy0, 0, vy1, "#9a9a9a", 1, "3 3");
+    fig_segment(m, v, vx0, 0, vx1, 0, "#9a9a9a", 1, "3 3");
+    return g;
+}
+
+/* The column and row numbers along the window's edges, where there is room. */
+static void number_grid(Markup *m, const FigView *v, const PixelCase *pc, const GridLines *g)
+{
+    double w = pc->w, h = pc->h, pw = pc->pw, ph = pc->ph;
+    if (!pc->whole || g->every <= 4)
+        for (int k = g->ia; k < g->ib; k += g->every) {
+            double px = fig_px(v, -w / 2 + (k + 0.5) * pw);
+            if (px > v->px0 + 10 && px < v->px0 + v->pw - 10 && pw * g->every * v->s > 24)
+                svg_text(m, px, 44, "middle", 11, k == pc->i ? COL_TEXT : COL_NOTE, k == pc->i, "i=%d", k);
+        }
+    for (int k = g->ja; k < g->jb; k += g->every_j) {
+        double py = fig_py(v, h / 2 - (k + 0.5) * ph);
+        if (py > v->py0 + 20 && py < v->py0 + v->ph - 6 && ph * g->every_j * v->s > 16)
+            svg_text(m, v->px0 + 4, py + 4, "start", 11, k == pc->j ? COL_TEXT : COL_NOTE, k == pc->j,
+                     "j=%d", k);
+    }
+}
+
+/* The line that says how far, in pixel widths and heights, the returned
+ * point is from the expected centre. */
+static void offset_caption(Markup *m, const FigView *v, const PixelCase *pc)
+{
+    char b1[40], b2[40], how[200] = "";
+    double dx = (pc->Xg - pc->Xw), dy = (pc->Yg - pc->Yw);
+    if (dx != 0)
+        snprintf(how, sizeof how, "%s pixel width%s to the %s", fig_num(b1, sizeof b1, fabs(dx), 3),
+                 fabs(dx) == 1 ? "" : "s", dx < 0 ? "left" : "right");
+    if (dy != 0)
+        snprintf(how + strlen(how), sizeof how - strlen(how), "%s%s pixel height%s %s",
+                 dx != 0 ? " and " : "", fig_num(b2, sizeof b2, fabs(dy), 3), fabs(dy) == 1 ? "" : "s",
+                 dy < 0 ? "above" : "below");
+    if (dx == 0 && dy == 0)
+        svg_text(m, 12, 298, "start", 12, COL_TEXT, false, "your x and y are right");
+    else
+        svg_text(m, 12, 298, "start", 12, COL_TEXT, false, "your point is %s the expected centre%s",
+                 how, pc->far ? " (far off the figure)" : hypot(dx * pc->pw, dy * pc->ph) * v->s < 3
+                 ? " (too close to draw apart)" : "");
+}
+
+void fig_pixel(Markup *m, const Test *t, const Case *c, const double *got)
+{
+    (void)t;
+    PixelCase pc = pixel_case(c, got);
+    double pw = pc.pw, ph = pc.ph, d = c->in[6];
+    char b1[40], b2[40];
+    fig_begin(m, 760, 356, "the image plane's pixel grid with the expected and the returned pixel centre");
+    svg_text(m, 10, 19, "start", 14, COL_TEXT, true, pc.whole ? "The whole image plane (%dx%d pixels), "
+             "with pixel (%d, %d)" : "The image plane's pixels around pixel (i = %d, j = %d)",
+             pc.whole ? pc.nx : pc.i, pc.whole ? pc.ny : pc.j, pc.i, pc.j);
+    FigView v;
+    fit_pixel_view(&v, &pc);
+    fig_window(m, &v, "#ffffff");
+    GridLines g = draw_pixel_grid(m, &v, &pc);
+    double pwx = fig_px(&v, pc.xw), pwy = fig_py(&v, pc.yw);
+    if (pc.have && !pc.far) {
+        double pgx = fig_px(&v, pc.xg), pgy = fig_py(&v, pc.yg);
         if (hypot(pgx - pwx, pgy - pwy) > 12)
             svg_arrow(m, pwx, pwy, pgx, pgy, COL_GOT, 1.8, "5 3");
         svg_mark_got(m, pgx, pgy);
@@ -191,35 +281,9 @@ void fig_pixel(Markup *m, const Test *t, const Case *c, const double *got)
     svg_mark_want(m, pwx, pwy);
     fig_window_end(m);
     svg_rect(m, v.px0, v.py0, v.pw, v.ph, "none", "#bbbbbb", 1);
-    /* column and row numbers along the edges */
-    if (!whole || every <= 4)
-        for (int k = ia; k < ib; k += every) {
-            double px = fig_px(&v, -w / 2 + (k + 0.5) * pw);
-            if (px > v.px0 + 10 && px < v.px0 + v.pw - 10 && pw * every * v.s > 24)
-                svg_text(m, px, 44, "middle", 11, k == i ? COL_TEXT : COL_NOTE, k == i, "i=%d", k);
-        }
-    for (int k = ja; k < jb; k += every_j) {
-        double py = fig_py(&v, h / 2 - (k + 0.5) * ph);
-        if (py > v.py0 + 20 && py < v.py0 + v.ph - 6 && ph * every_j * v.s > 16)
-            svg_text(m, v.px0 + 4, py + 4, "start", 11, k == j ? COL_TEXT : COL_NOTE, k == j, "j=%d", k);
-    }
-    double dx = (Xg - Xw), dy = (Yg - Yw);
-    if (have) {
-        char how[200] = "";
-        if (dx != 0)
-            snprintf(how, sizeof how, "%s pixel width%s to the %s", fig_num(b1, sizeof b1, fabs(dx), 3),
-                     fabs(dx) == 1 ? "" : "s", dx < 0 ? "left" : "right");
-        if (dy != 0)
-            snprintf(how + strlen(how), sizeof how - strlen(how), "%s%s pixel height%s %s",
-                     dx != 0 ? " and " : "", fig_num(b2, sizeof b2, fabs(dy), 3), fabs(dy) == 1 ? "" : "s",
-                     dy < 0 ? "above" : "below");
-        if (dx == 0 && dy == 0)
-            svg_text(m, 12, 298, "start", 12, COL_TEXT, false, "your x and y are right");
-        else
-            svg_text(m, 12, 298, "start", 12, COL_TEXT, false, "your point is %s the expected centre%s",
-                     how, far ? " (far off the figure)" : hypot(dx * pw, dy * ph) * v.s < 3
-                     ? " (too close to draw apart)" : "");
-    }
+    number_grid(m, &v, &pc, &g);
+    if (pc.have)
+        offset_caption(m, &v, &pc);
     if (pw > 4 * ph || ph > 4 * pw)
         svg_text(m, v.px0 + v.pw - 6, v.py0 + v.ph - 6, "end", 11, COL_NOTE, false,
                  "drawn to scale: these pixels are %s times %s than %s", fig_times(b1, sizeof b1,
