@@ -297,15 +297,14 @@ void fig_pixel(Markup *m, const Test *t, const Case *c, const double *got)
 
 /* ---- Part 3b: camera rays -------------------------------------------------------- */
 
-void fig_camera(Markup *m, const Test *t, const Case *c, const double *got)
+/* The drawing's plane, through the eye E: ux along the expected direction
+ * dw, uy square to it, towards what the returned ray (got, or none) adds
+ * across it, or any way square to ux where it adds nothing across. */
+static void camera_frame(const double *E, const double *dw, const double *got, double *ux, double *uy)
 {
-    (void)t;
-    const double *E = c->in, *P = c->in + 3, *dw = c->want + 3;
-    char b1[40], b2[40];
-    /* the frame: x along the expected direction, y towards what the
-     * returned ray adds across it */
-    double ux[3] = { dw[0], dw[1], dw[2] }, uy[3] = { 0, 0, 0 };
     double across[3] = { 0, 0, 0 };
+    for (int k = 0; k < 3; k++)
+        ux[k] = dw[k], uy[k] = 0;
     if (got) {
         for (int k = 0; k < 3; k++)
             across[k] = got[3 + k] + (got[k] - E[k]);
@@ -324,6 +323,31 @@ void fig_camera(Markup *m, const Test *t, const Case *c, const double *got)
     }
     for (int k = 0; k < 3; k++)
         uy[k] /= ny;
+}
+
+/* The line at y on the returned ray: its direction's length glen, its
+ * angle from the expected one (gx: its length along it), how far from the
+ * eye it starts (start) and whether it points out of the drawing (off:
+ * its length square to the drawing's plane). */
+static void camera_caption(Markup *m, double y, double glen, double gx, double start, double off)
+{
+    char b1[40], b2[40], b3[20];
+    double cosang = (gx * 1) / (glen > 0 ? glen : 1);
+    double ang = acos(fmax(-1, fmin(1, cosang))) * 180 / PI;
+    svg_text(m, 12, y, "start", 12, COL_TEXT, false, "your direction: length %s (should be 1), "
+             "%s\xC2\xB0 from the expected one; your ray starts %s from the eye%s",
+             fig_num(b1, sizeof b1, glen, 6), fig_num(b2, sizeof b2, ang, 3),
+             fig_num(b3, sizeof b3, start, 3),
+             off > 1e-6 * glen ? " (part of it points out of this drawing)" : "");
+}
+
+void fig_camera(Markup *m, const Test *t, const Case *c, const double *got)
+{
+    (void)t;
+    const double *E = c->in, *P = c->in + 3, *dw = c->want + 3;
+    char b1[40];
+    double ux[3], uy[3];
+    camera_frame(E, dw, got, ux, uy);
     /* 2D coordinates relative to the eye */
 #define PX(v) ((v)[0] * ux[0] + (v)[1] * ux[1] + (v)[2] * ux[2])
 #define PY(v) ((v)[0] * uy[0] + (v)[1] * uy[1] + (v)[2] * uy[2])
@@ -374,19 +398,11 @@ void fig_camera(Markup *m, const Test *t, const Case *c, const double *got)
     if (!fig_inside(&v, ppx, ppy))
         svg_text(m, v.px0 + v.pw - 8, fig_py(&v, 0) - 8, "end", 12, COL_TEXT, true,
                  "the pixel is %s away, this way \xE2\x86\x92", fig_num(b1, sizeof b1, pd, 4));
-    double y = 308;
-    if (have) {
-        double cosang = (gx * 1) / (glen > 0 ? glen : 1);
-        double ang = acos(fmax(-1, fmin(1, cosang))) * 180 / PI;
-        svg_text(m, 12, y, "start", 12, COL_TEXT, false, "your direction: length %s (should be 1), "
-                 "%s\xC2\xB0 from the expected one; your ray starts %s from the eye%s",
-                 fig_num(b1, sizeof b1, glen, 6), fig_num(b2, sizeof b2, ang, 3),
-                 fig_num(b1 + 20, 20, hypot(ox, oy), 3),
-                 off > 1e-6 * glen ? " (part of it points out of this drawing)" : "");
-    } else if (got) {
-        svg_text(m, 12, y, "start", 12, COL_GOT, false, "your ray has a number that is not finite "
+    if (have)
+        camera_caption(m, 308, glen, gx, hypot(ox, oy), off);
+    else if (got)
+        svg_text(m, 12, 308, "start", 12, COL_GOT, false, "your ray has a number that is not finite "
                  "(NaN or infinity): not drawn");
-    }
     fig_legend(m, 12, 334, "expected: starts at the eye, unit length, towards the pixel",
                got ? "your ray: where it starts and its direction" : "your code: no answer");
     fig_end(m);
