@@ -456,104 +456,134 @@ static int read_placement(const char *path, BenchResults *br, char *err, size_t 
     return 0;
 }
 
-int main(int argc, char **argv)
+/* Reads the options into o, with the defaults the others leave; 0, or -1
+ * (and the usage on stderr) for an option it does not know. */
+static int parse_options(int argc, char **argv, Options *o)
 {
-    Options o = { false, false, "out/bench", "labs/scenes", NULL, "out/build/sub/solutions/render",
-                  1920, 1080, 0, 20260101 };
+    Options defaults = { false, false, "out/bench", "labs/scenes", NULL, "out/build/sub/solutions/render",
+                         1920, 1080, 0, 20260101 };
+    *o = defaults;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (strcmp(a, "--quick") == 0) {
-            o.quick = true;
+            o->quick = true;
         } else if (strcmp(a, "--ratio-only") == 0) {
-            o.ratio_only = true;
+            o->ratio_only = true;
         } else if (strcmp(a, "--placement") == 0 && v) {
-            o.placement = v;
+            o->placement = v;
             i++;
         } else if (strcmp(a, "--out") == 0 && v) {
-            o.out = v;
+            o->out = v;
             i++;
         } else if (strcmp(a, "--render") == 0 && v) {
-            o.render = v;
+            o->render = v;
             i++;
         } else if (strcmp(a, "--scenes") == 0 && v) {
-            o.scenes = v;
+            o->scenes = v;
             i++;
-        } else if (strcmp(a, "--size") == 0 && v && sscanf(v, "%dx%d", &o.width, &o.height) == 2 &&
-                   o.width > 0 && o.height > 0 && o.width <= 16384 && o.height <= 16384) {
+        } else if (strcmp(a, "--size") == 0 && v && sscanf(v, "%dx%d", &o->width, &o->height) == 2 &&
+                   o->width > 0 && o->height > 0 && o->width <= 16384 && o->height <= 16384) {
             i++;
         } else if (strcmp(a, "--rounds") == 0 && v && atoi(v) > 0) {
-            o.rounds = atoi(v);
+            o->rounds = atoi(v);
             i++;
         } else if (strcmp(a, "--seed") == 0 && v) {
-            o.seed = strtoull(v, NULL, 10);
+            o->seed = strtoull(v, NULL, 10);
             i++;
         } else {
             usage();
-            return 1;
+            return -1;
         }
     }
-    if (o.quick && o.width == 1920 && o.height == 1080) {
-        o.width = 192;
-        o.height = 108;
+    if (o->quick && o->width == 1920 && o->height == 1080) {
+        o->width = 192;
+        o->height = 108;
     }
-    if (o.rounds == 0)
-        o.rounds = o.quick ? 7 : 151;
+    if (o->rounds == 0)
+        o->rounds = o->quick ? 7 : 151;
+    return 0;
+}
 
+/* bench --ratio-only: the throughput step alone, and its one line. */
+static int ratio_only(const Options *o, BenchResults *br)
+{
+    char err[1200] = "";
+    int status = stage_throughput(o, br, err, sizeof err);
+    progress_done();
+    if (status != 0) {
+        fprintf(stderr, "bench: %s\n", err);
+        return 1;
+    }
+    printf("ratio %.4f q1 %.4f q3 %.4f\n", br->ratio_of_medians, br->ratio_q1, br->ratio_q3);
+    return 0;
+}
+
+/* How the bench runs: its options, the machine's load and CPU, the
+ * compiler, the date. */
+static void describe_run(const Options *o, BenchResults *br)
+{
+    br->quick = o->quick;
+    br->seed = o->seed;
+    br->load_before = load_average();
+    cpu_model(br->cpu, sizeof br->cpu);
+#ifdef __VERSION__
+    snprintf(br->compiler, sizeof br->compiler, "%s", __VERSION__);
+#endif
+    time_t now = time(NULL);
+    strftime(br->date, sizeof br->date, "%Y-%m-%d %H:%M UTC", gmtime(&now));
+}
+
+/* Every stage in order, then the report, until one fails; 0, or -1 with
+ * err. */
+static int run_stages(const Options *o, BenchResults *br, char *err, size_t errlen)
+{
+    int status = scaling_prepare(o->out, o->scenes, o->render, o->quick, &br->scale, err, errlen);
+    if (status == 0)
+        status = stage_throughput(o, br, err, errlen);
+    if (status == 0) {
+        progress("ceiling", 0, 1);
+        /* the clock read between throughput rounds is the one that counts */
+        measure_ceiling(&br->ceiling, o->quick, br->ceiling.mhz_measured);
+        status = stage_errors(o, br, err, errlen);
+    }
+    if (status == 0)
+        status = stage_grader(o, br, err, errlen);
+    if (status == 0)
+        status = stage_renders(o, br, err, errlen);
+    if (status == 0)
+        status = triangle_bench(o->scenes, o->quick, o->seed, &br->tri, err, errlen);
+    if (status == 0)
+        status = scaling_bench(o->quick, &br->scale, err, errlen);
+    br->load_after = load_average();
+    br->seconds_total = now_seconds() - start_time;
+    if (status == 0) {
+        progress("report", 0, 1);
+        status = report_write(br, o->out, err, errlen);
+    }
+    return status;
+}
+
+int main(int argc, char **argv)
+{
+    Options o;
+    if (parse_options(argc, argv, &o) != 0)
+        return 1;
     static BenchResults br;
     char err[1200] = "";
     start_time = now_seconds();
     progress_tty = isatty(2);
-    if (o.ratio_only) {
-        int status = stage_throughput(&o, &br, err, sizeof err);
-        progress_done();
-        if (status != 0) {
-            fprintf(stderr, "bench: %s\n", err);
-            return 1;
-        }
-        printf("ratio %.4f q1 %.4f q3 %.4f\n", br.ratio_of_medians, br.ratio_q1, br.ratio_q3);
-        return 0;
-    }
+    if (o.ratio_only)
+        return ratio_only(&o, &br);
     if (o.placement && read_placement(o.placement, &br, err, sizeof err) != 0) {
         fprintf(stderr, "bench: %s\n", err);
         return 1;
     }
-    br.quick = o.quick;
-    br.seed = o.seed;
-    br.load_before = load_average();
-    cpu_model(br.cpu, sizeof br.cpu);
-#ifdef __VERSION__
-    snprintf(br.compiler, sizeof br.compiler, "%s", __VERSION__);
-#endif
-    time_t now = time(NULL);
-    strftime(br.date, sizeof br.date, "%Y-%m-%d %H:%M UTC", gmtime(&now));
+    describe_run(&o, &br);
     if (mkdir_p(o.out) != 0) {
         fprintf(stderr, "bench: %s: cannot create the directory\n", o.out);
         return 1;
     }
-
-    int status = scaling_prepare(o.out, o.scenes, o.render, o.quick, &br.scale, err, sizeof err);
-    if (status == 0)
-        status = stage_throughput(&o, &br, err, sizeof err);
-    if (status == 0) {
-        progress("ceiling", 0, 1);
-        /* the clock read between throughput rounds is the one that counts */
-        measure_ceiling(&br.ceiling, o.quick, br.ceiling.mhz_measured);
-        status = stage_errors(&o, &br, err, sizeof err);
-    }
-    if (status == 0)
-        status = stage_grader(&o, &br, err, sizeof err);
-    if (status == 0)
-        status = stage_renders(&o, &br, err, sizeof err);
-    if (status == 0)
-        status = triangle_bench(o.scenes, o.quick, o.seed, &br.tri, err, sizeof err);
-    if (status == 0)
-        status = scaling_bench(o.quick, &br.scale, err, sizeof err);
-    br.load_after = load_average();
-    br.seconds_total = now_seconds() - start_time;
-    if (status == 0) {
-        progress("report", 0, 1);
-        status = report_write(&br, o.out, err, sizeof err);
-    }
+    int status = run_stages(&o, &br, err, sizeof err);
     progress_done();
     if (status != 0) {
         fprintf(stderr, "bench: %s\n", err);
