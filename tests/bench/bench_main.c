@@ -189,6 +189,67 @@ static int load_default(const Options *o, Scene *scene, char *path, size_t size,
     return scene_load(scene, path, err, errlen) != 0 ? -1 : 0;
 }
 
+/* Where the reference's miss test stops on the workload (rays rs against
+ * scene's spheres), checked against the reference itself. */
+static void count_reference_exits(const Scene *scene, const RaySet *rs, BenchResults *br)
+{
+    for (int i = 0; i < rs->n; i++)
+        for (int k = 0; k < scene->nspheres; k++) {
+            int stage = reference_stage(&scene->spheres[k], &rs->rays[i]);
+            double t = 0;
+            br->ref_stage[stage]++;
+            br->ref_stage_pairs++;
+            if (stage <= REF_STAGE_NN && sphere_intersect(&scene->spheres[k], &rs->rays[i], &t))
+                br->ref_stage_wrong++;
+        }
+}
+
+/* From R rounds' pass times secs[r * bench_nmethods + m] and clock
+ * readings mhz (tests tests a pass): every method's Mtests/s and the
+ * reference / textbook ratio, medians and quartiles, and the clock.  col
+ * (R numbers) is room to work in. */
+static void throughput_stats(BenchResults *br, const double *secs, double *mhz, int R, double tests,
+                             double *col)
+{
+    int nm = bench_nmethods;
+    for (int m = 0; m < nm; m++) {
+        for (int r = 0; r < R; r++)
+            col[r] = tests / secs[r * nm + m] / 1e6;
+        br->mtests[m] = median(col, R);
+        br->mtests_q1[m] = quantile(col, R, 0.25);
+        br->mtests_q3[m] = quantile(col, R, 0.75);
+    }
+    int ref = method_find("reference", PREC_DOUBLE), tb = method_find("textbook", PREC_DOUBLE);
+    for (int r = 0; r < R; r++)
+        col[r] = secs[r * nm + ref] / secs[r * nm + tb];
+    br->ratio_paired = median(col, R);
+    br->ratio_q1 = quantile(col, R, 0.25);
+    br->ratio_q3 = quantile(col, R, 0.75);
+    br->ratio_of_medians = br->mtests[tb] / br->mtests[ref];
+    br->ceiling.mhz_measured = median(mhz, R);
+}
+
+/* The fast path's filter alone over rs: R samples of at least sample_s
+ * seconds each (tests tests a pass); the median Mtests/s.  col (R numbers)
+ * is room to work in. */
+static double time_filter(const FastScene *fs, const RaySet *rs, int R, double sample_s, double tests,
+                          double *col)
+{
+    long passed = 0;
+    for (int r = 0; r < R; r++) {
+        int passes = 0;
+        double t0 = now_seconds(), dt;
+        do {
+            passed += fast_filter_only(fs, rs->dx, rs->dy, rs->dz, rs->n);
+            passes++;
+            dt = now_seconds() - t0;
+        } while (dt < sample_s);
+        col[r] = tests * passes / dt / 1e6;
+    }
+    bench_sink += (double)passed;
+    return median(col, R);
+}
+
 static int stage_throughput(const Options *o, BenchResults *br, char *err, size_t errlen)
 {
     char path[1024];
@@ -217,18 +278,7 @@ static int stage_throughput(const Options *o, BenchResults *br, char *err, size_
     br->tp_rays = rs.n;
     br->tp_spheres = scene.nspheres;
     br->rounds = o->rounds;
-    /* Where the reference's miss test stops on this workload, checked
-     * against the reference itself; and how much of it the fast path
-     * solves. */
-    for (int i = 0; i < rs.n; i++)
-        for (int k = 0; k < scene.nspheres; k++) {
-            int stage = reference_stage(&scene.spheres[k], &rs.rays[i]);
-            double t = 0;
-            br->ref_stage[stage]++;
-            br->ref_stage_pairs++;
-            if (stage <= REF_STAGE_NN && sphere_intersect(&scene.spheres[k], &rs.rays[i], &t))
-                br->ref_stage_wrong++;
-        }
+    count_reference_exits(&scene, &rs, br);
     fast_count_solves(&fs, rs.dx, rs.dy, rs.dz, rs.n, &br->fast_pairs, &br->fast_solved);
 
     int nm = bench_nmethods, R = o->rounds;
@@ -239,36 +289,10 @@ static int stage_throughput(const Options *o, BenchResults *br, char *err, size_
     if (secs && mhz && col &&
         measure_throughput(&bs, &rs, R, o->quick ? 0.001 : 0.005, secs, mhz) == 0) {
         double tests = (double)rs.n * scene.nspheres;
-        for (int m = 0; m < nm; m++) {
-            for (int r = 0; r < R; r++)
-                col[r] = tests / secs[r * nm + m] / 1e6;
-            br->mtests[m] = median(col, R);
-            br->mtests_q1[m] = quantile(col, R, 0.25);
-            br->mtests_q3[m] = quantile(col, R, 0.75);
-        }
-        int ref = method_find("reference", PREC_DOUBLE), tb = method_find("textbook", PREC_DOUBLE);
-        for (int r = 0; r < R; r++)
-            col[r] = secs[r * nm + ref] / secs[r * nm + tb];
-        br->ratio_paired = median(col, R);
-        br->ratio_q1 = quantile(col, R, 0.25);
-        br->ratio_q3 = quantile(col, R, 0.75);
-        br->ratio_of_medians = br->mtests[tb] / br->mtests[ref];
-        br->ceiling.mhz_measured = median(mhz, R);
+        throughput_stats(br, secs, mhz, R, tests, col);
         /* The fast path's filter alone, timed the same way (R samples of
          * about the same length), right after the rounds. */
-        long passed = 0;
-        for (int r = 0; r < R; r++) {
-            int passes = 0;
-            double t0 = now_seconds(), dt;
-            do {
-                passed += fast_filter_only(&fs, rs.dx, rs.dy, rs.dz, rs.n);
-                passes++;
-                dt = now_seconds() - t0;
-            } while (dt < (o->quick ? 0.001 : 0.005));
-            col[r] = tests * passes / dt / 1e6;
-        }
-        br->fast_filter_mtests = median(col, R);
-        bench_sink += (double)passed;
+        br->fast_filter_mtests = time_filter(&fs, &rs, R, o->quick ? 0.001 : 0.005, tests, col);
         status = 0;
     } else {
         snprintf(err, errlen, "out of memory");
@@ -279,6 +303,55 @@ static int stage_throughput(const Options *o, BenchResults *br, char *err, size_
     fast_free(&fs);
     rayset_free(&rs);
     scene_free(&scene);
+    return status;
+}
+
+/* The float transliteration of the reference, compiled as double, must
+ * give the linked reference's answers exactly: counts the n cases where it
+ * does not. */
+static void check_transliteration(const Case *cases, int n, BenchResults *br)
+{
+    for (int i = 0; i < n; i++) {
+        double t1 = 0, t2 = 0;
+        bool h1 = sphere_intersect(&cases[i].sphere, &cases[i].ray, &t1);
+        bool h2 = isect_reference_d(&cases[i].sphere, &cases[i].ray, &t2);
+        br->translit_cases++;
+        if (h1 != h2 || (h1 && memcmp(&t1, &t2, sizeof t1) != 0))
+            br->translit_differ++;
+    }
+}
+
+/* Cost by outcome: the ordinary scene's n cases that surely miss and
+ * surely hit (exact: their answers), a sample of each timed with every
+ * method; and the share of hits.  0, or -1 out of memory. */
+static int cost_by_outcome(const Options *o, const Case *cases, const Exact *exact, int n, BenchResults *br)
+{
+    const int cap = o->quick ? 2000 : 20000;
+    Case *miss = malloc((size_t)cap * sizeof *miss), *hit = malloc((size_t)cap * sizeof *hit);
+    int nmiss = 0, nhit = 0, status = 0;
+    long counted = 0, hits = 0;
+    for (int i = 0; i < n; i++)
+        if (!exact[i].ambiguous) {
+            counted++;
+            hits += exact[i].hit;
+        }
+    br->hit_share = counted > 0 ? (double)hits / (double)counted : 0;
+    long step_hit = hits / cap + 1, step_miss = (counted - hits) / cap + 1, kh = 0, km = 0;
+    for (int i = 0; miss && hit && i < n; i++) {
+        const Exact *e = &exact[i];
+        if (e->ambiguous)
+            continue;
+        if (e->hit && kh++ % step_hit == 0 && nhit < cap)
+            hit[nhit++] = cases[i];
+        else if (!e->hit && km++ % step_miss == 0 && nmiss < cap)
+            miss[nmiss++] = cases[i];
+    }
+    if (!miss || !hit || measure_outcomes(miss, nmiss, hit, nhit, o->quick ? 3 : 31,
+                                          o->quick ? 0.0005 : 0.002, br->miss_ns,
+                                          br->hit_ns) != 0)
+        status = -1;
+    free(miss);
+    free(hit);
     return status;
 }
 
@@ -313,46 +386,10 @@ static int stage_errors(const Options *o, BenchResults *br, char *err, size_t er
         if (!exact[f])
             status = -1;
     }
-    /* The float transliteration of the reference, compiled as double, must
-     * give the linked reference's answers exactly. */
     for (int f = 0; f < FAMILY_COUNT && status == 0; f++)
-        for (int i = 0; i < n[f]; i++) {
-            double t1 = 0, t2 = 0;
-            bool h1 = sphere_intersect(&cases[f][i].sphere, &cases[f][i].ray, &t1);
-            bool h2 = isect_reference_d(&cases[f][i].sphere, &cases[f][i].ray, &t2);
-            br->translit_cases++;
-            if (h1 != h2 || (h1 && memcmp(&t1, &t2, sizeof t1) != 0))
-                br->translit_differ++;
-        }
-    /* Cost by outcome: the scene's pairs that surely miss and surely hit. */
-    if (status == 0) {
-        const int cap = o->quick ? 2000 : 20000;
-        Case *miss = malloc((size_t)cap * sizeof *miss), *hit = malloc((size_t)cap * sizeof *hit);
-        int nmiss = 0, nhit = 0;
-        long counted = 0, hits = 0;
-        for (int i = 0; i < n[FAMILY_SCENE]; i++)
-            if (!exact[FAMILY_SCENE][i].ambiguous) {
-                counted++;
-                hits += exact[FAMILY_SCENE][i].hit;
-            }
-        br->hit_share = counted > 0 ? (double)hits / (double)counted : 0;
-        long step_hit = hits / cap + 1, step_miss = (counted - hits) / cap + 1, kh = 0, km = 0;
-        for (int i = 0; miss && hit && i < n[FAMILY_SCENE]; i++) {
-            const Exact *e = &exact[FAMILY_SCENE][i];
-            if (e->ambiguous)
-                continue;
-            if (e->hit && kh++ % step_hit == 0 && nhit < cap)
-                hit[nhit++] = cases[FAMILY_SCENE][i];
-            else if (!e->hit && km++ % step_miss == 0 && nmiss < cap)
-                miss[nmiss++] = cases[FAMILY_SCENE][i];
-        }
-        if (!miss || !hit || measure_outcomes(miss, nmiss, hit, nhit, o->quick ? 3 : 31,
-                                              o->quick ? 0.0005 : 0.002, br->miss_ns,
-                                              br->hit_ns) != 0)
-            status = -1;
-        free(miss);
-        free(hit);
-    }
+        check_transliteration(cases[f], n[f], br);
+    if (status == 0)
+        status = cost_by_outcome(o, cases[FAMILY_SCENE], exact[FAMILY_SCENE], n[FAMILY_SCENE], br);
     for (int m = 0; m < bench_nmethods && status == 0; m++) {
         progress("errors", m, bench_nmethods);
         long used = 0;
