@@ -1,5 +1,5 @@
 /*
- * bench_main.c - `make bench`: the order of the stages, the options, and
+ * bench_main.c - `make bench`: the order of the steps, the options, and
  * the progress line.
  *
  *     bench [--quick] [--out DIR] [--scenes DIR] [--size WxH] [--rounds N]
@@ -23,7 +23,7 @@
  *      results_triangles.csv, results_scaling.csv, report.md, plot.svg,
  *      plot_triangles.svg, plot_scaling.svg in DIR (default out/bench)
  * --quick does the same with small sizes, in a few seconds (make test).
- * --ratio-only runs stage 1 alone and prints one line, "ratio R q1 Q1 q3
+ * --ratio-only runs step 1 alone and prints one line, "ratio R q1 Q1 q3
  * Q3" (the reference's time over the textbook's, double); `make bench`
  * runs it in the bench linked in the reverse order (bench-reordered) and
  * hands that line to the bench with --placement FILE, whose report then
@@ -53,23 +53,23 @@ static double start_time;
 static bool progress_tty;
 
 /* One line on stderr, rewritten in place on a terminal (at most ten times a
- * second); elsewhere one line per stage. */
-void progress(const char *stage, int done, int total)
+ * second); elsewhere one line per step. */
+void progress(const char *step, int done, int total)
 {
-    static char last_stage[64];
+    static char last_step[64];
     static double last_time;
     double now = now_seconds();
-    bool new_stage = strncmp(stage, last_stage, sizeof last_stage - 1) != 0;
+    bool new_step = strncmp(step, last_step, sizeof last_step - 1) != 0;
     if (progress_tty) {
-        if (!new_stage && done < total && now - last_time < 0.1)
+        if (!new_step && done < total && now - last_time < 0.1)
             return;
-        fprintf(stderr, "\r\033[Kbench [%5.1fs] %s: %d/%d (%.0f%%)", now - start_time, stage, done,
+        fprintf(stderr, "\r\033[Kbench [%5.1fs] %s: %d/%d (%.0f%%)", now - start_time, step, done,
                 total, total > 0 ? 100.0 * done / total : 100.0);
-    } else if (new_stage) {
-        fprintf(stderr, "bench [%5.1fs] %s\n", now - start_time, stage);
+    } else if (new_step) {
+        fprintf(stderr, "bench [%5.1fs] %s\n", now - start_time, step);
     }
     fflush(stderr);
-    snprintf(last_stage, sizeof last_stage, "%s", stage);
+    snprintf(last_step, sizeof last_step, "%s", step);
     last_time = now;
 }
 
@@ -173,7 +173,7 @@ static void pool_stats(ErrorStats *all, const ErrorStats *fam, double *errs, lon
     all->median_rel = nerrs > 0 ? median(errs, (int)nerrs) : 0;
 }
 
-/* ---- the stages ------------------------------------------------------------------- */
+/* ---- the steps -------------------------------------------------------------------- */
 
 typedef struct {
     bool quick, ratio_only;
@@ -250,7 +250,7 @@ static double time_filter(const FastScene *fs, const RaySet *rs, int R, double s
     return median(col, R);
 }
 
-static int stage_throughput(const Options *o, BenchResults *br, char *err, size_t errlen)
+static int step_throughput(const Options *o, BenchResults *br, char *err, size_t errlen)
 {
     char path[1024];
     Scene scene;
@@ -259,8 +259,8 @@ static int stage_throughput(const Options *o, BenchResults *br, char *err, size_
     RaySet rs;
     FastScene fs;
     Spheref sf[64];
-    int step = o->quick ? 8 : 4;
-    if (scene.nspheres > 64 || rayset_camera(&rs, &scene, scene.nx, scene.ny, step) != 0) {
+    int pixel_step = o->quick ? 8 : 4;
+    if (scene.nspheres > 64 || rayset_camera(&rs, &scene, scene.nx, scene.ny, pixel_step) != 0) {
         snprintf(err, errlen, "%s: too many spheres, or out of memory", path);
         scene_free(&scene);
         return -1;
@@ -355,7 +355,7 @@ static int cost_by_outcome(const Options *o, const Case *cases, const Exact *exa
     return status;
 }
 
-static int stage_errors(const Options *o, BenchResults *br, char *err, size_t errlen)
+static int step_errors(const Options *o, BenchResults *br, char *err, size_t errlen)
 {
     char path[1024];
     Scene scene;
@@ -379,9 +379,9 @@ static int stage_errors(const Options *o, BenchResults *br, char *err, size_t er
     double *errs = malloc((size_t)total * sizeof *errs);
     int status = errs ? 0 : -1;
     for (int f = 0; f < FAMILY_COUNT && status == 0; f++) {
-        char stage[64];
-        snprintf(stage, sizeof stage, "exact answers, %s", family_name((Family)f));
-        progress(stage, 0, 1);
+        char label[64];
+        snprintf(label, sizeof label, "exact answers, %s", family_name((Family)f));
+        progress(label, 0, 1);
         exact[f] = cases[f] ? exact_answers(cases[f], n[f]) : NULL;
         if (!exact[f])
             status = -1;
@@ -413,7 +413,7 @@ static int stage_errors(const Options *o, BenchResults *br, char *err, size_t er
 }
 
 /* The grader's Part 3a hard cases, judged by the grader's own rule. */
-static int stage_grader(const Options *o, BenchResults *br, char *err, size_t errlen)
+static int step_grader(const Options *o, BenchResults *br, char *err, size_t errlen)
 {
     int max = HARD_PART3A_FAMILIES * (o->quick ? 10 : 100);
     HardCase3a *cases = malloc((size_t)max * sizeof *cases);
@@ -445,7 +445,7 @@ static int stage_grader(const Options *o, BenchResults *br, char *err, size_t er
     return 0;
 }
 
-static int stage_renders(const Options *o, BenchResults *br, char *err, size_t errlen)
+static int step_renders(const Options *o, BenchResults *br, char *err, size_t errlen)
 {
     char *paths[BENCH_MAX_SCENES];
     int n = list_scenes(o->scenes, paths, BENCH_MAX_SCENES);
@@ -545,7 +545,7 @@ static int parse_options(int argc, char **argv, Options *o)
 static int ratio_only(const Options *o, BenchResults *br)
 {
     char err[1200] = "";
-    int status = stage_throughput(o, br, err, sizeof err);
+    int status = step_throughput(o, br, err, sizeof err);
     progress_done();
     if (status != 0) {
         fprintf(stderr, "bench: %s\n", err);
@@ -570,23 +570,23 @@ static void describe_run(const Options *o, BenchResults *br)
     strftime(br->date, sizeof br->date, "%Y-%m-%d %H:%M UTC", gmtime(&now));
 }
 
-/* Every stage in order, then the report, until one fails; 0, or -1 with
+/* Every step in order, then the report, until one fails; 0, or -1 with
  * err. */
-static int run_stages(const Options *o, BenchResults *br, char *err, size_t errlen)
+static int run_steps(const Options *o, BenchResults *br, char *err, size_t errlen)
 {
     int status = scaling_prepare(o->out, o->scenes, o->render, o->quick, &br->scale, err, errlen);
     if (status == 0)
-        status = stage_throughput(o, br, err, errlen);
+        status = step_throughput(o, br, err, errlen);
     if (status == 0) {
         progress("ceiling", 0, 1);
         /* the clock read between throughput rounds is the one that counts */
         measure_ceiling(&br->ceiling, o->quick, br->ceiling.mhz_measured);
-        status = stage_errors(o, br, err, errlen);
+        status = step_errors(o, br, err, errlen);
     }
     if (status == 0)
-        status = stage_grader(o, br, err, errlen);
+        status = step_grader(o, br, err, errlen);
     if (status == 0)
-        status = stage_renders(o, br, err, errlen);
+        status = step_renders(o, br, err, errlen);
     if (status == 0)
         status = triangle_bench(o->scenes, o->quick, o->seed, &br->tri, err, errlen);
     if (status == 0)
@@ -620,7 +620,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "bench: %s: cannot create the directory\n", o.out);
         return 1;
     }
-    int status = run_stages(&o, &br, err, sizeof err);
+    int status = run_steps(&o, &br, err, sizeof err);
     progress_done();
     if (status != 0) {
         fprintf(stderr, "bench: %s\n", err);
