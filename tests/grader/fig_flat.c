@@ -275,7 +275,8 @@ static Extent flats_extent(const Flat *fl, int nf)
             x.vertex = x.vertex || (fl[k].x[v] == 0 && fl[k].y[v] == 0);
             x.x0 = fmin(x.x0, fl[k].x[v]), x.x1 = fmax(x.x1, fl[k].x[v]);
             x.y0 = fmin(x.y0, fl[k].y[v]), x.y1 = fmax(x.y1, fl[k].y[v]);
-            x.near = fmin(x.near, seg_dist(fl[k].x[v], fl[k].y[v], fl[k].x[(v + 1) % 3], fl[k].y[(v + 1) % 3]));
+            x.near = fmin(x.near, seg_dist(fl[k].x[v], fl[k].y[v], fl[k].x[(v + 1) % 3],
+                                           fl[k].y[(v + 1) % 3]));
         }
     return x;
 }
