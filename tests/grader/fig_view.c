@@ -44,15 +44,15 @@ void fig_plane(Markup *m, const Test *t, const Case *c, const double *got)
     (void)t;
     double fov = c->in[0], aspect = c->in[1], d = c->in[2];
     double ww = c->want[0], hw = c->want[1];
-    bool gw = got && drawable(got[0]), gh = got && drawable(got[1]);
-    double wg = gw ? got[0] : 0, hg = gh ? got[1] : 0;
+    bool wg_ok = got && drawable(got[0]), hg_ok = got && drawable(got[1]);
+    double wg = wg_ok ? got[0] : 0, hg = hg_ok ? got[1] : 0;
     char b1[40], b2[40];
     fig_begin(m, 760, 336, "the view frustum from the side, and the image plane face on");
     svg_text(m, 10, 19, "start", 14, COL_TEXT, true, "From the side: the eye and the image plane");
     svg_text(m, 470, 19, "start", 14, COL_TEXT, true, "The image plane, face on");
 
     /* the side view: the eye at the left, looking right (down -z) */
-    double hmax = fmax(hw, gh && hg <= 50 * hw ? hg : 0);
+    double hmax = fmax(hw, hg_ok && hg <= 50 * hw ? hg : 0);
     FigView v;
     fig_fit(&v, -d * 0.12, -hmax / 2, d * 1.18, hmax / 2, 0.08, 10, 30, 440, 250);
     fig_window(m, &v, "#fbfbfb");
@@ -65,7 +65,7 @@ void fig_plane(Markup *m, const Test *t, const Case *c, const double *got)
     }
     double px = fig_px(&v, d);
     svg_line(m, px - 2, fig_py(&v, hw / 2), px - 2, fig_py(&v, -hw / 2), COL_WANT, 4, NULL);
-    if (gh)
+    if (hg_ok)
         svg_line(m, px + 4, fig_py(&v, hg / 2), px + 4, fig_py(&v, -hg / 2), COL_GOT, 3, "6 3");
     svg_circle(m, ex, ey, 4, "#222222", "none", 0);
     fig_window_end(m);
@@ -75,19 +75,19 @@ void fig_plane(Markup *m, const Test *t, const Case *c, const double *got)
              "lines), d = %s", fig_num(b1, sizeof b1, fov, 8), fig_num(b2, sizeof b2, d, 6));
     double top = fig_py(&v, hw / 2);
     svg_text(m, fmin(px + 10, 440), fmax(top + 12, 46), "start", 12, COL_WANT, true, "expected h");
-    if (gh)
+    if (hg_ok)
         svg_text(m, fmin(px + 10, 440), fmin(fig_py(&v, -hg / 2) - 2, 274), "start", 12, COL_GOT, true,
                  "your h");
     if (hmax * v.s < 4)
         svg_text(m, 16, 46, "start", 11, COL_NOTE, false, "the plane is too small to see at this scale");
     else if (d * v.s < 4)
         svg_text(m, 16, 46, "start", 11, COL_NOTE, false, "d is too small to see beside h at this scale");
-    if (gh && hg != hw && fabs(hg - hw) * v.s < 2)
+    if (hg_ok && hg != hw && fabs(hg - hw) * v.s < 2)
         svg_text(m, 16, 60, "start", 11, COL_NOTE, false, "the two h differ by %s of h: drawn side by "
                  "side to show both", fig_num(b1, sizeof b1, fabs(hg - hw) / hw, 2));
 
     /* face on: the expected and the returned rectangle, centred */
-    double big = fmax(fmax(ww, hw), fmax(gw && wg <= 50 * ww ? wg : 0, gh && hg <= 50 * hw ? hg : 0));
+    double big = fmax(fmax(ww, hw), fmax(wg_ok && wg <= 50 * ww ? wg : 0, hg_ok && hg <= 50 * hw ? hg : 0));
     FigView f;
     fig_fit(&f, -big / 2, -big / 2, big / 2, big / 2, 0.1, 470, 30, 280, 250);
     fig_window(m, &f, "#fbfbfb");
@@ -100,7 +100,7 @@ void fig_plane(Markup *m, const Test *t, const Case *c, const double *got)
         svg_text(m, fig_px(&f, 0), fig_py(&f, -hw / 2) - 6, "middle", 12, COL_WANT, true, "w");
         svg_text(m, fig_px(&f, ww / 2) - 8, fig_py(&f, 0) + 4, "end", 12, COL_WANT, true, "h");
     }
-    if (gw && gh)
+    if (wg_ok && hg_ok)
         svg_rect(m, fig_px(&f, 0) - fmax(wg * f.s, 2) / 2, fig_py(&f, 0) - fmax(hg * f.s, 2) / 2,
                  fmax(wg * f.s, 2), fmax(hg * f.s, 2), "none", COL_GOT, 2.5);
     fig_window_end(m);
@@ -111,7 +111,7 @@ void fig_plane(Markup *m, const Test *t, const Case *c, const double *got)
         svg_text(m, 476, 46, "start", 11, COL_NOTE, false, "too thin to see: drawn as a line");
 
     pair_legend(m, 306, c, got, "expected: w = %s, h = %s", "your code: w = %s, h = %s%s",
-                gw && gh ? "" : " (not a size > 0: not drawn)");
+                wg_ok && hg_ok ? "" : " (not a size > 0: not drawn)");
     svg_text(m, 12, 328, "start", 11, COL_NOTE, false, "Drawn to scale: h = 2 d tan(fov / 2) is the "
              "plane's height; the lines from the eye are the edges of the field of view.");
     fig_end(m);
