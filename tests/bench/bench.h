@@ -26,7 +26,7 @@
  *                triangles with and without the kit's hierarchy, with
  *                results_scaling.csv, plot_scaling.svg and a section of
  *                report.md
- *   bench_main.c options, progress line, the order of the stages
+ *   bench_main.c options, progress line, the order of the steps
  *
  * Everything the bench writes goes to one directory (out/bench by default).
  */
@@ -241,7 +241,7 @@ typedef struct {
                                               constructed entry t| / t     */
 } TriResults;
 
-/* Runs the three stages (scenes: the directory of cracks.scene).  Returns
+/* Runs the three steps (scenes: the directory of cracks.scene).  Returns
  * 0, or -1 with a reason in err. */
 int triangle_bench(const char *scenes, bool quick, uint64_t seed, TriResults *tr, char *err,
                    size_t errlen);
@@ -430,7 +430,7 @@ typedef struct {
 int report_write(const BenchResults *br, const char *dir, char *err, size_t errlen);
 
 /* ---- progress (bench_main.c) ----------------------------------------------- */
-void progress(const char *stage, int done, int total);
+void progress(const char *step, int done, int total);
 
 /* A sink the compiler cannot see through: measured results go here. */
 extern volatile double bench_sink;

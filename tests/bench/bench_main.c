@@ -1,5 +1,5 @@
 /*
- * bench_main.c - `make bench`: the order of the stages, the options, and
+ * bench_main.c - `make bench`: the order of the steps, the options, and
  * the progress line.
  *
  *     bench [--quick] [--out DIR] [--scenes DIR] [--size WxH] [--rounds N]
@@ -23,7 +23,7 @@
  *      results_triangles.csv, results_scaling.csv, report.md, plot.svg,
  *      plot_triangles.svg, plot_scaling.svg in DIR (default out/bench)
  * --quick does the same with small sizes, in a few seconds (make test).
- * --ratio-only runs stage 1 alone and prints one line, "ratio R q1 Q1 q3
+ * --ratio-only runs step 1 alone and prints one line, "ratio R q1 Q1 q3
  * Q3" (the reference's time over the textbook's, double); `make bench`
  * runs it in the bench linked in the reverse order (bench-reordered) and
  * hands that line to the bench with --placement FILE, whose report then
@@ -53,23 +53,23 @@ static double start_time;
 static bool progress_tty;
 
 /* One line on stderr, rewritten in place on a terminal (at most ten times a
- * second); elsewhere one line per stage. */
-void progress(const char *stage, int done, int total)
+ * second); elsewhere one line per step. */
+void progress(const char *step, int done, int total)
 {
-    static char last_stage[64];
+    static char last_step[64];
     static double last_time;
     double now = now_seconds();
-    bool new_stage = strncmp(stage, last_stage, sizeof last_stage - 1) != 0;
+    bool new_step = strncmp(step, last_step, sizeof last_step - 1) != 0;
     if (progress_tty) {
-        if (!new_stage && done < total && now - last_time < 0.1)
+        if (!new_step && done < total && now - last_time < 0.1)
             return;
-        fprintf(stderr, "\r\033[Kbench [%5.1fs] %s: %d/%d (%.0f%%)", now - start_time, stage, done,
+        fprintf(stderr, "\r\033[Kbench [%5.1fs] %s: %d/%d (%.0f%%)", now - start_time, step, done,
                 total, total > 0 ? 100.0 * done / total : 100.0);
-    } else if (new_stage) {
-        fprintf(stderr, "bench [%5.1fs] %s\n", now - start_time, stage);
+    } else if (new_step) {
+        fprintf(stderr, "bench [%5.1fs] %s\n", now - start_time, step);
     }
     fflush(stderr);
-    snprintf(last_stage, sizeof last_stage, "%s", stage);
+    snprintf(last_step, sizeof last_step, "%s", step);
     last_time = now;
 }
 
@@ -173,7 +173,7 @@ static void pool_stats(ErrorStats *all, const ErrorStats *fam, double *errs, lon
     all->median_rel = nerrs > 0 ? median(errs, (int)nerrs) : 0;
 }
 
-/* ---- the stages ------------------------------------------------------------------- */
+/* ---- the steps -------------------------------------------------------------------- */
 
 typedef struct {
     bool quick, ratio_only;
@@ -189,7 +189,68 @@ static int load_default(const Options *o, Scene *scene, char *path, size_t size,
     return scene_load(scene, path, err, errlen) != 0 ? -1 : 0;
 }
 
-static int stage_throughput(const Options *o, BenchResults *br, char *err, size_t errlen)
+/* Where the reference's miss test stops on the workload (rays rs against
+ * scene's spheres), checked against the reference itself. */
+static void count_reference_exits(const Scene *scene, const RaySet *rs, BenchResults *br)
+{
+    for (int i = 0; i < rs->n; i++)
+        for (int k = 0; k < scene->nspheres; k++) {
+            int stage = reference_stage(&scene->spheres[k], &rs->rays[i]);
+            double t = 0;
+            br->ref_stage[stage]++;
+            br->ref_stage_pairs++;
+            if (stage <= REF_STAGE_NN && sphere_intersect(&scene->spheres[k], &rs->rays[i], &t))
+                br->ref_stage_wrong++;
+        }
+}
+
+/* From R rounds' pass times secs[r * bench_nmethods + m] and clock
+ * readings mhz (tests tests a pass): every method's Mtests/s and the
+ * reference / textbook ratio, medians and quartiles, and the clock.  col
+ * (R numbers) is room to work in. */
+static void throughput_stats(BenchResults *br, const double *secs, double *mhz, int R, double tests,
+                             double *col)
+{
+    int nm = bench_nmethods;
+    for (int m = 0; m < nm; m++) {
+        for (int r = 0; r < R; r++)
+            col[r] = tests / secs[r * nm + m] / 1e6;
+        br->mtests[m] = median(col, R);
+        br->mtests_q1[m] = quantile(col, R, 0.25);
+        br->mtests_q3[m] = quantile(col, R, 0.75);
+    }
+    int ref = method_find("reference", PREC_DOUBLE), tb = method_find("textbook", PREC_DOUBLE);
+    for (int r = 0; r < R; r++)
+        col[r] = secs[r * nm + ref] / secs[r * nm + tb];
+    br->ratio_paired = median(col, R);
+    br->ratio_q1 = quantile(col, R, 0.25);
+    br->ratio_q3 = quantile(col, R, 0.75);
+    br->ratio_of_medians = br->mtests[tb] / br->mtests[ref];
+    br->ceiling.mhz_measured = median(mhz, R);
+}
+
+/* The fast path's filter alone over rs: R samples of at least sample_s
+ * seconds each (tests tests a pass); the median Mtests/s.  col (R numbers)
+ * is room to work in. */
+static double time_filter(const FastScene *fs, const RaySet *rs, int R, double sample_s, double tests,
+                          double *col)
+{
+    long passed = 0;
+    for (int r = 0; r < R; r++) {
+        int passes = 0;
+        double t0 = now_seconds(), dt;
+        do {
+            passed += fast_filter_only(fs, rs->dx, rs->dy, rs->dz, rs->n);
+            passes++;
+            dt = now_seconds() - t0;
+        } while (dt < sample_s);
+        col[r] = tests * passes / dt / 1e6;
+    }
+    bench_sink += (double)passed;
+    return median(col, R);
+}
+
+static int step_throughput(const Options *o, BenchResults *br, char *err, size_t errlen)
 {
     char path[1024];
     Scene scene;
@@ -198,8 +259,8 @@ static int stage_throughput(const Options *o, BenchResults *br, char *err, size_
     RaySet rs;
     FastScene fs;
     Spheref sf[64];
-    int step = o->quick ? 8 : 4;
-    if (scene.nspheres > 64 || rayset_camera(&rs, &scene, scene.nx, scene.ny, step) != 0) {
+    int pixel_step = o->quick ? 8 : 4;
+    if (scene.nspheres > 64 || rayset_camera(&rs, &scene, scene.nx, scene.ny, pixel_step) != 0) {
         snprintf(err, errlen, "%s: too many spheres, or out of memory", path);
         scene_free(&scene);
         return -1;
@@ -217,18 +278,7 @@ static int stage_throughput(const Options *o, BenchResults *br, char *err, size_
     br->tp_rays = rs.n;
     br->tp_spheres = scene.nspheres;
     br->rounds = o->rounds;
-    /* Where the reference's miss test stops on this workload, checked
-     * against the reference itself; and how much of it the fast path
-     * solves. */
-    for (int i = 0; i < rs.n; i++)
-        for (int k = 0; k < scene.nspheres; k++) {
-            int stage = reference_stage(&scene.spheres[k], &rs.rays[i]);
-            double t = 0;
-            br->ref_stage[stage]++;
-            br->ref_stage_pairs++;
-            if (stage <= REF_STAGE_NN && sphere_intersect(&scene.spheres[k], &rs.rays[i], &t))
-                br->ref_stage_wrong++;
-        }
+    count_reference_exits(&scene, &rs, br);
     fast_count_solves(&fs, rs.dx, rs.dy, rs.dz, rs.n, &br->fast_pairs, &br->fast_solved);
 
     int nm = bench_nmethods, R = o->rounds;
@@ -239,36 +289,10 @@ static int stage_throughput(const Options *o, BenchResults *br, char *err, size_
     if (secs && mhz && col &&
         measure_throughput(&bs, &rs, R, o->quick ? 0.001 : 0.005, secs, mhz) == 0) {
         double tests = (double)rs.n * scene.nspheres;
-        for (int m = 0; m < nm; m++) {
-            for (int r = 0; r < R; r++)
-                col[r] = tests / secs[r * nm + m] / 1e6;
-            br->mtests[m] = median(col, R);
-            br->mtests_q1[m] = quantile(col, R, 0.25);
-            br->mtests_q3[m] = quantile(col, R, 0.75);
-        }
-        int ref = method_find("reference", PREC_DOUBLE), tb = method_find("textbook", PREC_DOUBLE);
-        for (int r = 0; r < R; r++)
-            col[r] = secs[r * nm + ref] / secs[r * nm + tb];
-        br->ratio_paired = median(col, R);
-        br->ratio_q1 = quantile(col, R, 0.25);
-        br->ratio_q3 = quantile(col, R, 0.75);
-        br->ratio_of_medians = br->mtests[tb] / br->mtests[ref];
-        br->ceiling.mhz_measured = median(mhz, R);
+        throughput_stats(br, secs, mhz, R, tests, col);
         /* The fast path's filter alone, timed the same way (R samples of
          * about the same length), right after the rounds. */
-        long passed = 0;
-        for (int r = 0; r < R; r++) {
-            int passes = 0;
-            double t0 = now_seconds(), dt;
-            do {
-                passed += fast_filter_only(&fs, rs.dx, rs.dy, rs.dz, rs.n);
-                passes++;
-                dt = now_seconds() - t0;
-            } while (dt < (o->quick ? 0.001 : 0.005));
-            col[r] = tests * passes / dt / 1e6;
-        }
-        br->fast_filter_mtests = median(col, R);
-        bench_sink += (double)passed;
+        br->fast_filter_mtests = time_filter(&fs, &rs, R, o->quick ? 0.001 : 0.005, tests, col);
         status = 0;
     } else {
         snprintf(err, errlen, "out of memory");
@@ -282,7 +306,56 @@ static int stage_throughput(const Options *o, BenchResults *br, char *err, size_
     return status;
 }
 
-static int stage_errors(const Options *o, BenchResults *br, char *err, size_t errlen)
+/* The float transliteration of the reference, compiled as double, must
+ * give the linked reference's answers exactly: counts the n cases where it
+ * does not. */
+static void check_transliteration(const Case *cases, int n, BenchResults *br)
+{
+    for (int i = 0; i < n; i++) {
+        double t1 = 0, t2 = 0;
+        bool h1 = sphere_intersect(&cases[i].sphere, &cases[i].ray, &t1);
+        bool h2 = isect_reference_d(&cases[i].sphere, &cases[i].ray, &t2);
+        br->translit_cases++;
+        if (h1 != h2 || (h1 && memcmp(&t1, &t2, sizeof t1) != 0))
+            br->translit_differ++;
+    }
+}
+
+/* Cost by outcome: the ordinary scene's n cases that surely miss and
+ * surely hit (exact: their answers), a sample of each timed with every
+ * method; and the share of hits.  0, or -1 out of memory. */
+static int cost_by_outcome(const Options *o, const Case *cases, const Exact *exact, int n, BenchResults *br)
+{
+    const int cap = o->quick ? 2000 : 20000;
+    Case *miss = malloc((size_t)cap * sizeof *miss), *hit = malloc((size_t)cap * sizeof *hit);
+    int nmiss = 0, nhit = 0, status = 0;
+    long counted = 0, hits = 0;
+    for (int i = 0; i < n; i++)
+        if (!exact[i].ambiguous) {
+            counted++;
+            hits += exact[i].hit;
+        }
+    br->hit_share = counted > 0 ? (double)hits / (double)counted : 0;
+    long step_hit = hits / cap + 1, step_miss = (counted - hits) / cap + 1, kh = 0, km = 0;
+    for (int i = 0; miss && hit && i < n; i++) {
+        const Exact *e = &exact[i];
+        if (e->ambiguous)
+            continue;
+        if (e->hit && kh++ % step_hit == 0 && nhit < cap)
+            hit[nhit++] = cases[i];
+        else if (!e->hit && km++ % step_miss == 0 && nmiss < cap)
+            miss[nmiss++] = cases[i];
+    }
+    if (!miss || !hit || measure_outcomes(miss, nmiss, hit, nhit, o->quick ? 3 : 31,
+                                          o->quick ? 0.0005 : 0.002, br->miss_ns,
+                                          br->hit_ns) != 0)
+        status = -1;
+    free(miss);
+    free(hit);
+    return status;
+}
+
+static int step_errors(const Options *o, BenchResults *br, char *err, size_t errlen)
 {
     char path[1024];
     Scene scene;
@@ -306,53 +379,17 @@ static int stage_errors(const Options *o, BenchResults *br, char *err, size_t er
     double *errs = malloc((size_t)total * sizeof *errs);
     int status = errs ? 0 : -1;
     for (int f = 0; f < FAMILY_COUNT && status == 0; f++) {
-        char stage[64];
-        snprintf(stage, sizeof stage, "exact answers, %s", family_name((Family)f));
-        progress(stage, 0, 1);
+        char label[64];
+        snprintf(label, sizeof label, "exact answers, %s", family_name((Family)f));
+        progress(label, 0, 1);
         exact[f] = cases[f] ? exact_answers(cases[f], n[f]) : NULL;
         if (!exact[f])
             status = -1;
     }
-    /* The float transliteration of the reference, compiled as double, must
-     * give the linked reference's answers exactly. */
     for (int f = 0; f < FAMILY_COUNT && status == 0; f++)
-        for (int i = 0; i < n[f]; i++) {
-            double t1 = 0, t2 = 0;
-            bool h1 = sphere_intersect(&cases[f][i].sphere, &cases[f][i].ray, &t1);
-            bool h2 = isect_reference_d(&cases[f][i].sphere, &cases[f][i].ray, &t2);
-            br->translit_cases++;
-            if (h1 != h2 || (h1 && memcmp(&t1, &t2, sizeof t1) != 0))
-                br->translit_differ++;
-        }
-    /* Cost by outcome: the scene's pairs that surely miss and surely hit. */
-    if (status == 0) {
-        const int cap = o->quick ? 2000 : 20000;
-        Case *miss = malloc((size_t)cap * sizeof *miss), *hit = malloc((size_t)cap * sizeof *hit);
-        int nmiss = 0, nhit = 0;
-        long counted = 0, hits = 0;
-        for (int i = 0; i < n[FAMILY_SCENE]; i++)
-            if (!exact[FAMILY_SCENE][i].ambiguous) {
-                counted++;
-                hits += exact[FAMILY_SCENE][i].hit;
-            }
-        br->hit_share = counted > 0 ? (double)hits / (double)counted : 0;
-        long step_hit = hits / cap + 1, step_miss = (counted - hits) / cap + 1, kh = 0, km = 0;
-        for (int i = 0; miss && hit && i < n[FAMILY_SCENE]; i++) {
-            const Exact *e = &exact[FAMILY_SCENE][i];
-            if (e->ambiguous)
-                continue;
-            if (e->hit && kh++ % step_hit == 0 && nhit < cap)
-                hit[nhit++] = cases[FAMILY_SCENE][i];
-            else if (!e->hit && km++ % step_miss == 0 && nmiss < cap)
-                miss[nmiss++] = cases[FAMILY_SCENE][i];
-        }
-        if (!miss || !hit || measure_outcomes(miss, nmiss, hit, nhit, o->quick ? 3 : 31,
-                                              o->quick ? 0.0005 : 0.002, br->miss_ns,
-                                              br->hit_ns) != 0)
-            status = -1;
-        free(miss);
-        free(hit);
-    }
+        check_transliteration(cases[f], n[f], br);
+    if (status == 0)
+        status = cost_by_outcome(o, cases[FAMILY_SCENE], exact[FAMILY_SCENE], n[FAMILY_SCENE], br);
     for (int m = 0; m < bench_nmethods && status == 0; m++) {
         progress("errors", m, bench_nmethods);
         long used = 0;
@@ -376,7 +413,7 @@ static int stage_errors(const Options *o, BenchResults *br, char *err, size_t er
 }
 
 /* The grader's Part 3a hard cases, judged by the grader's own rule. */
-static int stage_grader(const Options *o, BenchResults *br, char *err, size_t errlen)
+static int step_grader(const Options *o, BenchResults *br, char *err, size_t errlen)
 {
     int max = HARD_PART3A_FAMILIES * (o->quick ? 10 : 100);
     HardCase3a *cases = malloc((size_t)max * sizeof *cases);
@@ -408,7 +445,7 @@ static int stage_grader(const Options *o, BenchResults *br, char *err, size_t er
     return 0;
 }
 
-static int stage_renders(const Options *o, BenchResults *br, char *err, size_t errlen)
+static int step_renders(const Options *o, BenchResults *br, char *err, size_t errlen)
 {
     char *paths[BENCH_MAX_SCENES];
     int n = list_scenes(o->scenes, paths, BENCH_MAX_SCENES);
@@ -456,104 +493,134 @@ static int read_placement(const char *path, BenchResults *br, char *err, size_t 
     return 0;
 }
 
-int main(int argc, char **argv)
+/* Reads the options into o, with the defaults the others leave; 0, or -1
+ * (and the usage on stderr) for an option it does not know. */
+static int parse_options(int argc, char **argv, Options *o)
 {
-    Options o = { false, false, "out/bench", "labs/scenes", NULL, "out/build/sub/solutions/render",
-                  1920, 1080, 0, 20260101 };
+    Options defaults = { false, false, "out/bench", "labs/scenes", NULL, "out/build/sub/solutions/render",
+                         1920, 1080, 0, 20260101 };
+    *o = defaults;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (strcmp(a, "--quick") == 0) {
-            o.quick = true;
+            o->quick = true;
         } else if (strcmp(a, "--ratio-only") == 0) {
-            o.ratio_only = true;
+            o->ratio_only = true;
         } else if (strcmp(a, "--placement") == 0 && v) {
-            o.placement = v;
+            o->placement = v;
             i++;
         } else if (strcmp(a, "--out") == 0 && v) {
-            o.out = v;
+            o->out = v;
             i++;
         } else if (strcmp(a, "--render") == 0 && v) {
-            o.render = v;
+            o->render = v;
             i++;
         } else if (strcmp(a, "--scenes") == 0 && v) {
-            o.scenes = v;
+            o->scenes = v;
             i++;
-        } else if (strcmp(a, "--size") == 0 && v && sscanf(v, "%dx%d", &o.width, &o.height) == 2 &&
-                   o.width > 0 && o.height > 0 && o.width <= 16384 && o.height <= 16384) {
+        } else if (strcmp(a, "--size") == 0 && v && sscanf(v, "%dx%d", &o->width, &o->height) == 2 &&
+                   o->width > 0 && o->height > 0 && o->width <= 16384 && o->height <= 16384) {
             i++;
         } else if (strcmp(a, "--rounds") == 0 && v && atoi(v) > 0) {
-            o.rounds = atoi(v);
+            o->rounds = atoi(v);
             i++;
         } else if (strcmp(a, "--seed") == 0 && v) {
-            o.seed = strtoull(v, NULL, 10);
+            o->seed = strtoull(v, NULL, 10);
             i++;
         } else {
             usage();
-            return 1;
+            return -1;
         }
     }
-    if (o.quick && o.width == 1920 && o.height == 1080) {
-        o.width = 192;
-        o.height = 108;
+    if (o->quick && o->width == 1920 && o->height == 1080) {
+        o->width = 192;
+        o->height = 108;
     }
-    if (o.rounds == 0)
-        o.rounds = o.quick ? 7 : 151;
+    if (o->rounds == 0)
+        o->rounds = o->quick ? 7 : 151;
+    return 0;
+}
 
+/* bench --ratio-only: the throughput step alone, and its one line. */
+static int ratio_only(const Options *o, BenchResults *br)
+{
+    char err[1200] = "";
+    int status = step_throughput(o, br, err, sizeof err);
+    progress_done();
+    if (status != 0) {
+        fprintf(stderr, "bench: %s\n", err);
+        return 1;
+    }
+    printf("ratio %.4f q1 %.4f q3 %.4f\n", br->ratio_of_medians, br->ratio_q1, br->ratio_q3);
+    return 0;
+}
+
+/* How the bench runs: its options, the machine's load and CPU, the
+ * compiler, the date. */
+static void describe_run(const Options *o, BenchResults *br)
+{
+    br->quick = o->quick;
+    br->seed = o->seed;
+    br->load_before = load_average();
+    cpu_model(br->cpu, sizeof br->cpu);
+#ifdef __VERSION__
+    snprintf(br->compiler, sizeof br->compiler, "%s", __VERSION__);
+#endif
+    time_t now = time(NULL);
+    strftime(br->date, sizeof br->date, "%Y-%m-%d %H:%M UTC", gmtime(&now));
+}
+
+/* Every step in order, then the report, until one fails; 0, or -1 with
+ * err. */
+static int run_steps(const Options *o, BenchResults *br, char *err, size_t errlen)
+{
+    int status = scaling_prepare(o->out, o->scenes, o->render, o->quick, &br->scale, err, errlen);
+    if (status == 0)
+        status = step_throughput(o, br, err, errlen);
+    if (status == 0) {
+        progress("ceiling", 0, 1);
+        /* the clock read between throughput rounds is the one that counts */
+        measure_ceiling(&br->ceiling, o->quick, br->ceiling.mhz_measured);
+        status = step_errors(o, br, err, errlen);
+    }
+    if (status == 0)
+        status = step_grader(o, br, err, errlen);
+    if (status == 0)
+        status = step_renders(o, br, err, errlen);
+    if (status == 0)
+        status = triangle_bench(o->scenes, o->quick, o->seed, &br->tri, err, errlen);
+    if (status == 0)
+        status = scaling_bench(o->quick, &br->scale, err, errlen);
+    br->load_after = load_average();
+    br->seconds_total = now_seconds() - start_time;
+    if (status == 0) {
+        progress("report", 0, 1);
+        status = report_write(br, o->out, err, errlen);
+    }
+    return status;
+}
+
+int main(int argc, char **argv)
+{
+    Options o;
+    if (parse_options(argc, argv, &o) != 0)
+        return 1;
     static BenchResults br;
     char err[1200] = "";
     start_time = now_seconds();
     progress_tty = isatty(2);
-    if (o.ratio_only) {
-        int status = stage_throughput(&o, &br, err, sizeof err);
-        progress_done();
-        if (status != 0) {
-            fprintf(stderr, "bench: %s\n", err);
-            return 1;
-        }
-        printf("ratio %.4f q1 %.4f q3 %.4f\n", br.ratio_of_medians, br.ratio_q1, br.ratio_q3);
-        return 0;
-    }
+    if (o.ratio_only)
+        return ratio_only(&o, &br);
     if (o.placement && read_placement(o.placement, &br, err, sizeof err) != 0) {
         fprintf(stderr, "bench: %s\n", err);
         return 1;
     }
-    br.quick = o.quick;
-    br.seed = o.seed;
-    br.load_before = load_average();
-    cpu_model(br.cpu, sizeof br.cpu);
-#ifdef __VERSION__
-    snprintf(br.compiler, sizeof br.compiler, "%s", __VERSION__);
-#endif
-    time_t now = time(NULL);
-    strftime(br.date, sizeof br.date, "%Y-%m-%d %H:%M UTC", gmtime(&now));
+    describe_run(&o, &br);
     if (mkdir_p(o.out) != 0) {
         fprintf(stderr, "bench: %s: cannot create the directory\n", o.out);
         return 1;
     }
-
-    int status = scaling_prepare(o.out, o.scenes, o.render, o.quick, &br.scale, err, sizeof err);
-    if (status == 0)
-        status = stage_throughput(&o, &br, err, sizeof err);
-    if (status == 0) {
-        progress("ceiling", 0, 1);
-        /* the clock read between throughput rounds is the one that counts */
-        measure_ceiling(&br.ceiling, o.quick, br.ceiling.mhz_measured);
-        status = stage_errors(&o, &br, err, sizeof err);
-    }
-    if (status == 0)
-        status = stage_grader(&o, &br, err, sizeof err);
-    if (status == 0)
-        status = stage_renders(&o, &br, err, sizeof err);
-    if (status == 0)
-        status = triangle_bench(o.scenes, o.quick, o.seed, &br.tri, err, sizeof err);
-    if (status == 0)
-        status = scaling_bench(o.quick, &br.scale, err, sizeof err);
-    br.load_after = load_average();
-    br.seconds_total = now_seconds() - start_time;
-    if (status == 0) {
-        progress("report", 0, 1);
-        status = report_write(&br, o.out, err, sizeof err);
-    }
+    int status = run_steps(&o, &br, err, sizeof err);
     progress_done();
     if (status != 0) {
         fprintf(stderr, "bench: %s\n", err);

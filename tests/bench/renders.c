@@ -52,6 +52,43 @@ static void scene_basename(const char *path, char *out, size_t outlen)
         *dot = '\0';
 }
 
+/* The exact render of scene at nx x ny into ex: each pixel's nearest
+ * sphere by oracle_closest, and where either of two is right, the other;
+ * counts those pixels in res->ambiguous. */
+static void exact_render(const Scene *scene, int nx, int ny, ExactRender *ex, RenderResult *res)
+{
+    double w, h;
+    image_plane_size(scene->fov_degrees, (double)nx / ny, scene->d, &w, &h);
+    for (int j = 0; j < ny; j++) {
+        if (j % 16 == 0)
+            progress(res->scene, j, ny);
+        for (int i = 0; i < nx; i++) {
+            Ray ray = camera_ray(scene->eye, pixel_coordinates(i, j, nx, ny, w, h, scene->d));
+            bool amb;
+            int alt;
+            size_t p = (size_t)j * nx + i;
+            ex->exact[p] = oracle_closest(scene, &ray, &amb, &alt);
+            ex->amb[p] = amb;
+            ex->alt[p] = alt;
+            res->ambiguous += amb;
+        }
+    }
+}
+
+/* How many of the np pixels of the render idx are not as the exact
+ * render ex allows (every index goes into the bench's checksum). */
+static long differ_from_exact(const int *idx, const ExactRender *ex, size_t np)
+{
+    long differ = 0, sum = 0;
+    for (size_t p = 0; p < np; p++) {
+        sum += idx[p];
+        if (idx[p] != ex->exact[p] && !(ex->amb[p] && idx[p] == ex->alt[p]))
+            differ++;
+    }
+    bench_sink += (double)sum;
+    return differ;
+}
+
 int render_bench(const char *path, int nx, int ny, int reps, RenderResult *res,
                  char *err, size_t errlen)
 {
@@ -93,23 +130,7 @@ int render_bench(const char *path, int nx, int ny, int reps, RenderResult *res,
         sf[k] = spheref_from(&scene.spheres[k]);
     BenchScene bs = { scene.spheres, sf, scene.nspheres, &fs };
 
-    /* The exact render. */
-    double w, h;
-    image_plane_size(scene.fov_degrees, (double)nx / ny, scene.d, &w, &h);
-    for (int j = 0; j < ny; j++) {
-        if (j % 16 == 0)
-            progress(res->scene, j, ny);
-        for (int i = 0; i < nx; i++) {
-            Ray ray = camera_ray(scene.eye, pixel_coordinates(i, j, nx, ny, w, h, scene.d));
-            bool amb;
-            int alt;
-            size_t p = (size_t)j * nx + i;
-            ex.exact[p] = oracle_closest(&scene, &ray, &amb, &alt);
-            ex.amb[p] = amb;
-            ex.alt[p] = alt;
-            res->ambiguous += amb;
-        }
-    }
+    exact_render(&scene, nx, ny, &ex, res);
 
     /* The renders, interleaved as in the throughput runs; "method"
      * bench_nmethods only makes the rays. */
@@ -122,18 +143,10 @@ int render_bench(const char *path, int nx, int ny, int reps, RenderResult *res,
             render_once(m < bench_nmethods ? &bench_methods[m] : NULL, &bs, &scene, nx, ny, &row,
                         trow, idx);
             samples[m * reps + r] = now_seconds() - t0;
-            if (m == bench_nmethods) {
+            if (m == bench_nmethods)
                 bench_sink += idx[0];
-                continue;
-            }
-            long differ = 0, sum = 0;
-            for (size_t p = 0; p < np; p++) {
-                sum += idx[p];
-                if (idx[p] != ex.exact[p] && !(ex.amb[p] && idx[p] == ex.alt[p]))
-                    differ++;
-            }
-            bench_sink += (double)sum;
-            res->differ[m] = differ;       /* the same every repetition */
+            else
+                res->differ[m] = differ_from_exact(idx, &ex, np);  /* the same every repetition */
         }
     }
     for (int m = 0; m < bench_nmethods; m++)

@@ -352,6 +352,70 @@ static void md_ratio(FILE *f, const BenchResults *br)
                                      : "transliteration: STALE, update methods_body.h");
 }
 
+/* The slowest and the fastest scalar double method, in Mtests/s. */
+static void scalar_double_range(const BenchResults *br, double *lo, double *hi)
+{
+    *lo = INFINITY, *hi = 0;
+    for (int m = 0; m < bench_nmethods; m++)
+        if (!bench_methods[m].fast && bench_methods[m].precision == PREC_DOUBLE) {
+            *lo = br->mtests[m] < *lo ? br->mtests[m] : *lo;
+            *hi = br->mtests[m] > *hi ? br->mtests[m] : *hi;
+        }
+}
+
+/* The method nearest its ceiling (the first of equals). */
+static int best_share(const BenchResults *br)
+{
+    int best = 0;
+    for (int m = 0; m < bench_nmethods; m++)
+        if (share(br, m) > share(br, best))
+            best = m;
+    return best;
+}
+
+/* The findings' item on the renders (br->nrenders > 0): the largest
+ * difference from the exact render, and on default.scene what making the
+ * rays costs against intersecting them (tb, rd, fd: the textbook, the
+ * reference and the fast path in double). */
+static void md_finding_renders(FILE *f, const BenchResults *br, int tb, int rd, int fd)
+{
+    long worst = 0;
+    int ws = 0, wm = 0;
+    for (int s = 0; s < br->nrenders; s++)
+        for (int m = 0; m < bench_nmethods; m++)
+            if (br->renders[s].differ[m] > worst) {
+                worst = br->renders[s].differ[m];
+                ws = s;
+                wm = m;
+            }
+    long accurate_wrong = 0;
+    for (int s = 0; s < br->nrenders; s++) {
+        accurate_wrong += br->renders[s].differ[rd] + br->renders[s].differ[fd];
+    }
+    fprintf(f, "- **In pictures:** ");
+    if (worst == 0)
+        fprintf(f, "every renderer matches the exact render on every scene.");
+    else
+        fprintf(f, "the largest difference is %s on %s: %s of the pixels (far.scene is the "
+                   "lecture's far small sphere). The reference and the double fast path "
+                   "differ from the exact render in %ld pixels over all scenes.",
+                label(wm), br->renders[ws].scene,
+                P((double)worst / (double)br->renders[ws].pixels), accurate_wrong);
+    int sd = 0;
+    for (int s = 0; s < br->nrenders; s++)
+        if (strcmp(br->renders[s].scene, "default") == 0)
+            sd = s;
+    const RenderResult *r = &br->renders[sd];
+    fprintf(f, " On %s.scene at %dx%d, making the rays (parts 1, 2 and 3b) takes %.0f ms; "
+               "intersecting them takes the textbook %.0f ms more and the fast path %.0f ms "
+               "more%s\n",
+            r->scene, r->nx, r->ny, 1e3 * r->rays_seconds,
+            1e3 * (r->seconds[tb] - r->rays_seconds), 1e3 * (r->seconds[fd] - r->rays_seconds),
+            r->seconds[fd] < 2 * r->rays_seconds
+                ? ": with the fast path, the rays, not the spheres, are most of the time."
+                : ".");
+}
+
 static void md_findings(FILE *f, const BenchResults *br)
 {
     int tb = idx("textbook", PREC_DOUBLE), tf = idx("textbook", PREC_FLOAT);
@@ -360,12 +424,8 @@ static void md_findings(FILE *f, const BenchResults *br)
     int fd = idx("fast", PREC_DOUBLE), ff = idx("fast", PREC_FLOAT), fm = idx("fast", PREC_MIXED);
 
     /* 1. scalar speed */
-    double lo = INFINITY, hi = 0;
-    for (int m = 0; m < bench_nmethods; m++)
-        if (!bench_methods[m].fast && bench_methods[m].precision == PREC_DOUBLE) {
-            lo = br->mtests[m] < lo ? br->mtests[m] : lo;
-            hi = br->mtests[m] > hi ? br->mtests[m] : hi;
-        }
+    double lo, hi;
+    scalar_double_range(br, &lo, &hi);
     fprintf(f, "- **One test at a time, the formula moves the speed by %.1fx at most.** The "
                "scalar double methods run at %.0f to %.0f million tests per second. Each test "
                "is a call and some twenty operations, and most tests end at "
@@ -416,48 +476,10 @@ static void md_findings(FILE *f, const BenchResults *br)
             br->mtests[fd] / br->mtests[tb], br->mtests[ff] / br->mtests[tb],
             br->mtests[fm] / br->mtests[tb], E(br->all[fd].max_over_kappa), br->all[fd].wrong);
     /* 5. renders */
-    if (br->nrenders > 0) {
-        long worst = 0;
-        int ws = 0, wm = 0;
-        for (int s = 0; s < br->nrenders; s++)
-            for (int m = 0; m < bench_nmethods; m++)
-                if (br->renders[s].differ[m] > worst) {
-                    worst = br->renders[s].differ[m];
-                    ws = s;
-                    wm = m;
-                }
-        long accurate_wrong = 0;
-        for (int s = 0; s < br->nrenders; s++) {
-            accurate_wrong += br->renders[s].differ[rd] + br->renders[s].differ[fd];
-        }
-        fprintf(f, "- **In pictures:** ");
-        if (worst == 0)
-            fprintf(f, "every renderer matches the exact render on every scene.");
-        else
-            fprintf(f, "the largest difference is %s on %s: %s of the pixels (far.scene is the "
-                       "lecture's far small sphere). The reference and the double fast path "
-                       "differ from the exact render in %ld pixels over all scenes.",
-                    label(wm), br->renders[ws].scene,
-                    P((double)worst / (double)br->renders[ws].pixels), accurate_wrong);
-        int sd = 0;
-        for (int s = 0; s < br->nrenders; s++)
-            if (strcmp(br->renders[s].scene, "default") == 0)
-                sd = s;
-        const RenderResult *r = &br->renders[sd];
-        fprintf(f, " On %s.scene at %dx%d, making the rays (parts 1, 2 and 3b) takes %.0f ms; "
-                   "intersecting them takes the textbook %.0f ms more and the fast path %.0f ms "
-                   "more%s\n",
-                r->scene, r->nx, r->ny, 1e3 * r->rays_seconds,
-                1e3 * (r->seconds[tb] - r->rays_seconds), 1e3 * (r->seconds[fd] - r->rays_seconds),
-                r->seconds[fd] < 2 * r->rays_seconds
-                    ? ": with the fast path, the rays, not the spheres, are most of the time."
-                    : ".");
-    }
+    if (br->nrenders > 0)
+        md_finding_renders(f, br, tb, rd, fd);
     /* 6. the ceiling */
-    int best = 0;
-    for (int m = 0; m < bench_nmethods; m++)
-        if (share(br, m) > share(br, best))
-            best = m;
+    int best = best_share(br);
     fprintf(f, "- **Against the machine's limit** (%.0f million tests per second in double, "
                "%.0f in float): the scalar loops reach %s (textbook) and %s (reference); the "
                "best method, %s, %s. A call per test, one number at a time, cannot come "
@@ -542,15 +564,9 @@ static void md_ceiling(FILE *f, const BenchResults *br)
                 precision_name(bench_methods[m].precision), br->mtests[m], P(share(br, m)));
 }
 
-static int write_md(const BenchResults *br, const char *dir, char *err, size_t errlen)
+/* The title, and how and where the bench ran. */
+static void md_intro(FILE *f, const BenchResults *br)
 {
-    FILE *f = open_out(dir, "report.md", err, errlen);
-    if (!f)
-        return -1;
-    int tb = idx("textbook", PREC_DOUBLE), tf = idx("textbook", PREC_FLOAT);
-    int rd = idx("reference", PREC_DOUBLE);
-    int fd = idx("fast", PREC_DOUBLE), ff = idx("fast", PREC_FLOAT), fm = idx("fast", PREC_MIXED);
-
     fprintf(f, "# Ray/sphere intersection: speed against accuracy\n\n");
     if (br->quick)
         fprintf(f, "> **Quick run** (`bench --quick`, as `make test` runs it): small sizes and "
@@ -560,8 +576,12 @@ static int write_md(const BenchResults *br, const char *dir, char *err, size_t e
                "`-std=c11 -O2 -ffp-contract=off` (the fast path's file also "
                "`-fno-math-errno`). Load average %.2f before, %.2f after.\n\n",
             br->date, br->seconds_total, br->cpu, br->compiler, br->load_before, br->load_after);
+}
 
-    fprintf(f, "## Headline\n\n");
+/* The headline's first item: the reference's cost over the textbook's
+ * against its target, under one placement of the code or two. */
+static void md_ratio_headline(FILE *f, const BenchResults *br)
+{
     fprintf(f, "- **Reference / textbook cost, double, ordinary scene: %.3fx** (ratio of the "
                "medians; per-round ratios: median %.3f, quartiles %.3f-%.3f). Target at most "
                "%.2fx: ",
@@ -584,6 +604,17 @@ static int write_md(const BenchResults *br, const char *dir, char *err, size_t e
                 worst <= RATIO_TARGET ? "met." : "not met.");
     }
     fputc('\n', f);
+}
+
+/* ## Headline: the targets, met or not, and where the reference's and the
+ * fast path's time goes. */
+static void md_headline(FILE *f, const BenchResults *br)
+{
+    int tb = idx("textbook", PREC_DOUBLE), tf = idx("textbook", PREC_FLOAT);
+    int rd = idx("reference", PREC_DOUBLE);
+    int fd = idx("fast", PREC_DOUBLE), ff = idx("fast", PREC_FLOAT), fm = idx("fast", PREC_MIXED);
+    fprintf(f, "## Headline\n\n");
+    md_ratio_headline(f, br);
     fprintf(f, "- **The reference's miss test** sums |f x r|^2 a term at a time and stops at "
                "the first partial sum above A R^2: of the %ld (ray, sphere) pairs timed, %s "
                "stop after n.x^2, %s after n.x^2 + n.y^2 and %s after the whole sum (misses); "
@@ -625,7 +656,11 @@ static int write_md(const BenchResults *br, const char *dir, char *err, size_t e
                "reference %s, the fast path %s (double), %s (mixed) and %s (float).\n\n",
             br->ceiling.ceiling_d, br->ceiling.ceiling_f, P(share(br, tb)), P(share(br, rd)),
             P(share(br, fd)), P(share(br, fm)), P(share(br, ff)));
+}
 
+/* ## Throughput and error: how they are measured, the table, the plot. */
+static void md_throughput(FILE *f, const BenchResults *br)
+{
     fprintf(f, "## Throughput and error\n\n");
     fprintf(f, "Throughput: the closest-hit loop (every sphere, keep the nearest, as part 3b's "
                "`ray_color`) over %d camera rays of %s against its %d spheres, one thread; the "
@@ -642,13 +677,11 @@ static int write_md(const BenchResults *br, const char *dir, char *err, size_t e
             br->family_cases[0] + br->family_cases[1] + br->family_cases[2] + br->family_cases[3]);
     md_results_table(f, br);
     fprintf(f, "\n![Throughput against worst error](plot.svg)\n\n");
+}
 
-    fprintf(f, "## What it shows\n\n");
-    md_findings(f, br);
-    fprintf(f, "\n");
-
-    md_ratio(f, br);
-
+/* ## Errors by family: a table for each. */
+static void md_families(FILE *f, const BenchResults *br)
+{
     fprintf(f, "## Errors by family\n\n");
     for (int fam = 0; fam < FAMILY_COUNT; fam++) {
         fprintf(f, "### %s: %s\n\n%d cases, %ld of them ambiguous (not counted).\n\n",
@@ -657,7 +690,11 @@ static int write_md(const BenchResults *br, const char *dir, char *err, size_t e
         md_family_table(f, br, fam);
         fprintf(f, "\n");
     }
+}
 
+/* ## Render level: the lab's scenes rendered whole. */
+static void md_renders(FILE *f, const BenchResults *br)
+{
     fprintf(f, "## Render level\n\n");
     fprintf(f, "Every scene in labs/scenes at %dx%d (its own field of view and distance), the "
                "median of %d interleaved renders per method. The exact render is "
@@ -665,13 +702,11 @@ static int write_md(const BenchResults *br, const char *dir, char *err, size_t e
             br->nrenders > 0 ? br->renders[0].nx : 0, br->nrenders > 0 ? br->renders[0].ny : 0,
             br->render_reps);
     md_render_table(f, br);
+}
 
-    fprintf(f, "\n## The ceiling\n\n");
-    md_ceiling(f, br);
-
-    triangles_md(f, &br->tri);
-    scaling_md(f, &br->scale);
-
+/* ## How it is measured. */
+static void md_method(FILE *f, const BenchResults *br)
+{
     fprintf(f, "\n## How it is measured\n\n");
     fprintf(f, "- Every method is timed in the same run: each round times every method once "
                "(about 5 ms each) in an order rotated by one every round, so drift in the clock "
@@ -690,6 +725,27 @@ static int write_md(const BenchResults *br, const char *dir, char *err, size_t e
                "plot.svg; for Part 5, results_triangles.csv and plot_triangles.svg, and at "
                "scale results_scaling.csv and plot_scaling.svg. Source: tests/bench (bench.h "
                "lists the files).\n");
+}
+
+static int write_md(const BenchResults *br, const char *dir, char *err, size_t errlen)
+{
+    FILE *f = open_out(dir, "report.md", err, errlen);
+    if (!f)
+        return -1;
+    md_intro(f, br);
+    md_headline(f, br);
+    md_throughput(f, br);
+    fprintf(f, "## What it shows\n\n");
+    md_findings(f, br);
+    fprintf(f, "\n");
+    md_ratio(f, br);
+    md_families(f, br);
+    md_renders(f, br);
+    fprintf(f, "\n## The ceiling\n\n");
+    md_ceiling(f, br);
+    triangles_md(f, &br->tri);
+    scaling_md(f, &br->scale);
+    md_method(f, br);
     return close_out(f, dir, "report.md", err, errlen);
 }
 

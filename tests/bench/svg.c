@@ -181,6 +181,70 @@ static void draw_axes(FILE *f, const Axis *ax, const Axis *ay, const char *xlabe
     fprintf(f, "</text>\n");
 }
 
+/* The Pareto front (on[i]: point i is on it) of the n points at (px, py),
+ * errors xs: a dashed staircase through its points, by error, from the
+ * axes' corner. */
+static void draw_front(FILE *f, const bool *on, const double *xs, const double *px, const double *py, int n,
+                       const Axis *ax, const Axis *ay)
+{
+    int order[MAXP], nf = 0;
+    for (int i = 0; i < n; i++)
+        if (on[i])
+            order[nf++] = i;
+    for (int a = 1; a < nf; a++)
+        for (int b = a; b > 0 && xs[order[b]] < xs[order[b - 1]]; b--) {
+            int tmp = order[b];
+            order[b] = order[b - 1];
+            order[b - 1] = tmp;
+        }
+    if (nf > 0) {
+        fprintf(f, "<path fill=\"none\" stroke=\"#555\" stroke-width=\"1.5\" "
+                   "stroke-dasharray=\"6 4\" d=\"M%.1f %.1f", ax->p0, py[order[0]]);
+        for (int a = 0; a < nf; a++) {
+            if (a > 0)
+                fprintf(f, " V%.1f", py[order[a]]);
+            fprintf(f, " H%.1f", px[order[a]]);
+        }
+        fprintf(f, " V%.1f\"/>\n", ay->p0);
+    }
+}
+
+/* Where the label of the point at (px, py), w wide, goes: the first of the
+ * places around the point inside the axes that overlaps none of the
+ * nplaced boxes placed, or failing that the first or fourth place inside,
+ * or failing that right of the point.  Its box; its text starts at (*tx,
+ * *ty). */
+static Box place_label(double px, double py, double w, const Axis *ax, const Axis *ay, const Box *placed,
+                       int nplaced, double *tx, double *ty)
+{
+    static const double dx[] = { 12, 12, 12, -12, -12, -12, 0, 0, 12, -12, 12, -12, 30, -30 };
+    static const double dy[] = { 4, -9, 17, 4, -9, 17, -13, 25, -22, -22, 30, 30, 4, 4 };
+    Box best = { 0, 0, 0, 0 };
+    *tx = 0, *ty = 0;
+    for (size_t c = 0; c < sizeof dx / sizeof dx[0]; c++) {
+        double x0 = dx[c] > 0 ? px + dx[c] : dx[c] < 0 ? px + dx[c] - w : px - w / 2;
+        Box b = { x0, py + dy[c] - 12, x0 + w, py + dy[c] + 4 };
+        bool inside = b.x0 >= ax->p0 && b.x1 <= ax->p1 && b.y0 >= ay->p1 && b.y1 <= ay->p0;
+        bool ok = inside;
+        for (int k = 0; ok && k < nplaced; k++)
+            ok = !overlaps(b, placed[k]);
+        if (ok || (c == 0 && inside) || (c == 3 && best.x1 == 0 && inside)) {
+            best = b;
+            *tx = x0;
+            *ty = py + dy[c];
+            if (ok)
+                break;
+        }
+    }
+    if (best.x1 == 0) {            /* nowhere inside: right of the point */
+        *tx = px + 12;
+        *ty = py + 4;
+        Box b = { *tx, *ty - 11, *tx + w, *ty + 3 };
+        best = b;
+    }
+    return best;
+}
+
 static void draw_panel(FILE *f, const PlotPanel *p, double top)
 {
     double xs[MAXP], ys[MAXP];
@@ -200,34 +264,14 @@ static void draw_panel(FILE *f, const PlotPanel *p, double top)
     fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" fill=\"#888\" font-style=\"italic\">"
                "better: up and to the left</text>\n", ax.p0 + 8, ay.p1 + 16);
 
-    /* the Pareto front: a staircase through its points, by error */
     bool on[MAXP];
     pareto_front(p->pts, n, on);
-    int order[MAXP], nf = 0;
-    for (int i = 0; i < n; i++)
-        if (on[i])
-            order[nf++] = i;
-    for (int a = 1; a < nf; a++)
-        for (int b = a; b > 0 && xs[order[b]] < xs[order[b - 1]]; b--) {
-            int tmp = order[b];
-            order[b] = order[b - 1];
-            order[b - 1] = tmp;
-        }
     double px[MAXP], py[MAXP];
     for (int i = 0; i < n; i++) {
         px[i] = axis_pos(&ax, xs[i] > X_FLOOR ? xs[i] : X_FLOOR);
         py[i] = axis_pos(&ay, ys[i]);
     }
-    if (nf > 0) {
-        fprintf(f, "<path fill=\"none\" stroke=\"#555\" stroke-width=\"1.5\" "
-                   "stroke-dasharray=\"6 4\" d=\"M%.1f %.1f", ax.p0, py[order[0]]);
-        for (int a = 0; a < nf; a++) {
-            if (a > 0)
-                fprintf(f, " V%.1f", py[order[a]]);
-            fprintf(f, " H%.1f", px[order[a]]);
-        }
-        fprintf(f, " V%.1f\"/>\n", ay.p0);
-    }
+    draw_front(f, on, xs, px, py, n, &ax, &ay);
 
     /* points, then labels where they collide with nothing placed yet */
     Box placed[2 * MAXP];
@@ -240,33 +284,9 @@ static void draw_panel(FILE *f, const PlotPanel *p, double top)
                     px[i], py[i]);
         marker(f, p->pts[i].group, px[i], py[i]);
     }
-    static const double dx[] = { 12, 12, 12, -12, -12, -12, 0, 0, 12, -12, 12, -12, 30, -30 };
-    static const double dy[] = { 4, -9, 17, 4, -9, 17, -13, 25, -22, -22, 30, 30, 4, 4 };
     for (int i = 0; i < n; i++) {
-        double w = FONT_W * (double)strlen(p->pts[i].label);
-        Box best = { 0, 0, 0, 0 };
-        double tx = 0, ty = 0;
-        for (size_t c = 0; c < sizeof dx / sizeof dx[0]; c++) {
-            double x0 = dx[c] > 0 ? px[i] + dx[c] : dx[c] < 0 ? px[i] + dx[c] - w : px[i] - w / 2;
-            Box b = { x0, py[i] + dy[c] - 12, x0 + w, py[i] + dy[c] + 4 };
-            bool inside = b.x0 >= ax.p0 && b.x1 <= ax.p1 && b.y0 >= ay.p1 && b.y1 <= ay.p0;
-            bool ok = inside;
-            for (int k = 0; ok && k < nplaced; k++)
-                ok = !overlaps(b, placed[k]);
-            if (ok || (c == 0 && inside) || (c == 3 && best.x1 == 0 && inside)) {
-                best = b;
-                tx = x0;
-                ty = py[i] + dy[c];
-                if (ok)
-                    break;
-            }
-        }
-        if (best.x1 == 0) {            /* nowhere inside: right of the point */
-            tx = px[i] + 12;
-            ty = py[i] + 4;
-            Box b = { tx, ty - 11, tx + w, ty + 3 };
-            best = b;
-        }
+        double w = FONT_W * (double)strlen(p->pts[i].label), tx, ty;
+        Box best = place_label(px[i], py[i], w, &ax, &ay, placed, nplaced, &tx, &ty);
         placed[nplaced++] = best;
         /* a label not beside its point gets a thin line to it */
         double cx = px[i] < best.x0 ? best.x0 : px[i] > best.x1 ? best.x1 : px[i];

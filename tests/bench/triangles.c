@@ -87,7 +87,7 @@ static double tri_closest(const TriMethod *m, const Triangle *tris, const Triang
 
 /* ---- throughput ------------------------------------------------------------ */
 
-static int stage_throughput(const char *scenes, bool quick, TriResults *tr, char *err, size_t errlen)
+static int step_throughput(const char *scenes, bool quick, TriResults *tr, char *err, size_t errlen)
 {
     char path[1024];
     snprintf(path, sizeof path, "%s/cracks.scene", scenes);
@@ -213,7 +213,7 @@ static void measure_errors(const TriMethod *m, const HardCase5 *cases, int n, do
     e->median_rel = nrel ? rel[nrel / 2] : 0;
 }
 
-static int stage_errors(bool quick, uint64_t seed, TriResults *tr, char *err, size_t errlen)
+static int step_errors(bool quick, uint64_t seed, TriResults *tr, char *err, size_t errlen)
 {
     int nhard = HARD_PART5_FAMILIES * (quick ? 100 : 3000), nord = quick ? 5000 : 200000;
     int n = nhard > nord ? nhard : nord;
@@ -304,7 +304,7 @@ static Ray float_ray_at(uint64_t state, const HardMesh *mf, bool vertex)
     return rf;
 }
 
-static void stage_cracks(bool quick, uint64_t seed, TriResults *tr)
+static void step_cracks(bool quick, uint64_t seed, TriResults *tr)
 {
     /* Each ray is judged on the mesh as its method's precision holds it:
      * the ray crosses the mesh's surface where it enters (t_in) and again
@@ -374,11 +374,11 @@ int triangle_bench(const char *scenes, bool quick, uint64_t seed, TriResults *tr
 {
     memset(tr, 0, sizeof *tr);
     tr->ran = true;
-    if (stage_throughput(scenes, quick, tr, err, errlen) != 0)
+    if (step_throughput(scenes, quick, tr, err, errlen) != 0)
         return -1;
-    if (stage_errors(quick, seed, tr, err, errlen) != 0)
+    if (step_errors(quick, seed, tr, err, errlen) != 0)
         return -1;
-    stage_cracks(quick, seed, tr);
+    step_cracks(quick, seed, tr);
     return 0;
 }
 

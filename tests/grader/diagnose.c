@@ -489,34 +489,34 @@ static void p1_tan_near_90(const ProbeSet *ps, Found *f, P1Found *out, const Ans
 
 static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
 {
-    Test *tb = probe_test(ps, PART1, KIND_PLANE, "probe: ordinary fields of view");
+    Test *ordinary_test = probe_test(ps, PART1, KIND_PLANE, "probe: ordinary fields of view");
     for (int k = 0; k < N_FOV_ORDINARY; k++)
-        probe_case(tb, p1_ordinary[k], 3);
-    Test *tf = probe_test(ps, PART1, KIND_PLANE, "probe: fields of view near 180 degrees");
+        probe_case(ordinary_test, p1_ordinary[k], 3);
+    Test *near180_test = probe_test(ps, PART1, KIND_PLANE, "probe: fields of view near 180 degrees");
     for (int k = 0; k < N_FOV_NEAR180; k++)
-        probe_case(tf, p1_near180[k], 3);
+        probe_case(near180_test, p1_near180[k], 3);
     Answers a2[2];
     probe_run(ps, &ps->list.tests[0], &a2[0]);
     probe_run(ps, &ps->list.tests[1], &a2[1]);
-    Answers ab = a2[0], af = a2[1];
+    Answers ordinary = a2[0], near180 = a2[1];
     if (unwritten(f, ps, a2, 2)) {
-        answers_free(&ab);
-        answers_free(&af);
+        answers_free(&ordinary);
+        answers_free(&near180);
         return;
     }
-    if (ab.answered == N_FOV_ORDINARY)
-        p1_simplest_model(out, &ab);
+    if (ordinary.answered == N_FOV_ORDINARY)
+        p1_simplest_model(out, &ordinary);
     double model[N_FOV_ORDINARY][CASE_MAX_OUT];
     for (int c = 0; c < N_FOV_ORDINARY; c++)
         p1_eval(out->have_model ? out->model : (P1Model){ 0, 1, 1, 0 }, p1_ordinary[c], model[c]);
-    bool in_float = all_float(&ab, 2, (const double (*)[CASE_MAX_OUT])model, N_FOV_ORDINARY);
+    bool in_float = all_float(&ordinary, 2, (const double (*)[CASE_MAX_OUT])model, N_FOV_ORDINARY);
 
     const P1Model m = out->model;
-    const double *g = ab.answered ? ab.got[1] : NULL;     /* alpha = 90, aspect 0.5, d = 3 */
-    if (ab.answered == N_FOV_ORDINARY)
-        p1_pi_approximate(f, out, &ab);
-    if (ab.answered == N_FOV_ORDINARY && !in_float && out->factor == 0)
-        p1_float_inside(f, out, &ab);
+    const double *g = ordinary.answered ? ordinary.got[1] : NULL;     /* alpha = 90, aspect 0.5, d = 3 */
+    if (ordinary.answered == N_FOV_ORDINARY)
+        p1_pi_approximate(f, out, &ordinary);
+    if (ordinary.answered == N_FOV_ORDINARY && !in_float && out->factor == 0)
+        p1_float_inside(f, out, &ordinary);
     if (out->have_model && p1_mistakes(m) > 0)
         p1_model_mistakes(f, m, g);
     if (in_float && (!out->have_model || m.angle == 0)) {
@@ -525,10 +525,11 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
                    "e.g. h = %s for alpha = 90, aspect = 0.5, d = 3. Use double throughout "
                    "(tan, not tanf; 180.0, not 180.0f).", kit_shortest_double(b, sizeof b, g ? g[1] : 0));
     }
-    if (out->have_model && m.angle == 0 && m.factor2 && m.use_d && !in_float && af.answered == N_FOV_NEAR180)
-        p1_tan_near_90(ps, f, out, &af);
-    answers_free(&ab);
-    answers_free(&af);
+    if (out->have_model && m.angle == 0 && m.factor2 && m.use_d && !in_float &&
+        near180.answered == N_FOV_NEAR180)
+        p1_tan_near_90(ps, f, out, &near180);
+    answers_free(&ordinary);
+    answers_free(&near180);
 }
 
 /* ==== Part 2 ================================================================ */
@@ -631,22 +632,22 @@ static void p2_float_inside(Found *f, const Answers *a, const double (*model)[CA
 {
     const double (*cases)[7] = p2_cases;
     double worst = 0;
-    int wc = 0, wk = 0;
+    int worst_pixel = 0, worst_axis = 0;
     for (int c = 0; c < N_PIXELS; c++)
         for (int k = 0; k < 3; k++) {
             double err = fabs(a->got[c][k] - model[c][k]) / p2_scale(cases[c]);
             if (err > worst)
-                worst = err, wc = c, wk = k;
+                worst = err, worst_pixel = c, worst_axis = k;
         }
     char b0[40], b1[40];
     if (worst > 1e-10 && worst <= FLOAT_DIGITS)
         name_cause(f, "float", TAG_ALL, "your coordinates agree with the right ones to about 7 "
                    "digits, float's precision, and no further: for pixel (%g, %g) of a %g x %g image "
                    "your %c = %s, the right one %s. Some of the computation is in float (a float "
-                   "variable, a constant written 0.5f): use double throughout.", cases[wc][0],
-                   cases[wc][1], cases[wc][2], cases[wc][3], "xyz"[wk],
-                   kit_shortest_double(b0, sizeof b0, a->got[wc][wk]),
-                   kit_shortest_double(b1, sizeof b1, model[wc][wk]));
+                   "variable, a constant written 0.5f): use double throughout.", cases[worst_pixel][0],
+                   cases[worst_pixel][1], cases[worst_pixel][2], cases[worst_pixel][3], "xyz"[worst_axis],
+                   kit_shortest_double(b0, sizeof b0, a->got[worst_pixel][worst_axis]),
+                   kit_shortest_double(b1, sizeof b1, model[worst_pixel][worst_axis]));
 }
 
 static void diagnose_part2(ProbeSet *ps, Found *f, P2Found *out)
@@ -1420,15 +1421,15 @@ static void diagnose_part3b(ProbeSet *ps, Found *f, P3bFound *out)
         { 0, 0, 0, 3, 0, -4 }, { 1, 2, 3, 4, -2, 3 }, { 0, 0, 0, 0.1, 0.2, -1 }, { -1, 0.5, 2, 2, 2.5, -4 },
     };
     enum { NCAM = sizeof cams / sizeof *cams };
-    Test *tc = probe_test(ps, PART3B, KIND_CAMERA, "probe: camera rays");
+    Test *cameras = probe_test(ps, PART3B, KIND_CAMERA, "probe: camera rays");
     for (int k = 0; k < NCAM; k++)
-        probe_case(tc, cams[k], 6);
+        probe_case(cameras, cams[k], 6);
     /* Spheres listed neither near to far nor far to near. */
-    Test *tk = probe_test(ps, PART3B, KIND_COLOR, "probe: colours of the closest hit");
-    tk->background[0] = 0.2, tk->background[1] = 0.4, tk->background[2] = 0.6;
-    test_add_sphere(tk, (const double[3]){ 0, 0, -10 }, 2, (const double[3]){ 0, 1, 0 });
-    test_add_sphere(tk, (const double[3]){ 0, 0, -20 }, 5, (const double[3]){ 0, 0, 1 });
-    test_add_sphere(tk, (const double[3]){ 0.5, 0, -5 }, 1, (const double[3]){ 1, 0, 0 });
+    Test *colours = probe_test(ps, PART3B, KIND_COLOR, "probe: colours of the closest hit");
+    colours->background[0] = 0.2, colours->background[1] = 0.4, colours->background[2] = 0.6;
+    test_add_sphere(colours, (const double[3]){ 0, 0, -10 }, 2, (const double[3]){ 0, 1, 0 });
+    test_add_sphere(colours, (const double[3]){ 0, 0, -20 }, 5, (const double[3]){ 0, 0, 1 });
+    test_add_sphere(colours, (const double[3]){ 0.5, 0, -5 }, 1, (const double[3]){ 1, 0, 0 });
     /* The last ray misses the red sphere and meets the other two: there the
      * last sphere hit in the list is the farthest, not the closest. */
     static const double rays[][6] = {
@@ -1437,12 +1438,12 @@ static void diagnose_part3b(ProbeSet *ps, Found *f, P3bFound *out)
     };
     enum { NR = sizeof rays / sizeof *rays };
     for (int k = 0; k < NR; k++)
-        probe_case(tk, rays[k], 6);
+        probe_case(colours, rays[k], 6);
     Answers a2[2];
     probe_run(ps, &ps->list.tests[0], &a2[0]);
     probe_run(ps, &ps->list.tests[1], &a2[1]);
     Answers ac = a2[0], ak = a2[1];
-    tk = &ps->list.tests[1];
+    colours = &ps->list.tests[1];
     if (unwritten(f, ps, a2, 2)) {
         answers_free(&ac);
         answers_free(&ak);
@@ -1463,7 +1464,7 @@ static void diagnose_part3b(ProbeSet *ps, Found *f, P3bFound *out)
         bool all = true;
         for (int c = 0; c < NR && all; c++) {
             double v[3];
-            p3b_colour(m, tk, rays[c], v);
+            p3b_colour(m, colours, rays[c], v);
             all = vec_same(ak.got[c], v, 3);
         }
         if (all)

@@ -258,83 +258,86 @@ static void draw_flats(Markup *m, const FigView *v, const Flat *fl, int nf, bool
     }
 }
 
-void fig_triangle(Markup *m, const Test *t, const Case *c, const double *got)
+/* How far the projected triangles reach: the box around every vertex and
+ * the ray's point (0, 0), the ray's distance to the nearest edge, and
+ * whether the ray passes exactly through a vertex. */
+typedef struct {
+    double x0, y0, x1, y1;
+    double near;
+    bool vertex;
+} Extent;
+
+static Extent flats_extent(const Flat *fl, int nf)
 {
-    bool mesh = t->kind == KIND_MESH;
-    const double *e = mesh ? c->in : c->in + 9, *r = mesh ? c->in + 3 : c->in + 12;
-    char b1[40], b2[40];
-    double u[3], p[3], q[3];
-    if (plain_ray_figure(m, c, kind_nin(t->kind), r, u, "triangle", got))
-        return;
-    square_to(u, p, q);
-    int nf = mesh ? t->ntriangles : 1;
-    Flat *fl = calloc((size_t)nf + 1, sizeof *fl);
-    if (!fl)
-        return;
-    for (int k = 0; k < nf; k++) {
-        project(mesh ? t->triangles[k].v : c->in, e, r, p, q, &fl[k]);
-        fl[k].index = k;
-    }
-    /* the main window: every vertex and the ray's point */
-    double x0 = 0, x1 = 0, y0 = 0, y1 = 0, near = INFINITY;
-    bool vertex = false;
+    Extent x = { 0, 0, 0, 0, INFINITY, false };
     for (int k = 0; k < nf; k++)
         for (int v = 0; v < 3; v++) {
-            vertex = vertex || (fl[k].x[v] == 0 && fl[k].y[v] == 0);
-            x0 = fmin(x0, fl[k].x[v]), x1 = fmax(x1, fl[k].x[v]);
-            y0 = fmin(y0, fl[k].y[v]), y1 = fmax(y1, fl[k].y[v]);
-            near = fmin(near, seg_dist(fl[k].x[v], fl[k].y[v], fl[k].x[(v + 1) % 3], fl[k].y[(v + 1) % 3]));
+            x.vertex = x.vertex || (fl[k].x[v] == 0 && fl[k].y[v] == 0);
+            x.x0 = fmin(x.x0, fl[k].x[v]), x.x1 = fmax(x.x1, fl[k].x[v]);
+            x.y0 = fmin(x.y0, fl[k].y[v]), x.y1 = fmax(x.y1, fl[k].y[v]);
+            x.near = fmin(x.near, seg_dist(fl[k].x[v], fl[k].y[v], fl[k].x[(v + 1) % 3],
+                                           fl[k].y[(v + 1) % 3]));
         }
-    fig_begin(m, 760, 356, mesh ? "the mesh seen along the ray" : "the triangle seen along the ray");
-    svg_text(m, 10, 19, "start", 14, COL_TEXT, true, "%s seen along the ray: the ray is the point %s",
-             mesh ? "The mesh" : "The triangle", "in the middle of the cross");
-    FigView w[2];
-    fig_fit(&w[0], x0, y0, x1, y1, 0.12, 10, 30, 740, 240);
-    int nwin = 1;
-    if (near * w[0].s < 6) {
+    return x;
+}
+
+/* The figure's windows: w[0] the whole extent, and where the ray passes
+ * close to an edge, w[1] zoomed in on the ray beside it.  Returns how
+ * many (1 or 2). */
+static int fit_windows(FigView w[2], const Extent *x)
+{
+    fig_fit(&w[0], x->x0, x->y0, x->x1, x->y1, 0.12, 10, 30, 740, 240);
+    if (x->near * w[0].s < 6) {
         /* the ray passes close to an edge: look closer */
-        double h = near > 0 ? 8 * near : 0.02 * fmax(x1 - x0, y1 - y0);
+        double h = x->near > 0 ? 8 * x->near : 0.02 * fmax(x->x1 - x->x0, x->y1 - x->y0);
         FigView z;
         fig_fit(&z, -h, -h, h, h, 0, 500, 30, 250, 240);
         if (z.s > 4 * w[0].s) {
             w[1] = z;
-            nwin = 2;
-            fig_fit(&w[0], x0, y0, x1, y1, 0.12, 10, 30, 480, 240);
+            fig_fit(&w[0], x->x0, x->y0, x->x1, x->y1, 0.12, 10, 30, 480, 240);
+            return 2;
         }
     }
-    for (int k = 0; k < nwin; k++) {
-        const FigView *v = &w[k];
-        fig_window(m, v, k ? "#f8f5fd" : "#fbfbfb");
-        draw_flats(m, v, fl, nf, k == 0);
-        double ox = fig_px(v, 0), oy = fig_py(v, 0);
-        svg_line(m, ox - 9, oy, ox + 9, oy, "#222222", 1.2, NULL);
-        svg_line(m, ox, oy - 9, ox, oy + 9, "#222222", 1.2, NULL);
-        bool want_hit = c->want[0] != 0, got_hit = got && got[0] == 1;
-        if (want_hit)
-            svg_mark_want(m, ox - (got_hit ? 7 : 0), oy);
-        if (got_hit)
-            svg_mark_got(m, ox + (want_hit ? 7 : 0), oy);
-        fig_window_end(m);
-        svg_rect(m, v->px0, v->py0, v->pw, v->ph, "none", k ? "#7a4fbf" : "#bbbbbb", k ? 1.4 : 1);
-        if (k == 1) {
-            svg_text(m, v->px0 + 6, v->py0 + 16, "start", 12, "#7a4fbf", true, "zoomed in %s times on the ray",
-                     fig_times(b1, sizeof b1, v->s / w[0].s));
-            if (near > 0)
-                svg_text(m, v->px0 + 6, v->py0 + v->ph - 8, "start", 11, COL_NOTE, false,
-                         "the nearest edge is %s away", fig_num(b2, sizeof b2, near, 2));
-            else
-                svg_text(m, v->px0 + 6, v->py0 + v->ph - 8, "start", 11, COL_NOTE, false,
-                         "the ray passes exactly through %s", vertex ? "a vertex" : "an edge");
-        }
-    }
-    if (nwin == 2) {
-        double s = w[1].pw / w[1].s / 2;
-        svg_rect(m, fig_px(&w[0], -s) - 4, fig_py(&w[0], s) - 4, fmax(2 * s * w[0].s, 0) + 8,
-                 fmax(2 * s * w[0].s, 0) + 8, "none", "#7a4fbf", 1.4);
-    }
+    return 1;
+}
 
-    /* what the ray meets, by t */
-    double y = 290;
+/* Window k of w: the triangles, the ray's cross with the expected and the
+ * returned hit on it; the zoom (k = 1) says how far it zooms and how near
+ * the nearest edge is. */
+static void draw_window(Markup *m, const FigView *w, int k, const Flat *fl, int nf, const Extent *x,
+                        const Case *c, const double *got)
+{
+    char b1[40], b2[40];
+    const FigView *v = &w[k];
+    fig_window(m, v, k ? "#f8f5fd" : "#fbfbfb");
+    draw_flats(m, v, fl, nf, k == 0);
+    double ox = fig_px(v, 0), oy = fig_py(v, 0);
+    svg_line(m, ox - 9, oy, ox + 9, oy, "#222222", 1.2, NULL);
+    svg_line(m, ox, oy - 9, ox, oy + 9, "#222222", 1.2, NULL);
+    bool want_hit = c->want[0] != 0, got_hit = got && got[0] == 1;
+    if (want_hit)
+        svg_mark_want(m, ox - (got_hit ? 7 : 0), oy);
+    if (got_hit)
+        svg_mark_got(m, ox + (want_hit ? 7 : 0), oy);
+    fig_window_end(m);
+    svg_rect(m, v->px0, v->py0, v->pw, v->ph, "none", k ? "#7a4fbf" : "#bbbbbb", k ? 1.4 : 1);
+    if (k == 1) {
+        svg_text(m, v->px0 + 6, v->py0 + 16, "start", 12, "#7a4fbf", true, "zoomed in %s times on the ray",
+                 fig_times(b1, sizeof b1, v->s / w[0].s));
+        if (x->near > 0)
+            svg_text(m, v->px0 + 6, v->py0 + v->ph - 8, "start", 11, COL_NOTE, false,
+                     "the nearest edge is %s away", fig_num(b2, sizeof b2, x->near, 2));
+        else
+            svg_text(m, v->px0 + 6, v->py0 + v->ph - 8, "start", 11, COL_NOTE, false,
+                     "the ray passes exactly through %s", x->vertex ? "a vertex" : "an edge");
+    }
+}
+
+/* The two lines below the windows, at y: what the ray's line meets, by t,
+ * and (a single triangle) which side the ray comes from. */
+static void triangle_caption(Markup *m, double y, const Flat *fl, int nf, bool mesh)
+{
+    char b1[40];
     int ncross = 0;
     for (int k = 0; k < nf; k++)
         ncross += fl[k].crossed;
@@ -369,6 +372,39 @@ void fig_triangle(Markup *m, const Test *t, const Case *c, const double *got)
                  : turn < 0 ? "a, b, c run clockwise: the ray comes at the triangle from behind (det < 0)."
                  : "the triangle is edge on (det = 0).");
     }
+}
+
+void fig_triangle(Markup *m, const Test *t, const Case *c, const double *got)
+{
+    bool mesh = t->kind == KIND_MESH;
+    const double *e = mesh ? c->in : c->in + 9, *r = mesh ? c->in + 3 : c->in + 12;
+    double u[3], p[3], q[3];
+    if (plain_ray_figure(m, c, kind_nin(t->kind), r, u, "triangle", got))
+        return;
+    square_to(u, p, q);
+    int nf = mesh ? t->ntriangles : 1;
+    Flat *fl = calloc((size_t)nf + 1, sizeof *fl);
+    if (!fl)
+        return;
+    for (int k = 0; k < nf; k++) {
+        project(mesh ? t->triangles[k].v : c->in, e, r, p, q, &fl[k]);
+        fl[k].index = k;
+    }
+    Extent x = flats_extent(fl, nf);
+    fig_begin(m, 760, 356, mesh ? "the mesh seen along the ray" : "the triangle seen along the ray");
+    svg_text(m, 10, 19, "start", 14, COL_TEXT, true, "%s seen along the ray: the ray is the point %s",
+             mesh ? "The mesh" : "The triangle", "in the middle of the cross");
+    FigView w[2];
+    int nwin = fit_windows(w, &x);
+    for (int k = 0; k < nwin; k++)
+        draw_window(m, w, k, fl, nf, &x, c, got);
+    if (nwin == 2) {
+        /* the zoom's square on the whole */
+        double s = w[1].pw / w[1].s / 2;
+        svg_rect(m, fig_px(&w[0], -s) - 4, fig_py(&w[0], s) - 4, fmax(2 * s * w[0].s, 0) + 8,
+                 fmax(2 * s * w[0].s, 0) + 8, "none", "#7a4fbf", 1.4);
+    }
+    triangle_caption(m, 290, fl, nf, mesh);
     answer_legend(m, 340, c, got);
     fig_end(m);
     free(fl);

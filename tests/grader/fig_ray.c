@@ -190,10 +190,10 @@ static void draw_content(Markup *m, const FigView *v, const RayFig *f, double aw
         double da = f->line_B / n, db = -f->line_A / n, far = 4 * (right - left) + fabs(fa - v->cx)
                                                               + fabs(fb - v->cy);
         fig_segment(m, v, fa - far * da, fb - far * db, fa + far * da, fb + far * db, "#333333", 3, NULL);
-        double na = fa, nb = fb;
-        bool room = main && normal_anchor(v, f, fa, fb, da, db, fig_py(v, 0), &na, &nb);
+        double anchor_a = fa, anchor_b = fb;
+        bool room = main && normal_anchor(v, f, fa, fb, da, db, fig_py(v, 0), &anchor_a, &anchor_b);
         if (room || (main && fig_inside(v, fa, fb))) {
-            double px = fig_px(v, na), py = fig_py(v, nb), tx, ty, lx0, lx1, ly;
+            double px = fig_px(v, anchor_a), py = fig_py(v, anchor_b), tx, ty, lx0, lx1, ly;
             if (room)
                 normal_arrow(px, py, f->line_A / n, -f->line_B / n, NORMAL_LEN, &tx, &ty, &lx0, &lx1, &ly);
             else

@@ -60,9 +60,9 @@ static int by_t(const void *pa, const void *pb)
         return a->hit ? -1 : 1;
     if (!a->hit)
         return a->index - b->index;
-    double ka = a->t_far > 0 ? (a->t_near > 0 ? a->t_near : a->t_far) : INFINITY;
-    double kb = b->t_far > 0 ? (b->t_near > 0 ? b->t_near : b->t_far) : INFINITY;
-    return ka < kb ? -1 : ka > kb ? 1 : a->index - b->index;
+    double meet_a = a->t_far > 0 ? (a->t_near > 0 ? a->t_near : a->t_far) : INFINITY;
+    double meet_b = b->t_far > 0 ? (b->t_near > 0 ? b->t_near : b->t_far) : INFINITY;
+    return meet_a < meet_b ? -1 : meet_a > meet_b ? 1 : a->index - b->index;
 }
 
 /* Both roots of the ray's line and each sphere, in double (display only). */

@@ -213,6 +213,72 @@ static void run_test(const GradeOptions *opt, const Build *b, const Test *t, con
     sandbox_result_free(&res);
 }
 
+/* The input of Part part's tests run together: each test's input, one
+ * after the other, *len bytes; *ntests tests, whose answers take at most
+ * *answer_max bytes.  NULL out of memory (or with no test). */
+static char *batch_input(const TestList *tests, int part, size_t *len, size_t *answer_max, int *ntests)
+{
+    size_t cap = 0;
+    char *input = NULL;
+    for (int k = 0; k < tests->n; k++) {
+        const Test *t = &tests->tests[k];
+        if (t->part != part)
+            continue;
+        size_t n = 0;
+        char *one = test_input(t, false, &n);
+        if (!one || *len + n + 1 > cap) {
+            size_t ncap = 2 * (*len + n + 1) + 4096;
+            char *grown = one ? realloc(input, ncap) : NULL;
+            if (!grown) {
+                free(one);
+                free(input);
+                return NULL;
+            }
+            input = grown;
+            cap = ncap;
+        }
+        memcpy(input + *len, one, n);
+        *len += n;
+        free(one);
+        *answer_max += 512 + (size_t)t->ncases * 160;
+        (*ntests)++;
+    }
+    return input;
+}
+
+/* Of Part part's tests run together, whose answers are from[j] (size[j]
+ * bytes) for its j-th test, those that passed: their results (each taking
+ * seconds), marked done.  How many. */
+static int take_passes(const TestList *tests, int part, const char *const *from, const size_t *size,
+                       double seconds, TestResult *results, bool *done)
+{
+    int j = 0, passed = 0;
+    for (int k = 0; k < tests->n; k++) {
+        const Test *t = &tests->tests[k];
+        if (t->part != part)
+            continue;
+        char *verdict = NULL;
+        Answers a;
+        memset(&a, 0, sizeof a);
+        bool ok = check_answers(t, from[j], size[j], &verdict, &a);
+        free(verdict);
+        j++;
+        if (!ok) {
+            answers_free(&a);
+            continue;
+        }
+        TestResult *r = &results[k];
+        r->answers = a;
+        r->ran = r->passed = true;
+        r->score = r->max_score;
+        r->seconds = seconds;
+        r->output = xasprintf("%s", "");
+        done[k] = true;
+        passed++;
+    }
+    return passed;
+}
+
 /* The shortcut: every test of the part in one child.  A test passes here
  * only if the child ran all of them to their end ("end N" after each) and
  * exited cleanly, within one test's time and memory; then each test's
@@ -224,33 +290,10 @@ static void run_test(const GradeOptions *opt, const Build *b, const Test *t, con
 static void run_batch(const GradeOptions *opt, Build *b, const TestList *tests, int part,
                       TestResult *results, bool *done, double *spent)
 {
-    size_t len = 0, cap = 0, answer_max = 0;
-    char *input = NULL;
+    size_t len = 0, answer_max = 0;
     int ntests = 0;
-    for (int k = 0; k < tests->n; k++) {
-        const Test *t = &tests->tests[k];
-        if (t->part != part)
-            continue;
-        size_t n = 0;
-        char *one = test_input(t, false, &n);
-        if (!one || len + n + 1 > cap) {
-            size_t ncap = 2 * (len + n + 1) + 4096;
-            char *grown = one ? realloc(input, ncap) : NULL;
-            if (!grown) {
-                free(one);
-                free(input);
-                return;
-            }
-            input = grown;
-            cap = ncap;
-        }
-        memcpy(input + len, one, n);
-        len += n;
-        free(one);
-        answer_max += 512 + (size_t)t->ncases * 160;
-        ntests++;
-    }
-    if (ntests < 2) {
+    char *input = batch_input(tests, part, &len, &answer_max, &ntests);
+    if (!input || ntests < 2) {
         free(input);
         return;
     }
@@ -290,30 +333,7 @@ static void run_batch(const GradeOptions *opt, Build *b, const TestList *tests, 
         sandbox_result_free(&res);
         return;
     }
-    int j = 0, passed = 0;
-    for (int k = 0; k < tests->n; k++) {
-        const Test *t = &tests->tests[k];
-        if (t->part != part)
-            continue;
-        char *verdict = NULL;
-        Answers a;
-        memset(&a, 0, sizeof a);
-        bool ok = check_answers(t, from[j], size[j], &verdict, &a);
-        free(verdict);
-        j++;
-        if (!ok) {
-            answers_free(&a);
-            continue;
-        }
-        TestResult *r = &results[k];
-        r->answers = a;
-        r->ran = r->passed = true;
-        r->score = r->max_score;
-        r->seconds = res.seconds / ntests;
-        r->output = xasprintf("%s", "");
-        done[k] = true;
-        passed++;
-    }
+    int passed = take_passes(tests, part, from, size, res.seconds / ntests, results, done);
     if (opt->verbose)
         fprintf(stderr, "  Part %s: the %d tests together: %d passed; %d run alone\n", part_label(part),
                 ntests, passed, ntests - passed);

@@ -245,6 +245,44 @@ static void say_cost(const Grade *g)
            jail_namespaces() ? "counted in the runs above" : "none: the fallback");
 }
 
+/* How the submission's builds go: in root, with the compiler cc, the
+ * harness and reference objects where the Makefile built them (their
+ * folder written to objdir, size bytes). */
+static BuildConfig build_config(const char *root, const char *cc, char *objdir, size_t size)
+{
+    char ref[PATH_MAX + 64];
+#ifndef GRADER_BUILD
+#define GRADER_BUILD "out/build"
+#endif
+    if (GRADER_BUILD[0] == '/')
+        snprintf(objdir, size, "%s/grader", GRADER_BUILD);
+    else
+        snprintf(objdir, size, "%s/%s/grader", root, GRADER_BUILD);
+    snprintf(ref, sizeof ref, "%s/ref_part1_image_plane.o", objdir);
+    /* The prebuilt runners (Linux), unless GRADE_NO_LOAD is set (the kit's
+     * own tests grade both ways and compare). */
+    char runner[PATH_MAX + 64];
+    snprintf(runner, sizeof runner, "%s/runner_part1", objdir);
+    const char *no_load = getenv("GRADE_NO_LOAD");
+    BuildConfig bc = { .root = root, .cc = cc, .objdir = objdir, .reference = access(ref, R_OK) == 0,
+                       .load = access(runner, X_OK) == 0 && !(no_load && *no_load),
+                       .memo = memo_dir && sandbox_drops_privileges() ? memo_dir : NULL };
+    return bc;
+}
+
+/* The line grade --summary ends with, for grade --all: every part's core
+ * points, the hard cases' points, the total and the exit status. */
+static void print_summary(const Grade *g, int status)
+{
+    printf("summary");
+    for (int p = 0; p < NPARTS; p++)
+        printf(" %.6g", g->core[p]);
+    double hard = 0;
+    for (int p = 0; p < NPARTS; p++)
+        hard += g->hard[p];
+    printf(" %.6g %.6g %d\n", hard, g->total + g->bonus, status);
+}
+
 static int grade_one(const char *submission, const char *part, const char *results,
                      const char *weights, const char *page, bool quiet, bool summary)
 {
@@ -271,24 +309,8 @@ static int grade_one(const char *submission, const char *part, const char *resul
         return fail(results, "no C compiler: %s is not on PATH", cc);
     if (!strchr(cc, '/'))
         cc = ccpath;
-    char objdir[PATH_MAX + 32], ref[PATH_MAX + 64];
-    /* The harness and reference objects, where the Makefile built them. */
-#ifndef GRADER_BUILD
-#define GRADER_BUILD "out/build"
-#endif
-    if (GRADER_BUILD[0] == '/')
-        snprintf(objdir, sizeof objdir, "%s/grader", GRADER_BUILD);
-    else
-        snprintf(objdir, sizeof objdir, "%s/%s/grader", root, GRADER_BUILD);
-    snprintf(ref, sizeof ref, "%s/ref_part1_image_plane.o", objdir);
-    /* The prebuilt runners (Linux), unless GRADE_NO_LOAD is set (the kit's
-     * own tests grade both ways and compare). */
-    char runner[PATH_MAX + 64];
-    snprintf(runner, sizeof runner, "%s/runner_part1", objdir);
-    const char *no_load = getenv("GRADE_NO_LOAD");
-    BuildConfig bc = { .root = root, .cc = cc, .objdir = objdir, .reference = access(ref, R_OK) == 0,
-                       .load = access(runner, X_OK) == 0 && !(no_load && *no_load),
-                       .memo = memo_dir && sandbox_drops_privileges() ? memo_dir : NULL };
+    char objdir[PATH_MAX + 32];
+    BuildConfig bc = build_config(root, cc, objdir, sizeof objdir);
 
     GradeOptions opt = { .submission = submission, .cfg = &cfg, .build = &bc, .verbose = verbose };
     /* The page's render reuses the objects the graded builds compiled. */
@@ -329,15 +351,8 @@ static int grade_one(const char *submission, const char *part, const char *resul
         fprintf(stderr, "grade: %s\n", err);          /* the class page lacks it; nothing else */
     if (kept[0])
         build_rmtree(kept);
-    if (summary) {                  /* every part's core points, for grade --all */
-        printf("summary");
-        for (int p = 0; p < NPARTS; p++)
-            printf(" %.6g", g.core[p]);
-        double hard = 0;
-        for (int p = 0; p < NPARTS; p++)
-            hard += g.hard[p];
-        printf(" %.6g %.6g %d\n", hard, g.total + g.bonus, status);
-    }
+    if (summary)
+        print_summary(&g, status);
     fflush(stdout);
     grade_free(&g);
     testlist_free(&tests);

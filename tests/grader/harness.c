@@ -156,140 +156,173 @@ static int get(double *v, int n)
     return 0;
 }
 
-/* One test: its KIND and N are read; reads the rest, writes its answers.
- * 0 on success, 3 on malformed input. */
-static int one_test(const char *kind, int n)
-{
-    (void)kind;                         /* Parts 3b and 5 read it */
-
 #if HARNESS_PART == 4
-    static Scene scene;
+static Scene scene;                     /* a color or image test's */
+
+/* Reads the scene of a color or image test (KIND) into scene, in place of
+ * the previous test's; a camera test has none.  0, or 3 on malformed
+ * input. */
+static int read_scene(const char *kind)
+{
     free(scene.spheres);                /* the previous test's */
     scene.spheres = NULL;
     scene.nspheres = 0;
-    if (strcmp(kind, "color") == 0 || strcmp(kind, "image") == 0) {
-        double bg[3];
-        int m;
-        if (word("background") || get(bg, 3) || word("spheres") || get_int(&m) || m < 0)
+    if (strcmp(kind, "color") != 0 && strcmp(kind, "image") != 0)
+        return 0;
+    double bg[3];
+    int m;
+    if (word("background") || get(bg, 3) || word("spheres") || get_int(&m) || m < 0)
+        return 3;
+    scene.background = vec3(bg[0], bg[1], bg[2]);
+    scene.spheres = calloc((size_t)m + 1, sizeof *scene.spheres);
+    if (!scene.spheres)
+        return 3;
+    scene.nspheres = m;
+    scene.spheres[m] = scene_guard_sphere();     /* past the last: scene.h */
+    for (int s = 0; s < m; s++) {
+        double v[7];
+        if (get(v, 7))
             return 3;
-        scene.background = vec3(bg[0], bg[1], bg[2]);
-        scene.spheres = calloc((size_t)m + 1, sizeof *scene.spheres);
-        if (!scene.spheres)
-            return 3;
-        scene.nspheres = m;
-        scene.spheres[m] = scene_guard_sphere();     /* past the last: scene.h */
-        for (int s = 0; s < m; s++) {
-            double v[7];
-            if (get(v, 7))
-                return 3;
-            scene.spheres[s].center = vec3(v[0], v[1], v[2]);
-            scene.spheres[s].radius = v[3];
-            scene.spheres[s].color = vec3(v[4], v[5], v[6]);
-        }
+        scene.spheres[s].center = vec3(v[0], v[1], v[2]);
+        scene.spheres[s].radius = v[3];
+        scene.spheres[s].color = vec3(v[4], v[5], v[6]);
     }
+    return 0;
+}
 #endif
+
 #if HARNESS_PART == 6
-    static Triangle *mesh;
-    int nmesh = 0;
+static Triangle *mesh;                  /* a mesh test's, or NULL */
+static int nmesh;
+
+/* Reads the triangles of a mesh test (KIND) into mesh, in place of the
+ * previous test's; a triangle test has none.  0, or 3 on malformed input. */
+static int read_mesh(const char *kind)
+{
+    nmesh = 0;
     free(mesh);                         /* the previous test's */
     mesh = NULL;
-    if (strcmp(kind, "mesh") == 0) {
-        if (word("triangles") || get_int(&nmesh) || nmesh < 0)
+    if (strcmp(kind, "mesh") != 0)
+        return 0;
+    if (word("triangles") || get_int(&nmesh) || nmesh < 0)
+        return 3;
+    mesh = calloc((size_t)nmesh + 1, sizeof *mesh);
+    for (int k = 0; k < nmesh; k++) {
+        double v[9];
+        if (!mesh || get(v, 9))
             return 3;
-        mesh = calloc((size_t)nmesh + 1, sizeof *mesh);
-        for (int k = 0; k < nmesh; k++) {
-            double v[9];
-            if (!mesh || get(v, 9))
-                return 3;
-            mesh[k].a = vec3(v[0], v[1], v[2]);
-            mesh[k].b = vec3(v[3], v[4], v[5]);
-            mesh[k].c = vec3(v[6], v[7], v[8]);
-            mesh[k].color = vec3(1, 1, 1);
-        }
+        mesh[k].a = vec3(v[0], v[1], v[2]);
+        mesh[k].b = vec3(v[3], v[4], v[5]);
+        mesh[k].c = vec3(v[6], v[7], v[8]);
+        mesh[k].color = vec3(1, 1, 1);
     }
+    return 0;
+}
 #endif
-    for (int c = 0; c < n; c++) {
-        double in[15];
+
+/* One case of a KIND test: reads its inputs, calls the part's function,
+ * writes its answer.  0, or 3 on malformed input. */
+static int one_case(const char *kind)
+{
+    (void)kind;                         /* Part 3b reads it */
+    double in[15];
 #if HARNESS_PART == 1
+    if (get(in, 3))
+        return 3;
+    double out[2];
+    image_plane_size(in[0], in[1], in[2], &out[0], &out[1]);
+    put(out, 2);
+#elif HARNESS_PART == 2
+    if (get(in, 7))
+        return 3;
+    Vec3 p = pixel_coordinates((int)in[0], (int)in[1], (int)in[2], (int)in[3], in[4], in[5], in[6]);
+    double out[3] = { p.x, p.y, p.z };
+    put(out, 3);
+#elif HARNESS_PART == 3
+    if (get(in, 10))
+        return 3;
+    Sphere s = { vec3(in[0], in[1], in[2]), in[3], vec3(1, 1, 1) };
+    Ray r = { vec3(in[4], in[5], in[6]), vec3(in[7], in[8], in[9]) };
+    double t = 0;
+    bool hit = sphere_intersect(&s, &r, &t);
+    put_hit(hit, t);
+#elif HARNESS_PART == 4
+    double out[6];
+    if (strcmp(kind, "camera") == 0) {
+        if (get(in, 6))
+            return 3;
+        Ray r = camera_ray(vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]));
+        out[0] = r.origin.x, out[1] = r.origin.y, out[2] = r.origin.z;
+        out[3] = r.direction.x, out[4] = r.direction.y, out[5] = r.direction.z;
+        put(out, 6);
+    } else if (strcmp(kind, "color") == 0) {
+        if (get(in, 6))
+            return 3;
+        Ray r = { vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]) };
+        Vec3 col = ray_color(&scene, &r);
+        out[0] = col.x, out[1] = col.y, out[2] = col.z;
+        put(out, 3);
+    } else {
         if (get(in, 3))
             return 3;
-        double out[2];
-        image_plane_size(in[0], in[1], in[2], &out[0], &out[1]);
-        put(out, 2);
-#elif HARNESS_PART == 2
-        if (get(in, 7))
-            return 3;
-        Vec3 p = pixel_coordinates((int)in[0], (int)in[1], (int)in[2], (int)in[3], in[4], in[5], in[6]);
-        double out[3] = { p.x, p.y, p.z };
+        Ray r = camera_ray(vec3(0, 0, 0), vec3(in[0], in[1], in[2]));
+        Vec3 col = ray_color(&scene, &r);
+        out[0] = col.x, out[1] = col.y, out[2] = col.z;
         put(out, 3);
-#elif HARNESS_PART == 3
-        if (get(in, 10))
-            return 3;
-        Sphere s = { vec3(in[0], in[1], in[2]), in[3], vec3(1, 1, 1) };
-        Ray r = { vec3(in[4], in[5], in[6]), vec3(in[7], in[8], in[9]) };
-        double t = 0;
-        bool hit = sphere_intersect(&s, &r, &t);
-        put_hit(hit, t);
-#elif HARNESS_PART == 4
-        double out[6];
-        if (strcmp(kind, "camera") == 0) {
-            if (get(in, 6))
-                return 3;
-            Ray r = camera_ray(vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]));
-            out[0] = r.origin.x, out[1] = r.origin.y, out[2] = r.origin.z;
-            out[3] = r.direction.x, out[4] = r.direction.y, out[5] = r.direction.z;
-            put(out, 6);
-        } else if (strcmp(kind, "color") == 0) {
-            if (get(in, 6))
-                return 3;
-            Ray r = { vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]) };
-            Vec3 col = ray_color(&scene, &r);
-            out[0] = col.x, out[1] = col.y, out[2] = col.z;
-            put(out, 3);
-        } else {
-            if (get(in, 3))
-                return 3;
-            Ray r = camera_ray(vec3(0, 0, 0), vec3(in[0], in[1], in[2]));
-            Vec3 col = ray_color(&scene, &r);
-            out[0] = col.x, out[1] = col.y, out[2] = col.z;
-            put(out, 3);
-        }
+    }
 #elif HARNESS_PART == 5
-        if (get(in, 12))
-            return 3;
-        Plane pl = { vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]), vec3(1, 1, 1) };
-        Ray r = { vec3(in[6], in[7], in[8]), vec3(in[9], in[10], in[11]) };
-        double t = 0;
-        bool hit = plane_intersect(&pl, &r, &t);
-        put_hit(hit, t);
+    if (get(in, 12))
+        return 3;
+    Plane pl = { vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]), vec3(1, 1, 1) };
+    Ray r = { vec3(in[6], in[7], in[8]), vec3(in[9], in[10], in[11]) };
+    double t = 0;
+    bool hit = plane_intersect(&pl, &r, &t);
+    put_hit(hit, t);
 #elif HARNESS_PART == 6
-        bool hit = false;
-        double t = 0;
-        if (mesh) {
-            /* The first hit over the mesh, as a renderer finds it. */
-            if (get(in, 6))
-                return 3;
-            Ray r = { vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]) };
-            for (int k = 0; k < nmesh; k++) {
-                double tk = 0;
-                if (triangle_intersect(&mesh[k], &r, &tk) && (!hit || tk < t)) {
-                    hit = true;
-                    t = tk;
-                }
+    bool hit = false;
+    double t = 0;
+    if (mesh) {
+        /* The first hit over the mesh, as a renderer finds it. */
+        if (get(in, 6))
+            return 3;
+        Ray r = { vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]) };
+        for (int k = 0; k < nmesh; k++) {
+            double tk = 0;
+            if (triangle_intersect(&mesh[k], &r, &tk) && (!hit || tk < t)) {
+                hit = true;
+                t = tk;
             }
-        } else {
-            if (get(in, 15))
-                return 3;
-            Triangle tr = { vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]),
-                            vec3(in[6], in[7], in[8]), vec3(1, 1, 1) };
-            Ray r = { vec3(in[9], in[10], in[11]), vec3(in[12], in[13], in[14]) };
-            hit = triangle_intersect(&tr, &r, &t);
         }
-        put_hit(hit, t);
+    } else {
+        if (get(in, 15))
+            return 3;
+        Triangle tr = { vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]),
+                        vec3(in[6], in[7], in[8]), vec3(1, 1, 1) };
+        Ray r = { vec3(in[9], in[10], in[11]), vec3(in[12], in[13], in[14]) };
+        hit = triangle_intersect(&tr, &r, &t);
+    }
+    put_hit(hit, t);
 #else
 #error "HARNESS_PART must be 1, 2, 3 (Part 3a), 4 (Part 3b), 5 (Part 4) or 6 (Part 5)"
 #endif
-    }
+    return 0;
+}
+
+/* One test: its KIND and N are read; reads the rest (Parts 3b and 5: a
+ * scene or a mesh, then) N cases, writes their answers and "end N".
+ * 0 on success, 3 on malformed input. */
+static int one_test(const char *kind, int n)
+{
+#if HARNESS_PART == 4
+    if (read_scene(kind) != 0)
+        return 3;
+#elif HARNESS_PART == 6
+    if (read_mesh(kind) != 0)
+        return 3;
+#endif
+    for (int c = 0; c < n; c++)
+        if (one_case(kind) != 0)
+            return 3;
     fprintf(answers, "end %d\n", n);
     return 0;
 }

@@ -124,11 +124,11 @@ int main(int argc, char **argv)
     for (int k = 0; k < nfiles; k++)
         texts[k] = kit_load_file(argv[k + 2], BUILD_SOURCE_MAX, &n);
     char names[MAX_NAMES][LINKMSG_NAME_MAX];
-    int nd = linkmsg_duplicate(log, names, MAX_NAMES);
-    for (int k = 0; k < nd; k++)
+    int nduplicate = linkmsg_duplicate(log, names, MAX_NAMES);
+    for (int k = 0; k < nduplicate; k++)
         explain_duplicate(texts, argv + 2, nfiles, names[k]);
-    int nu = linkmsg_undefined(log, names, MAX_NAMES);
-    for (int k = 0; k < nu; k++)
+    int nundefined = linkmsg_undefined(log, names, MAX_NAMES);
+    for (int k = 0; k < nundefined; k++)
         explain_undefined(texts, argv + 2, nfiles, names[k]);
     for (int k = 0; k < nfiles; k++)
         free(texts[k]);

@@ -172,26 +172,26 @@ static int by_answer(const void *a, const void *b)
 }
 
 /* Row's distinct wrong answers and the most common one (of two as common,
- * the one given first in the gradebook's order), from its n answers w. */
-static void common_answer(ClassTestRow *row, Wrong *w, int n)
+ * the one given first in the gradebook's order), from its n answers wrong. */
+static void common_answer(ClassTestRow *row, Wrong *wrong, int n)
 {
-    qsort(w, (size_t)n, sizeof *w, by_answer);
+    qsort(wrong, (size_t)n, sizeof *wrong, by_answer);
     int best = 0, most = 0;
     for (int i = 0, j; i < n; i = j) {
-        for (j = i + 1; j < n && answer_order(w[i].f, w[j].f) == 0; j++)
+        for (j = i + 1; j < n && answer_order(wrong[i].f, wrong[j].f) == 0; j++)
             ;
         row->answers++;
-        if (j - i > most || (j - i == most && w[i].sub < w[best].sub)) {
+        if (j - i > most || (j - i == most && wrong[i].sub < wrong[best].sub)) {
             most = j - i;
             best = i;
         }
     }
     if (most == 0 || !(row->common_subs = malloc((size_t)most * sizeof *row->common_subs)))
         return;
-    row->common = w[best].f;
+    row->common = wrong[best].f;
     row->ncommon = most;
     for (int k = 0; k < most; k++)
-        row->common_subs[k] = w[best + k].sub;
+        row->common_subs[k] = wrong[best + k].sub;
 }
 
 static double fail_rate(const ClassTestRow *r)
@@ -217,10 +217,10 @@ static void count_tests(ClassView *v)
     const ClassRun *run = v->run;
     int n = v->tests->n, built[NPARTS] = { 0 };
     ClassTestRow *rows = calloc((size_t)n, sizeof *rows);
-    Wrong *w = malloc(((size_t)run->n + 1) * sizeof *w);
-    if (!rows || !w) {
+    Wrong *wrong = malloc(((size_t)run->n + 1) * sizeof *wrong);
+    if (!rows || !wrong) {
         free(rows);
-        free(w);
+        free(wrong);
         return;
     }
     for (int s = 0; s < run->n; s++)
@@ -241,17 +241,17 @@ static void count_tests(ClassView *v)
     while (keep < n && keep < CLASS_MAX_TESTS && rows[keep].failed > 0)
         keep++;
     for (int r = 0; r < keep; r++) {
-        int nw = 0;
+        int nwrong = 0;
         for (int s = 0; s < run->n; s++)
             for (int i = 0; i < run->subs[s].nfails; i++) {
                 const ClassFail *f = &run->subs[s].fails[i];
                 if (f->test == rows[r].test && f->c >= 0 && f->nout > 0 &&
                     run->subs[s].part[v->tests->tests[f->test].part].built)
-                    w[nw++] = (Wrong){ s, f };
+                    wrong[nwrong++] = (Wrong){ s, f };
             }
-        common_answer(&rows[r], w, nw);
+        common_answer(&rows[r], wrong, nwrong);
     }
-    free(w);
+    free(wrong);
     v->worst = rows;
     v->nworst = keep;
 }

@@ -267,6 +267,87 @@ static void ordinary(uint64_t *s, double S, bool inside_ok, Vec3 *e, Vec3 *c, do
     *c = centre_at(s, *e, *R * (inside ? draw_uni(s, 0, 0.9) : draw_uni(s, 1.2, 5)));
 }
 
+/* Part 3a's families 8 to 15: an origin just above (8 to 12) or just
+ * inside (13 to 15) a huge sphere, h/R from 1e-1 to 1e-9 off its surface. */
+static void near_huge(uint64_t *s, int fam, bool want_hit, Vec3 *eye, Vec3 *centre, Vec3 *dir, double *radius)
+{
+    Vec3 e, c, r;
+    double R;
+    static const double hr[16] = { [8] = 1e-1, 1e-3, 1e-5, 1e-7, 1e-9, 1e-3, 1e-6, 1e-9 };
+    bool above = fam <= 12;
+    R = draw_log(s, 1e2, 1e6);
+    c = draw_point(s, 10 * R);
+    Vec3 n = draw_unit(s);
+    double h = R * hr[fam] * draw_uni(s, 1, 2);
+    e = vec3_add(c, vec3_scale(n, above ? R + h : R - h));
+    Vec3 w = draw_perp(s, n);
+    if (!above) {                   /* inside: always a hit, out or in */
+        double sgn = want_hit ? 1 : -1;
+        r = vec3_add(vec3_scale(n, sgn), vec3_scale(w, draw_uni(s, 0, 3)));
+    } else if (want_hit) {          /* downwards, up to 63 degrees off */
+        r = vec3_add(vec3_scale(n, -1), vec3_scale(w, draw_uni(s, 0, 2)));
+    } else if (hard_rng_next(s) % 2) {  /* upwards */
+        r = vec3_add(n, vec3_scale(w, draw_uni(s, 0, 3)));
+    } else {                        /* horizontal or just above */
+        r = vec3_add(w, vec3_scale(n, draw_uni(s, 0, 0.5)));
+    }
+    r = vec3_scale(r, draw_len(s));
+    *eye = e, *centre = c, *dir = r, *radius = R;
+}
+
+/* Part 3a's family 16: a ray tangent to the sphere, then one of r's
+ * components, R or the centre's x moved 1 or 2 ulps up (want_hit) or
+ * down; the oracle says which answer that makes. */
+static void tangent_ulp(uint64_t *s, bool want_hit, Vec3 *eye, Vec3 *centre, Vec3 *dir, double *radius)
+{
+    Vec3 e, c, r;
+    double R;
+    e = draw_point(s, 1);
+    r = vec3_scale(draw_unit(s), draw_len(s));
+    R = draw_log(s, 0.01, 100);
+    double t0 = R * draw_uni(s, 1, 1000) / vec3_length(r);
+    c = vec3_add(vec3_add(e, vec3_scale(r, t0)), vec3_scale(draw_perp(s, r), R));
+    double *target[5] = { &r.x, &r.y, &r.z, &R, &c.x };
+    double *x = target[draw_int(s, 0, 4)];
+    int steps = draw_int(s, 1, 2);
+    for (int k = 0; k < steps; k++)
+        *x = nextafter(*x, want_hit ? INFINITY : -INFINITY);
+    *eye = e, *centre = c, *dir = r, *radius = R;
+}
+
+/* Part 3a's families 20 to 23: exact dyadic lattice spheres, the origin
+ * inside (20), on the surface (21), outside (22), or a tangent ray (23). */
+static void dyadic(uint64_t *s, int fam, bool want_hit, Vec3 *eye, Vec3 *centre, Vec3 *dir, double *radius)
+{
+    Vec3 e, c, r;
+    double R;
+    Lattice L = lattice(s, fam == 23);
+    c = L.c;
+    R = L.R;
+    Vec3 chord = vec3_sub(L.p2, L.p1);                  /* exact */
+    double rs = ldexp(1, draw_int(s, -10, 10));
+    if (fam == 20) {                /* inside: exit at p2 (or p1) */
+        double lambda = draw_int(s, 1, 15) / 16.0;
+        e = vec3_add(c, vec3_add(L.p1, vec3_scale(chord, lambda)));
+        r = vec3_scale(chord, want_hit ? rs : -rs);
+    } else if (fam == 21) {         /* on the surface: in (hit) or out */
+        e = vec3_add(c, L.p1);
+        r = vec3_scale(chord, want_hit ? rs : -rs);
+    } else if (fam == 22) {         /* outside: towards it or away */
+        double mu = draw_int(s, 1, 40) / 8.0;
+        e = vec3_add(c, vec3_sub(L.p1, vec3_scale(chord, mu)));
+        r = vec3_scale(chord, want_hit ? rs : -rs);
+    } else {                        /* tangent at p1: along p1 x p2 */
+        Vec3 w = vec3_scale(vec3_cross(L.p1, L.p2), 1 / L.scale);   /* exact */
+        double mu = draw_int(s, 1, 40) / 8.0;
+        e = vec3_add(c, vec3_sub(L.p1, vec3_scale(w, mu)));
+        r = vec3_scale(w, rs);
+        if (hard_rng_next(s) % 2)
+            R = nextafter(R, want_hit ? INFINITY : 0);
+    }
+    *eye = e, *centre = c, *dir = r, *radius = R;
+}
+
 static void gen3a(uint64_t *s, int fam, bool want_hit, Sphere *sp, Ray *ray)
 {
     Vec3 e = vec3(0, 0, 0), c = vec3(0, 0, 0), r = vec3(0, 0, -1);
@@ -282,36 +363,9 @@ static void gen3a(uint64_t *s, int fam, bool want_hit, Sphere *sp, Ray *ray)
         c = centre_at(s, e, R * ratio[fam] * draw_uni(s, 1, 2));
         r = draw_aim(s, e, c, R, rho, draw_len(s));
     } else if (fam <= 15) {                                 /* near a huge sphere */
-        static const double hr[16] = { [8] = 1e-1, 1e-3, 1e-5, 1e-7, 1e-9, 1e-3, 1e-6, 1e-9 };
-        bool above = fam <= 12;
-        R = draw_log(s, 1e2, 1e6);
-        c = draw_point(s, 10 * R);
-        Vec3 n = draw_unit(s);
-        double h = R * hr[fam] * draw_uni(s, 1, 2);
-        e = vec3_add(c, vec3_scale(n, above ? R + h : R - h));
-        Vec3 w = draw_perp(s, n);
-        if (!above) {                   /* inside: always a hit, out or in */
-            double sgn = want_hit ? 1 : -1;
-            r = vec3_add(vec3_scale(n, sgn), vec3_scale(w, draw_uni(s, 0, 3)));
-        } else if (want_hit) {          /* downwards, up to 63 degrees off */
-            r = vec3_add(vec3_scale(n, -1), vec3_scale(w, draw_uni(s, 0, 2)));
-        } else if (hard_rng_next(s) % 2) {  /* upwards */
-            r = vec3_add(n, vec3_scale(w, draw_uni(s, 0, 3)));
-        } else {                        /* horizontal or just above */
-            r = vec3_add(w, vec3_scale(n, draw_uni(s, 0, 0.5)));
-        }
-        r = vec3_scale(r, draw_len(s));
+        near_huge(s, fam, want_hit, &e, &c, &r, &R);
     } else if (fam == 16) {                                 /* tangent +- 1 ulp */
-        e = draw_point(s, 1);
-        r = vec3_scale(draw_unit(s), draw_len(s));
-        R = draw_log(s, 0.01, 100);
-        double t0 = R * draw_uni(s, 1, 1000) / vec3_length(r);
-        c = vec3_add(vec3_add(e, vec3_scale(r, t0)), vec3_scale(draw_perp(s, r), R));
-        double *target[5] = { &r.x, &r.y, &r.z, &R, &c.x };
-        double *x = target[draw_int(s, 0, 4)];
-        int steps = draw_int(s, 1, 2);
-        for (int k = 0; k < steps; k++)
-            *x = nextafter(*x, want_hit ? INFINITY : -INFINITY);
+        tangent_ulp(s, want_hit, &e, &c, &r, &R);
     } else if (fam == 17) {                                 /* grazing, clear gap */
         r = vec3_scale(draw_unit(s), draw_len(s));
         R = draw_log(s, 0.01, 100);
@@ -323,30 +377,7 @@ static void gen3a(uint64_t *s, int fam, bool want_hit, Sphere *sp, Ray *ray)
         int k = fam == 18 ? draw_int(s, -498, -167) : draw_int(s, 166, 497);
         r = draw_aim(s, e, c, R, rho, ldexp(1 + hard_rng_uniform(s), k));
     } else if (fam <= 23) {                                 /* exact dyadic */
-        Lattice L = lattice(s, fam == 23);
-        c = L.c;
-        R = L.R;
-        Vec3 chord = vec3_sub(L.p2, L.p1);                  /* exact */
-        double rs = ldexp(1, draw_int(s, -10, 10));
-        if (fam == 20) {                /* inside: exit at p2 (or p1) */
-            double lambda = draw_int(s, 1, 15) / 16.0;
-            e = vec3_add(c, vec3_add(L.p1, vec3_scale(chord, lambda)));
-            r = vec3_scale(chord, want_hit ? rs : -rs);
-        } else if (fam == 21) {         /* on the surface: in (hit) or out */
-            e = vec3_add(c, L.p1);
-            r = vec3_scale(chord, want_hit ? rs : -rs);
-        } else if (fam == 22) {         /* outside: towards it or away */
-            double mu = draw_int(s, 1, 40) / 8.0;
-            e = vec3_add(c, vec3_sub(L.p1, vec3_scale(chord, mu)));
-            r = vec3_scale(chord, want_hit ? rs : -rs);
-        } else {                        /* tangent at p1: along p1 x p2 */
-            Vec3 w = vec3_scale(vec3_cross(L.p1, L.p2), 1 / L.scale);   /* exact */
-            double mu = draw_int(s, 1, 40) / 8.0;
-            e = vec3_add(c, vec3_sub(L.p1, vec3_scale(w, mu)));
-            r = vec3_scale(w, rs);
-            if (hard_rng_next(s) % 2)
-                R = nextafter(R, want_hit ? INFINITY : 0);
-        }
+        dyadic(s, fam, want_hit, &e, &c, &r, &R);
     } else if (fam == 24) {                                 /* behind the eye */
         ordinary(s, 1, false, &e, &c, &R);
         r = draw_aim(s, e, c, R, draw_uni(s, 0, 0.95), draw_len(s));

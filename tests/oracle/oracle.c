@@ -216,14 +216,11 @@ typedef struct {
     int scale;
 } SphereSolution;
 
-static void solve_sphere(const Sphere *sp, const Ray *ray, SphereSolution *S)
+/* What a sphere's and a ray's numbers alone decide (pos: the origin, the
+ * centre and |R|; dir: the direction): -1 a miss, 1 either answer, 0
+ * neither (solve it). */
+static int input_verdict(const double pos[7], const double dir[3])
 {
-    SphereSolution zero = { 0 };
-    *S = zero;
-
-    double pos[7] = { ray->origin.x, ray->origin.y, ray->origin.z,
-                      sp->center.x, sp->center.y, sp->center.z, fabs(sp->radius) };
-    double dir[3] = { ray->direction.x, ray->direction.y, ray->direction.z };
     bool nan = false, inf = false;
     for (int k = 0; k < 7; k++) {
         nan |= isnan(pos[k]);
@@ -234,13 +231,27 @@ static void solve_sphere(const Sphere *sp, const Ray *ray, SphereSolution *S)
         inf |= isinf(dir[k]);
     }
     if (nan)                            /* NaN input: a miss, no doubt */
-        return;
-    if (inf) {                          /* outside the contract: anything goes */
-        S->ambiguous = true;
+        return -1;
+    if (inf)                            /* outside the contract: anything goes */
+        return 1;
+    if (dir[0] == 0 && dir[1] == 0 && dir[2] == 0)
+        return -1;                      /* zero direction: a miss */
+    return 0;
+}
+
+static void solve_sphere(const Sphere *sp, const Ray *ray, SphereSolution *S)
+{
+    SphereSolution zero = { 0 };
+    *S = zero;
+
+    double pos[7] = { ray->origin.x, ray->origin.y, ray->origin.z,
+                      sp->center.x, sp->center.y, sp->center.z, fabs(sp->radius) };
+    double dir[3] = { ray->direction.x, ray->direction.y, ray->direction.z };
+    int verdict = input_verdict(pos, dir);
+    if (verdict != 0) {
+        S->ambiguous = verdict > 0;
         return;
     }
-    if (dir[0] == 0 && dir[1] == 0 && dir[2] == 0)
-        return;                         /* zero direction: a miss */
 
     /* Scale positions so the largest is in [1/2, 1), the direction so its
      * largest component is: exact (barring components 2^1000 times smaller
