@@ -53,8 +53,8 @@ static void color_scene(Test *t, TgRandom *g)
     t->background[0] = 0.25, t->background[1] = 0.5, t->background[2] = 0.75;
     double cn[4][3], Rn[4], Rf[4], cf[4][3], dn[4], fit[4];
     for (int q = 0; q < 4; q++) {
-        double u[3] = { (q % 2 ? 0.3 : -0.3) + tg_uniform(g, -0.04, 0.04),
-                        (q / 2 ? 0.3 : -0.3) + tg_uniform(g, -0.04, 0.04), -1 };
+        double ux = tg_uniform(g, -0.04, 0.04), uy = tg_uniform(g, -0.04, 0.04);
+        double u[3] = { (q % 2 ? 0.3 : -0.3) + ux, (q / 2 ? 0.3 : -0.3) + uy, -1 };
         double zn = tg_uniform(g, 5, 9), zf = zn + tg_uniform(g, 4, 10);
         Rn[q] = tg_uniform(g, 0.4, 0.9);
         Rf[q] = tg_uniform(g, Rn[q], 2);
@@ -85,7 +85,8 @@ static void color_scene(Test *t, TgRandom *g)
     for (int k = 0; k < 12; k++) {                          /* between the spheres */
         double r[3] = { 0, 0, 1 };
         for (int tries = 0; tries < 200; tries++) {
-            double cand[3] = { tg_uniform(g, -0.6, 0.6), tg_uniform(g, -0.6, 0.6), -1 };
+            double cx = tg_uniform(g, -0.6, 0.6), cy = tg_uniform(g, -0.6, 0.6);
+            double cand[3] = { cx, cy, -1 };
             bool clear = true;
             for (int s = 0; s < t->nspheres && clear; s++)
                 clear = off_line(t->spheres[s].c, cand) > 1.05 * t->spheres[s].R;
@@ -101,7 +102,8 @@ static void color_scene(Test *t, TgRandom *g)
         tg_color(t, V(0, 0, 0), r);
     }
     for (int k = 0; k < 32; k++) {                          /* anywhere */
-        double r[3] = { tg_uniform(g, -0.3, 0.3), tg_uniform(g, -0.3, 0.3), -1 };
+        double rx = tg_uniform(g, -0.3, 0.3), ry = tg_uniform(g, -0.3, 0.3);
+        double r[3] = { rx, ry, -1 };
         tg_color(t, V(0, 0, 0), r);
     }
 }
@@ -118,23 +120,28 @@ void testgen_hidden(TestList *l, uint64_t seed)
     tg_plane(t, 1, 0.1, 50);
     t = hidden_test(l, PART1, KIND_PLANE, "Part 1: hidden: random fields of view, aspects and distances",
                     "alpha from 1 to 179 degrees, aspect from 0.25 to 4, d from 0.1 to 10");
-    for (int k = 0; k < 30; k++)
-        tg_plane(t, tg_uniform(&g, 1, 179), tg_log_uniform(&g, 0.25, 4), tg_log_uniform(&g, 0.1, 10));
+    for (int k = 0; k < 30; k++) {
+        double d = tg_log_uniform(&g, 0.1, 10), aspect = tg_log_uniform(&g, 0.25, 4);
+        tg_plane(t, tg_uniform(&g, 1, 179), aspect, d);
+    }
 
     t = hidden_test(l, PART2, KIND_PIXEL, "Part 2: hidden: random pixels of random images",
                     "images from 1 x 1 to 4000 x 3000, any pixel");
     for (int k = 0; k < 40; k++) {
         int nx = tg_int(&g, 1, 4000), ny = tg_int(&g, 1, 3000);
         double h = tg_log_uniform(&g, 0.01, 100);
-        tg_pixel(t, tg_int(&g, 0, nx - 1), tg_int(&g, 0, ny - 1), nx, ny,
-                 h * nx / ny, h, tg_log_uniform(&g, 0.01, 100));
+        double d = tg_log_uniform(&g, 0.01, 100);
+        int j = tg_int(&g, 0, ny - 1);
+        tg_pixel(t, tg_int(&g, 0, nx - 1), j, nx, ny, h * nx / ny, h, d);
     }
 
     t = hidden_test(l, PART3A, KIND_SPHERE, "Part 3a: hidden: random rays at random spheres",
                     "origins outside the sphere; about half the rays hit, some spheres are behind");
     for (int k = 0; k < 120; k++) {
         double R = tg_log_uniform(&g, 0.1, 10), D = R * tg_uniform(&g, 1.2, 30);
-        double dir[3], c[3], e[3] = { tg_uniform(&g, -5, 5), tg_uniform(&g, -5, 5), tg_uniform(&g, -5, 5) };
+        double dir[3], c[3], e[3];
+        for (int q = 0; q < 3; q++)
+            e[q] = tg_uniform(&g, -5, 5);
         random_direction(&g, D, c);
         for (int q = 0; q < 3; q++)
             c[q] += e[q];

@@ -1,8 +1,12 @@
 /*
  * draw.c - the random draws of the hard-case generators (hard.c, hard_flat.c):
  * splitmix64 streams and the shapes drawn from them.  Only + - * / sqrt
- * ldexp frexp are used, so the same seed gives the same numbers on every
- * IEEE-754 machine (built with -ffp-contract=off).
+ * ldexp frexp are used, and each draw is a statement of its own (C leaves
+ * the order of a call's arguments open: gcc evaluates them last first,
+ * clang first first), so the same seed gives the same numbers on every
+ * IEEE-754 machine and compiler (built with -ffp-contract=off).  The
+ * callers keep that rule too (hard.c, hard_flat.c, hidden.c), drawing in
+ * the order gcc did when the public tests were written.
  */
 #include <stdio.h>
 #include "draw.h"
@@ -51,7 +55,8 @@ double draw_log(uint64_t *s, double a, double b)
     frexp(a, &ea);
     frexp(b, &eb);
     for (;;) {
-        double x = ldexp(1 + hard_rng_uniform(s), draw_int(s, ea - 1, eb - 1));
+        int binade = draw_int(s, ea - 1, eb - 1);
+        double x = ldexp(1 + hard_rng_uniform(s), binade);
         if (x >= a && x <= b)
             return x;
     }
@@ -61,7 +66,8 @@ double draw_log(uint64_t *s, double a, double b)
 Vec3 draw_unit(uint64_t *s)
 {
     for (;;) {
-        Vec3 v = vec3(draw_uni(s, -1, 1), draw_uni(s, -1, 1), draw_uni(s, -1, 1));
+        double z = draw_uni(s, -1, 1), y = draw_uni(s, -1, 1), x = draw_uni(s, -1, 1);
+        Vec3 v = vec3(x, y, z);
         double n2 = vec3_dot(v, v);
         if (n2 > 0.01 && n2 <= 1)
             return vec3_scale(v, 1 / sqrt(n2));
@@ -82,7 +88,8 @@ Vec3 draw_perp(uint64_t *s, Vec3 a)
 /* A point with coordinates uniform in [-size, size]. */
 Vec3 draw_point(uint64_t *s, double size)
 {
-    return vec3(draw_uni(s, -size, size), draw_uni(s, -size, size), draw_uni(s, -size, size));
+    double z = draw_uni(s, -size, size), y = draw_uni(s, -size, size), x = draw_uni(s, -size, size);
+    return vec3(x, y, z);
 }
 
 /* A direction from e that passes the centre c at rho R (rho < 1 hits),
@@ -97,7 +104,8 @@ Vec3 draw_aim(uint64_t *s, Vec3 e, Vec3 c, double R, double rho, double len)
 /* A random length of about 1 (1/16 .. 16) that is not a power of two. */
 double draw_len(uint64_t *s)
 {
-    return ldexp(1 + hard_rng_uniform(s), draw_int(s, -4, 3));
+    int binade = draw_int(s, -4, 3);
+    return ldexp(1 + hard_rng_uniform(s), binade);
 }
 
 void draw_family(char *dst, const char *name)

@@ -245,8 +245,8 @@ static Lattice lattice(uint64_t *s, bool need_cross)
     L.R = quads[q][3] * L.scale;
     L.p1 = vec3_scale(a, L.scale);
     L.p2 = vec3_scale(b, L.scale);
-    L.c = vec3(draw_int(s, -1000, 1000) * ldexp(1, m - 2), draw_int(s, -1000, 1000) * ldexp(1, m - 2),
-               draw_int(s, -1000, 1000) * ldexp(1, m - 2));
+    int cz = draw_int(s, -1000, 1000), cy = draw_int(s, -1000, 1000), cx = draw_int(s, -1000, 1000);
+    L.c = vec3_scale(vec3(cx, cy, cz), ldexp(1, m - 2));
     return L;
 }
 
@@ -303,7 +303,8 @@ static void tangent_ulp(uint64_t *s, bool want_hit, Vec3 *eye, Vec3 *centre, Vec
     Vec3 e, c, r;
     double R;
     e = draw_point(s, 1);
-    r = vec3_scale(draw_unit(s), draw_len(s));
+    double len = draw_len(s);
+    r = vec3_scale(draw_unit(s), len);
     R = draw_log(s, 0.01, 100);
     double t0 = R * draw_uni(s, 1, 1000) / vec3_length(r);
     c = vec3_add(vec3_add(e, vec3_scale(r, t0)), vec3_scale(draw_perp(s, r), R));
@@ -367,7 +368,8 @@ static void gen3a(uint64_t *s, int fam, bool want_hit, Sphere *sp, Ray *ray)
     } else if (fam == 16) {                                 /* tangent +- 1 ulp */
         tangent_ulp(s, want_hit, &e, &c, &r, &R);
     } else if (fam == 17) {                                 /* grazing, clear gap */
-        r = vec3_scale(draw_unit(s), draw_len(s));
+        double len = draw_len(s);
+        r = vec3_scale(draw_unit(s), len);
         R = draw_log(s, 0.01, 100);
         double along = R * draw_uni(s, 2, 1000);
         double gap = (want_hit ? -1 : 1) * draw_log(s, 16, 1e4) * ORACLE_U * (along + 2 * R);
@@ -380,7 +382,8 @@ static void gen3a(uint64_t *s, int fam, bool want_hit, Sphere *sp, Ray *ray)
         dyadic(s, fam, want_hit, &e, &c, &r, &R);
     } else if (fam == 24) {                                 /* behind the eye */
         ordinary(s, 1, false, &e, &c, &R);
-        r = draw_aim(s, e, c, R, draw_uni(s, 0, 0.95), draw_len(s));
+        double len = draw_len(s);
+        r = draw_aim(s, e, c, R, draw_uni(s, 0, 0.95), len);
         if (!want_hit)
             r = vec3_negate(r);
     } else if (fam == 27) {                                 /* on the surface, rounded */
@@ -388,7 +391,8 @@ static void gen3a(uint64_t *s, int fam, bool want_hit, Sphere *sp, Ray *ray)
         c = draw_point(s, 10 * R);
         Vec3 n = draw_unit(s);
         e = vec3_add(c, vec3_scale(n, R));
-        r = vec3_add(vec3_scale(n, want_hit ? -1 : 1), vec3_scale(draw_perp(s, n), draw_uni(s, 0, 3)));
+        double across = draw_uni(s, 0, 3);
+        r = vec3_add(vec3_scale(n, want_hit ? -1 : 1), vec3_scale(draw_perp(s, n), across));
         r = vec3_scale(r, draw_len(s));
     } else {                                                /* tiny or huge scene */
         ordinary(s, fam == 25 ? 1e-6 : 1e9, true, &e, &c, &R);
@@ -452,7 +456,8 @@ int hard_part3b(uint64_t seed, HardCase3b *cases, int max)
         double w, h, d = draw_uni(&s, 0.5, 2);
         oracle_image_plane(draw_uni(&s, 20, 120), (double)nx / ny, d, &w, &h);
         c->eye = vec3(0, 0, 0);
-        c->pixel = oracle_pixel(draw_int(&s, 0, nx - 1), draw_int(&s, 0, ny - 1), nx, ny, w, h, d);
+        int j = draw_int(&s, 0, ny - 1), i = draw_int(&s, 0, nx - 1);
+        c->pixel = oracle_pixel(i, j, nx, ny, w, h, d);
         c->background = vec3(0, 0, 0);
         c->ray.origin = c->eye;
         c->ray.direction = oracle_unit(vec3_sub(c->pixel, c->eye));
@@ -469,8 +474,8 @@ int hard_part3b(uint64_t seed, HardCase3b *cases, int max)
             c->spheres[0] = make_sphere(vec3_add(p, vec3_scale(r, R1)), R1, 0);
             c->spheres[1] = make_sphere(vec3_add(p, vec3_scale(r, R2 + shift)), R2, 1);
             Vec3 beyond = vec3_add(p, vec3_scale(r, 2 * R2 + draw_uni(&s, 2, 4) * R1));
-            c->spheres[2] = make_sphere(vec3_add(beyond, vec3_scale(draw_perp(&s, r), draw_uni(&s, 0, 0.9) * R1)),
-                                        R1, 2);
+            double across = draw_uni(&s, 0, 0.9) * R1;
+            c->spheres[2] = make_sphere(vec3_add(beyond, vec3_scale(draw_perp(&s, r), across)), R1, 2);
             c->nspheres = 3;
             break;
         }
@@ -479,8 +484,9 @@ int hard_part3b(uint64_t seed, HardCase3b *cases, int max)
             Vec3 cb = vec3_add(p, vec3_scale(r, R2));
             /* at most (R2 - R1) / 2 along the ray and 0.8 R1 across it from
              * cb: inside the big one (R1 <= R2 - R1), and hit */
-            Vec3 cs = vec3_add(vec3_add(cb, vec3_scale(r, draw_uni(&s, -0.5, 0.5) * (R2 - R1))),
-                               vec3_scale(draw_perp(&s, r), draw_uni(&s, 0, 0.8) * R1));
+            double across = draw_uni(&s, 0, 0.8) * R1;
+            Vec3 side = vec3_scale(draw_perp(&s, r), across);
+            Vec3 cs = vec3_add(vec3_add(cb, vec3_scale(r, draw_uni(&s, -0.5, 0.5) * (R2 - R1))), side);
             c->spheres[even ? 0 : 1] = make_sphere(cs, R1, even ? 0 : 1);
             c->spheres[even ? 1 : 0] = make_sphere(cb, R2, even ? 1 : 0);
             c->nspheres = 2;
@@ -489,27 +495,32 @@ int hard_part3b(uint64_t seed, HardCase3b *cases, int max)
         case 2: {       /* inside a room of radius 50: a sphere before or beyond its wall */
             c->spheres[0] = make_sphere(draw_point(&s, 5), 50, 0);
             double along = even ? draw_uni(&s, 5, 30) : draw_uni(&s, 70, 90);
-            c->spheres[1] = make_sphere(vec3_add(vec3_scale(r, along), vec3_scale(draw_perp(&s, r), draw_uni(&s, 0, 0.9) * R1)), R1, 1);
+            double across = draw_uni(&s, 0, 0.9) * R1;
+            c->spheres[1] = make_sphere(vec3_add(vec3_scale(r, along), vec3_scale(draw_perp(&s, r), across)), R1, 1);
             c->nspheres = 2;
             break;
         }
         case 3: {       /* D/R = 1e6 before a huge sphere */
             double D = R1 * 1e6;
-            Vec3 cs = vec3_add(vec3_scale(r, D), vec3_scale(draw_perp(&s, r), (even ? draw_uni(&s, 0, 0.95) : draw_uni(&s, 1.05, 2)) * R1));
+            double across = (even ? draw_uni(&s, 0, 0.95) : draw_uni(&s, 1.05, 2)) * R1;
+            Vec3 cs = vec3_add(vec3_scale(r, D), vec3_scale(draw_perp(&s, r), across));
             c->spheres[0] = make_sphere(vec3_scale(r, 3 * D), D, 0);
             c->spheres[1] = make_sphere(cs, R1, 1);
             c->nspheres = 2;
             break;
         }
         case 4: {       /* a big sphere behind, a small one ahead (hit or missed) */
-            c->spheres[0] = make_sphere(vec3_scale(r, -draw_uni(&s, 3, 10)), draw_uni(&s, 1, 2.5), 0);
-            Vec3 off = vec3_scale(draw_perp(&s, r), (even ? draw_uni(&s, 0, 0.9) : draw_uni(&s, 1.1, 2)) * R1);
+            double big = draw_uni(&s, 1, 2.5);
+            c->spheres[0] = make_sphere(vec3_scale(r, -draw_uni(&s, 3, 10)), big, 0);
+            double across = (even ? draw_uni(&s, 0, 0.9) : draw_uni(&s, 1.1, 2)) * R1;
+            Vec3 off = vec3_scale(draw_perp(&s, r), across);
             c->spheres[1] = make_sphere(vec3_add(p, off), R1, 1);
             c->nspheres = 2;
             break;
         }
         default: {      /* one centre and radius, and its neighbour by an ulp */
-            Vec3 c0 = vec3_add(p, vec3_scale(draw_perp(&s, r), draw_uni(&s, 0, 0.9) * R1));
+            double across = draw_uni(&s, 0, 0.9) * R1;
+            Vec3 c0 = vec3_add(p, vec3_scale(draw_perp(&s, r), across));
             Vec3 c1 = c0;
             c1.x = nextafter(c1.x, INFINITY);
             c->spheres[0] = make_sphere(c0, R1, 0);

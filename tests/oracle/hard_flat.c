@@ -30,6 +30,14 @@ static double dyadic(uint64_t *s, int n)
     return draw_int(s, -n, n) / 16.0;
 }
 
+/* A point of three dyadic coordinates, drawn z, y, x (the order the stored
+ * tests were drawn in). */
+static Vec3 dyadic_point(uint64_t *s)
+{
+    double z = dyadic(s, 64), y = dyadic(s, 64), x = dyadic(s, 64);
+    return vec3(x, y, z);
+}
+
 /* The unit vector along axis k, times v. */
 static Vec3 axis(int k, double v)
 {
@@ -47,23 +55,29 @@ static Vec3 at_point(Vec3 o, Vec3 q, bool want_hit, double len)
 
 static void gen4(uint64_t *s, int fam, bool want_hit, Plane *pl, Ray *ray)
 {
-    Vec3 p = draw_point(s, 5), n = vec3_scale(draw_unit(s), draw_len(s)), o = draw_point(s, 5), d;
+    Vec3 p = draw_point(s, 5);
+    double nlen = draw_len(s);
+    Vec3 n = vec3_scale(draw_unit(s), nlen), o = draw_point(s, 5), d;
     Vec3 nh = vec3_normalize(n), w = draw_perp(s, n);
     if (fam == 0 || fam == 3 || fam == 4) {         /* ordinary, shifted, scaled */
         Vec3 q = vec3_add(p, vec3_scale(w, draw_uni(s, 0, 5)));
         double len = draw_len(s);
         if (fam == 4) {
-            n = vec3_scale(nh, ldexp(1 + hard_rng_uniform(s), draw_int(s, -200, 200)));
-            len = ldexp(1 + hard_rng_uniform(s), draw_int(s, -200, 200));
+            int binade = draw_int(s, -200, 200);
+            n = vec3_scale(nh, ldexp(1 + hard_rng_uniform(s), binade));
+            binade = draw_int(s, -200, 200);
+            len = ldexp(1 + hard_rng_uniform(s), binade);
         }
         d = at_point(o, q, want_hit, len);
         if (fam == 3) {
-            Vec3 off = vec3_scale(draw_unit(s), draw_log(s, 1e3, 1e9));
+            double far = draw_log(s, 1e3, 1e9);
+            Vec3 off = vec3_scale(draw_unit(s), far);
             p = vec3_add(p, off);
             o = vec3_add(o, off);
         }
     } else if (fam == 1) {                          /* grazing */
-        o = vec3_add(vec3_add(p, vec3_scale(nh, draw_uni(s, 1, 10))), vec3_scale(w, draw_uni(s, 0, 5)));
+        double sideways = draw_uni(s, 0, 5);
+        o = vec3_add(vec3_add(p, vec3_scale(nh, draw_uni(s, 1, 10))), vec3_scale(w, sideways));
         double eps = draw_log(s, 1e-12, 1e-3);
         Vec3 along = draw_perp(s, n);
         d = vec3_scale(vec3_add(along, vec3_scale(nh, want_hit ? -eps : eps)), draw_len(s));
@@ -72,7 +86,8 @@ static void gen4(uint64_t *s, int fam, bool want_hit, Plane *pl, Ray *ray)
         if (hard_rng_next(s) % 2)
             h = -h;
         o = vec3_add(vec3_add(p, vec3_scale(w, L)), vec3_scale(nh, h));
-        Vec3 side = vec3_scale(draw_perp(s, n), draw_uni(s, 0, 2));
+        double across = draw_uni(s, 0, 2);
+        Vec3 side = vec3_scale(draw_perp(s, n), across);
         Vec3 towards = vec3_scale(nh, (h > 0) == want_hit ? -1 : 1);
         d = vec3_scale(vec3_add(towards, side), draw_len(s));
     } else {                                        /* exact dyadic: parallel, in the plane */
@@ -83,14 +98,16 @@ static void gen4(uint64_t *s, int fam, bool want_hit, Plane *pl, Ray *ray)
          * dividing by r.n unchecked gives -inf, +inf and NaN, and every
          * round has each. */
         int k = draw_int(s, 0, 2), j = (k + draw_int(s, 1, 2)) % 3;
-        double nk = ldexp(hard_rng_next(s) % 2 ? 1 : -1, draw_int(s, -4, 4));
+        int binade = draw_int(s, -4, 4);
+        double nk = ldexp(hard_rng_next(s) % 2 ? 1 : -1, binade);
         n = axis(k, nk);
-        p = vec3(dyadic(s, 64), dyadic(s, 64), dyadic(s, 64));
-        o = vec3(dyadic(s, 64), dyadic(s, 64), dyadic(s, 64));
+        p = dyadic_point(s);
+        o = dyadic_point(s);
         double h = fam == 7 ? 0 : draw_int(s, 1, 64) / 16.0 * (fam == 5 ? 1 : -1);
         double *ok = k == 0 ? &o.x : k == 1 ? &o.y : &o.z;
         *ok = (k == 0 ? p.x : k == 1 ? p.y : p.z) + (nk > 0 ? h : -h);
-        d = axis(j, ldexp(hard_rng_next(s) % 2 ? 1 : -1, draw_int(s, -4, 4)));
+        binade = draw_int(s, -4, 4);
+        d = axis(j, ldexp(hard_rng_next(s) % 2 ? 1 : -1, binade));
         if (want_hit && h != 0)                     /* tilted towards the plane */
             d = vec3_add(d, axis(k, (nk > 0) == (h > 0) ? -0.5 : 0.5));
     }
@@ -152,9 +169,11 @@ static Triangle random_triangle(uint64_t *s, Vec3 c, double S)
 {
     for (;;) {
         Triangle tr;
-        tr.a = vec3_add(c, vec3_scale(draw_unit(s), S * draw_uni(s, 0.5, 1)));
-        tr.b = vec3_add(c, vec3_scale(draw_unit(s), S * draw_uni(s, 0.5, 1)));
-        tr.c = vec3_add(c, vec3_scale(draw_unit(s), S * draw_uni(s, 0.5, 1)));
+        Vec3 *corner[3] = { &tr.a, &tr.b, &tr.c };
+        for (int k = 0; k < 3; k++) {
+            double far = S * draw_uni(s, 0.5, 1);
+            *corner[k] = vec3_add(c, vec3_scale(draw_unit(s), far));
+        }
         tr.color = vec3(1, 1, 1);
         Vec3 n = vec3_cross(vec3_sub(tr.b, tr.a), vec3_sub(tr.c, tr.a));
         if (vec3_length(n) > 0.2 * S * S)
@@ -198,7 +217,9 @@ static void exact_triangle(uint64_t *s, bool want_hit, Triangle *tr, Ray *ray)
         j = swap;
     }
     double sgn = hard_rng_next(s) % 2 ? 1 : -1;
-    double o[3] = { dyadic(s, 64), dyadic(s, 64), dyadic(s, 64) };
+    double o[3];
+    for (int q = 0; q < 3; q++)
+        o[q] = dyadic(s, 64);
     double depth = draw_int(s, 16, 128) / 16.0;
     int how = draw_int(s, 0, 2);          /* 0 vertex, 1 edge middle, 2 edge line outside */
     bool behind = !want_hit && how != 2;
@@ -236,11 +257,13 @@ static void gen5(uint64_t *s, int fam, bool want_hit, int beyond, Triangle *tr, 
         return;
     }
     if (fam == 0 || fam == 5) {                     /* ordinary, far from the origin */
-        *tr = random_triangle(s, draw_point(s, 3), draw_uni(s, 0.5, 2));
+        double size = draw_uni(s, 0.5, 2);
+        *tr = random_triangle(s, draw_point(s, 3), size);
         X = plane_point(s, tr, want_hit, beyond);
     } else if (fam == 1) {                          /* tiny, far */
         double S = draw_log(s, 1e-8, 1e-4);
-        *tr = random_triangle(s, vec3_add(o, vec3_scale(draw_unit(s), draw_log(s, 1, 1e4))), S);
+        double far = draw_log(s, 1, 1e4);
+        *tr = random_triangle(s, vec3_add(o, vec3_scale(draw_unit(s), far)), S);
         X = plane_point(s, tr, want_hit, beyond);
     } else if (fam == 2) {                          /* sliver */
         Vec3 c = draw_point(s, 3), u1 = draw_unit(s), u2 = draw_perp(s, u1);
@@ -253,15 +276,19 @@ static void gen5(uint64_t *s, int fam, bool want_hit, int beyond, Triangle *tr, 
         double al = draw_uni(s, 0.1, 0.9) * (1 - g);
         X = bary(tr, al, 1 - g - al, g);
     } else if (fam == 3) {                          /* grazing */
-        *tr = random_triangle(s, draw_point(s, 3), draw_uni(s, 1, 10));
+        double size = draw_uni(s, 1, 10);
+        *tr = random_triangle(s, draw_point(s, 3), size);
         X = plane_point(s, tr, want_hit, beyond);
         Vec3 n = vec3_normalize(vec3_cross(vec3_sub(tr->b, tr->a), vec3_sub(tr->c, tr->a)));
         Vec3 w = draw_perp(s, n);
         double L = draw_uni(s, 1, 10) * vec3_length(vec3_sub(tr->b, tr->a));
-        double eps = draw_log(s, 1e-9, 1e-3) * (hard_rng_next(s) % 2 ? 1 : -1);
+        double eps = draw_log(s, 1e-9, 1e-3);
+        if (hard_rng_next(s) % 2 == 0)
+            eps = -eps;
         o = vec3_sub(X, vec3_scale(vec3_add(w, vec3_scale(n, eps)), L));
     } else {                                        /* near an edge */
-        *tr = random_triangle(s, draw_point(s, 3), draw_uni(s, 0.5, 2));
+        double spread = draw_uni(s, 0.5, 2);
+        *tr = random_triangle(s, draw_point(s, 3), spread);
         int e = draw_int(s, 0, 2);
         if (!want_hit)
             e = (beyond + 1) % 3;                   /* the edge opposite that vertex */
@@ -272,16 +299,18 @@ static void gen5(uint64_t *s, int fam, bool want_hit, int beyond, Triangle *tr, 
         Vec3 pq = vec3_normalize(vec3_sub(Q, P)), in = vec3_sub(R, on);
         in = vec3_normalize(vec3_sub(in, vec3_scale(pq, vec3_dot(in, pq))));
         double size = vec3_length(vec3_sub(Q, P));
-        double delta = size * ldexp(1 + hard_rng_uniform(s), -draw_int(s, 30, 48));
+        int binade = -draw_int(s, 30, 48);
+        double delta = size * ldexp(1 + hard_rng_uniform(s), binade);
         X = vec3_add(on, vec3_scale(in, want_hit ? delta : -delta));
         Vec3 n = vec3_normalize(vec3_cross(vec3_sub(tr->b, tr->a), vec3_sub(tr->c, tr->a)));
-        o = vec3_add(X, vec3_scale(vec3_add(n, vec3_scale(draw_perp(s, n), draw_uni(s, 0, 1))),
-                                   size * draw_uni(s, 1, 10)));
+        double back = size * draw_uni(s, 1, 10), tilt = draw_uni(s, 0, 1);
+        o = vec3_add(X, vec3_scale(vec3_add(n, vec3_scale(draw_perp(s, n), tilt)), back));
     }
     Vec3 d = vec3_sub(X, o);
     d = vec3_scale(d, draw_len(s) / vec3_length(d));
     if (fam == 5) {
-        Vec3 off = vec3_scale(draw_unit(s), draw_log(s, 1e3, 1e6));
+        double far = draw_log(s, 1e3, 1e6);
+        Vec3 off = vec3_scale(draw_unit(s), far);
         tr->a = vec3_add(tr->a, off);
         tr->b = vec3_add(tr->b, off);
         tr->c = vec3_add(tr->c, off);
@@ -425,8 +454,9 @@ Ray hard_mesh_ray_at(uint64_t *s, const HardMesh *m, bool vertex, double *t_entr
      * the ray enters at X and goes on into the interior. */
     Vec3 out = vec3_sub(X, m->centre);
     double dist = vec3_length(out);
-    Vec3 o = vec3_add(vec3_add(X, vec3_scale(out, draw_uni(s, 0.5, 3))),
-                      vec3_scale(draw_perp(s, out), dist * draw_uni(s, 0, 0.3)));
+    double across = dist * draw_uni(s, 0, 0.3);
+    Vec3 side = vec3_scale(draw_perp(s, out), across);
+    Vec3 o = vec3_add(vec3_add(X, vec3_scale(out, draw_uni(s, 0.5, 3))), side);
     Vec3 d = vec3_sub(X, o);
     double len = draw_len(s), dist_x = vec3_length(d);
     Ray ray = { o, vec3_scale(d, len / dist_x) };
@@ -441,7 +471,8 @@ int hard_meshes(uint64_t seed, HardMesh *meshes, int max)
         HardMesh *m = &meshes[k];
         int fam = k % HARD_MESH_FAMILIES;
         int shape = (int)((seed + (uint64_t)(k / HARD_MESH_FAMILIES)) % HARD_MESH_SHAPES);
-        Vec3 offset = fam == 2 ? vec3_scale(draw_unit(&s), draw_log(&s, 1e3, 1e6)) : draw_point(&s, 10);
+        double far = fam == 2 ? draw_log(&s, 1e3, 1e6) : 0;
+        Vec3 offset = fam == 2 ? vec3_scale(draw_unit(&s), far) : draw_point(&s, 10);
         double size = fam == 2 ? draw_log(&s, 0.5, 2) : draw_log(&s, 0.1, 10);
         hard_mesh_make(&s, shape, size, offset, m);
         draw_family(m->family, fam_mesh[fam]);

@@ -8,7 +8,7 @@
 # 1. the other compiler (clang when cc is gcc, gcc when cc is clang), when
 #    installed: `make all` into out/port/<compiler> with -std=c11 -pedantic
 #    -Werror (incremental, like the main build), then the unit tests it
-#    built; and the default compiler's -Werror over every C file (syntax
+#    built, and the same public tests and hidden cases drawn; and the default compiler's -Werror over every C file (syntax
 #    only: the main build compiled them already);
 # 2. every shell script of the kit through `dash -n` and a check for
 #    bashisms (checkbashisms when installed, and always the grep below);
@@ -292,7 +292,8 @@ else
     root=out/port/$name
     echo "   second compiler: $other ($($other --version 2>/dev/null | head -n 1)), building into $root"
     mkdir -p "$root"
-    ${MAKE:-make} -j2 OUT_ROOT="$root" CC="$other" STD="-std=c11 -Werror" all >"$tmp/other.log" 2>&1
+    ${MAKE:-make} -j2 OUT_ROOT="$root" CC="$other" STD="-std=c11 -Werror" all "$root/build/bin/gentests" \
+        >"$tmp/other.log" 2>&1
     status=$?
     check "make all with $other -std=c11 -pedantic -Werror (exit $status): $(grep -E 'error:|warning:' "$tmp/other.log" | head -n 5 | tr '\n' ' ')" \
         test "$status" -eq 0
@@ -314,6 +315,23 @@ else
     done
     echo "   ran $ran unit tests built with $name"
     check "the unit tests were built with $other" test "$ran" -gt 0
+    # The same cases whichever compiler built the kit: C leaves the order of
+    # a call's arguments open (gcc draws them last first, clang first
+    # first), so each draw of the oracle and the hidden tests is a statement
+    # of its own.  The public tests its build writes are the committed ones,
+    # and the skeleton graded by its grader is shown the same hidden inputs.
+    mkdir "$tmp/public-other"
+    "$root/build/bin/gentests" "$tmp/public-other" >"$tmp/gentests.out" 2>&1
+    check "the public tests $other's build writes are the committed ones" diff -r tests/public "$tmp/public-other"
+    sed 's/^parts .*/parts 1 2 3a 3b 4 5/' tests/weights.conf >"$tmp/all-parts.conf"
+    drawn() {   # drawn BUILD NAME: the skeleton's results by BUILD's grader, but for the time
+        "$1/bin/grade" --submission labs --weights "$tmp/all-parts.conf" --results "$tmp/drawn.json" --quiet >/dev/null 2>&1
+        grep -v '"execution_time"' "$tmp/drawn.json" >"$tmp/drawn-$2.json"
+    }
+    drawn out/build default
+    drawn "$root/build" other
+    check "the skeleton graded by $other's build meets the same hidden cases as by $cc's" \
+        sh -c "grep -q 'input: ' '$tmp/drawn-default.json' && cmp -s '$tmp/drawn-default.json' '$tmp/drawn-other.json'"
 fi
 
 # A second C library and its maths, when installed: musl (musl-gcc, from
