@@ -93,6 +93,13 @@ static void probe_run(ProbeSet *ps, const Test *t, Answers *a)
         memset(a, 0, sizeof *a);
 }
 
+/* Runs the set's first two probes, their answers in a[0] and a[1]. */
+static void probe_run_two(ProbeSet *ps, Answers a[2])
+{
+    probe_run(ps, &ps->list.tests[0], &a[0]);
+    probe_run(ps, &ps->list.tests[1], &a[1]);
+}
+
 static bool same(double got, double model, double scale)
 {
     return fabs(got - model) <= MATCH_REL * scale;      /* false for NaN */
@@ -496,8 +503,7 @@ static void diagnose_part1(ProbeSet *ps, Found *f, P1Found *out)
     for (int k = 0; k < N_FOV_NEAR180; k++)
         probe_case(near180_test, p1_near180[k], 3);
     Answers a2[2];
-    probe_run(ps, &ps->list.tests[0], &a2[0]);
-    probe_run(ps, &ps->list.tests[1], &a2[1]);
+    probe_run_two(ps, a2);
     Answers ordinary = a2[0], near180 = a2[1];
     if (unwritten(f, ps, a2, 2)) {
         answers_free(&ordinary);
@@ -1440,32 +1446,31 @@ static void diagnose_part3b(ProbeSet *ps, Found *f, P3bFound *out)
     for (int k = 0; k < NR; k++)
         probe_case(colours, rays[k], 6);
     Answers a2[2];
-    probe_run(ps, &ps->list.tests[0], &a2[0]);
-    probe_run(ps, &ps->list.tests[1], &a2[1]);
-    Answers ac = a2[0], ak = a2[1];
+    probe_run_two(ps, a2);
+    Answers camera_answers = a2[0], colour_answers = a2[1];
     colours = &ps->list.tests[1];
     if (unwritten(f, ps, a2, 2)) {
-        answers_free(&ac);
-        answers_free(&ak);
+        answers_free(&camera_answers);
+        answers_free(&colour_answers);
         return;
     }
     out->camera = out->colour = -1;
-    for (int m = 0; m < NC_MODELS && out->camera < 0 && ac.answered == NCAM; m++) {
+    for (int m = 0; m < NC_MODELS && out->camera < 0 && camera_answers.answered == NCAM; m++) {
         bool all = true;
         for (int c = 0; c < NCAM && all; c++) {
             double v[6];
             p3b_camera(m, cams[c], v);
-            all = vec_same(ac.got[c], v, 6);
+            all = vec_same(camera_answers.got[c], v, 6);
         }
         if (all)
             out->camera = m;
     }
-    for (int m = 0; m < NK_MODELS && out->colour < 0 && ak.answered == NR; m++) {
+    for (int m = 0; m < NK_MODELS && out->colour < 0 && colour_answers.answered == NR; m++) {
         bool all = true;
         for (int c = 0; c < NR && all; c++) {
             double v[3];
             p3b_colour(m, colours, rays[c], v);
-            all = vec_same(ak.got[c], v, 3);
+            all = vec_same(colour_answers.got[c], v, 3);
         }
         if (all)
             out->colour = m;
@@ -1473,7 +1478,8 @@ static void diagnose_part3b(ProbeSet *ps, Found *f, P3bFound *out)
     if (out->camera == C_UNNORMALISED)
         name_cause(f, "unnormalised", TAG_ALL, "camera_ray's direction is not unit length: for the eye at "
                    "the origin and the pixel (3, 0, -4) it returned (%.6g, %.6g, %.6g); divide s - e "
-                   "by its length |s - e| = 5.", ac.got[0][3], ac.got[0][4], ac.got[0][5]);
+                   "by its length |s - e| = 5.",
+                   camera_answers.got[0][3], camera_answers.got[0][4], camera_answers.got[0][5]);
     if (out->camera == C_REVERSED || out->camera == C_AT_PIXEL_REVERSED)
         name_cause(f, "reversed", TAG_ALL, "camera_ray's direction is reversed: it points from the pixel to "
                    "the eye; the ray goes from the eye e TOWARDS the pixel s, (s - e) / |s - e|.");
@@ -1500,8 +1506,8 @@ static void diagnose_part3b(ProbeSet *ps, Found *f, P3bFound *out)
     for (size_t k = 0; k < sizeof colour_causes / sizeof colour_causes[0]; k++)
         if (out->colour == colour_causes[k].model)
             name_cause(f, colour_causes[k].key, TAG_ALL, "%s", colour_causes[k].text);
-    answers_free(&ac);
-    answers_free(&ak);
+    answers_free(&camera_answers);
+    answers_free(&colour_answers);
 }
 
 /* ==== Parts 4 and 5 ========================================================= */
