@@ -174,28 +174,30 @@ $(BUILD)/bin/stagecheck: $(BUILD)/grader/stagecheck_main.o $(BUILD)/grader/inclu
                          $(BUILD)/tools/utf8.o $(BUILD)/kit/libkit.a
 
 # ---- the autograder (tests/grader) ------------------------------------------
-# A part's program links its harness (HARNESS_PART=K: the K-th of STAGES) with
-# the student's file; harness_render.o draws the report page's scene.
-PART_KS    = 1 2 3 4 5 6
-HARNESS    = $(PART_KS:%=$(BUILD)/grader/harness_%.o) $(BUILD)/grader/harness_render.o
+# A part's program links its harness (harness_partP.o, P one of PARTS, built
+# with HARNESS_PART=PART_P) with the student's file; harness_render.o draws
+# the report page's scene.
+PARTS      = 1 2 3a 3b 4 5
+stage_of   = $(filter part$(1)_%,$(STAGES))
+part_macro = -DHARNESS_PART=PART_$(subst a,A,$(subst b,B,$(1)))
+HARNESS    = $(PARTS:%=$(BUILD)/grader/harness_part%.o) $(BUILD)/grader/harness_render.o
 GRADER_REF = $(if $(HAVE_SOLUTIONS),$(STAGES:%=$(BUILD)/grader/ref_%.o))
 GRADE_DEFS = $(if $(and $(HAVE_ORACLE),$(wildcard tests/hidden/hidden.c)),-DGRADER_ORACLE)
-$(PART_KS:%=$(BUILD)/grader/harness_%.o): $(BUILD)/grader/harness_%.o: tests/grader/harness.c \
+$(PARTS:%=$(BUILD)/grader/harness_part%.o): $(BUILD)/grader/harness_part%.o: tests/grader/harness.c \
         tests/grader/hexfloat.h tests/grader/harness_init.h $(KIT_HDR) | $(BUILD)/grader/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -c $< -o $@
+	$(Q)$(CC) $(CFLAGS) -Ilabs $(call part_macro,$*) -c $< -o $@
 $(BUILD)/grader/ref_%.o: $(BUILD)/sub/solutions/%.o
 	$(Q)cp $< $@
-# On Linux runner_partP (harness_load_K.o, K = part_k of P) loads the student's
-# file as a shared object, with the reference of the other parts (3a's: no 3b).
-RUNNERS    = $(if $(filter Linux,$(SYSTEM)),$(patsubst %,$(BUILD)/grader/runner_part%,1 2 3a 3b 4 5))
-runner_refs = $(if $(HAVE_SOLUTIONS),$(filter-out $(BUILD)/grader/ref_$(word $(1),$(STAGES)).o \
-              $(if $(filter 3,$(1)),$(BUILD)/grader/ref_part3b_ray_color.o),$(GRADER_REF)))
-$(PART_KS:%=$(BUILD)/grader/harness_load_%.o): $(BUILD)/grader/harness_load_%.o: tests/grader/harness.c \
+# On Linux runner_partP (harness_load_partP.o) loads the student's file as a
+# shared object, with the reference of the other parts (3a's: no 3b).
+RUNNERS    = $(if $(filter Linux,$(SYSTEM)),$(PARTS:%=$(BUILD)/grader/runner_part%))
+runner_refs = $(if $(HAVE_SOLUTIONS),$(filter-out $(BUILD)/grader/ref_$(call stage_of,$(1)).o \
+              $(if $(filter 3a,$(1)),$(BUILD)/grader/ref_part3b_ray_color.o),$(GRADER_REF)))
+$(PARTS:%=$(BUILD)/grader/harness_load_part%.o): $(BUILD)/grader/harness_load_part%.o: tests/grader/harness.c \
         tests/grader/harness_load.h tests/grader/harness_init.h tests/grader/hexfloat.h $(KIT_HDR) | $(BUILD)/grader/.
-	$(Q)$(CC) $(CFLAGS) -Ilabs -DHARNESS_PART=$* -DHARNESS_LOAD $(if $(HAVE_SOLUTIONS),-DHARNESS_REFS) -c $< -o $@
-part_k     = $(word 2,$(subst :, ,$(filter $(1):%,1:1 2:2 3a:3 3b:4 4:5 5:6)))
-$(RUNNERS): $(BUILD)/grader/runner_part%: $(BUILD)/grader/harness_load_$$(call part_k,$$*).o \
-        $(BUILD)/grader/harness_load.o $$(call runner_refs,$$(call part_k,$$*))
+	$(Q)$(CC) $(CFLAGS) -Ilabs $(call part_macro,$*) -DHARNESS_LOAD $(if $(HAVE_SOLUTIONS),-DHARNESS_REFS) -c $< -o $@
+$(RUNNERS): $(BUILD)/grader/runner_part%: $(BUILD)/grader/harness_load_part%.o \
+        $(BUILD)/grader/harness_load.o $$(call runner_refs,$$*)
 	$(Q)$(CC) $(CFLAGS) -rdynamic $^ -o $@ $(LDLIBS) -ldl
 # bin/sortsubs sorts a class's download from an LMS for grade-all.
 grader: $(BUILD)/bin/grade $(HARNESS) $(GRADER_REF) $(RUNNERS) $(BUILD)/bin/sortsubs

@@ -899,7 +899,7 @@ int build_part(const BuildConfig *cfg, int part, const char *submission, Build *
     int parts[2] = { part, PART3A };
     int nparts = part == PART3B && !cfg->reference ? 2 : 1;
     char harness[32];
-    snprintf(harness, sizeof harness, "harness_%d.o", part + 1);
+    snprintf(harness, sizeof harness, "harness_part%s.o", part_label(part));
     return build_program(cfg, harness, parts, nparts, part, NULL, submission, b, err, errlen);
 }
 

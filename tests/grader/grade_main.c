@@ -765,8 +765,8 @@ static void say_what_was_done(const Submissions *s, const char *dir, const char 
     else if (!sandbox_drops_privileges())
         printf("graded as yourself, not as root, where this system gives no namespaces: each "
                "submission's code ran as you, and could read and change your files and stop your "
-               "processes; grade code you do not trust as root (handouts/instructor-guide.md, "
-               "\"Grading a class\")\n");
+               "processes; grade code you do not trust as root, where each submission's code runs as an "
+               "unprivileged user of its own\n");
     if (s->ndots)
         printf("left out %d folder%s of the system's own (a name starting with \".\", or macOS's __MACOSX), "
                "not taken for a submission: %s\n", s->ndots, s->ndots == 1 ? "" : "s", s->hidden);

@@ -1,8 +1,8 @@
 /*
  * harness.c - the child side of a test: the only grader code that shares a
- * process with student code.  Built once per part (-DHARNESS_PART=1, 2, 3
- * for 3a, 4 for 3b, 5 for Part 4, 6 for Part 5) and linked with that part's
- * student file; it calls no other part's function itself.
+ * process with student code.  Built once per part (-DHARNESS_PART=PART_1,
+ * PART_2, PART_3A, PART_3B, PART_4 or PART_5, below) and linked with that
+ * part's student file; it calls no other part's function itself.
  *
  * Reads from stdin, one or more tests, each:
  *                     KIND N
@@ -35,6 +35,15 @@
 #endif
 
 #include "hexfloat.h"
+
+/* The parts, counted from 0 in the contract's order (contract.h), as the
+ * grader's PART1 ... PART5 count them: HARNESS_PART is one of these. */
+#define PART_1  0
+#define PART_2  1
+#define PART_3A 2
+#define PART_3B 3
+#define PART_4  4
+#define PART_5  5
 
 #include <limits.h>
 #include <stdio.h>
@@ -135,7 +144,7 @@ static void put(const double *v, int n)
         fflush(answers);
 }
 
-#if HARNESS_PART == 3 || HARNESS_PART == 5 || HARNESS_PART == 6
+#if HARNESS_PART == PART_3A || HARNESS_PART == PART_4 || HARNESS_PART == PART_5
 /* The answer of Parts 3a, 4 and 5: 1 and t for a hit, 0 and 0 for a miss. */
 static void put_hit(bool hit, double t)
 {
@@ -156,7 +165,7 @@ static int get(double *v, int n)
     return 0;
 }
 
-#if HARNESS_PART == 4
+#if HARNESS_PART == PART_3B
 static Scene scene;                     /* a color or image test's */
 
 /* Reads the scene of a color or image test (KIND) into scene, in place of
@@ -191,7 +200,7 @@ static int read_scene(const char *kind)
 }
 #endif
 
-#if HARNESS_PART == 6
+#if HARNESS_PART == PART_5
 static Triangle *mesh;                  /* a mesh test's, or NULL */
 static int nmesh;
 
@@ -226,19 +235,19 @@ static int one_case(const char *kind)
 {
     (void)kind;                         /* Part 3b reads it */
     double in[15];
-#if HARNESS_PART == 1
+#if HARNESS_PART == PART_1
     if (get(in, 3))
         return 3;
     double out[2];
     image_plane_size(in[0], in[1], in[2], &out[0], &out[1]);
     put(out, 2);
-#elif HARNESS_PART == 2
+#elif HARNESS_PART == PART_2
     if (get(in, 7))
         return 3;
     Vec3 p = pixel_coordinates((int)in[0], (int)in[1], (int)in[2], (int)in[3], in[4], in[5], in[6]);
     double out[3] = { p.x, p.y, p.z };
     put(out, 3);
-#elif HARNESS_PART == 3
+#elif HARNESS_PART == PART_3A
     if (get(in, 10))
         return 3;
     Sphere s = { vec3(in[0], in[1], in[2]), in[3], vec3(1, 1, 1) };
@@ -246,7 +255,7 @@ static int one_case(const char *kind)
     double t = 0;
     bool hit = sphere_intersect(&s, &r, &t);
     put_hit(hit, t);
-#elif HARNESS_PART == 4
+#elif HARNESS_PART == PART_3B
     double out[6];
     if (strcmp(kind, "camera") == 0) {
         if (get(in, 6))
@@ -270,7 +279,7 @@ static int one_case(const char *kind)
         out[0] = col.x, out[1] = col.y, out[2] = col.z;
         put(out, 3);
     }
-#elif HARNESS_PART == 5
+#elif HARNESS_PART == PART_4
     if (get(in, 12))
         return 3;
     Plane pl = { vec3(in[0], in[1], in[2]), vec3(in[3], in[4], in[5]), vec3(1, 1, 1) };
@@ -278,7 +287,7 @@ static int one_case(const char *kind)
     double t = 0;
     bool hit = plane_intersect(&pl, &r, &t);
     put_hit(hit, t);
-#elif HARNESS_PART == 6
+#elif HARNESS_PART == PART_5
     bool hit = false;
     double t = 0;
     if (mesh) {
@@ -303,7 +312,7 @@ static int one_case(const char *kind)
     }
     put_hit(hit, t);
 #else
-#error "HARNESS_PART must be 1, 2, 3 (Part 3a), 4 (Part 3b), 5 (Part 4) or 6 (Part 5)"
+#error "HARNESS_PART must be PART_1, PART_2, PART_3A, PART_3B, PART_4 or PART_5"
 #endif
     return 0;
 }
@@ -313,10 +322,10 @@ static int one_case(const char *kind)
  * 0 on success, 3 on malformed input. */
 static int one_test(const char *kind, int n)
 {
-#if HARNESS_PART == 4
+#if HARNESS_PART == PART_3B
     if (read_scene(kind) != 0)
         return 3;
-#elif HARNESS_PART == 6
+#elif HARNESS_PART == PART_5
     if (read_mesh(kind) != 0)
         return 3;
 #endif

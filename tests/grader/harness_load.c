@@ -26,10 +26,10 @@ double (*volatile harness_keep_libm)(double) = tan;
 static const char *const stages[] = { CONTRACT_STAGE_NAMES };
 static const struct {
     const char *name;
-    int part;                       /* HARNESS_PART's numbering, from 1 */
+    int part;                       /* counted from 0, as contract.h counts */
     void *slot;
 } functions[] = {
-#define ROW(function, part) { #function, part + 1, &load_##function },
+#define ROW(function, part) { #function, part, &load_##function },
     CONTRACT_FUNCTIONS(ROW)
 #undef ROW
 };
@@ -74,7 +74,7 @@ int harness_load(int part, bool refs, const char *path, char *why, size_t whylen
         } else if (f && refs) {
             snprintf(why, whylen, "multiple definition of `%s': it belongs in %s.c, which this "
                      "part is graded with; define it only there", functions[k].name,
-                     stages[functions[k].part - 1]);
+                     stages[functions[k].part]);
             return -1;
         }
     }

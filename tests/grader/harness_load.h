@@ -19,8 +19,8 @@ extern Vec3 (*load_ray_color)(const Scene *, const Ray *);
 extern bool (*load_plane_intersect)(const Plane *, const Ray *, double *);
 extern bool (*load_triangle_intersect)(const Triangle *, const Ray *, double *);
 
-/* Loads the shared object path for the harness of part (HARNESS_PART's
- * numbering) and checks what the linker of a whole program would: every
+/* Loads the shared object path for the harness of part (HARNESS_PART:
+ * counted from 0, as contract.h counts) and checks what the linker of a whole program would: every
  * symbol it uses is defined (the runner's C library, libm and, with refs,
  * the reference for every other part), it defines its part's functions,
  * and it does not define main or, with refs, another part's function.

@@ -1,5 +1,5 @@
 /*
- * sandbox.c - see sandbox.h.  POSIX: fork, setpgid, setrlimit, poll; vfork
+ * sandbox.c - see sandbox.h.  POSIX: fork, setsid, setrlimit, poll; vfork
  * on Linux (macOS deprecates it), or the jail's clone (jail.c), which
  * shares memory as vfork does; and what each system offers to see a
  * process's memory (/proc on Linux, libproc on macOS).
@@ -28,6 +28,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/ioctl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/types.h>
@@ -334,11 +335,28 @@ static void plan_child(ChildPlan *cp, const SandboxSpec *spec, int in_r, int ans
     }
 }
 
+/* A session of its own, with no controlling terminal: through /dev/tty the
+ * child could otherwise write on the grader's terminal, or push input into
+ * it (TIOCSTI) that the grader's shell would run once grading ends.  Where
+ * the parent made it a group leader first (fork, on macOS), setsid is
+ * refused: it gives the terminal up instead. */
+JAIL_CHILD_CODE static void leave_terminal(void)
+{
+    if (setsid() >= 0)
+        return;
+    setpgid(0, 0);
+    int tty = open("/dev/tty", O_RDWR | O_NOCTTY | O_CLOEXEC);
+    if (tty >= 0) {
+        ioctl(tty, TIOCNOTTY);
+        close(tty);
+    }
+}
+
 /* In the child, after vfork (Linux), fork, or in the jail: never returns. */
 JAIL_CHILD_CODE static void child(const ChildPlan *cp)
 {
     const SandboxSpec *spec = cp->spec;
-    setpgid(0, 0);
+    leave_terminal();
     signal(SIGPIPE, SIG_DFL);
     if (!cp->jailed)
         prefer_oom_kill();          /* the jail does it as it enters (jail.c) */

@@ -279,7 +279,7 @@ cflags=$(printf 'portability-flags:\n\t@echo $(CFLAGS) $(THREADS)\n' | ${MAKE:-m
 # without it).
 # shellcheck disable=SC2046
 set -- $(grep '\.c$' "$tmp/csrc")
-$cc $cflags -Werror -fsyntax-only -Ilabs -DHARNESS_PART=1 -DGRADER_ORACLE "$@" >"$tmp/werror.log" 2>&1
+$cc $cflags -Werror -fsyntax-only -Ilabs -DHARNESS_PART=PART_1 -DGRADER_ORACLE "$@" >"$tmp/werror.log" 2>&1
 status=$?
 check "$cc -std=c11 -pedantic -Werror compiles $# C files: $(grep -E 'error:|warning:' "$tmp/werror.log" | head -n 5 | tr '\n' ' ')" \
     test "$status" -eq 0
@@ -381,7 +381,7 @@ if [ -n "${MACOS_SDK:-}" ]; then
         for target in arm64-apple-macos13 x86_64-apple-macos10.15; do
             # shellcheck disable=SC2046,SC2086
             clang --target=$target -isysroot "$MACOS_SDK" $cflags -Werror -fsyntax-only -Ilabs \
-                -DHARNESS_PART=1 -DGRADER_ORACLE $(grep '\.c$' "$tmp/csrc") >>"$tmp/mac.log" 2>&1
+                -DHARNESS_PART=PART_1 -DGRADER_ORACLE $(grep '\.c$' "$tmp/csrc") >>"$tmp/mac.log" 2>&1
             check "every C file against $MACOS_SDK for $target: $(grep -E 'error:|warning:' "$tmp/mac.log" | head -n 5 | tr '\n' ' ')" \
                 test $? -eq 0
         done

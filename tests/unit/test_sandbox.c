@@ -9,6 +9,7 @@
  * elsewhere.  Run in the mode the system allows, and again with
  * GRADE_JAIL=fallback (tests/run.sh).
  */
+#define _XOPEN_SOURCE 700     /* posix_openpt and the rest of a pseudo-terminal */
 #include "check.h"            /* first: it sets the POSIX feature level */
 #include <stdbool.h>
 #include <dirent.h>
@@ -16,7 +17,12 @@
 #include <fcntl.h>
 #include <pwd.h>
 #include <time.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <sys/ioctl.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include "../grader/jail.h"
 #include "kit/savefile.h"
 #include "../grader/sandbox.h"
@@ -402,6 +408,53 @@ static void test_descriptors_closed(void)
     }
 }
 
+/* Opened from the grader's session, a child with a controlling terminal
+ * could write on it and push input into it (TIOCSTI).  Here a process that
+ * has a terminal of its own (a pseudo-terminal, its controlling terminal)
+ * runs a child that tries to open /dev/tty.  Exit status of that process:
+ * 0 the child could not, 1 it could, 2 no terminal to be had here. */
+static int terminal_probe(void)
+{
+    alarm(60);                      /* never a hung suite */
+    int master = posix_openpt(O_RDWR | O_NOCTTY);
+    if (master < 0 || grantpt(master) != 0 || unlockpt(master) != 0 || !ptsname(master) || setsid() < 0)
+        return 2;
+    int tty = open(ptsname(master), O_RDWR);
+    if (tty >= 0)
+        ioctl(tty, TIOCSCTTY, 0);   /* Linux made it ours as it opened; BSD needs this */
+    int own = open("/dev/tty", O_RDWR);
+    if (tty < 0 || own < 0)
+        return 2;
+    close(own);
+    SandboxResult res;
+    SandboxSpec spec = { .memory_mb = 48, .max_procs = -1 };
+    if (run_sh("(: <>/dev/tty) 2>/dev/null && echo reached >&3; echo checked >&3", spec, &res) != 0)
+        return 2;
+    int reached = strstr(res.answer, "checked") && strstr(res.answer, "reached") ? 1 : 0;
+    if (!strstr(res.answer, "checked"))
+        reached = 1;                /* the check did not run: no pass */
+    sandbox_result_free(&res);
+    return reached;
+}
+
+static void test_no_terminal(void)
+{
+    fflush(stdout);
+    pid_t pid = fork();
+    if (pid == 0)
+        _exit(terminal_probe());
+    CHECK(pid > 0);
+    int status = 0;
+    if (pid <= 0 || waitpid(pid, &status, 0) != pid)
+        return;
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 2) {
+        printf("    skipped: no pseudo-terminal to be had here\n");
+        return;
+    }
+    CHECK_MSG(WIFEXITED(status) && WEXITSTATUS(status) == 0,
+              "a child reached the grader's terminal through /dev/tty (status %d)", status);
+}
+
 /* output_stop: a child that prints without end is stopped once the parent
  * has read that much, long before its time is up, and says so; output_max
  * of it is kept.  Without output_stop the same child runs out of time. */
@@ -545,6 +598,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_oom_score_adj),    CHECK_TEST(test_killed_reported),  CHECK_TEST(test_cpu_limit),
     CHECK_TEST(test_wall_clock),       CHECK_TEST(test_no_file_output),   CHECK_TEST(test_no_processes),
     CHECK_TEST(test_descriptors_closed), CHECK_TEST(test_output_stop), CHECK_TEST(test_spare_users),
+    CHECK_TEST(test_no_terminal),
 };
 
 int main(int argc, char **argv)
