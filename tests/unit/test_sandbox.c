@@ -10,6 +10,7 @@
  * GRADE_JAIL=fallback (tests/run.sh).
  */
 #define _XOPEN_SOURCE 700     /* posix_openpt and the rest of a pseudo-terminal */
+#define _DARWIN_C_SOURCE      /* macOS: the rest too */
 #include "check.h"            /* first: it sets the POSIX feature level */
 #include <stdbool.h>
 #include <dirent.h>
