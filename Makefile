@@ -297,7 +297,7 @@ FUZZ_FLAGS  = $(STD) -g -O1 $(FPFLAGS) $(WARN) -fsanitize=fuzzer,address,undefin
               -fno-sanitize-recover=all
 FUZZ_SRC    = $(filter-out labs/kit/render.c labs/kit/closest.c,$(KIT_SRC)) $(wildcard tests/grader/fig_*.c) \
               $(addprefix tests/grader/,cases.c check.c config.c markup.c figures.c) \
-              $(addprefix tests/tools/,json_read.c base64.c utf8.c)
+              $(addprefix tests/tools/,base64.c utf8.c)
 FUZZ_OBJ    = $(FUZZ_SRC:%.c=$(OUT_ROOT)/fuzz/obj/%.o)
 $(OUT_ROOT)/fuzz/obj/%.o: %.c $(GRADER_HDR) $(wildcard tests/tools/*.h) | $$(@D)/.
 	$(Q)$(FUZZ_CC) $(FUZZ_FLAGS) -Ilabs -c $< -o $@

@@ -16,7 +16,7 @@ out=${FUZZ_OUT:-out/fuzz}
 seconds=${FUZZ_SECONDS:-30}
 case $seconds in '' | *[!0-9]* | 0) echo "FUZZ_SECONDS must be a whole number of seconds above 0" >&2; exit 2 ;; esac
 if [ $# -eq 0 ]; then
-    set -- scene obj png ppm inflate answers figures tests weights json
+    set -- scene obj png ppm inflate answers figures tests weights
 fi
 for name in "$@"; do
     if [ ! -f "tests/fuzz/fuzz_$name.c" ]; then
@@ -94,11 +94,6 @@ for name in "$@"; do
         done
         ;;
     weights) seed weights tests/weights.conf ;;
-    json)
-        printf '{"score": 12.5, "tests": [{"name": "a\\u00e9", "status": "passed"}], "x": [true, false, null]}' \
-            >"$dir/results.json"
-        printf '[1e308, -0, 0.5e-3, "\\ud83d\\ude00", {}]' >"$dir/array.json"
-        ;;
     esac
 done
 

@@ -48,6 +48,7 @@ typedef struct {
     int status;                /* its grading's exit status              */
     bool no_stage_file;
     bool record;               /* its record was read whole              */
+    char *error;               /* why its grading stopped without a grade, or NULL */
     ClassPart part[NPARTS];
     int nfails;
     ClassFail *fails;

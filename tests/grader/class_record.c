@@ -4,6 +4,7 @@
  * read back by grade --all (class_record_read).  One item a line:
  *
  *     rtclass 1
+ *     error TEXT                       the grading stopped without a grade: why
  *     part P BUILT REFUSED RANOUT      each graded part (P: "1" ... "5")
  *     why P TEXT                       a part that did not build: what the build said
  *     cause P KEY TEXT                 each cause the diagnosis named, its sentence
@@ -105,6 +106,17 @@ int class_record_write(const char *path, const Grade *g, double timeout, char *e
     return 0;
 }
 
+void class_record_write_error(const char *path, const char *msg)
+{
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return;                     /* the class page says the status alone */
+    fprintf(f, "rtclass 1\nerror ");
+    put_text(f, msg);
+    fprintf(f, "end\n");
+    fclose(f);
+}
+
 /* ---- reading it back ------------------------------------------------------ */
 
 /* The text at s, to the end of its line, unescaped: a fresh string. */
@@ -189,6 +201,8 @@ static bool read_line(ClassSub *s, const char *line)
     int b, r, t;
     if (strncmp(line, "fail ", 5) == 0)
         return read_fail(s, line + 5);
+    if (strncmp(line, "error ", 6) == 0 && !s->error)
+        return (s->error = get_text(line + 6)) != NULL;
     const char *rest = line + strcspn(line, " \n");
     if (*rest++ != ' ')
         return false;
@@ -238,6 +252,7 @@ void class_sub_free(ClassSub *s)
         free(s->part[p].why);
     }
     free(s->fails);
+    free(s->error);
     free(s->name);
     memset(s, 0, sizeof *s);
 }

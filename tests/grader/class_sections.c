@@ -8,8 +8,6 @@
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "class_model.h"
 #include "build.h"
-#include "../tools/json_read.h"
-#include "kit/savefile.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -123,23 +121,14 @@ static void why_line(const char *why, char *out, size_t n)
     snprintf(out, n, "%.*s", (int)strcspn(pick, "\n"), pick);
 }
 
-/* What the results file of a submission whose grading reported no points
- * says (its "output", the grader's message), first line. */
-static void error_line(const ClassView *v, const ClassSub *sub, char *out, size_t n)
+/* Why the grading of a submission stopped without reporting its points:
+ * the first line of what its record says, or its status. */
+static void error_line(const ClassSub *sub, char *out, size_t n)
 {
-    char path[PATH_MAX + 300];
-    size_t len;
-    snprintf(path, sizeof path, "%s/%s.json", v->run->out, sub->name);
-    char *text = kit_load_file(path, 64u << 20, &len), err[80];
-    JsonValue doc;
-    snprintf(out, n, "its grading ended with status %d and reported no points", sub->status);
-    if (text && json_parse(text, len, &doc, err, sizeof err) == 0) {
-        const JsonValue *o = json_member(&doc, "output");
-        if (o && o->type == JSON_STRING && o->string[0])
-            snprintf(out, n, "%.*s", (int)strcspn(o->string, "\n"), o->string);
-        json_value_free(&doc);
-    }
-    free(text);
+    if (sub->error && sub->error[0])
+        snprintf(out, n, "%.*s", (int)strcspn(sub->error, "\n"), sub->error);
+    else
+        snprintf(out, n, "its grading ended with status %d and reported no points", sub->status);
 }
 
 static void need_row(Markup *m, const ClassView *v, int s, int need, int part, const char *why)
@@ -160,7 +149,7 @@ static int need_rows(Markup *m, const ClassView *v, int s, int need)
     char why[600];
     int rows = 0;
     if (need == NEED_ERROR && !sub->summary) {
-        error_line(v, sub, why, sizeof why);
+        error_line(sub, why, sizeof why);
         need_row(m, v, s, need, -1, why);
         return 1;
     }

@@ -87,6 +87,8 @@ static int fail(const char *results, const char *fmt, const char *what)
     if (results && (results_prairielearn ? report_prairielearn_error(results, msg, err, sizeof err)
                                          : report_json_error(results, msg, err, sizeof err)) != 0)
         fprintf(stderr, "grade: %s\n", err);
+    if (class_record)
+        class_record_write_error(class_record, msg);
     return 2;
 }
 

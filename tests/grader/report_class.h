@@ -41,6 +41,10 @@ const char *class_record_path(const ClassRun *run, int k, char *buf, size_t n);
  * limit in seconds.  0, or -1 with a reason in err. */
 int class_record_write(const char *path, const Grade *g, double timeout, char *err, size_t errlen);
 
+/* Writes to path the record of a grading that stopped without a grade:
+ * msg, why (the class page shows it); nothing when it cannot. */
+void class_record_write_error(const char *path, const char *msg);
+
 /* Submission k (0, 1, ... in the order graded, which is the gradebook's),
  * named name: values is its summary (each part's core points, then the
  * hard-case points and the total), or NULL when its grading reported none
