@@ -370,7 +370,7 @@ endef
 
 UNIT_NAMES = $(basename $(notdir $(wildcard tests/unit/test_*.c)))
 unit_libs  = $(if $(HAVE_ORACLE),$(1)/oracle/liboracle.a) $(1)/tools/libtools.a $(1)/kit/libkit.a
-GRADER_UNITS = sandbox include_scan memo cases check linkmsg lookalike own_headers lmsname terminal csv
+GRADER_UNITS = sandbox include_scan cases check linkmsg lookalike own_headers lmsname terminal csv
 UNIT_LINKED = $(filter-out $(GRADER_UNITS:%=test_%) test_hidden test_figures test_bvh,$(UNIT_NAMES))
 BVH_RENAME = -Dsphere_intersect=reference_sphere_intersect -Dtriangle_intersect=reference_triangle_intersect
 BVH_OWN    = part3a_sphere_intersect part5_triangle_intersect

@@ -5,7 +5,6 @@
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "build.h"
 #include "contract.h"
-#include "memo.h"
 #include "grader.h"
 #include "include_scan.h"
 #include "jail.h"
@@ -25,10 +24,6 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-/* How long a grading waits for one beside it to compile the same file: more
- * than the compiler may take (CC_SECONDS). */
-#define MEMO_WAIT_SECONDS (CC_SECONDS + 10)
 
 
 /* The compiler's limits, per run (tests/grader/README.md, "Limits").
@@ -480,30 +475,22 @@ static int check_dependencies(const BuildConfig *cfg, Build *b, const char *depf
  * once the runner has loaded it: the build is left unchecked, and the
  * part's first run tells (build_link_verdict), or build_check.  Returns as
  * build_program. */
-static int load_program(const BuildConfig *cfg, Build *b, int part, const char *ofile,
-                        const MemoEntry *memo, char *err, size_t errlen)
+static int load_program(const BuildConfig *cfg, Build *b, int part, const char *ofile, char *err,
+                        size_t errlen)
 {
-    char so[PATH_MAX], from_memo[1200] = "", out[700];
+    char so[PATH_MAX], out[700];
     snprintf(so, sizeof so, "%s/src/student.so", b->dir);
-    if (memo->dir[0])
-        memo_path(memo, "student.so", from_memo, sizeof from_memo);
-    bool have = from_memo[0] && access(from_memo, R_OK) == 0 &&
-                copy_file(from_memo, so, 64 << 20, err, errlen) == 0;
-    if (!have) {
-        snprintf(out, sizeof out, "%s/student.so", b->rundir);
-        char *so_argv[] = { (char *)cfg->cc, "-shared", "-nostdlib", "-Wl,-Bsymbolic", (char *)ofile,
-                            "-lgcc", "-o", out, NULL };
-        const char *keep[] = { "student.so", NULL };
-        int rc = run_cc(cfg, b, so_argv, keep, &b->cpu_link, err, errlen);
-        if (rc != 0)
-            return rc < 0 ? -1 : 0;
-        if (access(so, R_OK) != 0) {
-            snprintf(err, errlen, "the linker wrote no student.so");
-            return -1;
-        }
+    snprintf(out, sizeof out, "%s/student.so", b->rundir);
+    char *so_argv[] = { (char *)cfg->cc, "-shared", "-nostdlib", "-Wl,-Bsymbolic", (char *)ofile,
+                        "-lgcc", "-o", out, NULL };
+    const char *keep[] = { "student.so", NULL };
+    int rc = run_cc(cfg, b, so_argv, keep, &b->cpu_link, err, errlen);
+    if (rc != 0)
+        return rc < 0 ? -1 : 0;
+    if (access(so, R_OK) != 0) {
+        snprintf(err, errlen, "the linker wrote no student.so");
+        return -1;
     }
-    if (from_memo[0] && access(from_memo, F_OK) != 0)
-        memo_keep(memo, "student.so", so);
     char from[PATH_MAX];
     snprintf(from, sizeof from, "%s/runner_part%s", cfg->objdir, part_label(part));
     if (copy_file(from, b->runner, 16 << 20, err, errlen) || chmod(b->runner, 0755))
@@ -550,50 +537,22 @@ int build_check(Build *b, char *err, size_t errlen)
     return 0;
 }
 
-/* Copies the object kept in e to opath, then says what the compiler said;
- * false if e lacks one. */
-static bool served(Build *b, MemoEntry *e, const char *opath)
-{
-    char from[1200], why[256];
-    memo_path(e, "object.o", from, sizeof from);
-    if (!e->found || access(from, R_OK) != 0 || copy_file(from, opath, 64 << 20, why, sizeof why))
-        return false;
-    char *said = memo_read_text(e, "messages");
-    if (said)
-        say(b, said);
-    free(said);
-    memo_use(e);
-    return true;
-}
-
 /* Compiles the stage file copied into the build (b->dir/src/<stage>.c) to
- * <stage>.o beside it, or takes the object the same bytes built before in
- * this grade --all run (cfg->memo).  defines: NULL, or up to four -D
- * options, with which it is compiled afresh (no memo).  Returns 0 when
+ * <stage>.o beside it.  defines: NULL, or up to four -D options.  Returns 0 when
  * there is an object, 1 when the student's file did not build (b->messages
  * says why), -1 when the grader could not run the compiler (err). */
 static int compile_stage(const BuildConfig *cfg, Build *b, const char *stage, bool load,
-                         char *const *defines, MemoEntry *memo, char *err, size_t errlen)
+                         char *const *defines, char *err, size_t errlen)
 {
-    const char *kind = load ? "pic" : "o";
-    char cfile[80], ofile[80], dfile[80], cpath[PATH_MAX + 700], opath[PATH_MAX + 700],
-         dpath[PATH_MAX + 700], oout[700], dout[700];
+    char cfile[80], ofile[80], dfile[80], opath[PATH_MAX + 700], dpath[PATH_MAX + 700], oout[700],
+         dout[700];
     snprintf(cfile, sizeof cfile, "%s.c", stage);
     snprintf(ofile, sizeof ofile, "%s.o", stage);
     snprintf(dfile, sizeof dfile, "%s.d", stage);
-    snprintf(cpath, sizeof cpath, "%s/src/%s", b->dir, cfile);
     snprintf(opath, sizeof opath, "%s/src/%s", b->dir, ofile);
     snprintf(dpath, sizeof dpath, "%s/src/%s", b->dir, dfile);
-    /* The same bytes built before in this grade --all run, or being built
-     * by a grading beside this one: what they built, and what the compiler
-     * said of them, again.  Else this grading compiles them, and says when
-     * it is done, whatever came of it. */
-    bool memo_on = !defines && memo_find(cfg->memo, stage, kind, cpath, memo);
-    if (memo_on && memo->found && memo_wait(memo, MEMO_WAIT_SECONDS) && served(b, memo, opath))
-        return 0;
     snprintf(oout, sizeof oout, "%s/%s", b->rundir, ofile);
     snprintf(dout, sizeof dout, "%s/%s", b->rundir, dfile);
-    size_t before = strlen(b->messages);
     char *argv[20] = { (char *)cfg->cc, "-std=c11", "-O1", "-ffp-contract=off", "-Wall", "-Wextra",
                        "-I.", "-MD", "-MF", dout, "-c", cfile, "-o", oout };
     int argc = 14;
@@ -610,12 +569,6 @@ static int compile_stage(const BuildConfig *cfg, Build *b, const char *stage, bo
     }
     if (rc == 0 && check_dependencies(cfg, b, dpath))
         rc = 1;
-    /* The messages first: an entry with an object has them. */
-    if (rc == 0 && memo_on && !memo->found && memo_keep_text(memo, "messages", b->messages + before) == 0 &&
-        memo_keep(memo, "object.o", opath) == 0)
-        memo_use(memo);
-    if (memo_on && !memo->found)
-        memo_keep_text(memo, "done", "");
     return rc;
 }
 
@@ -680,8 +633,8 @@ static int link_apart(const BuildConfig *cfg, Build *b, const char *submission, 
         char cpath[PATH_MAX + 700];
         snprintf(cpath, sizeof cpath, "%s/%s.c", b->src, stage_names[parts[k]]);
         if (nd > 0 && (access(cpath, R_OK) != 0 ||
-                       (rc = compile_stage(cfg, b, stage_names[parts[k]], false, defines[k], NULL,
-                                           err, errlen)) != 0))
+                       (rc = compile_stage(cfg, b, stage_names[parts[k]], false, defines[k], err,
+                                           errlen)) != 0))
             apart = false;
     }
     if (!apart)
@@ -750,7 +703,7 @@ static int copy_headers(const BuildConfig *cfg, const char *src, char *err, size
  * Returns 1 when it built, 0 when it did not (b says why), -1 when the
  * grader could not do its job (err says why). */
 static int build_stage(const BuildConfig *cfg, Build *b, const char *submission, const char *stage,
-                       bool load, MemoEntry *memo, char *err, size_t errlen)
+                       bool load, char *err, size_t errlen)
 {
     const char *src = b->src;
     char path[PATH_MAX], to[PATH_MAX + 700], cfile[80], cerr[512];
@@ -794,7 +747,7 @@ static int build_stage(const BuildConfig *cfg, Build *b, const char *submission,
         b->refused = true;          /* scan_includes said why */
         return 0;
     }
-    int rc = compile_stage(cfg, b, stage, load, NULL, memo, err, errlen);
+    int rc = compile_stage(cfg, b, stage, load, NULL, err, errlen);
     if (rc > 0) {
         explain_lookalikes(b, text, n, cfile);
         explain_own_headers(b, text, n, submission, cfile);
@@ -830,8 +783,7 @@ static int add_references(const BuildConfig *cfg, const char *src, int skip, cha
  * when skip >= 0 and cfg has them, the reference objects of every part but
  * skip; with cfg->load and one stage file of one part, that file as a
  * shared object and the part's prebuilt runner instead (load_program).
- * Each stage file's object comes from cfg->memo when the same bytes built
- * before in this grade --all run (compile_stage).  Returns 0 when the
+ * Returns 0 when the
  * grader could do its job (b->ok says whether the student's code built),
  * -1 when it could not (err says why). */
 static int build_program(const BuildConfig *cfg, const char *harness, const int *parts, int nparts,
@@ -852,7 +804,6 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
     char *link[16];
     int nlink = 0;
     static char names[16][96];
-    MemoEntry memo = { "", false };
     link[nlink++] = (char *)cfg->cc;
     link[nlink++] = "harness.o";
     for (int k = 0; k < nparts; k++) {
@@ -863,7 +814,7 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
         snprintf(to, sizeof to, "%s/%s", src, ofile);
         bool from_kept = kept && access(path, R_OK) == 0 &&
                          copy_file(path, to, 64 << 20, cerr, sizeof cerr) == 0;
-        int rc = from_kept ? 1 : build_stage(cfg, b, submission, stage, load, &memo, err, errlen);
+        int rc = from_kept ? 1 : build_stage(cfg, b, submission, stage, load, err, errlen);
         if (rc <= 0)
             return rc;
         snprintf(names[nlink], sizeof names[nlink], "%s", ofile);
@@ -871,7 +822,7 @@ static int build_program(const BuildConfig *cfg, const char *harness, const int 
         nlink++;
     }
     if (load)
-        return load_program(cfg, b, skip, names[nlink - 1], &memo, err, errlen);
+        return load_program(cfg, b, skip, names[nlink - 1], err, errlen);
     /* In the instructor's kit: the reference for every other part. */
     if (skip >= 0 && cfg->reference && add_references(cfg, src, skip, link, &nlink, names, err, errlen))
         return -1;

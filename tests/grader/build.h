@@ -14,22 +14,19 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-/* A stage file larger than this (1 MiB) is refused; the memo of builds
- * (memo.c) and make render's lookalike scan (lookalike_main.c) read no
- * more either. */
+/* A stage file larger than this (1 MiB) is refused; make render's
+ * lookalike scan (lookalike_main.c) reads no more either. */
 #define BUILD_SOURCE_MAX (1 << 20)
 
 typedef struct {
     const char *root;          /* the kit's root directory (absolute)          */
     const char *cc;            /* the compiler                                  */
-    const char *objdir;        /* prebuilt harness_<k>.o and, if any,
+    const char *objdir;        /* prebuilt harness_part<P>.o and, if any,
                                   the reference objects ref_<stage>.o          */
     bool reference;            /* reference objects exist for the other parts  */
     bool load;                 /* objdir has the prebuilt runners runner_part<P>
                                   (Linux): a part with one student file is
                                   built as a shared object they load       */
-    const char *memo;          /* NULL, or where grade --all keeps what each
-                                  distinct stage file built into (memo.h)   */
 } BuildConfig;
 
 typedef struct {

@@ -117,7 +117,6 @@ typedef struct {
     int nworst;
     ClassTestRow *worst;       /* most failed first                      */
     ClassPrevious previous;
-    ClassBuilds builds;
     int compiled;              /* files handed to the compiler (records)  */
     double seconds, cpu;       /* the run's wall-clock and CPU time       */
     double page_start;         /* when the page began to be counted       */

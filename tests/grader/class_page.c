@@ -146,12 +146,8 @@ static void cost(Markup *m, const ClassView *v)
                  "<tr><td>CPU</td><td class=\"num\">%.1f s</td><td>the grader and every program it "
                  "ran (compilers, the students' code): %.2f s a submission</td></tr>\n",
               v->seconds, v->cpu, n ? v->cpu / n : 0);
-    if (v->builds.built > 0)
-        mk_printf(m, "<tr><td>compiled</td><td class=\"num\">%d</td><td>distinct stage files, once "
-                     "each, for %d files in all</td></tr>\n", v->builds.built, v->builds.files);
-    else
-        mk_printf(m, "<tr><td>compiled</td><td class=\"num\">%d</td><td>stage files, each for "
-                     "itself</td></tr>\n", v->compiled);
+    mk_printf(m, "<tr><td>compiled</td><td class=\"num\">%d</td><td>stage files</td></tr>\n",
+              v->compiled);
     mk_printf(m, "<tr><td>this page</td><td class=\"num\">%.2f s</td><td>reading what each "
                  "grading found, counting it and drawing it (after the time above)</td></tr>\n"
                  "</table>\n", sandbox_now() - v->page_start);

@@ -158,10 +158,6 @@ static void write_page(const char *page, const Grade *g, const GradeConfig *cfg,
         report_renders_free(&rr);
 }
 
-/* grade --all's directory of what identical stage files built (memo.h);
- * given to each submission's grading with --memo, and used only as root. */
-static const char *memo_dir;
-
 /* In the student kit, whose tests/grader/shipped holds the headers as the
  * kit shipped them: says on stderr which of labs/raytracer.h and
  * labs/vec3.h a student has changed.  Instructors grade the stage files
@@ -267,8 +263,7 @@ static BuildConfig build_config(const char *root, const char *cc, char *objdir, 
     snprintf(runner, sizeof runner, "%s/runner_part1", objdir);
     const char *no_load = getenv("GRADE_NO_LOAD");
     BuildConfig bc = { .root = root, .cc = cc, .objdir = objdir, .reference = access(ref, R_OK) == 0,
-                       .load = access(runner, X_OK) == 0 && !(no_load && *no_load),
-                       .memo = memo_dir && sandbox_drops_privileges() ? memo_dir : NULL };
+                       .load = access(runner, X_OK) == 0 && !(no_load && *no_load) };
     return bc;
 }
 
@@ -376,29 +371,6 @@ typedef struct {
 static int by_name(const void *a, const void *b)
 {
     return strcmp(*(char *const *)a, *(char *const *)b);
-}
-
-/* What a grade --all run's memo holds: entries with an object (distinct
- * files compiled) and files that used them (counted in "uses"). */
-static void count_memo(const char *memo, int *built, int *files)
-{
-    DIR *d = opendir(memo);
-    if (!d)
-        return;
-    struct dirent *e;
-    while ((e = readdir(d))) {
-        char path[PATH_MAX + 300];
-        if (e->d_name[0] == '.')
-            continue;
-        snprintf(path, sizeof path, "%s/%s/object.o", memo, e->d_name);
-        if (access(path, F_OK) == 0)
-            (*built)++;
-        snprintf(path, sizeof path, "%s/%s/uses", memo, e->d_name);
-        struct stat st;
-        if (stat(path, &st) == 0)
-            *files += (int)st.st_size;
-    }
-    closedir(d);
 }
 
 /* As root, the ids the submissions graded at once run their code as, one
@@ -551,7 +523,6 @@ static int no_submissions(const char *dir, const Submissions *s)
 /* What every child of a grade --all run is given. */
 typedef struct {
     const char *self, *dir, *out, *weights;
-    const char *memo;           /* "", or where the distinct stage files built (memo.h) */
     ClassRun *class_run;        /* NULL, or the class page's */
     char (*users)[16];          /* as root: the ids the code runs as, one a place */
     bool *busy;                 /* as root: the places taken */
@@ -588,10 +559,6 @@ static int start_job(const AllRun *run, Job *j, int k, const char *name)
                            "--weights", (char *)run->weights, "--report-file", page,
                            "--quiet", "--summary" };
         int argc = 11;
-        if (run->memo[0]) {
-            argv[argc++] = "--memo";
-            argv[argc++] = (char *)run->memo;
-        }
         if (user[0]) {
             argv[argc++] = "--sandbox-user";
             argv[argc++] = (char *)user;
@@ -753,11 +720,9 @@ static int write_gradebook(const char *csv, const GradeConfig *cfg, const AllRun
 
 /* What the run did, after the gradebook is written. */
 static void say_what_was_done(const Submissions *s, const char *dir, const char *csv, const Gradebook *gb,
-                              int built, int files, bool as_users, int jobs)
+                              bool as_users, int jobs)
 {
     int n = s->n, nempty = gb->nempty, loose = s->loose;
-    if (built)
-        printf("compiled %d distinct stage files once each, for %d files in all\n", built, files);
     if (as_users && jobs > 1)
         printf("graded %d at a time, as root: each one's code ran as an unprivileged user of its "
                "own\n", jobs);
@@ -804,17 +769,7 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     if (!getcwd(here, sizeof here) || jail_make_private(here, err, sizeof err) != 0 ||
         jail_make_private(dir, err, sizeof err) != 0 || jail_make_private(out, err, sizeof err) != 0)
         return fail(NULL, "%s", err);
-    AllRun run = { self, dir, out, weights, "", class_begin(out, previous_out), NULL, NULL };
-
-    /* As root, each distinct stage file is compiled once (memo.h), in a
-     * directory only root may enter; as another user every file is
-     * compiled for itself.  GRADE_NO_MEMO=1 compiles every file. */
-    char memo[PATH_MAX] = "";
-    const char *no_memo = getenv("GRADE_NO_MEMO");
-    if (sandbox_drops_privileges() && !(no_memo && *no_memo) &&
-        build_tempdir(memo, sizeof memo, err, sizeof err) != 0)
-        memo[0] = '\0';
-    run.memo = memo;
+    AllRun run = { self, dir, out, weights, class_begin(out, previous_out), NULL, NULL };
 
     jobs = jobs < n ? jobs : n;      /* n > 0: an empty folder was refused above */
     if (sandbox_drops_privileges()) {
@@ -829,11 +784,6 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     rc = run_jobs(&run, &s, all, jobs);
     if (rc != 0)
         return rc;
-    int built = 0, files = 0;
-    if (memo[0]) {
-        count_memo(memo, &built, &files);
-        build_rmtree(memo);
-    }
     char csv[PATH_MAX];
     snprintf(csv, sizeof csv, "%s/gradebook.csv", out);
     Gradebook gb = { 0, 0, "" };
@@ -847,8 +797,8 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     free(run.busy);
     if (rc != 0)
         return rc;
-    say_what_was_done(&s, dir, csv, &gb, built, files, as_users, jobs);
-    class_finish(run.class_run, &cfg, &(ClassBuilds){ built, files }, load_tests);
+    say_what_was_done(&s, dir, csv, &gb, as_users, jobs);
+    class_finish(run.class_run, &cfg, load_tests);
     return gb.worst;
 }
 
@@ -874,7 +824,7 @@ int main(int argc, char **argv)
         { "--results", &results, EMPTY_IS_NULL }, { "--all", &all, TAKE },
         { "--out", &out, EMPTY_IS_DEFAULT },     { "--report", &report, TAKE },
         { "--report-file", &page, EMPTY_IS_NULL }, { "--weights", &weights, TAKE },
-        { "--format", &format, TAKE },           { "--memo", &memo_dir, TAKE },
+        { "--format", &format, TAKE },
         { "--class-record", &class_record, TAKE }, /* from grade --all */
         { "--previous", &previous_out, EMPTY_IS_NULL },
         { "--sandbox-user", &user, TAKE },       /* from grade --all, as root */

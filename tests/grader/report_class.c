@@ -364,12 +364,11 @@ static void view_free(ClassView *v)
     class_previous_free(&v->previous);
 }
 
-int class_finish(ClassRun *run, const GradeConfig *cfg, const ClassBuilds *builds,
-                 ClassLoadTests load_tests)
+int class_finish(ClassRun *run, const GradeConfig *cfg, ClassLoadTests load_tests)
 {
     if (!run)
         return -1;
-    ClassView v = { .run = run, .cfg = cfg, .builds = *builds, .page_start = sandbox_now() };
+    ClassView v = { .run = run, .cfg = cfg, .page_start = sandbox_now() };
     v.seconds = v.page_start - run->start;
     v.cpu = cpu_seconds();
     TestList tests = { 0 };

@@ -15,7 +15,7 @@
  *     ... the child for submission k: --class-record class_record_path(run, k)
  *     ... class_record_write(path, &g, cfg.timeout, ...)   (in the child)
  *     class_add(run, k, name, values, status, no_stage_file);   (for each k, in order)
- *     class_finish(run, &cfg, &builds, load_tests);        (frees run)
+ *     class_finish(run, &cfg, load_tests);                 (frees run)
  */
 #ifndef REPORT_CLASS_H
 #define REPORT_CLASS_H
@@ -53,13 +53,6 @@ void class_record_write_error(const char *path, const char *msg);
 void class_add(ClassRun *run, int k, const char *name, const double *values, int status,
                bool no_stage_file);
 
-/* What the run's builds were, for the cost: with the memo of identical
- * files (memo.h), distinct files built and the files that used them; both
- * 0 without the memo. */
-typedef struct {
-    int built, files;
-} ClassBuilds;
-
 /* Reads the tests a submission is graded with (grade_main.c's loader). */
 typedef int (*ClassLoadTests)(TestList *list, const GradeConfig *cfg, const bool parts[NPARTS],
                               char *err, size_t errlen);
@@ -67,7 +60,6 @@ typedef int (*ClassLoadTests)(TestList *list, const GradeConfig *cfg, const bool
 /* Writes OUT/causes.csv and OUT/index.html, says so on stdout (or why not
  * on stderr), removes the records and frees run.  Returns 0, or -1 when a
  * file was not written; the grades never depend on it. */
-int class_finish(ClassRun *run, const GradeConfig *cfg, const ClassBuilds *builds,
-                 ClassLoadTests load_tests);
+int class_finish(ClassRun *run, const GradeConfig *cfg, ClassLoadTests load_tests);
 
 #endif

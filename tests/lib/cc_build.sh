@@ -5,10 +5,7 @@
 # compiles each FILE.c on its own with the kit's flags (the Makefile's
 # CFLAGS, asked of make once) and -Werror, then links the objects into
 # DIR/PROGRAM with -lm; the compiler's words go to LOG.  Returns the first
-# failing step's status.  One step at a time, and the link run inside DIR
-# with names that are the same from run to run, because the compile memo of
-# `make test` keeps compiles and links (each by its arguments and inputs)
-# but not a command that does both.
+# failing step's status.
 cc_build() {
     cc_dir=$1 cc_prog=$2 cc_log=$3
     shift 3

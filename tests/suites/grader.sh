@@ -275,47 +275,8 @@ echo "   graded $(ls "$class" | wc -l | tr -d ' ') submissions in $(( $(date +%s
 check "grade --all ran (exit $status)" [ "$status" -le 1 ]
 check "the gradebook has a column per graded part" \
     grep -q "^submission,part1,part2,part3a,part3b,part4,part5,hard,total,status\$" "$tmp/grades/gradebook.csv"
-# As root each distinct stage file is built once per run (memo.h): here
-# the reference's files are the same in every submission.
-if [ "$(id -u)" = 0 ]; then
-    check "as root, grade --all builds identical files once ($(grep -e '^compiled ' "$tmp/all.out"))" \
-        awk '/^compiled [0-9]+ distinct stage files once each, for [0-9]+ files in all$/ {
-                 if ($2 > 0 && $2 < $9) ok = 1 }
-             END { exit !ok }' "$tmp/all.out"
-fi
 check_class_page "$tmp/grades" "$classconf" "$tmp/all.out"
 page_renders "$tmp/grades/index.html" "the class page" "$tmp"
-
-# Two gradings at once reaching the same file compile it once: the one that
-# finds the other's entry waits for its object.  A compiler made slow (a
-# pause before each compile) makes sure they meet.  Each compile says a
-# word drawn at random (the compiler runs in the jail, which lets it write
-# nowhere but its own folder), and the grader shows a stage file's
-# compiler messages with its results: a file compiled once shows the same
-# word in every submission that holds it, so the words count the compiles.
-if [ "$(id -u)" = 0 ]; then
-    same=$tmp/same-files
-    for s in a b c d; do
-        mkdir -p "$same/$s"
-        cp solutions/part1_image_plane.c solutions/part2_pixel_coordinates.c \
-            solutions/part3a_sphere_intersect.c solutions/part3b_ray_color.c "$same/$s/"
-    done
-    chmod -R a+rX "$same"
-    mkdir "$tmp/slow-bin"
-    cat >"$tmp/slow-bin/slow-cc" <<EOF2
-#!/bin/sh
-case " \$* " in *" -c "*) echo "compiled-\$(od -An -N8 -tx8 /dev/urandom | tr -d ' ')" >&2; sleep 0.3 2>/dev/null || sleep 1 ;; esac
-exec cc "\$@"
-EOF2
-    chmod 755 "$tmp/slow-bin" "$tmp/slow-bin/slow-cc"
-    CC=$tmp/slow-bin/slow-cc $grade --all "$same" --out "$tmp/grades-same" \
-        --weights "$core" --jobs 2 >"$tmp/same.out" 2>&1
-    cat "$tmp/grades-same"/*.json | grep -o 'compiled-[0-9a-f]*' | sort >"$tmp/cc-words"
-    check "four identical submissions graded two at a time: each of the 4 files compiled once ($(sort -u "$tmp/cc-words" | wc -l | tr -d ' ') compiles, their words shown $(wc -l <"$tmp/cc-words" | tr -d ' ') times; $(head -n 1 "$tmp/same.out"))" \
-        sh -c "[ \$(sort -u '$tmp/cc-words' | wc -l) -eq 4 ] && [ \$(sort '$tmp/cc-words' | uniq -c | awk '\$1 >= 4' | wc -l) -eq 4 ] && grep -qx 'compiled 4 distinct stage files once each, for 16 files in all' '$tmp/same.out'"
-    check "... and each got full marks" \
-        sh -c "[ \$(grep -c ',full marks\$' '$tmp/grades-same/gradebook.csv') -eq 4 ]"
-fi
 
 hard_failed() {   # hard_failed JSON PART: a test of the part tagged hard has failed
     awk -v p="\"Part $2: " '/"name": /   { name = $0; failed = 0 }
@@ -469,10 +430,7 @@ check "a failing case's input reads n.x = 0.48, n.y = 0.6, n.z = 0.64, not 17 di
 # Each submission below differs from the reference in one part's file, and
 # each part is graded on its own (the class above checks that the other
 # parts keep full marks), so each is graded whole on that part alone; the
-# reference itself is graded whole on every part.  Identical files: as root
-# the class above compiled each distinct file once (memo.h) and graded
-# the reference's files from that one object; here the reference's are
-# compiled for the reference alone, and must keep full marks.
+# reference itself is graded whole on every part.
 if [ -x out/build/grader/runner_part1 ]; then
     # parity PART SUBMISSION...: grades them on PART alone, linked whole.
     parity() {

@@ -29,8 +29,7 @@ for f in out/build/kit/libkit.a out/build/sub/solutions/part5_triangle_intersect
         exit 1
     fi
 done
-# In out/tests, not in a temporary directory: the paths are the same from
-# one run to the next, so the suites' compile memo serves the compiles.
+# In out/tests, not in a temporary directory: a folder the suite clears.
 dir=$PWD/out/tests/hierarchy
 rm -rf "$dir"
 mkdir -p "$dir"

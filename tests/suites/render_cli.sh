@@ -367,9 +367,7 @@ selftest=$tmp/selftest
 # is Moller-Trumbore (tests/selftest/moller-trumbore, the skeleton's
 # formula).
 if [ -d solutions ] && [ -d "$selftest/independent" ] && [ -d "$selftest/moller-trumbore" ]; then
-    # In out/tests, not in $tmp: its path is the same from one run to the
-    # next, so the suites' compile memo serves its compiles (the path is
-    # in each compile's arguments).
+    # In out/tests, not in $tmp: a folder the suite clears.
     sub=$PWD/out/tests/independent
     rm -rf "$sub"
     mkdir -p "$sub"
