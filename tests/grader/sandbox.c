@@ -38,6 +38,9 @@
 #if defined(__APPLE__)
 #include <libproc.h>
 #endif
+#if defined(__linux__)
+#include <sys/prctl.h>         /* portable: __linux__ */
+#endif
 
 double sandbox_now(void)
 {
@@ -277,6 +280,7 @@ typedef struct {
     uid_t uid;
     gid_t gid;
     long nproc;                /* RLIMIT_NPROC, or -1: none                  */
+    pid_t grader;              /* the process that starts it                */
     double entered;            /* set by the jailed child: when its jail was
                                   built (it shares this memory)             */
     char *envp[4];
@@ -316,6 +320,7 @@ static void plan_child(ChildPlan *cp, const SandboxSpec *spec, int in_r, int ans
 {
     cp->spec = spec;
     cp->in_r = in_r, cp->ans_w = ans_w, cp->out_w = out_w, cp->status_w = status_w;
+    cp->grader = getpid();
     plan_close(cp, 4);
     cp->jailed = jail_namespaces();
     cp->drop = sandbox_drops_privileges();
@@ -391,6 +396,16 @@ JAIL_CHILD_CODE static void child(const ChildPlan *cp)
     }
     if (cp->nproc >= 0)
         limit(RLIMIT_NPROC, (rlim_t)cp->nproc);
+#if defined(__linux__)
+    /* Should the grader itself be killed (SIGKILL, which it cannot catch),
+     * the run goes with it, and in the namespace jail its whole PID
+     * namespace: nothing left waiting for ever.  Set after the change of
+     * id, which clears it; a grader gone already is seen here (the parent
+     * of the jail's first process is outside its namespace: 0). */
+    prctl(PR_SET_PDEATHSIG, SIGKILL);                   /* portable: __linux__ */
+    if (getppid() != cp->grader && getppid() != 0)
+        _exit(126);
+#endif
     execve(spec->argv[0], spec->argv, cp->envp);
     _exit(127);
 }

@@ -24,6 +24,9 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#if defined(__linux__)
+#include <sys/prctl.h>         /* portable: __linux__ */
+#endif
 #include "../grader/jail.h"
 #include "kit/savefile.h"
 #include "../grader/sandbox.h"
@@ -456,6 +459,66 @@ static void test_no_terminal(void)
               "a child reached the grader's terminal through /dev/tty (status %d)", status);
 }
 
+/* Seconds on the monotonic clock. */
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec / 1e9;
+}
+
+/* Should the grader be killed (SIGKILL, which it cannot catch), its run
+ * goes with it: nothing is left waiting.  A process of the test's, the
+ * grader here, starts a run that sleeps 3 s and is killed once the run
+ * has begun; the test, made the process that orphans come to (a
+ * subreaper), sees the run end at once by SIGKILL, not by itself later.
+ * It signals only its own child. */
+static void test_run_ends_with_grader(void)
+{
+#if defined(__linux__)
+    CHECK(prctl(PR_SET_CHILD_SUBREAPER, 1) == 0);                   /* portable: __linux__ */
+    fflush(stdout);
+    pid_t grader = fork();
+    if (grader == 0) {
+        SandboxResult res;
+        SandboxSpec spec = { .memory_mb = 48, .max_procs = -1, .timeout = 20 };
+        if (run_sh("sleep 3", spec, &res) == 0)
+            sandbox_result_free(&res);
+        _exit(0);
+    }
+    CHECK(grader > 0);
+    if (grader <= 0)
+        return;
+    /* The run has begun once the grader has a child. */
+    char children[128], text[64] = "";
+    snprintf(children, sizeof children, "/proc/%ld/task/%ld/children", (long)grader, (long)grader);  /* portable: __linux__ */
+    for (double t0 = now_seconds(); !text[0] && now_seconds() - t0 < 10;) {
+        FILE *f = fopen(children, "r");
+        if (!f || !fgets(text, sizeof text, f))
+            text[0] = '\0';
+        if (f)
+            fclose(f);
+        nanosleep(&(struct timespec){ 0, 20000000 }, NULL);
+    }
+    CHECK_MSG(text[0], "the run did not begin");
+    kill(grader, SIGKILL);
+    int status = 0;
+    waitpid(grader, &status, 0);
+    double killed_at = now_seconds();
+    pid_t run = 0;
+    while (run == 0 && now_seconds() - killed_at < 6) {
+        run = waitpid(-1, &status, WNOHANG);
+        if (run == 0)
+            nanosleep(&(struct timespec){ 0, 20000000 }, NULL);
+    }
+    CHECK_MSG(run > 0, "no run came to the test (waitpid: %s)", run < 0 ? strerror(errno) : "none");
+    CHECK_MSG(run <= 0 || (WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL && now_seconds() - killed_at < 1.5),
+              "the run outlived its grader: it ended %.1f s later, status %d", now_seconds() - killed_at, status);
+#else
+    printf("    skipped: only Linux ends a process with its parent (PR_SET_PDEATHSIG)\n");
+#endif
+}
+
 /* output_stop: a child that prints without end is stopped once the parent
  * has read that much, long before its time is up, and says so; output_max
  * of it is kept.  Without output_stop the same child runs out of time. */
@@ -599,7 +662,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_oom_score_adj),    CHECK_TEST(test_killed_reported),  CHECK_TEST(test_cpu_limit),
     CHECK_TEST(test_wall_clock),       CHECK_TEST(test_no_file_output),   CHECK_TEST(test_no_processes),
     CHECK_TEST(test_descriptors_closed), CHECK_TEST(test_output_stop), CHECK_TEST(test_spare_users),
-    CHECK_TEST(test_no_terminal),
+    CHECK_TEST(test_no_terminal),      CHECK_TEST(test_run_ends_with_grader),
 };
 
 int main(int argc, char **argv)
