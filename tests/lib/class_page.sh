@@ -242,12 +242,13 @@ seen() {   # seen WHAT COMMAND...: one check that COMMAND fails
 }
 
 
-# check_class_page OUT CONF LOG: the checks above on the class that
-# grade --all --weights CONF wrote to OUT, its output in LOG.  The class
+# check_class_page OUT CONF LOG CLASS: the checks above on the class in
+# the folder CLASS that grade --all --weights CONF wrote to OUT, its output
+# in LOG.  The class
 # must hold submissions named p1-degrees-to-tan and p1-float, and the
 # names in $hostile1 and "=50% <i>".
 check_class_page() {
-    out=$1 conf=$2 log=$3
+    out=$1 conf=$2 log=$3 class=$4
     page=$out/index.html
     csv=$out/causes.csv
     check "it says where the class page is" grep -q "^the class at a glance: $out/index.html" "$log"
@@ -315,6 +316,16 @@ check_class_page() {
     check "the submissions that need a person: exactly those the results files say, for the part they say" \
         cmp -s "$tmp/people.want" "$tmp/people.got"
     [ "$failed" -eq 0 ] || diff "$tmp/people.want" "$tmp/people.got" | head -n 20
+
+    # The files handed to the compiler: the graded parts' stage files in
+    # the class's folders, less those the grader refused.
+    handed=0
+    for p in $(sed -n 's/^parts //p' "$conf"); do
+        handed=$((handed + $(find "$class" -mindepth 2 -maxdepth 2 -name "part${p}_*.c" | wc -l)))
+    done
+    refused=$(grep -c "^refused$tab" "$tmp/people.want")
+    check "the cost: $((handed - refused)) stage files compiled ($handed in the class's folders, $refused refused)" \
+        grep -q "<tr><td>compiled</td><td class=\"num\">$((handed - refused))</td>" "$page"
 
     check "the scores: each part's and the hard cases' median, quartiles and full points, and the class's full core marks, as the gradebook has them" \
         scores_agree "$page"

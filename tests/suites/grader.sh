@@ -275,7 +275,7 @@ echo "   graded $(ls "$class" | wc -l | tr -d ' ') submissions in $(( $(date +%s
 check "grade --all ran (exit $status)" [ "$status" -le 1 ]
 check "the gradebook has a column per graded part" \
     grep -q "^submission,part1,part2,part3a,part3b,part4,part5,hard,total,status\$" "$tmp/grades/gradebook.csv"
-check_class_page "$tmp/grades" "$classconf" "$tmp/all.out"
+check_class_page "$tmp/grades" "$classconf" "$tmp/all.out" "$class"
 page_renders "$tmp/grades/index.html" "the class page" "$tmp"
 
 hard_failed() {   # hard_failed JSON PART: a test of the part tagged hard has failed
