@@ -261,7 +261,7 @@ ifneq ($(HAVE_SOLUTIONS),)
 else
 	@echo "the figures are in handouts/figures (drawing them again needs solutions/)"
 endif
-# The compile flags, for the suites' small helper programs (tests/lib/cc_build.sh).
+# The compile flags, for a suite that builds a program of its own (hierarchy.sh).
 print-cflags:
 	@echo $(CFLAGS)
 

@@ -25,7 +25,6 @@ set -u
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 top=$(pwd)
 . tests/lib/checks.sh
-. tests/lib/cc_build.sh
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtclassroom.XXXXXX") || { echo "0 passed, 1 failed"; exit 1; }
 trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"

@@ -24,7 +24,6 @@
 set -u
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 . tests/lib/checks.sh
-. tests/lib/cc_build.sh
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtprairielearn.XXXXXX") || { echo "0 passed, 1 failed"; exit 1; }
 trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
