@@ -34,13 +34,6 @@ void dd_sin_cos(dd x, dd *s, dd *c)
     *c = csum;
 }
 
-dd dd_tan(dd x)
-{
-    dd s, c;
-    dd_sin_cos(x, &s, &c);
-    return dd_div(s, c);
-}
-
 /*
  * tan(deg degrees).  For deg <= 45 the argument deg * pi / 180 is at most
  * pi / 4.  Above, tan(deg) = cos(y) / sin(y) with y = 90 - deg, which is

@@ -119,11 +119,6 @@ static inline dd dd_neg(dd a)
     return r;
 }
 
-static inline dd dd_abs(dd a)
-{
-    return a.hi < 0 || (a.hi == 0 && a.lo < 0) ? dd_neg(a) : a;
-}
-
 /* a + b, accurate also under cancellation (two two-sums, then renormalize). */
 static inline dd dd_add(dd a, dd b)
 {
@@ -236,8 +231,6 @@ static inline bool dd_gt(dd a, dd b) { return dd_lt(b, a); }
 static inline bool dd_ge(dd a, dd b) { return dd_le(b, a); }
 static inline bool dd_eq(dd a, dd b) { return a.hi == b.hi && a.lo == b.lo; }
 
-static inline bool dd_isfinite(dd a) { return isfinite(a.hi) && isfinite(a.lo); }
-
 /* ---- elementary functions (dd.c) ------------------------------------------ */
 
 /* pi and pi / 180, each within 1e-33 relative. */
@@ -247,9 +240,6 @@ extern const dd dd_pi_180;
 /* sin x and cos x together, for |x| <= pi / 4 (Taylor series; relative
  * error about 1e-31).  Larger |x| converge too, less accurately. */
 void dd_sin_cos(dd x, dd *s, dd *c);
-
-/* tan x for |x| <= pi / 4, relative error about 1e-31. */
-dd dd_tan(dd x);
 
 /* tan of an angle in DEGREES, for |deg| < 90, relative error about 1e-30.
  * The reduction is exact: above 45 degrees tan(deg) = 1 / tan(90 - deg)
