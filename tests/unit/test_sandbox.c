@@ -10,6 +10,7 @@
  * GRADE_JAIL=fallback (tests/run.sh).
  */
 #define _XOPEN_SOURCE 700     /* posix_openpt and the rest of a pseudo-terminal */
+#define _DEFAULT_SOURCE       /* syscall, on glibc */
 #define _DARWIN_C_SOURCE      /* macOS: the rest too */
 #include "check.h"            /* first: it sets the POSIX feature level */
 #include <stdbool.h>
@@ -26,6 +27,7 @@
 #include <unistd.h>
 #if defined(__linux__)
 #include <sys/prctl.h>         /* portable: __linux__ */
+#include <sys/syscall.h>
 #endif
 #include "../grader/jail.h"
 #include "kit/savefile.h"
@@ -34,10 +36,11 @@
 /* init_sh, found beside this program (main). */
 static char init_sh[4096];
 
-/* Runs sh -c script with spec's limits, its working folder made in a
- * fresh directory, through a copy of init_sh there (a folder it may read,
+/* Runs init_sh with the arguments first and second (sh -c script, or
+ * --key NAME) with spec's limits, its working folder made in a fresh
+ * directory, through a copy of init_sh there (a folder it may read,
  * whatever folder the kit is in); 0 if it ran. */
-static int run_sh(const char *script, SandboxSpec spec, SandboxResult *res)
+static int run_init(const char *first, const char *second, SandboxSpec spec, SandboxResult *res)
 {
     char dir[512], work[600], bin[600], program[700], err[256];
     if (check_temp_dir(dir, sizeof dir, "sandbox") != 0)
@@ -54,7 +57,7 @@ static int run_sh(const char *script, SandboxSpec spec, SandboxResult *res)
         return -1;
     }
     const char *visible[] = { bin, NULL };
-    char *argv[] = { program, "-c", (char *)script, NULL };
+    char *argv[] = { program, (char *)first, (char *)second, NULL };
     spec.argv = argv;
     spec.workdir = work;
     spec.visible = visible;
@@ -68,6 +71,11 @@ static int run_sh(const char *script, SandboxSpec spec, SandboxResult *res)
     if (check_remove_tree(dir) != 0)
         printf("    (could not remove %s)\n", dir);
     return rc;
+}
+
+static int run_sh(const char *script, SandboxSpec spec, SandboxResult *res)
+{
+    return run_init("-c", script, spec, res);
 }
 
 /* A shell that doubles a string up to 128 MiB (about three times that in
@@ -519,6 +527,31 @@ static void test_run_ends_with_grader(void)
 #endif
 }
 
+/* No run reaches the kernel's key store: not the grader's session keys,
+ * and nothing it could leave there for a later run.  The test puts a key
+ * in its own session keyring, which a child shares, and the run looks
+ * for it. */
+static void test_no_keys(void)
+{
+#if defined(__linux__)
+    const char *name = "rtgrade-test-key";
+    long key = syscall(SYS_add_key, "user", name, "secret", 6L, -3L);    /* the session keyring */
+    if (key < 0) {
+        printf("    skipped: this system keeps no keys for its processes (%s)\n", strerror(errno));
+        return;
+    }
+    SandboxResult res;
+    SandboxSpec spec = { .memory_mb = 48, .max_procs = -1 };
+    if (run_init("--key", name, spec, &res) == 0) {
+        CHECK_MSG(strstr(res.answer, "key not found"), "the run reached the grader's keys: %s", res.answer);
+        sandbox_result_free(&res);
+    }
+    syscall(SYS_keyctl, 9L, key, -3L);                                  /* KEYCTL_UNLINK */
+#else
+    printf("    skipped: only Linux has a key store\n");
+#endif
+}
+
 /* output_stop: a child that prints without end is stopped once the parent
  * has read that much, long before its time is up, and says so; output_max
  * of it is kept.  Without output_stop the same child runs out of time. */
@@ -663,6 +696,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_wall_clock),       CHECK_TEST(test_no_file_output),   CHECK_TEST(test_no_processes),
     CHECK_TEST(test_descriptors_closed), CHECK_TEST(test_output_stop), CHECK_TEST(test_spare_users),
     CHECK_TEST(test_no_terminal),      CHECK_TEST(test_run_ends_with_grader),
+    CHECK_TEST(test_no_keys),
 };
 
 int main(int argc, char **argv)
