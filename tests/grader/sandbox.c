@@ -39,16 +39,22 @@
 #include <libproc.h>
 #endif
 #if defined(__linux__)
+#include <sys/prctl.h>         /* portable: __linux__ */
+/* The seccomp filter needs the kernel's headers, which a C library alone
+ * (musl's, say) may come without: where they are missing, no filter. */
+#if defined(__has_include)
+#if __has_include(<linux/seccomp.h>) && __has_include(<linux/filter.h>) && __has_include(<linux/audit.h>)
 #include <stddef.h>
 #include <linux/audit.h>       /* portable: __linux__ */
 #include <linux/filter.h>      /* portable: __linux__ */
 #include <linux/seccomp.h>     /* portable: __linux__ */
-#include <sys/prctl.h>         /* portable: __linux__ */
 #include <sys/syscall.h>
 #if defined(__x86_64__)
 #define RUN_ARCH AUDIT_ARCH_X86_64
 #elif defined(__aarch64__)
 #define RUN_ARCH AUDIT_ARCH_AARCH64
+#endif
+#endif
 #endif
 #endif
 
@@ -374,7 +380,9 @@ JAIL_CHILD_CODE static void leave_terminal(void)
  * keys, and keys it left under its id would wait there for the next run
  * given that id.  A system call of another ABI (x86-64's x32, or i386's
  * int 0x80) fails too, so that none reaches the key store by another
- * number.  Best effort: a kernel without seccomp runs the program as is. */
+ * number.  Best effort: a kernel without seccomp runs the program as is,
+ * and so does a build without the kernel's headers or on another
+ * processor (RUN_ARCH undefined). */
 JAIL_CHILD_CODE static void deny_keys(void)
 {
     struct sock_filter code[] = {
