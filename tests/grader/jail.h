@@ -27,7 +27,8 @@
  *   run gets the spare user id and a fresh working folder of its own, and
  *   after every run every process of that id is killed and every name it
  *   owns in the world-writable places (jail_sweep) and its System V IPC
- *   objects are removed; the grader checks that the id cannot read the
+ *   objects are removed; on Linux no run can make a socket
+ *   (jail_deny_calls); the grader checks that the id cannot read the
  *   kit (grade_main.c).  As an ordinary user without user namespaces, only
  *   the limits hold: the code runs as that user and can read what the
  *   user can.
@@ -92,6 +93,13 @@ pid_t jail_clone(int (*child_main)(void *), void *arg);
 #define JAIL_CHILD_CODE
 #endif
 int jail_enter(int fd);
+
+/* In the child, just before it runs the program (Linux, x86-64 and arm64):
+ * a seccomp filter fails the system calls of the key store and the
+ * network, and any of another ABI (jail.c says why).  jail_filters: whether
+ * this build has the filter (it needs the kernel's headers). */
+void jail_deny_calls(void);
+bool jail_filters(void);
 
 /* As root, fallback: kills every process of id and removes every name it
  * owns in the world-writable places (/tmp, /var/tmp, /dev/shm, /run/lock,

@@ -40,22 +40,6 @@
 #endif
 #if defined(__linux__)
 #include <sys/prctl.h>         /* portable: __linux__ */
-/* The seccomp filter needs the kernel's headers, which a C library alone
- * (musl's, say) may come without: where they are missing, no filter. */
-#if defined(__has_include)
-#if __has_include(<linux/seccomp.h>) && __has_include(<linux/filter.h>) && __has_include(<linux/audit.h>)
-#include <stddef.h>
-#include <linux/audit.h>       /* portable: __linux__ */
-#include <linux/filter.h>      /* portable: __linux__ */
-#include <linux/seccomp.h>     /* portable: __linux__ */
-#include <sys/syscall.h>
-#if defined(__x86_64__)
-#define RUN_ARCH AUDIT_ARCH_X86_64
-#elif defined(__aarch64__)
-#define RUN_ARCH AUDIT_ARCH_AARCH64
-#endif
-#endif
-#endif
 #endif
 
 double sandbox_now(void)
@@ -373,40 +357,6 @@ JAIL_CHILD_CODE static void leave_terminal(void)
     }
 }
 
-#if defined(__linux__) && defined(RUN_ARCH)
-/* No key store: keyctl, add_key and request_key fail (EPERM), as in
- * Docker's default profile.  Keyrings belong to no namespace: through the
- * session keyring it shares with the grader a run could read the grader's
- * keys, and keys it left under its id would wait there for the next run
- * given that id.  A system call of another ABI (x86-64's x32, or i386's
- * int 0x80) fails too, so that none reaches the key store by another
- * number.  Best effort: a kernel without seccomp runs the program as is,
- * and so does a build without the kernel's headers or on another
- * processor (RUN_ARCH undefined). */
-JAIL_CHILD_CODE static void deny_keys(void)
-{
-    struct sock_filter code[] = {
-        BPF_STMT(BPF_LD | BPF_W | BPF_ABS, offsetof(struct seccomp_data, arch)),
-        BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, RUN_ARCH, 1, 0),
-        BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ERRNO | EPERM),
-        BPF_STMT(BPF_LD | BPF_W | BPF_ABS, offsetof(struct seccomp_data, nr)),
-        BPF_JUMP(BPF_JMP | BPF_JGE | BPF_K, 0x40000000, 4, 0),     /* x32 (x86-64 only) */
-        BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, __NR_keyctl, 3, 0),
-        BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, __NR_add_key, 2, 0),
-        BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, __NR_request_key, 1, 0),
-        BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ALLOW),
-        BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ERRNO | EPERM),
-    };
-    struct sock_fprog program = { (unsigned short)(sizeof code / sizeof code[0]), code };
-    if (prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) == 0)                            /* portable: __linux__ */
-        prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, &program);                    /* portable: __linux__ */
-}
-#else
-static void deny_keys(void)
-{
-}
-#endif
-
 /* In the child, after vfork (Linux), fork, or in the jail: never returns. */
 JAIL_CHILD_CODE static void child(const ChildPlan *cp)
 {
@@ -456,7 +406,7 @@ JAIL_CHILD_CODE static void child(const ChildPlan *cp)
     if (getppid() != cp->grader && getppid() != 0)
         _exit(126);
 #endif
-    deny_keys();
+    jail_deny_calls();
     execve(spec->argv[0], spec->argv, cp->envp);
     _exit(127);
 }

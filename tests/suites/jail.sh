@@ -164,6 +164,11 @@ run_attacks() {
     check "$mode: .incbin made by a macro cannot read the seed's file: it does not build, and the seed appears nowhere" \
         sh -c "grep -q 'did not build' '$out/macro.json' && ! grep -q '$seed_line' '$out/macro.json'"
 
+    # Every input sent over the network.
+    as_grader --submission "$subs/send-inputs" --part 1 --summary --quiet >"$out/send.out" 2>&1
+    check "$mode: no run can send its inputs over the network: Part 1 keeps full marks" \
+        grep -q '^summary 20 ' "$out/send.out"
+
     # SIGKILL to every process it may signal.
     as_grader --submission "$subs/kill-all" --weights "$out/parts12.conf" --summary >"$out/kill.out" 2>&1
     status=$?

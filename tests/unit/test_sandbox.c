@@ -37,7 +37,7 @@
 static char init_sh[4096];
 
 /* Runs init_sh with the arguments first and second (sh -c script, or
- * --key NAME) with spec's limits, its working folder made in a fresh
+ * --key NAME, or --socket and NULL) with spec's limits, its working folder made in a fresh
  * directory, through a copy of init_sh there (a folder it may read,
  * whatever folder the kit is in); 0 if it ran. */
 static int run_init(const char *first, const char *second, SandboxSpec spec, SandboxResult *res)
@@ -534,6 +534,10 @@ static void test_run_ends_with_grader(void)
 static void test_no_keys(void)
 {
 #if defined(__linux__)
+    if (!jail_filters()) {
+        printf("    skipped: this build has no seccomp filter (x86-64 or arm64, with the kernel's headers)\n");
+        return;
+    }
     const char *name = "rtgrade-test-key";
     long key = syscall(SYS_add_key, "user", name, "secret", 6L, -3L);    /* the session keyring */
     if (key < 0) {
@@ -550,6 +554,22 @@ static void test_no_keys(void)
 #else
     printf("    skipped: only Linux has a key store\n");
 #endif
+}
+
+/* No run reaches the network: not even a socket (in the fallback jail the
+ * network would be the system's, and a run could send its cases away). */
+static void test_no_network(void)
+{
+    if (!jail_filters()) {
+        printf("    skipped: this build has no seccomp filter (Linux on x86-64 or arm64, with the kernel's headers)\n");
+        return;
+    }
+    SandboxResult res;
+    SandboxSpec spec = { .memory_mb = 48, .max_procs = -1 };
+    if (run_init("--socket", NULL, spec, &res) == 0) {
+        CHECK_MSG(strstr(res.answer, "inet refused, unix refused"), "a run made a socket: %s", res.answer);
+        sandbox_result_free(&res);
+    }
 }
 
 /* output_stop: a child that prints without end is stopped once the parent
@@ -696,7 +716,7 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_wall_clock),       CHECK_TEST(test_no_file_output),   CHECK_TEST(test_no_processes),
     CHECK_TEST(test_descriptors_closed), CHECK_TEST(test_output_stop), CHECK_TEST(test_spare_users),
     CHECK_TEST(test_no_terminal),      CHECK_TEST(test_run_ends_with_grader),
-    CHECK_TEST(test_no_keys),
+    CHECK_TEST(test_no_keys),          CHECK_TEST(test_no_network),
 };
 
 int main(int argc, char **argv)
