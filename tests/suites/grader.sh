@@ -229,12 +229,19 @@ classconf=$tmp/class.conf
 sed 's/^parts .*/parts 1 2 3a 3b 4 5/' "$core" >"$classconf"
 class=$tmp/class
 mkdir "$class"
-# Each submission: a copy of the reference, then its own files over it.
+# Each submission: its own files.  Those whose harm could reach past their
+# own part (hostile code, mistakes of linking and building, a whole
+# submission) bring the reference's other files too, so that the class
+# shows each costs its own part's points and no other's; a mistake in one
+# part's formula brings that file alone, and the parts it does not hand
+# in are not checked (graded, they cost only time).
 for dir in "$selftest"/*/; do
     name=${dir%/}
     sub="$class/${name##*/}"
     mkdir "$sub"
-    cp solutions/part*.c "$sub/"
+    case ${name##*/} in
+    hostile-* | link-* | build-* | warn-* | independent) cp solutions/part*.c "$sub/" ;;
+    esac
     for f in "$dir"part*.c "$dir"*.h; do   # *.h: a student's own headers (build-own-header)
         [ -f "$f" ] && cp "$f" "$sub/"
     done
@@ -354,26 +361,26 @@ while read -r sname g1 g2 g3a g3b g4 g5; do
         "hard lost "*) hardpart=${rest#lost } ;;
         esac
     done <"$expect"
-    # Each graded part's points and its maximum; "-" for a part not graded.
+    # Each handed-in part's points and its maximum; "-" for a part not graded.
     got_all="" max_all=""
     for p in 1 2 3a 3b 4 5; do
         case $p in
-        1) max=$max1 got=$g1 ;;
-        2) max=$max2 got=$g2 ;;
-        3a) max=$max3a got=$g3a ;;
-        3b) max=$max3b got=$g3b ;;
-        4) max=$max4 got=$g4 ;;
-        5) max=$max5 got=$g5 ;;
+        1) max=$max1 got=$g1 file=part1_image_plane ;;
+        2) max=$max2 got=$g2 file=part2_pixel_coordinates ;;
+        3a) max=$max3a got=$g3a file=part3a_sphere_intersect ;;
+        3b) max=$max3b got=$g3b file=part3b_ray_color ;;
+        4) max=$max4 got=$g4 file=part4_plane_intersect ;;
+        5) max=$max5 got=$g5 file=part5_triangle_intersect ;;
         esac
         [ "$got" = "-" ] && max=-
-        got_all="$got_all $got" max_all="$max_all $max"
-        if [ -z "$part" ]; then
-            continue
-        elif case $part in *" $p "*) true ;; *) false ;; esac; then
+        if case $part in *" $p "*) true ;; *) false ;; esac; then
             check "$sname: Part $p loses points (got $got of $max)" [ -n "$got" -a "$got" != "$max" -a "$got" != "-" ]
-        elif [ "$got" != "-" ]; then
+        elif [ ! -f "$class/$sname/$file.c" ]; then
+            continue
+        elif [ -n "$part" ] && [ "$got" != "-" ]; then
             check "$sname: Part $p keeps full marks (got $got of $max)" [ "$got" = "$max" ]
         fi
+        got_all="$got_all $got" max_all="$max_all $max"
     done
     if [ "$core_full" = yes ]; then
         check "$sname: full core marks ($got_all)" [ "$got_all" = "$max_all" ]
@@ -691,7 +698,11 @@ done
 $grade --submission solutions --format prairielearn --results "$tmp/pl-ref.json" --quiet >/dev/null 2>&1
 check "PrairieLearn: the reference scores 1, gradable" \
     sh -c "grep -q '\"score\": 1,\$' '$tmp/pl-ref.json' && grep -q '\"gradable\": true' '$tmp/pl-ref.json'"
-$grade --submission "$class/p1-no-factor-2" --format prairielearn --results "$tmp/pl-bad.json" --quiet \
+mkdir "$tmp/no-factor-2"        # the reference, but for Part 1's factor 2
+cp solutions/part*.c "$tmp/no-factor-2/"
+cp "$class/p1-no-factor-2/part1_image_plane.c" "$tmp/no-factor-2/"
+chmod -R a+rX "$tmp/no-factor-2"
+$grade --submission "$tmp/no-factor-2" --format prairielearn --results "$tmp/pl-bad.json" --quiet \
     >/dev/null 2>&1
 check "PrairieLearn: Part 1 with its factor 2 missing scores between 0 and 1, and says what went wrong" \
     sh -c "grep -q '\"score\": 0\\.[0-9]*,\$' '$tmp/pl-bad.json' && grep -q 'What went wrong' '$tmp/pl-bad.json'"
