@@ -153,19 +153,18 @@ compare: submission-dir $(SUB_BUILD)/render $(BUILD)/bin/compare $(if $(HAVE_SOL
 	    --edges $(REF_EDGES) -o out/compare/$(SCENE_NAME).png
 
 # ---- the plain build's programs: each links what its own line names --------
-PROGRAMS   = compare pack htmlcheck gentests accuracy lookalike linkcheck stagecheck bench
+PROGRAMS   = compare pack htmlcheck gentests lookalike linkcheck stagecheck bench
 $(PROGRAMS:%=$(BUILD)/bin/%): | $(BUILD)/bin/.
 	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/compare: $(BUILD)/kit/compare_main.o $(BUILD)/kit/libkit.a
 $(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
 # The report page's checker (tests/suites/report.sh).
 $(BUILD)/bin/htmlcheck: $(BUILD)/tools/htmlcheck_main.o $(BUILD)/tools/libtools.a
-# The oracle's programs: the public tests' values (commit them), accuracy tables.
+# The oracle's program: the public tests' values (commit them).
 $(BUILD)/bin/gentests: $(BUILD)/oracle/gentests_main.o $(BUILD)/oracle/liboracle.a \
                        $(BUILD)/grader/libgrader.a $(BUILD)/kit/libkit.a
 public-tests: $(BUILD)/bin/gentests
 	$(BUILD)/bin/gentests tests/public
-$(BUILD)/bin/accuracy: $(BUILD)/oracle/accuracy_main.o $(BUILD)/oracle/liboracle.a $(call ref_obj,$(BUILD))
 $(BUILD)/bin/lookalike: $(BUILD)/grader/lookalike_main.o $(BUILD)/grader/lookalike.o \
                         $(BUILD)/tools/utf8.o $(BUILD)/kit/libkit.a
 $(BUILD)/bin/linkcheck: $(BUILD)/grader/linkcheck_main.o $(BUILD)/grader/linkmsg.o $(BUILD)/kit/libkit.a

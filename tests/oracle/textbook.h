@@ -1,7 +1,7 @@
 /*
  * textbook.h - the lecture's formulas, as most students write them: what
- * the accuracy tables (accuracy_main.c) and the oracle's unit tests set
- * next to the reference and the oracle.  Never used by the oracle itself.
+ * the oracle's unit tests set next to the reference and the oracle.  Never
+ * used by the oracle itself.
  */
 #ifndef TEXTBOOK_H
 #define TEXTBOOK_H
