@@ -18,8 +18,9 @@
  *                e = (0, 0, 0), r = (0, -0.5, -1):
  *                (p - e).n = -2, r.n = -1, so *t = 2 (the point (0, -1, -2)).
  * Formula:       put x(t) into (x - p).n = 0:  (e - p).n + t (r.n) = 0, so
- *                t = (p - e).n / (r.n);  no hit when r.n = 0 (the ray is
- *                parallel to the plane) or when t <= 0 (tmin = 0).
+ *                t = (p - e).n / (r.n);  a hit only when r.n is not 0
+ *                (else the ray is parallel to the plane) and t > 0 (tmin =
+ *                0); asked so, a NaN t is no hit.
  */
 bool plane_intersect(const Plane *plane, const Ray *ray, double *t)
 {
