@@ -255,11 +255,8 @@ student-kit: $(BUILD)/sub/solutions/render
 	@echo "wrote $(KIT_DIR)/ and out/student-kit.tar.gz"
 # The handouts' figures (handouts/figures/make-figures.sh; commit the PNGs).
 handouts: $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render $(BUILD)/bin/compare grader)
-ifneq ($(HAVE_SOLUTIONS),)
-	MAKE="$(MAKE)" sh handouts/figures/make-figures.sh
-else
-	@echo "the figures are in handouts/figures (drawing them again needs solutions/)"
-endif
+	@if [ -n "$(HAVE_SOLUTIONS)" ]; then MAKE="$(MAKE)" sh handouts/figures/make-figures.sh; \
+	 else echo "the figures are in handouts/figures (drawing them again needs solutions/)"; fi
 # The compile flags, for a suite that builds a program of its own (hierarchy.sh).
 print-cflags:
 	@echo $(CFLAGS)
@@ -328,14 +325,12 @@ $(1)/kit/libkit.a: $(KIT_SRC:labs/kit/%.c=$(1)/kit/%.o)
 $(1)/oracle/liboracle.a: $(ORACLE_SRC:tests/oracle/%.c=$(1)/oracle/%.o)
 $(1)/tools/libtools.a: $(TOOLS_SRC:tests/tools/%.c=$(1)/tools/%.o)
 $(1)/grader/libgrader.a: $(GRADER_LIB_SRC:tests/grader/%.c=$(1)/grader/%.o)
+$(1)/bin/grade $(1)/bin/sortsubs: | $(1)/bin/.
+	$$(Q)$$(CC) $$($(3)) $$^ -o $$@ $$(LDLIBS)
 # Either build's grade runs the plain build's harnesses and runners.
 $(1)/bin/grade: $(1)/grader/grade_main.o $(if $(GRADE_DEFS),$(1)/grader/hidden.o $(1)/oracle/liboracle.a) \
-                $(1)/grader/libgrader.a $(1)/tools/libtools.a $(1)/kit/libkit.a \
-                | $(HARNESS) $(GRADER_REF) $(RUNNERS) $(1)/bin/.
-	$$(Q)$$(CC) $$($(3)) $$^ -o $$@ $$(LDLIBS)
-$(1)/bin/sortsubs: $(1)/grader/sortsubs_main.o $(1)/grader/libgrader.a $(1)/tools/libtools.a \
-                   $(1)/kit/libkit.a | $(1)/bin/.
-	$$(Q)$$(CC) $$($(3)) $$^ -o $$@ $$(LDLIBS)
+                $(1)/grader/libgrader.a $(1)/tools/libtools.a $(1)/kit/libkit.a | $(HARNESS) $(GRADER_REF) $(RUNNERS)
+$(1)/bin/sortsubs: $(1)/grader/sortsubs_main.o $(1)/grader/libgrader.a $(1)/tools/libtools.a $(1)/kit/libkit.a
 $(UNIT_LINKED:%=$(1)/tests/%): $(1)/tests/%: tests/unit/%.c tests/unit/check.h $(call ref_obj,$(1)) \
                                               $(call unit_libs,$(1)) | $(1)/tests/.
 	$$(Q)$$(CC) $$($(3)) $$(THREADS) -Ilabs $$(filter-out %.h,$$^) -o $$@ $$(LDLIBS)
@@ -386,23 +381,16 @@ $(ASAN)/bin/render-solutions: $(ASAN)/kit/render_main.o $(call ref_obj,$(ASAN)) 
 # ---- the grader itself under the sanitizers (`make sanitize-grader`) --------
 # The suites that grade, with the sanitized grade and sortsubs (GRADE=, SORTSUBS=).
 SANITIZE_SUITES = grader.sh report.sh class_page.sh limits.sh signals.sh jail.sh sort_submissions.sh
-ifneq ($(wildcard tests/suites/grader.sh),)
-sanitize-grader: all $(BUILD)/bin/pack $(ASAN)/bin/grade $(ASAN)/bin/sortsubs
+HAVE_SUITES := $(wildcard tests/suites/grader.sh)
+sanitize-grader: $(if $(HAVE_SUITES),all $(BUILD)/bin/pack $(ASAN)/bin/grade $(ASAN)/bin/sortsubs)
+	@test -n "$(HAVE_SUITES)" || { echo "make sanitize-grader: only the instructor's kit has the grader's suites (tests/suites)"; exit 2; }
 	@echo "grading with $(ASAN)/bin/grade, sorting with $(ASAN)/bin/sortsubs (address, undefined-behaviour and leak sanitizers)"
 	@GRADE=$(ASAN)/bin/grade SORTSUBS=$(ASAN)/bin/sortsubs sh tests/run.sh $(SANITIZE_SUITES)
-else
-sanitize-grader:
-	@echo "make sanitize-grader: only the instructor's kit has the grader's suites (tests/suites)"; exit 2
-endif
 # The grader's self-test submissions written out, a folder each, in
 # out/selftest (tests/selftest/README.md); each suite writes its own.
-ifneq ($(wildcard tests/selftest/mistakes),)
 selftests:
+	@test -f tests/selftest/mistakes || { echo "make selftests: only the instructor's kit has the self-tests (tests/selftest)"; exit 2; }
 	sh tests/lib/selftests.sh out/selftest
-else
-selftests:
-	@echo "make selftests: only the instructor's kit has the self-tests (tests/selftest)"; exit 2
-endif
 # What the tests need built (`make -j2 test-build` builds it on two cores).
 test-build: all $(BUILD)/bin/pack $(UNIT_NAMES:%=$(ASAN)/tests/%) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)
 test: test-build
