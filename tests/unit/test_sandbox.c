@@ -527,6 +527,23 @@ static void test_run_ends_with_grader(void)
 #endif
 }
 
+/* Runs init_sh FIRST SECOND and checks that its answer says want, else
+ * fails saying what; unless this build has no seccomp filter, which is
+ * said to be skipped. */
+static void check_filtered(const char *first, const char *second, const char *want, const char *what)
+{
+    if (!jail_filters()) {
+        printf("    skipped: this build has no seccomp filter (Linux on x86-64 or arm64, with the kernel's headers)\n");
+        return;
+    }
+    SandboxResult res;
+    SandboxSpec spec = { .memory_mb = 48, .max_procs = -1 };
+    if (run_init(first, second, spec, &res) == 0) {
+        CHECK_MSG(strstr(res.answer, want), "%s: %s", what, res.answer);
+        sandbox_result_free(&res);
+    }
+}
+
 /* No run reaches the kernel's key store: not the grader's session keys,
  * and nothing it could leave there for a later run.  The test puts a key
  * in its own session keyring, which a child shares, and the run looks
@@ -534,22 +551,13 @@ static void test_run_ends_with_grader(void)
 static void test_no_keys(void)
 {
 #if defined(__linux__)
-    if (!jail_filters()) {
-        printf("    skipped: this build has no seccomp filter (x86-64 or arm64, with the kernel's headers)\n");
-        return;
-    }
     const char *name = "rtgrade-test-key";
     long key = syscall(SYS_add_key, "user", name, "secret", 6L, -3L);    /* the session keyring */
     if (key < 0) {
         printf("    skipped: this system keeps no keys for its processes (%s)\n", strerror(errno));
         return;
     }
-    SandboxResult res;
-    SandboxSpec spec = { .memory_mb = 48, .max_procs = -1 };
-    if (run_init("--key", name, spec, &res) == 0) {
-        CHECK_MSG(strstr(res.answer, "key not found"), "the run reached the grader's keys: %s", res.answer);
-        sandbox_result_free(&res);
-    }
+    check_filtered("--key", name, "key not found", "the run reached the grader's keys");
     syscall(SYS_keyctl, 9L, key, -3L);                                  /* KEYCTL_UNLINK */
 #else
     printf("    skipped: only Linux has a key store\n");
@@ -560,16 +568,7 @@ static void test_no_keys(void)
  * network would be the system's, and a run could send its cases away). */
 static void test_no_network(void)
 {
-    if (!jail_filters()) {
-        printf("    skipped: this build has no seccomp filter (Linux on x86-64 or arm64, with the kernel's headers)\n");
-        return;
-    }
-    SandboxResult res;
-    SandboxSpec spec = { .memory_mb = 48, .max_procs = -1 };
-    if (run_init("--socket", NULL, spec, &res) == 0) {
-        CHECK_MSG(strstr(res.answer, "inet refused, unix refused"), "a run made a socket: %s", res.answer);
-        sandbox_result_free(&res);
-    }
+    check_filtered("--socket", NULL, "inet refused, unix refused", "a run made a socket");
 }
 
 /* output_stop: a child that prints without end is stopped once the parent
