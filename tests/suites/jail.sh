@@ -136,9 +136,9 @@ run_attacks() {
     check "$mode: the reference, the hidden tests' seed and a classmate's file appear nowhere in its results" \
         sh -c "[ -s '$out/read/a-read-kit.json' ] && ! grep -q -e '$seed_line' -e '$reference_line' -e CLASSMATE-WORK-7f3a9c '$out/read/a-read-kit.json'"
 
-    # A folder 20,000 deep.
+    # A folder 5,000 deep.
     as_grader --all "$subs/class-deep" --out "$out/deep" --weights "$out/part1.conf" --jobs 1 >"$out/deep.out" 2>&1
-    check "$mode: a folder 20,000 deep: its results written, its row graded, and the next submission graded" \
+    check "$mode: a folder 5,000 deep: its results written, its row graded, and the next submission graded" \
         sh -c "grep -q -e '^deep-folder,[0-9.]*,[0-9.]*,[0-9.]*,full marks\$' -e '^deep-folder,[0-9.]*,[0-9.]*,[0-9.]*,points lost\$' '$out/deep/gradebook.csv' &&
                grep -q '\"tests\": \\[\$' '$out/deep/deep-folder.json' &&
                grep -q '^plain,20,' '$out/deep/gradebook.csv' && [ -s '$out/deep/plain.json' ]"

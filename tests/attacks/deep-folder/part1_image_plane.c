@@ -1,6 +1,6 @@
-/* Part 1 right; on its first call, a folder 20,000 deep left in its
- * working folder and in /tmp, for the grader to remove
- * (tests/attacks/README.md). */
+/* Part 1 right; on its first call, a folder 5,000 deep (a path of 10,000
+ * characters, longer than a path may be) left in its working folder and
+ * in /tmp, for the grader to remove (tests/attacks/README.md). */
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE
 #include "raytracer.h"
@@ -9,9 +9,9 @@
 
 static void dig(const char *from)
 {
-    if (chdir(from) != 0 || (mkdir("rtdeep", 0700) != 0 && chdir("rtdeep") != 0))
+    if (chdir(from) != 0 || mkdir("rtdeep", 0700) != 0 || chdir("rtdeep") != 0)
         return;
-    for (int k = 0; k < 20000; k++)
+    for (int k = 0; k < 5000; k++)
         if ((mkdir("d", 0700) != 0) || chdir("d") != 0)
             break;
 }
