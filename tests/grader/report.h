@@ -12,6 +12,7 @@
 #include "config.h"
 #include "grade.h"
 #include "kit/image.h"
+#include "../tools/json.h"
 
 /* The table: per part score / max, each test PASS or FAIL, and for each
  * failure what went wrong (input, expected, got, tolerance, hint): short
@@ -24,6 +25,9 @@ int report_json(const char *path, const Grade *g, const char *submission, char *
 
 /* A results.json for a submission the grader could not grade at all. */
 int report_json_error(const char *path, const char *message, char *err, size_t errlen);
+/* Its end, which PrairieLearn's shares: the message as the output, no
+ * tests, the object closed; then written to path and j freed (0 or -1). */
+int report_json_error_end(JsonWriter *j, const char *path, const char *message, char *err, size_t errlen);
 
 /* ---- the page (report_render.c, report_html.c) -------------------------- */
 

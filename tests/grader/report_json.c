@@ -128,13 +128,18 @@ int report_json_error(const char *path, const char *message, char *err, size_t e
     json_begin_object(&j);
     json_key(&j, "score");
     json_number(&j, 0);
-    json_key(&j, "output");
-    json_string(&j, message);
-    json_key(&j, "tests");
-    json_begin_array(&j);
-    json_end_array(&j);
-    json_end_object(&j);
-    int status = json_write_file(&j, path, err, errlen);
-    json_free(&j);
+    return report_json_error_end(&j, path, message, err, errlen);
+}
+
+int report_json_error_end(JsonWriter *j, const char *path, const char *message, char *err, size_t errlen)
+{
+    json_key(j, "output");
+    json_string(j, message);
+    json_key(j, "tests");
+    json_begin_array(j);
+    json_end_array(j);
+    json_end_object(j);
+    int status = json_write_file(j, path, err, errlen);
+    json_free(j);
     return status;
 }

@@ -5,6 +5,7 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "report_prairielearn.h"
+#include "report.h"
 #include "../tools/json.h"
 
 #include <stdarg.h>
@@ -196,13 +197,5 @@ int report_prairielearn_error(const char *path, const char *message, char *err, 
     json_string(&j, "The autograder could not grade this submission. Please tell the course staff.");
     json_key(&j, "format_errors");
     json_string(&j, message);
-    json_key(&j, "output");
-    json_string(&j, message);
-    json_key(&j, "tests");
-    json_begin_array(&j);
-    json_end_array(&j);
-    json_end_object(&j);
-    int status = json_write_file(&j, path, err, errlen);
-    json_free(&j);
-    return status;
+    return report_json_error_end(&j, path, message, err, errlen);
 }
