@@ -88,13 +88,6 @@ static inline double dd_to_double(dd a)
     return a.hi + a.lo;
 }
 
-/* a * 2^e, exact unless it overflows or underflows. */
-static inline dd dd_ldexp(dd a, int e)
-{
-    dd r = { ldexp(a.hi, e), ldexp(a.lo, e) };
-    return r;
-}
-
 /* The exponent e with max |v[k]| in [2^(e-1), 2^e), or 0 when all are 0:
  * inputs divided by 2^e (exact) lie near 1. */
 static inline int dd_max_exponent(const double *v, int n)
@@ -208,16 +201,6 @@ static inline dd dd_sqrt(dd a)
 
 /* ---- comparisons (of normalized values) ----------------------------------- */
 
-/* -1, 0 or +1 as a <, ==, > b (0 also when either is NaN). */
-static inline int dd_cmp(dd a, dd b)
-{
-    if (a.hi < b.hi) return -1;
-    if (a.hi > b.hi) return 1;
-    if (a.lo < b.lo) return -1;
-    if (a.lo > b.lo) return 1;
-    return 0;
-}
-
 /* -1, 0 or +1 by the sign of a (0 for zero and NaN). */
 static inline int dd_sign(dd a)
 {
@@ -226,10 +209,6 @@ static inline int dd_sign(dd a)
 }
 
 static inline bool dd_lt(dd a, dd b) { return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo); }
-static inline bool dd_le(dd a, dd b) { return a.hi < b.hi || (a.hi == b.hi && a.lo <= b.lo); }
-static inline bool dd_gt(dd a, dd b) { return dd_lt(b, a); }
-static inline bool dd_ge(dd a, dd b) { return dd_le(b, a); }
-static inline bool dd_eq(dd a, dd b) { return a.hi == b.hi && a.lo == b.lo; }
 
 /* ---- elementary functions (dd.c) ------------------------------------------ */
 

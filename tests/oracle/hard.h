@@ -172,7 +172,6 @@ typedef struct {
 /* Mesh k is of family k % HARD_MESH_FAMILIES and depends only on (seed, k);
  * the shapes take turns, starting from one the seed picks. */
 int  hard_meshes(uint64_t seed, HardMesh *meshes, int max);
-bool hard_check_mesh(const HardMesh *m, int ray, bool hit, double t);
 
 /* The building blocks, for the benchmark and the unit tests: a mesh of one
  * of HARD_MESH_SHAPES shapes about size across, centred near offset and

@@ -484,9 +484,3 @@ int hard_meshes(uint64_t seed, HardMesh *meshes, int max)
     }
     return max > 0 ? max : 0;
 }
-
-bool hard_check_mesh(const HardMesh *m, int ray, bool hit, double t)
-{
-    const OracleFlat *o = &m->expect[ray];
-    return hit && o->hit && t > 0 && fabs(t - o->t) <= o->tol;
-}

@@ -45,33 +45,4 @@ static inline bool textbook_intersect(const Sphere *sp, const Ray *ray, double *
     return textbook_sphere_above(sp, ray, 0, t);
 }
 
-/* Part 4 as t = (p.n - e.n) / (r.n), with the plane's constant first. */
-static inline bool textbook_plane(const Plane *pl, const Ray *ray, double *t)
-{
-    double rn = vec3_dot(ray->direction, pl->normal);
-    double tt = (vec3_dot(pl->point, pl->normal) - vec3_dot(ray->origin, pl->normal)) / rn;
-    if (!(tt > 0 && tt < INFINITY))
-        return false;
-    *t = tt;
-    return true;
-}
-
-/* Part 5 as the skeleton's comment writes it (Moller-Trumbore). */
-static inline bool textbook_triangle(const Triangle *tr, const Ray *ray, double *t)
-{
-    Vec3 e1 = vec3_sub(tr->b, tr->a), e2 = vec3_sub(tr->c, tr->a), s = vec3_sub(ray->origin, tr->a);
-    Vec3 q = vec3_cross(ray->direction, e2);
-    double det = vec3_dot(e1, q);
-    if (det == 0)
-        return false;
-    double beta = vec3_dot(s, q) / det;
-    Vec3 sx = vec3_cross(s, e1);
-    double gamma = vec3_dot(ray->direction, sx) / det;
-    double tt = vec3_dot(e2, sx) / det;
-    if (beta < 0 || gamma < 0 || beta + gamma > 1 || !(tt > 0 && tt < INFINITY))
-        return false;
-    *t = tt;
-    return true;
-}
-
 #endif

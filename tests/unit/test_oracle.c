@@ -122,13 +122,8 @@ static void test_dd_arithmetic(void)
     CHECK_EQ_DOUBLE(q.hi, 0x1.8000000000002p-2);
     CHECK_EQ_DOUBLE(q.lo, -0x1p-55);
     CHECK(dd_lt(dd_make(1, 0x1p-60), dd_make(1, 0x1p-59)));
-    CHECK(dd_le(dd_make(1, 0x1p-60), dd_make(1, 0x1p-60)));
-    CHECK(dd_gt(dd_from(2), dd_make(2, -0x1p-70)));
-    CHECK(dd_eq(dd_make(1, 0x1p-60), dd_make(1, 0x1p-60)));
-    CHECK_EQ_INT(dd_cmp(dd_from(1), dd_make(1, -0x1p-80)), 1);
     CHECK_EQ_INT(dd_sign(dd_make(0, -0x1p-80)), -1);
     CHECK_EQ_INT(dd_sign(dd_from(0)), 0);
-    CHECK_EQ_DOUBLE(dd_ldexp(dd_make(1, 0x1p-60), 10).lo, 0x1p-50);
 #if HAVE_F128
     uint64_t s = SEED;
     for (int k = 0; k < 10000; k++) {
