@@ -97,7 +97,8 @@ int jail_enter(int fd);
 /* In the child, just before it runs the program (Linux, x86-64 and arm64):
  * a seccomp filter fails the system calls of the key store and the
  * network, and any of another ABI (jail.c says why).  jail_filters: whether
- * this build has the filter (it needs the kernel's headers). */
+ * runs get the filter (the build needs the kernel's headers, and the
+ * kernel seccomp). */
 void jail_deny_calls(void);
 bool jail_filters(void);
 
