@@ -100,11 +100,6 @@ void sandbox_set_user(uid_t id, bool held)
     user_held = id != 0 && held;
 }
 
-/* The file one byte of which, at the offset of an id, is locked by the
- * grader that holds that id (sandbox.h).  /var/run is root's alone on
- * Linux and macOS, so no one else can make or replace the file. */
-#define USERS_LOCK "/var/run/rtgrade-users.lock"
-
 /* The lock file, opened once; -1 with why set when it cannot be used. */
 static int users_lock(const char **why)
 {
@@ -112,12 +107,12 @@ static int users_lock(const char **why)
     static const char *fault;
     if (fd == -2) {
         struct stat st;
-        fd = open(USERS_LOCK, O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0600);
+        fd = open(SANDBOX_USERS_LOCK, O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0600);
         if (fd < 0)
-            fault = "cannot open " USERS_LOCK;
+            fault = "cannot open " SANDBOX_USERS_LOCK;
         else if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_uid != geteuid() ||
                  (st.st_mode & 022)) {
-            fault = USERS_LOCK " is not a file that only root may write";
+            fault = SANDBOX_USERS_LOCK " is not a file that only root may write";
             close(fd);
             fd = -1;
         }
@@ -156,7 +151,7 @@ int sandbox_spare_users(uid_t *ids, int n, const char **unclaimed)
             if (held == 0)
                 continue;       /* another grader's */
             if (held < 0) {
-                *unclaimed = "the system cannot lock " USERS_LOCK;
+                *unclaimed = "the system cannot lock " SANDBOX_USERS_LOCK;
                 fd = -1;
             }
         }

@@ -119,10 +119,14 @@ void sandbox_set_user(uid_t id, bool held);
  * (nor nobody), each checked by a child that takes it; stores them in
  * ids and returns how many it found.  Each is held until this process
  * ends, against every other grader that asks for ids at the same time (a
- * lock on one byte of a file of root's, per id), which then gets others.
+ * lock on one byte of SANDBOX_USERS_LOCK, at the id's offset), which then
+ * gets others.
  * *unclaimed is NULL, or says why the ids could not be held so (they are
  * found all the same, but another grader may be given them too). */
 int sandbox_spare_users(uid_t *ids, int n, const char **unclaimed);
+/* /var/run is root's alone on Linux and macOS, so no one else can make or
+ * replace the file. */
+#define SANDBOX_USERS_LOCK "/var/run/rtgrade-users.lock"
 
 /* The runs this process started, and the seconds their namespace jails
  * took to build (0 in the fallback), for grade --cost. */

@@ -313,8 +313,24 @@ static int others_ids(uid_t out[3])
     return (int)((size_t)r / sizeof out[0]);
 }
 
+/* Whether some live process holds id now (another grader on this machine,
+ * as beside the other suites of make test).  Asked by a child: closing a
+ * descriptor of the lock file here would drop this process's own claims. */
+static bool held_now(uid_t id)
+{
+    pid_t pid = fork();
+    if (pid == 0) {
+        int fd = open(SANDBOX_USERS_LOCK, O_RDONLY);
+        struct flock fl = { .l_type = F_WRLCK, .l_whence = SEEK_SET, .l_start = (off_t)id, .l_len = 1 };
+        _exit(fd >= 0 && fcntl(fd, F_GETLK, &fl) == 0 && fl.l_type != F_UNLCK ? 0 : 1);
+    }
+    int status;
+    return pid > 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
 /* Two graders at once are given different ids; and ids are free again
- * when the grader that held them has ended. */
+ * when the grader that held them has ended (unless another grader on the
+ * machine has taken them since). */
 static void check_claims(const uid_t *ids, int n)
 {
     uid_t first[3], again[3];
@@ -323,9 +339,15 @@ static void check_claims(const uid_t *ids, int n)
     for (int k = 0; k < m; k++)
         for (int j = 0; j < n; j++)
             CHECK_MSG(first[k] != ids[j], "id %lu given to two processes at once", (unsigned long)ids[j]);
-    if (m > 0 && others_ids(again) > 0)
-        CHECK_MSG(again[0] == first[0], "ids not freed when their process ended: %lu, then %lu",
-                  (unsigned long)first[0], (unsigned long)again[0]);
+    bool freed = m <= 0;
+    for (int tries = 0; tries < 5 && !freed; tries++) {    /* another grader may come and go */
+        int got = others_ids(again);
+        for (int k = 0; k < got; k++)
+            freed = freed || again[k] == first[0];
+        freed = freed || held_now(first[0]);
+    }
+    CHECK_MSG(freed, "ids not freed when their process ended: %lu, then %lu", (unsigned long)first[0],
+              (unsigned long)again[0]);
 }
 
 /* As root, grade --all's spare users: distinct ids that are not nobody's
