@@ -164,25 +164,17 @@ typedef struct {
     int failed;         /* memory ran out */
 } DfWriter;
 
-/* Positions are kept in 32 bits, relative to base: half the memory of
- * size_t entries, and as many fewer pages for a short-lived process to
- * fault in.  Before an entry could overflow, every entry moves down by
- * DF_REBASE and those that would go below 1 are dropped (df_rebase): they
- * lie a gigabyte or more behind, far outside the window, so the matches
- * found are the same as with full positions. */
-#ifndef DF_REBASE              /* tests/unit/test_deflate_rebase.c sets it low */
-#define DF_REBASE ((size_t)1 << 30)
-#endif
-
+/* Positions are kept in 32 bits: half the memory of size_t entries, and
+ * as many fewer pages for a short-lived process to fault in.  Every input
+ * the kit compresses is well under 4 GiB (a PNG's rows of at most
+ * PNG_MAX_SIDE pixels, a ZIP entry of at most ARCHIVE_MAX_SIZE bytes);
+ * kit_deflate refuses a larger one. */
 typedef struct {
     const unsigned char *in;
     size_t n;
-    size_t base;        /* the entries count from here                  */
-    uint32_t *head;     /* per hash: 1 + the latest position - base, or 0 */
-    uint32_t *prev;     /* per position mod the window: 1 + the previous
-                           position - base, or 0                         */
-    size_t nprev;       /* prev's entries: the window, or n when shorter
-                           (then a position is its own index)           */
+    uint32_t *head;     /* per hash: 1 + the latest position, or 0      */
+    uint32_t *prev;     /* per position mod the window (n entries when n
+                           is shorter): 1 + the previous position, or 0 */
 } DfMatcher;
 
 /* Queues the low count bits of value (count <= 32), first bit first. */
@@ -266,26 +258,14 @@ static unsigned df_hash(const unsigned char *p)
     return (unsigned)((v * 2654435761u) >> (32 - DF_HASH_BITS));
 }
 
-/* Moves base up by DF_REBASE (see DfMatcher). */
-static void df_rebase(DfMatcher *m)
-{
-    for (size_t k = 0; k < DF_HASH_SIZE; k++)
-        m->head[k] = m->head[k] > DF_REBASE ? (uint32_t)(m->head[k] - DF_REBASE) : 0;
-    for (size_t k = 0; k < m->nprev; k++)
-        m->prev[k] = m->prev[k] > DF_REBASE ? (uint32_t)(m->prev[k] - DF_REBASE) : 0;
-    m->base += DF_REBASE;
-}
-
 /* Records position pos (which has 3 bytes after it) in the hash chains. */
 static void df_insert(DfMatcher *m, size_t pos)
 {
     if (pos + DF_MIN_MATCH > m->n)
         return;
-    if (pos - m->base >= 2 * DF_REBASE)
-        df_rebase(m);
     unsigned h = df_hash(m->in + pos);
     m->prev[pos & (DF_WINDOW - 1)] = m->head[h];
-    m->head[h] = (uint32_t)(pos - m->base + 1);
+    m->head[h] = (uint32_t)(pos + 1);
 }
 
 /* The longest earlier match for the bytes at pos, within the window, found
@@ -300,7 +280,7 @@ static unsigned df_longest_match(const DfMatcher *m, size_t pos, unsigned *dist)
     const unsigned char *cur = m->in + pos;
     size_t cand = m->head[df_hash(cur)];
     for (int chain = DF_MAX_CHAIN; cand != 0 && chain > 0; chain--) {
-        size_t c = m->base + cand - 1;
+        size_t c = cand - 1;
         if (c >= pos || pos - c > DF_WINDOW)
             break;
         const unsigned char *old = m->in + c;
@@ -371,11 +351,10 @@ int kit_deflate(const void *in, size_t n, KitBuf *out)
      * it never uses (the hash heads stay whole: they decide the matches). */
     size_t nprev = n < DF_WINDOW ? (n ? n : 1) : DF_WINDOW;
     size_t nsyms = n < DF_BLOCK_INPUT ? (n ? n : 1) : DF_BLOCK_INPUT;
-    DfMatcher m = {in, n, 0, calloc(DF_HASH_SIZE, sizeof(uint32_t)),
-                   calloc(nprev, sizeof(uint32_t)), nprev};
+    DfMatcher m = {in, n, calloc(DF_HASH_SIZE, sizeof(uint32_t)), calloc(nprev, sizeof(uint32_t))};
     DfSymbol *syms = malloc(nsyms * sizeof *syms);
     DfWriter w = {out, 0, 0, 0};
-    if (!m.head || !m.prev || !syms)
+    if (!m.head || !m.prev || !syms || n >= UINT32_MAX)
         w.failed = 1;
     size_t pos = 0;
     while (!w.failed) {

@@ -45,8 +45,8 @@ uint32_t kit_crc32(uint32_t crc, const void *data, size_t n);
  * continue. */
 uint32_t kit_adler32(uint32_t adler, const void *data, size_t n);
 
-/* Appends the raw DEFLATE stream of in[0 .. n-1] to out.
- * Returns 0, or -1 if memory runs out (out keeps its old length). */
+/* Appends the raw DEFLATE stream of in[0 .. n-1] to out.  Returns 0, or -1
+ * if memory runs out or n is 4 GiB or more (out keeps its old length). */
 int kit_deflate(const void *in, size_t n, KitBuf *out);
 
 /* Decodes the raw DEFLATE stream at the start of in[0 .. n-1] and appends
@@ -59,7 +59,7 @@ int kit_inflate(const void *in, size_t n, size_t max_out, KitBuf *out,
                 size_t *consumed, char *err, size_t errlen);
 
 /* Appends in[0 .. n-1] compressed as a zlib stream (RFC 1950) to out.
- * Returns 0, or -1 if memory runs out (out keeps its old length). */
+ * Returns 0, or -1 as kit_deflate (out keeps its old length). */
 int kit_zlib_compress(const void *in, size_t n, KitBuf *out);
 
 /* Decodes the zlib stream in[0 .. n-1] (which must hold nothing after the

@@ -355,7 +355,7 @@ static int zip_put_entry(const ArchiveEntry *e, KitBuf *body, KitBuf *central,
     size_t psize = e->size;
     unsigned method = 0;
     int rc = 0;
-    if (e->size > 0) {
+    if (e->size > 0 && e->size < ZIP_MAX32) {     /* a larger one is refused below */
         if (kit_deflate(e->data, e->size, &packed) != 0)
             rc = arc_fail(err, errlen, "out of memory");
         else if (packed.len < e->size) {

@@ -139,6 +139,9 @@ static void test_deflate_empty(void)
     kit_deflate("", 0, &z);
     CHECK_EQ_INT(z.len, 2);            /* a final fixed block holding only end-of-block */
     CHECK(z.len == 2 && z.data[0] == 0x03 && z.data[1] == 0x00);
+    /* 4 GiB or more, past the 32-bit positions, is refused before a byte is read */
+    CHECK_EQ_INT(kit_deflate("", (size_t)UINT32_MAX, &z), -1);
+    CHECK_EQ_INT(z.len, 2);
     kit_buf_free(&z);
 }
 
