@@ -198,42 +198,31 @@ static void test_good_scene_values(void)
 }
 
 /* Only image and fov are required: distance 1, a black background and no
- * spheres by default; CRLF line ends, a last line without a newline, and a
- * byte-order mark before the first line. */
+ * spheres by default; CRLF line ends, a last line without a newline; sizes
+ * at both ends, a whole number written with a fraction, a tiny field of
+ * view, colours at both ends of [0, 1]; a byte-order mark first, as some
+ * Windows editors save UTF-8, skipped (it was read as a keyword, '???';
+ * anywhere else it is not text: bad_scenes). */
 static void test_defaults_crlf_and_edges(void)
 {
-    Scene scene;
-    char err[256];
-    CHECK_EQ_INT(scene_parse(&scene, "fov 179.5\r\nimage 1 16384\r\n", "min.scene", err, sizeof err), 0);
-    CHECK_EQ_INT(scene.nx, 1);
-    CHECK_EQ_INT(scene.ny, IMAGE_MAX_SIDE);
-    CHECK_EQ_DOUBLE(scene.fov_degrees, 179.5);
-    CHECK_EQ_DOUBLE(scene.d, 1);
-    CHECK_EQ_DOUBLE(scene.background.x, 0);
-    CHECK_EQ_DOUBLE(scene.background.y, 0);
-    CHECK_EQ_DOUBLE(scene.background.z, 0);
-    CHECK_EQ_INT(scene.nspheres, 0);
-    scene_free(&scene);
-
-    /* colours at both ends of [0, 1], a tiny field of view, a whole number
-     * written with a fraction */
-    CHECK_EQ_INT(scene_parse(&scene, "image 16384.0 1\nfov 1e-5\nbackground 0 1 0\n"
-                             "sphere 0 0 -1 1e-300 1 0 1", "edge.scene", err, sizeof err), 0);
-    CHECK_EQ_INT(scene.nx, 16384);
-    CHECK_EQ_DOUBLE(scene.fov_degrees, 1e-5);
-    CHECK_EQ_INT(scene.nspheres, 1);
-    scene_free(&scene);
-
-    /* a byte-order mark first, as some Windows editors save UTF-8: skipped
-     * (it was read as a keyword, '???'); anywhere else it is not text
-     * (bad_scenes) */
-    CHECK_EQ_INT(scene_parse(&scene, "\xEF\xBB\xBF# a comment\r\nimage 2 3\r\nfov 60\r\n", "bom.scene", err,
-                             sizeof err), 0);
-    CHECK_EQ_INT(scene.nx, 2);
-    scene_free(&scene);
-    CHECK_EQ_INT(scene_parse(&scene, "\xEF\xBB\xBFimage 2 3\nfov 60\n", "bom.scene", err, sizeof err), 0);
-    CHECK_EQ_INT(scene.ny, 3);
-    scene_free(&scene);
+    static const struct { const char *text; int nx, ny; double fov, green; int nspheres; } good[] = {
+        { "fov 179.5\r\nimage 1 16384\r\n", 1, IMAGE_MAX_SIDE, 179.5, 0, 0 },
+        { "image 16384.0 1\nfov 1e-5\nbackground 0 1 0\nsphere 0 0 -1 1e-300 1 0 1", 16384, 1, 1e-5, 1, 1 },
+        { "\xEF\xBB\xBF# a comment\r\nimage 2 3\r\nfov 60\r\n", 2, 3, 60, 0, 0 },
+        { "\xEF\xBB\xBFimage 2 3\nfov 60\n", 2, 3, 60, 0, 0 },
+    };
+    for (int k = 0; k < CHECK_COUNT(good); k++) {
+        Scene scene;
+        char err[256] = "";
+        CHECK_MSG(scene_parse(&scene, good[k].text, "t.scene", err, sizeof err) == 0, "scene %d: %s", k, err);
+        CHECK_MSG(scene.nx == good[k].nx && scene.ny == good[k].ny && scene.fov_degrees == good[k].fov,
+                  "scene %d: image %d %d, fov %.17g", k, scene.nx, scene.ny, scene.fov_degrees);
+        CHECK_MSG(scene.d == 1 && scene.background.x == 0 && scene.background.y == good[k].green &&
+                      scene.background.z == 0 && scene.nspheres == good[k].nspheres,
+                  "scene %d: distance %.17g, background %g %g %g, %d spheres", k, scene.d,
+                  scene.background.x, scene.background.y, scene.background.z, scene.nspheres);
+        scene_free(&scene);
+    }
 }
 
 /* A line of 4096 characters is fine; one of 4097 is refused with its number. */
