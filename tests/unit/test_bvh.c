@@ -68,24 +68,18 @@ static bool line_in_box(const long double lo[3], const long double hi[3], const 
     return true;
 }
 
-static void triangle_box(const Triangle *tri, long double lo[3], long double hi[3])
+/* The box of the n points v, each grown by r on every side. */
+static void points_box(const Vec3 *v, int n, double r, long double lo[3], long double hi[3])
 {
-    const Vec3 v[3] = { tri->a, tri->b, tri->c };
     for (int k = 0; k < 3; k++) {
         lo[k] = hi[k] = (&v[0].x)[k];
-        for (int i = 1; i < 3; i++) {
+        for (int i = 1; i < n; i++) {
             long double x = (&v[i].x)[k];
             lo[k] = x < lo[k] ? x : lo[k];
             hi[k] = x > hi[k] ? x : hi[k];
         }
-    }
-}
-
-static void sphere_box(const Sphere *s, long double lo[3], long double hi[3])
-{
-    for (int k = 0; k < 3; k++) {
-        lo[k] = (long double)(&s->center.x)[k] - s->radius;
-        hi[k] = (long double)(&s->center.x)[k] + s->radius;
+        lo[k] -= r;
+        hi[k] += r;
     }
 }
 
@@ -129,7 +123,8 @@ static bool box_hit(const long double lo[3], const long double hi[3], const Ray 
 static bool box_hit_triangle(const Triangle *tri, const Ray *ray, double *t)
 {
     long double lo[3], hi[3];
-    triangle_box(tri, lo, hi);
+    const Vec3 v[3] = { tri->a, tri->b, tri->c };
+    points_box(v, 3, 0, lo, hi);
     const double key[5] = { tri->a.x, tri->b.y, tri->c.z, ray->direction.x, ray->direction.y };
     return box_hit(lo, hi, ray, hash_doubles(key, 5), t);
 }
@@ -137,7 +132,7 @@ static bool box_hit_triangle(const Triangle *tri, const Ray *ray, double *t)
 static bool box_hit_sphere(const Sphere *sphere, const Ray *ray, double *t)
 {
     long double lo[3], hi[3];
-    sphere_box(sphere, lo, hi);
+    points_box(&sphere->center, 1, sphere->radius, lo, hi);
     const double key[4] = { sphere->center.x, sphere->radius, ray->direction.x, ray->direction.y };
     return box_hit(lo, hi, ray, hash_doubles(key, 4), t);
 }
@@ -180,13 +175,7 @@ static double uniform(uint32_t *state, double lo, double hi)
 /* An empty scene of nx x ny pixels, fov 70, eye at the origin. */
 static Scene empty_scene(int nx, int ny)
 {
-    Scene s;
-    memset(&s, 0, sizeof s);
-    s.nx = nx;
-    s.ny = ny;
-    s.fov_degrees = 70;
-    s.d = 1;
-    s.background = vec3(0.5, 0.5, 0.5);
+    Scene s = { .nx = nx, .ny = ny, .fov_degrees = 70, .d = 1, .background = { 0.5, 0.5, 0.5 } };
     return s;
 }
 

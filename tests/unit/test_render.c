@@ -9,16 +9,8 @@
 /* A scene of nx x ny pixels with the given spheres, eye at the origin. */
 static Scene make_scene(int nx, int ny, double fov, Vec3 background, Sphere *spheres, int n)
 {
-    Scene scene;
-    memset(&scene, 0, sizeof scene);
-    scene.nx = nx;
-    scene.ny = ny;
-    scene.fov_degrees = fov;
-    scene.d = 1;
-    scene.eye = vec3(0, 0, 0);
-    scene.background = background;
-    scene.spheres = spheres;
-    scene.nspheres = n;
+    Scene scene = { .nx = nx, .ny = ny, .fov_degrees = fov, .d = 1, .eye = { 0, 0, 0 },
+                    .background = background, .spheres = spheres, .nspheres = n };
     return scene;
 }
 
