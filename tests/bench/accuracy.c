@@ -48,7 +48,7 @@ void accuracy_run(const Method *m, const Case *cases, const Exact *exact, int n,
             continue;
         }
         double t = NAN;
-        bool hit = m->one(&cases[i].sphere, &cases[i].ray, &t);
+        bool hit = method_one(m, &cases[i].sphere, &cases[i].ray, &t);
         if (hit && !isfinite(t))
             hit = false;                  /* a hit with no usable t */
         if (hit != exact[i].hit) {

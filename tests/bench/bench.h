@@ -110,14 +110,11 @@ void fast_closest_m(const FastScene *fs, const float *fdx, const float *fdy, con
                     const double *dx, const double *dy, const double *dz,
                     int count, int *idx, double *t);
 
-/* For the report: of count rays' (packet, sphere) pairs, how many the
- * double path solves (the filter let some ray through, or the eye is
- * inside the sphere). */
-void fast_count_solves(const FastScene *fs, const double *dx, const double *dy, const double *dz,
-                       int count, long *pairs, long *solved);
 /* The double fast path's filter alone, as fast_closest_d runs it (two
  * spheres per pass where it can), with no solve: the (packet, sphere)
- * pairs that pass.  The bench times it to split the fast path's time. */
+ * pairs that pass, or whose sphere holds the eye: those the double path
+ * solves.  The bench counts them for the report, and times it to split the
+ * fast path's time. */
 long fast_filter_only(const FastScene *fs, const double *dx, const double *dy, const double *dz,
                       int count);
 
@@ -171,16 +168,10 @@ typedef struct {
 
 typedef struct {
     const char *name;         /* short id, as in results.csv                */
-    const char *title;        /* for the report                             */
     Precision precision;
-    bool fast;                /* the specialised fast path                  */
     bool unit_dir;            /* assumes |r| = 1 (else: give it r / |r|)    */
     unsigned layouts;         /* the ray layouts closest reads (LAYOUT_*)   */
-    /* One test: hit and t, computed at the method's precision. */
-    bool (*one)(const Sphere *sphere, const Ray *ray, double *t);
-    /* Nearest hit for rays [0, rs->n): idx[i], t[i] as fast_closest_d. */
-    void (*closest)(const BenchScene *scene, const RaySet *rs, int *idx, double *t);
-    /* The function itself, for the scalar methods (else NULL). */
+    /* The function itself, for the scalar methods (both NULL: the fast path). */
     IsectD scalar_d;
     IsectF scalar_f;
 } Method;
@@ -188,6 +179,10 @@ typedef struct {
 extern const Method bench_methods[];
 extern const int bench_nmethods;
 int method_find(const char *name, Precision p);   /* index, or -1 */
+/* One test: hit and t, computed at the method's precision. */
+bool method_one(const Method *m, const Sphere *sphere, const Ray *ray, double *t);
+/* Nearest hit for rays [0, rs->n): idx[i], t[i] as fast_closest_d. */
+void method_closest(const Method *m, const BenchScene *scene, const RaySet *rs, int *idx, double *t);
 
 /* ---- tri_methods.c, triangles.c: Part 5 ------------------------------------- */
 typedef struct { Vec3f a, b, c; } Trianglef;

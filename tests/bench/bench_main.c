@@ -279,7 +279,8 @@ static int step_throughput(const Options *o, BenchResults *br, char *err, size_t
     br->tp_spheres = scene.nspheres;
     br->rounds = o->rounds;
     count_reference_exits(&scene, &rs, br);
-    fast_count_solves(&fs, rs.dx, rs.dy, rs.dz, rs.n, &br->fast_pairs, &br->fast_solved);
+    br->fast_pairs = (long)((rs.n + FAST_PACKET - 1) / FAST_PACKET) * fs.n;
+    br->fast_solved = fast_filter_only(&fs, rs.dx, rs.dy, rs.dz, rs.n);
 
     int nm = bench_nmethods, R = o->rounds;
     double *secs = malloc((size_t)(R * nm) * sizeof *secs);
@@ -434,7 +435,7 @@ static int step_grader(const Options *o, BenchResults *br, char *err, size_t err
             bool scale = bench_methods[m].unit_dir && len > 0 && len < INFINITY;
             if (scale)
                 ray.direction = vec3_scale(ray.direction, 1 / len);
-            bool hit = bench_methods[m].one(&cases[i].sphere, &ray, &t);
+            bool hit = method_one(&bench_methods[m], &cases[i].sphere, &ray, &t);
             if (hit && scale)
                 t /= len;
             if (!hard_check3a(&cases[i], hit, t))

@@ -167,18 +167,6 @@ void fast_free(FastScene *fs)
 #define NAME(x) x##_f
 #include "fastpath_body.h"
 
-void fast_closest_d(const FastScene *fs, const double *dx, const double *dy, const double *dz,
-                    int count, int *idx, double *t)
-{
-    closest_d(fs, dx, dy, dz, count, idx, t);
-}
-
-void fast_closest_f(const FastScene *fs, const float *dx, const float *dy, const float *dz,
-                    int count, int *idx, double *t)
-{
-    closest_f(fs, dx, dy, dz, count, idx, t);
-}
-
 /* Mixed: the float filter decides which packets to solve (its threshold
  * lets through every ray the double filter would), then the double solve
  * decides ray by ray exactly as the double path does: the answers are the
@@ -205,15 +193,6 @@ void fast_closest_m(const FastScene *fs, const float *fdx, const float *fdy, con
         }
         packet_finish_d(tbest, kbest, np, idx + p0, t + p0);
     }
-}
-
-void fast_count_solves(const FastScene *fs, const double *dx, const double *dy, const double *dz,
-                       int count, long *pairs, long *solved)
-{
-    /* A pair is solved when the filter lets some ray through, or when the
-     * eye is inside the sphere: the pairs fast_filter_only counts. */
-    *pairs = (long)((count + FAST_PACKET - 1) / FAST_PACKET) * fs->n;
-    *solved = fast_filter_only(fs, dx, dy, dz, count);
 }
 
 long fast_filter_only(const FastScene *fs, const double *dx, const double *dy, const double *dz,

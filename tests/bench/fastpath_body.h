@@ -9,14 +9,6 @@
  *   NAME(x)           x with the precision's suffix
  */
 
-/* The sign bit of x, as 0 or 1. */
-static UINT NAME(sign_bit)(REAL x)
-{
-    UINT u;
-    memcpy(&u, &x, sizeof u);
-    return u >> SIGN_SHIFT;
-}
-
 static REAL NAME(from_bits)(UINT u)
 {
     REAL x;
@@ -29,6 +21,12 @@ static UINT NAME(to_bits)(REAL x)
     UINT u;
     memcpy(&u, &x, sizeof u);
     return u;
+}
+
+/* The sign bit of x, as 0 or 1. */
+static UINT NAME(sign_bit)(REAL x)
+{
+    return NAME(to_bits)(x) >> SIGN_SHIFT;
 }
 
 /* ---- the packet's rays and its answers ----------------------------------------- */
@@ -174,8 +172,8 @@ static void NAME(solve_rays)(const FastScene *fs, int k, const REAL *rx, const R
 
 /* ---- the loop over packets -------------------------------------------------------- */
 
-static void NAME(closest)(const FastScene *fs, const REAL *dx, const REAL *dy, const REAL *dz,
-                          int count, int *idx, double *t)
+void NAME(fast_closest)(const FastScene *fs, const REAL *dx, const REAL *dy, const REAL *dz,
+                        int count, int *idx, double *t)
 {
     for (int p0 = 0; p0 < count; p0 += FAST_PACKET) {
         int np = count - p0 < FAST_PACKET ? count - p0 : FAST_PACKET;

@@ -251,7 +251,7 @@ static double time_passes(const Method *m, const BenchScene *sc, const RaySet *r
 {
     double t0 = now_seconds();
     for (int p = 0; p < passes; p++)
-        m->closest(sc, rs, idx, t);
+        method_closest(m, sc, rs, idx, t);
     double dt = now_seconds() - t0;
     /* consume the answers, so no compiler may skip computing them */
     double sum = 0;

@@ -36,7 +36,7 @@ static void render_once(const Method *m, const BenchScene *bs, const Scene *scen
             rayset_put(row, i, camera_ray(scene->eye, pixel), m ? m->layouts : LAYOUT_SOA_D);
         }
         if (m)
-            m->closest(bs, row, idx + (size_t)j * nx, trow);
+            method_closest(m, bs, row, idx + (size_t)j * nx, trow);
         else
             idx[(size_t)j * nx] = (int)row->dx[nx - 1];
     }

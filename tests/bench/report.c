@@ -357,7 +357,7 @@ static void scalar_double_range(const BenchResults *br, double *lo, double *hi)
 {
     *lo = INFINITY, *hi = 0;
     for (int m = 0; m < bench_nmethods; m++)
-        if (!bench_methods[m].fast && bench_methods[m].precision == PREC_DOUBLE) {
+        if (bench_methods[m].scalar_d) {
             *lo = br->mtests[m] < *lo ? br->mtests[m] : *lo;
             *hi = br->mtests[m] > *hi ? br->mtests[m] : *hi;
         }
