@@ -8,6 +8,7 @@
  *   plot.svg               throughput against error (svg.c)
  */
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 #include "bench.h"
@@ -101,28 +102,12 @@ static const char *label(int m)
     return b;
 }
 
-/* dir/name, opened by out_open (outfile.h); closed by close_out. */
-static FILE *open_out(const char *dir, const char *name, char *err, size_t errlen)
-{
-    char path[1024];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    return out_open(path, err, errlen);
-}
-
-static int close_out(FILE *f, const char *dir, const char *name, char *err, size_t errlen)
-{
-    char path[1024];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    return out_close(f, path, err, errlen);
-}
-
 /* ---- CSV ------------------------------------------------------------------------- */
 
-static int write_csv(const BenchResults *br, const char *dir, char *err, size_t errlen)
+/* Each file's body, for out_write (outfile.h): data is the BenchResults. */
+static void csv_results(FILE *f, const void *data)
 {
-    FILE *f = open_out(dir, "results.csv", err, errlen);
-    if (!f)
-        return -1;
+    const BenchResults *br = data;
     fprintf(f, "method,precision,mtests_per_s,mtests_per_s_q1,mtests_per_s_q3,share_of_ceiling,"
                "max_rel_err,median_rel_err,wrong_per_million,max_err_over_u_kappa,"
                "tests,ambiguous,wrong,compared_hits,ns_per_miss,ns_per_hit,"
@@ -139,12 +124,11 @@ static int write_csv(const BenchResults *br, const char *dir, char *err, size_t 
             fprintf(f, "%.3f,%.3f,", br->miss_ns[m], br->hit_ns[m]);
         fprintf(f, "%d,%d\n", br->grader_failed[m], br->grader_cases);
     }
-    if (close_out(f, dir, "results.csv", err, errlen) != 0)
-        return -1;
+}
 
-    f = open_out(dir, "results_by_family.csv", err, errlen);
-    if (!f)
-        return -1;
+static void csv_families(FILE *f, const void *data)
+{
+    const BenchResults *br = data;
     fprintf(f, "family,method,precision,tests,ambiguous,wrong,wrong_per_million,compared_hits,"
                "max_rel_err,median_rel_err,max_err_over_u_kappa,over_tolerance\n");
     for (int fam = 0; fam < FAMILY_COUNT; fam++)
@@ -156,12 +140,11 @@ static int write_csv(const BenchResults *br, const char *dir, char *err, size_t 
                     per_million(s), s->hits, s->max_rel, s->median_rel, s->max_over_kappa,
                     s->over_tol);
         }
-    if (close_out(f, dir, "results_by_family.csv", err, errlen) != 0)
-        return -1;
+}
 
-    f = open_out(dir, "renders.csv", err, errlen);
-    if (!f)
-        return -1;
+static void csv_renders(FILE *f, const void *data)
+{
+    const BenchResults *br = data;
     fprintf(f, "scene,width,height,spheres,method,precision,seconds,mrays_per_s,"
                "differ_pixels,differ_share,ambiguous_pixels,rays_only_seconds\n");
     for (int s = 0; s < br->nrenders; s++) {
@@ -172,10 +155,23 @@ static int write_csv(const BenchResults *br, const char *dir, char *err, size_t 
                     r->seconds[m], (double)r->pixels / r->seconds[m] / 1e6, r->differ[m],
                     (double)r->differ[m] / (double)r->pixels, r->ambiguous, r->rays_seconds);
     }
-    return close_out(f, dir, "renders.csv", err, errlen);
 }
 
-/* ---- the plot ---------------------------------------------------------------------- */
+/* ---- the plots ---------------------------------------------------------------------- */
+
+/* A plot's subtitle: how the bench ran (a quick run or not, the CPU, one
+ * thread), then fmt's text. */
+static const char *subtitle(const BenchResults *br, const char *fmt, ...)
+{
+    static char sub[400];
+    int n = snprintf(sub, sizeof sub, "%s%s, one thread, ",
+                     br->quick ? "QUICK RUN (small sizes): " : "", br->cpu);
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(sub + n, sizeof sub - (size_t)n, fmt, ap);
+    va_end(ap);
+    return sub;
+}
 
 static int write_plot(const BenchResults *br, const char *dir, char *err, size_t errlen)
 {
@@ -199,15 +195,12 @@ static int write_plot(const BenchResults *br, const char *dir, char *err, size_t
           "max |t - t_exact| / (u kappa t_exact), u = 2^-53 (log scale; about 1 is the best "
           "possible)", "million ray/sphere tests per second" },
     };
-    char path[1024], sub[400];
-    snprintf(path, sizeof path, "%s/plot.svg", dir);
-    snprintf(sub, sizeof sub, "%s%s, one thread, -O2; throughput on %s (%d rays x %d spheres); "
-                              "errors on %d cases", br->quick ? "QUICK RUN (small sizes): " : "",
-             br->cpu, br->tp_scene, br->tp_rays, br->tp_spheres,
-             br->family_cases[0] + br->family_cases[1] + br->family_cases[2] +
-                 br->family_cases[3]);
-    return svg_plot(path, "Ray/sphere intersection: speed against accuracy", sub, panels, 2,
-                    err, errlen);
+    const char *sub = subtitle(br, "-O2; throughput on %s (%d rays x %d spheres); errors on %d "
+                                   "cases", br->tp_scene, br->tp_rays, br->tp_spheres,
+                               br->family_cases[0] + br->family_cases[1] +
+                                   br->family_cases[2] + br->family_cases[3]);
+    return svg_plot(dir, "plot.svg", "Ray/sphere intersection: speed against accuracy", sub,
+                    panels, 2, err, errlen);
 }
 
 /* ---- report.md ----------------------------------------------------------------------- */
@@ -727,11 +720,9 @@ static void md_method(FILE *f, const BenchResults *br)
                "lists the files).\n");
 }
 
-static int write_md(const BenchResults *br, const char *dir, char *err, size_t errlen)
+static void md_report(FILE *f, const void *data)
 {
-    FILE *f = open_out(dir, "report.md", err, errlen);
-    if (!f)
-        return -1;
+    const BenchResults *br = data;
     md_intro(f, br);
     md_headline(f, br);
     md_throughput(f, br);
@@ -746,31 +737,25 @@ static int write_md(const BenchResults *br, const char *dir, char *err, size_t e
     triangles_md(f, &br->tri);
     scaling_md(f, &br->scale);
     md_method(f, br);
-    return close_out(f, dir, "report.md", err, errlen);
 }
 
 int report_write(const BenchResults *br, const char *dir, char *err, size_t errlen)
 {
-    if (write_csv(br, dir, err, errlen) != 0)
+    if (out_write(dir, "results.csv", csv_results, br, err, errlen) != 0 ||
+        out_write(dir, "results_by_family.csv", csv_families, br, err, errlen) != 0 ||
+        out_write(dir, "renders.csv", csv_renders, br, err, errlen) != 0 ||
+        write_plot(br, dir, err, errlen) != 0)
         return -1;
-    if (write_plot(br, dir, err, errlen) != 0)
+    if (br->tri.ran &&
+        triangles_write(&br->tri, dir, subtitle(br, "-O2; throughput on cracks.scene (%d rays x "
+                                                    "%d triangles); errors on %ld hard cases",
+                                                br->tri.tp_rays, br->tri.tp_triangles,
+                                                br->tri.hard[0].cases), err, errlen) != 0)
         return -1;
-    if (br->tri.ran) {
-        char sub[400];
-        snprintf(sub, sizeof sub, "%s%s, one thread, -O2; throughput on cracks.scene (%d rays x %d "
-                                  "triangles); errors on %ld hard cases", br->quick ? "QUICK RUN "
-                 "(small sizes): " : "", br->cpu, br->tri.tp_rays, br->tri.tp_triangles,
-                 br->tri.hard[0].cases);
-        if (triangles_write(&br->tri, dir, sub, err, errlen) != 0)
-            return -1;
-    }
-    if (br->scale.ran) {
-        char sub[400];
-        snprintf(sub, sizeof sub, "%s%s, one thread, the reference; closed knots in knot.scene's "
-                                  "view, %dx%d with the hierarchy", br->quick ? "QUICK RUN "
-                 "(small sizes): " : "", br->cpu, br->scale.nx, br->scale.ny);
-        if (scaling_write(&br->scale, dir, sub, err, errlen) != 0)
-            return -1;
-    }
-    return write_md(br, dir, err, errlen);
+    if (br->scale.ran &&
+        scaling_write(&br->scale, dir, subtitle(br, "the reference; closed knots in knot.scene's "
+                                                    "view, %dx%d with the hierarchy",
+                                                br->scale.nx, br->scale.ny), err, errlen) != 0)
+        return -1;
+    return out_write(dir, "report.md", md_report, br, err, errlen);
 }

@@ -221,14 +221,10 @@ static double mrays(int pixels, double seconds)
     return seconds > 0 ? pixels / seconds / 1e6 : 0;
 }
 
-int scaling_write(const ScaleResults *sr, const char *dir, const char *subtitle, char *err,
-                  size_t errlen)
+/* results_scaling.csv's body, for out_write (outfile.h): data is the ScaleResults. */
+static void csv_scaling(FILE *f, const void *data)
 {
-    char path[1024];
-    snprintf(path, sizeof path, "%s/results_scaling.csv", dir);
-    FILE *f = out_open(path, err, errlen);
-    if (!f)
-        return -1;
+    const ScaleResults *sr = data;
     fprintf(f, "triangles,nodes,read_s,build_s,mrays_per_s_with,mrays_per_s_without,"
                "pixels_with,pixels_without\n");
     for (int k = 0; k < sr->n; k++) {
@@ -237,7 +233,12 @@ int scaling_write(const ScaleResults *sr, const char *dir, const char *subtitle,
                 r->build_seconds, mrays(r->pixels_with, r->seconds_with),
                 mrays(r->pixels_without, r->seconds_without), r->pixels_with, r->pixels_without);
     }
-    if (out_close(f, path, err, errlen) != 0)
+}
+
+int scaling_write(const ScaleResults *sr, const char *dir, const char *subtitle, char *err,
+                  size_t errlen)
+{
+    if (out_write(dir, "results_scaling.csv", csv_scaling, sr, err, errlen) != 0)
         return -1;
     static PlotPoint with[SCALE_MAX], without[SCALE_MAX];
     for (int k = 0; k < sr->n; k++) {
@@ -249,8 +250,7 @@ int scaling_write(const ScaleResults *sr, const char *dir, const char *subtitle,
     }
     const PlotSeries series[2] = { { with, sr->n, "with the hierarchy" },
                                    { without, sr->n, "without: every triangle for every ray" } };
-    snprintf(path, sizeof path, "%s/plot_scaling.svg", dir);
-    return svg_lines(path, "Meshes at scale: rays per second against triangles", subtitle,
+    return svg_lines(dir, "plot_scaling.svg", "Meshes at scale: rays per second against triangles", subtitle,
                      "triangles in the mesh (log scale)", "million rays per second (log scale)",
                      series, 2, err, errlen);
 }

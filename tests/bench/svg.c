@@ -302,12 +302,13 @@ static void draw_panel(FILE *f, const PlotPanel *p, double top)
     }
 }
 
-/* Opens path (outfile.h) and writes the document's start, its title and subtitle, for
- * a picture height pixels high.  Returns the file, or NULL with err. */
-static FILE *svg_begin(const char *path, int height, const char *title, const char *subtitle,
-                       char *err, size_t errlen)
+/* Opens dir/name (outfile.h) and writes the document's start, its title and
+ * subtitle, for a picture height pixels high.  Returns the file, or NULL
+ * with err. */
+static FILE *svg_begin(const char *dir, const char *name, int height, const char *title,
+                       const char *subtitle, char *err, size_t errlen)
 {
-    FILE *f = out_open(path, err, errlen);
+    FILE *f = out_open(dir, name, err, errlen);
     if (!f)
         return NULL;
     fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
@@ -323,17 +324,17 @@ static FILE *svg_begin(const char *path, int height, const char *title, const ch
     return f;
 }
 
-/* Ends the document and closes f into path.  Returns 0, or -1 with err. */
-static int svg_end(FILE *f, const char *path, char *err, size_t errlen)
+/* Ends the document and closes f into dir/name.  Returns 0, or -1 with err. */
+static int svg_end(FILE *f, const char *dir, const char *name, char *err, size_t errlen)
 {
     fprintf(f, "</svg>\n");
-    return out_close(f, path, err, errlen);
+    return out_close(f, dir, name, err, errlen);
 }
 
-int svg_plot(const char *path, const char *title, const char *subtitle,
+int svg_plot(const char *dir, const char *name, const char *title, const char *subtitle,
              const PlotPanel *panels, int npanels, char *err, size_t errlen)
 {
-    FILE *f = svg_begin(path, HEADER + npanels * PANEL_H, title, subtitle, err, errlen);
+    FILE *f = svg_begin(dir, name, HEADER + npanels * PANEL_H, title, subtitle, err, errlen);
     if (!f)
         return -1;
     /* legend, once, under the title: the groups that have points */
@@ -358,13 +359,14 @@ int svg_plot(const char *path, const char *title, const char *subtitle,
                "accurate</text>\n", lx + 34, ly);
     for (int k = 0; k < npanels; k++)
         draw_panel(f, &panels[k], HEADER + k * PANEL_H);
-    return svg_end(f, path, err, errlen);
+    return svg_end(f, dir, name, err, errlen);
 }
 
-int svg_lines(const char *path, const char *title, const char *subtitle, const char *xlabel,
-              const char *ylabel, const PlotSeries *series, int nseries, char *err, size_t errlen)
+int svg_lines(const char *dir, const char *name, const char *title, const char *subtitle,
+              const char *xlabel, const char *ylabel, const PlotSeries *series, int nseries,
+              char *err, size_t errlen)
 {
-    FILE *f = svg_begin(path, HEADER + PANEL_H, title, subtitle, err, errlen);
+    FILE *f = svg_begin(dir, name, HEADER + PANEL_H, title, subtitle, err, errlen);
     if (!f)
         return -1;
     double xs[MAXP] = { 0 }, ys[MAXP] = { 0 };
@@ -397,5 +399,5 @@ int svg_lines(const char *path, const char *title, const char *subtitle, const c
             marker(f, pts[i].group, axis_pos(&ax, pts[i].x),
                    axis_pos(&ay, pts[i].y > 1e-6 ? pts[i].y : 1e-6));
     }
-    return svg_end(f, path, err, errlen);
+    return svg_end(f, dir, name, err, errlen);
 }

@@ -26,9 +26,9 @@ typedef struct {
  * strictly): the Pareto front of "small x, large y". */
 void pareto_front(const PlotPoint *pts, int n, bool *on);
 
-/* Writes the panels, one above the other, to path.  Returns 0, or -1 with a
- * reason in err. */
-int svg_plot(const char *path, const char *title, const char *subtitle,
+/* Writes the panels, one above the other, to dir/name.  Returns 0, or -1
+ * with a reason in err. */
+int svg_plot(const char *dir, const char *name, const char *title, const char *subtitle,
              const PlotPanel *panels, int npanels, char *err, size_t errlen);
 
 /* A line of points, drawn in the colour and marker of its points' group. */
@@ -38,9 +38,10 @@ typedef struct {
     const char *label;          /* in the legend */
 } PlotSeries;
 
-/* Writes one panel of lines on log axes to path.  Returns 0, or -1 with a
- * reason in err. */
-int svg_lines(const char *path, const char *title, const char *subtitle, const char *xlabel,
-              const char *ylabel, const PlotSeries *series, int nseries, char *err, size_t errlen);
+/* Writes one panel of lines on log axes to dir/name.  Returns 0, or -1 with
+ * a reason in err. */
+int svg_lines(const char *dir, const char *name, const char *title, const char *subtitle,
+              const char *xlabel, const char *ylabel, const PlotSeries *series, int nseries,
+              char *err, size_t errlen);
 
 #endif

@@ -423,14 +423,10 @@ static int tri_find(const char *name, Precision p)
     return -1;
 }
 
-int triangles_write(const TriResults *tr, const char *dir, const char *subtitle, char *err,
-                    size_t errlen)
+/* results_triangles.csv's body, for out_write (outfile.h): data is the TriResults. */
+static void csv_triangles(FILE *f, const void *data)
 {
-    char path[1024];
-    snprintf(path, sizeof path, "%s/results_triangles.csv", dir);
-    FILE *f = out_open(path, err, errlen);
-    if (!f)
-        return -1;
+    const TriResults *tr = data;
     fprintf(f, "method,precision,mtests_per_s,"
                "ordinary_max_rel_err,ordinary_median_rel_err,ordinary_wrong_per_million,"
                "ordinary_max_err_over_u_kappa,ordinary_cases,"
@@ -451,9 +447,13 @@ int triangles_write(const TriResults *tr, const char *dir, const char *subtitle,
             fprintf(f, ",%ld", tr->rays[m][k]);
         fprintf(f, ",%ld\n", tr->missed_all[m]);
     }
-    if (out_close(f, path, err, errlen) != 0)
-        return -1;
+}
 
+int triangles_write(const TriResults *tr, const char *dir, const char *subtitle, char *err,
+                    size_t errlen)
+{
+    if (out_write(dir, "results_triangles.csv", csv_triangles, tr, err, errlen) != 0)
+        return -1;
     /* The plot: speed against cracks, and speed against the error of t. */
     static PlotPoint cracks[TRI_MAX_METHODS], errs[TRI_MAX_METHODS];
     static char labels[TRI_MAX_METHODS][48];
@@ -474,8 +474,7 @@ int triangles_write(const TriResults *tr, const char *dir, const char *subtitle,
           "max |t - t_exact| / (u kappa t_exact), u = 2^-53 (log scale; smaller is better)",
           "million ray/triangle tests per second" },
     };
-    snprintf(path, sizeof path, "%s/plot_triangles.svg", dir);
-    return svg_plot(path, "Ray/triangle intersection: speed against watertightness and accuracy",
+    return svg_plot(dir, "plot_triangles.svg", "Ray/triangle intersection: speed against watertightness and accuracy",
                     subtitle, panels, 2, err, errlen);
 }
 
