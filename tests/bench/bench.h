@@ -2,31 +2,8 @@
  * bench.h - `make bench`: how much speed each ray/sphere formulation buys
  * and how much accuracy it costs.
  *
- * The pieces, one job per file (README.md beside them shows the results):
- *   methods.c    the formulations, in double and float, one test at a time
- *                (bodies in methods_body.h, written once for both)
- *   fastpath.c   the specialised fast path: eye at the origin, spheres as
- *                structure of arrays, vectorised over packets of rays
- *                (bodies in fastpath_body.h)
- *   suite.c      the table of methods: for each, one test and a closest-hit
- *                loop over many rays (the renderer's inner loop)
- *   workload.c   the rays: an ordinary scene's camera rays, and hard cases
- *   measure.c    timing (interleaved medians), the clock, the ceiling
- *   accuracy.c   errors against the exact answers of tests/oracle
- *   renders.c    the lab's scenes rendered at full HD, against exact renders
- *   svg.c        the plots, drawn directly as SVG (svg.h)
- *   outfile.c    every output file written whole, then renamed (outfile.h)
- *   report.c     results.csv, results_by_family.csv, renders.csv, report.md
- *   tri_methods.c  Part 5: the ray/triangle formulations (Moller-Trumbore's
- *                body in tri_methods_body.h, for double and float)
- *   triangles.c  Part 5: their speed, their error and their cracks, with
- *                results_triangles.csv, plot_triangles.svg and a section
- *                of report.md
- *   scaling.c    Part 5 at scale: rays per second against the number of
- *                triangles with and without the kit's hierarchy, with
- *                results_scaling.csv, plot_scaling.svg and a section of
- *                report.md
- *   bench_main.c options, progress line, the order of the steps
+ * The pieces, one job per file, are listed in README.md beside them (with
+ * the results); this header declares them all.
  *
  * Everything the bench writes goes to one directory (out/bench by default).
  */
@@ -423,6 +400,55 @@ typedef struct {
 /* Writes results.csv, results_by_family.csv, renders.csv, report.md and
  * plot.svg into dir.  Returns 0, or -1 with a reason in err. */
 int report_write(const BenchResults *br, const char *dir, char *err, size_t errlen);
+
+/* ---- outfile.c: every output file written whole: to a temporary file beside
+ * it, renamed into place once closed, so that none is ever left half-written. */
+/* Opens dir/name's temporary file (".tmp" after the name) for writing.
+ * Returns it, or NULL with "dir/name: cannot write" in err. */
+FILE *out_open(const char *dir, const char *name, char *err, size_t errlen);
+
+/* Closes f, opened by out_open(dir, name), and renames it over dir/name.
+ * Returns 0, or -1 with "dir/name: write failed" in err and the temporary
+ * file gone. */
+int out_close(FILE *f, const char *dir, const char *name, char *err, size_t errlen);
+
+/* Writes dir/name whole with body(f, data).  Returns 0, or -1 with err. */
+int out_write(const char *dir, const char *name, void (*body)(FILE *f, const void *data),
+              const void *data, char *err, size_t errlen);
+
+/* ---- svg.c: the plots, drawn as SVG by hand (no plotting package): speed
+ * against error on log axes, and lines on log axes. */
+typedef struct {
+    const char *label;      /* shown beside the point                          */
+    double x;               /* error (smaller is better); 0 is drawn at 1e-18   */
+    double y;               /* throughput (larger is better), > 0              */
+    int group;              /* 0 double, 1 float, 2 mixed: colour and marker   */
+} PlotPoint;
+
+typedef struct {
+    const PlotPoint *pts;
+    int n;
+    const char *title;      /* above the panel                                 */
+    const char *xlabel, *ylabel;
+} PlotPanel;
+
+/* Writes the panels, one above the other, to dir/name.  Returns 0, or -1
+ * with a reason in err. */
+int svg_plot(const char *dir, const char *name, const char *title, const char *subtitle,
+             const PlotPanel *panels, int npanels, char *err, size_t errlen);
+
+/* A line of points, drawn in the colour and marker of its points' group. */
+typedef struct {
+    const PlotPoint *pts;       /* by x; their labels are not drawn */
+    int n;
+    const char *label;          /* in the legend */
+} PlotSeries;
+
+/* Writes one panel of lines on log axes to dir/name.  Returns 0, or -1 with
+ * a reason in err. */
+int svg_lines(const char *dir, const char *name, const char *title, const char *subtitle,
+              const char *xlabel, const char *ylabel, const PlotSeries *series, int nseries,
+              char *err, size_t errlen);
 
 /* ---- progress (bench_main.c) ----------------------------------------------- */
 void progress(const char *step, int done, int total);

@@ -1,7 +1,7 @@
 /*
- * outfile.c - see outfile.h.
+ * outfile.c - every output file written whole (bench.h).
  */
-#include "outfile.h"
+#include "bench.h"
 
 /* dir/name into path and its temporary file's name into tmp (len bytes
  * each); false when too long. */

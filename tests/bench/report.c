@@ -12,8 +12,6 @@
 #include <stdio.h>
 #include <string.h>
 #include "bench.h"
-#include "outfile.h"
-#include "svg.h"
 
 #define RATIO_TARGET 1.05          /* reference / textbook, at most             */
 #define SPEEDUP_TARGET 4.0         /* fast path / textbook scalar loop, at least */
@@ -104,7 +102,7 @@ static const char *label(int m)
 
 /* ---- CSV ------------------------------------------------------------------------- */
 
-/* Each file's body, for out_write (outfile.h): data is the BenchResults. */
+/* Each file's body, for out_write (outfile.c): data is the BenchResults. */
 static void csv_results(FILE *f, const void *data)
 {
     const BenchResults *br = data;

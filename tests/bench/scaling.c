@@ -27,8 +27,6 @@
 #include "kit/render.h"
 #include "kit/scene.h"
 #include "bench.h"
-#include "outfile.h"
-#include "svg.h"
 
 #define SCALE_BUDGET 5e7        /* tests per render without the hierarchy */
 #define SCALE_SIZE   "640x480"  /* the render program's image */
@@ -221,7 +219,7 @@ static double mrays(int pixels, double seconds)
     return seconds > 0 ? pixels / seconds / 1e6 : 0;
 }
 
-/* results_scaling.csv's body, for out_write (outfile.h): data is the ScaleResults. */
+/* results_scaling.csv's body, for out_write (outfile.c): data is the ScaleResults. */
 static void csv_scaling(FILE *f, const void *data)
 {
     const ScaleResults *sr = data;

@@ -8,10 +8,11 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include "outfile.h"
-#include "svg.h"
+#include "bench.h"
 
-void pareto_front(const PlotPoint *pts, int n, bool *on)
+/* on[i]: no other point has both x no larger and y no smaller (one of them
+ * strictly): the Pareto front of "small x, large y". */
+static void pareto_front(const PlotPoint *pts, int n, bool *on)
 {
     for (int i = 0; i < n; i++) {
         on[i] = true;
@@ -302,7 +303,7 @@ static void draw_panel(FILE *f, const PlotPanel *p, double top)
     }
 }
 
-/* Opens dir/name (outfile.h) and writes the document's start, its title and
+/* Opens dir/name (outfile.c) and writes the document's start, its title and
  * subtitle, for a picture height pixels high.  Returns the file, or NULL
  * with err. */
 static FILE *svg_begin(const char *dir, const char *name, int height, const char *title,

@@ -27,8 +27,6 @@
 #include "../oracle/draw.h"
 #include "../oracle/hard.h"
 #include "bench.h"
-#include "outfile.h"
-#include "svg.h"
 
 #define U 0x1p-53
 
@@ -423,7 +421,7 @@ static int tri_find(const char *name, Precision p)
     return -1;
 }
 
-/* results_triangles.csv's body, for out_write (outfile.h): data is the TriResults. */
+/* results_triangles.csv's body, for out_write (outfile.c): data is the TriResults. */
 static void csv_triangles(FILE *f, const void *data)
 {
     const TriResults *tr = data;
