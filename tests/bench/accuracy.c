@@ -16,32 +16,21 @@
  */
 #include <math.h>
 #include <stdlib.h>
-#include "../oracle/oracle.h"
 #include "bench.h"
 
-Exact *exact_answers(const Case *cases, int n)
+OracleHit *exact_answers(const Case *cases, int n)
 {
-    Exact *ex = malloc((size_t)(n > 0 ? n : 1) * sizeof *ex);
-    if (!ex)
-        return NULL;
-    for (int i = 0; i < n; i++) {
-        OracleHit h = oracle_sphere(&cases[i].sphere, &cases[i].ray);
-        ex[i].hit = h.hit;
-        ex[i].ambiguous = h.ambiguous;
-        ex[i].t = h.t;
-        ex[i].kappa = h.kappa;
-    }
+    OracleHit *ex = malloc((size_t)(n > 0 ? n : 1) * sizeof *ex);
+    for (int i = 0; ex && i < n; i++)
+        ex[i] = oracle_sphere(&cases[i].sphere, &cases[i].ray);
     return ex;
 }
 
-void accuracy_run(const Method *m, const Case *cases, const Exact *exact, int n,
+void accuracy_run(const Method *m, const Case *cases, const OracleHit *exact, int n,
                   ErrorStats *st, double *errs, long *nerrs)
 {
-    double *own = errs ? errs : malloc((size_t)(n > 0 ? n : 1) * sizeof *own);
     long ne = 0;
-    st->tests = n;
-    st->ambiguous = st->wrong = st->hits = st->over_tol = 0;
-    st->max_rel = st->median_rel = st->max_over_kappa = 0;
+    *st = (ErrorStats){ .tests = n };
     for (int i = 0; i < n; i++) {
         if (exact[i].ambiguous) {
             st->ambiguous++;
@@ -66,13 +55,9 @@ void accuracy_run(const Method *m, const Case *cases, const Exact *exact, int n,
             st->max_over_kappa = ku;
         if (ku > ORACLE_K_T)
             st->over_tol++;
-        if (own)
-            own[ne++] = rel;
+        errs[ne++] = rel;
     }
-    if (own && ne > 0)
-        st->median_rel = median(own, (int)ne);
-    if (nerrs)
-        *nerrs = ne;
-    if (own != errs)
-        free(own);
+    if (ne > 0)
+        st->median_rel = median(errs, (int)ne);
+    *nerrs = ne;
 }

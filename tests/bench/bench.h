@@ -15,6 +15,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include "raytracer.h"
+#include "../oracle/oracle.h"
 
 /* ---- float counterparts of the lab's types ------------------------------ */
 typedef struct { float x, y, z; } Vec3f;
@@ -107,9 +108,8 @@ typedef struct {
 
 int rayset_alloc(RaySet *rs, int n);
 void rayset_free(RaySet *rs);
-void rayset_set(RaySet *rs, int i, Ray ray);   /* stores ray in every layout */
 enum { LAYOUT_AOS_D = 1, LAYOUT_AOS_F = 2, LAYOUT_SOA_D = 4, LAYOUT_SOA_F = 8 };
-void rayset_put(RaySet *rs, int i, Ray ray, unsigned layouts);   /* only those */
+void rayset_put(RaySet *rs, int i, Ray ray, unsigned layouts);   /* in those (~0u: all) */
 
 /* Camera rays through an nx x ny grid of pixel centres for scene (its fov
  * and d, the given size), every step-th pixel in each direction. */
@@ -217,7 +217,6 @@ typedef struct {
  * 0, or -1 with a reason in err. */
 int triangle_bench(const char *scenes, bool quick, uint64_t seed, TriResults *tr, char *err,
                    size_t errlen);
-double tri_cracks_per_million(const TriResults *tr, int m);
 /* results_triangles.csv and plot_triangles.svg in dir; 0, or -1 with err. */
 int triangles_write(const TriResults *tr, const char *dir, const char *subtitle, char *err,
                     size_t errlen);
@@ -265,6 +264,9 @@ void scaling_md(FILE *f, const ScaleResults *sr);
 
 /* ---- measure.c: time, clock, ceiling ------------------------------------ */
 double now_seconds(void);                    /* CLOCK_MONOTONIC */
+/* The text after the colon of /proc/cpuinfo's first line that starts with
+ * key, into out (len bytes); false without /proc or such a line. */
+bool cpuinfo(const char *key, char *out, size_t len);
 double median(double *v, int n);             /* sorts v */
 double quantile(double *v, int n, double q); /* v sorted */
 
@@ -316,16 +318,12 @@ typedef struct {
     double max_over_kappa;     /* max of error / (u kappa)                 */
 } ErrorStats;
 
-/* Exact answers for cases, computed once. */
-typedef struct {
-    bool hit, ambiguous;
-    double t, kappa;
-} Exact;
-Exact *exact_answers(const Case *cases, int n);
+/* Exact answers for cases (oracle_sphere's), computed once. */
+OracleHit *exact_answers(const Case *cases, int n);
 
-/* Errors of method m on cases.  errs (may be NULL) receives the relative
+/* Errors of method m on cases.  errs (room for n) receives the relative
  * errors of the compared hits, *nerrs of them. */
-void accuracy_run(const Method *m, const Case *cases, const Exact *exact, int n,
+void accuracy_run(const Method *m, const Case *cases, const OracleHit *exact, int n,
                   ErrorStats *st, double *errs, long *nerrs);
 
 /* ---- renders.c ------------------------------------------------------------ */

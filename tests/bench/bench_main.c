@@ -93,25 +93,6 @@ static double load_average(void)
     return v;
 }
 
-static void cpu_model(char *out, size_t len)
-{
-    snprintf(out, len, "unknown CPU");
-    FILE *f = fopen("/proc/cpuinfo", "r");     /* portable: "unknown CPU" without /proc */
-    if (!f)
-        return;
-    char line[256];
-    while (fgets(line, sizeof line, f))
-        if (strncmp(line, "model name", 10) == 0) {
-            const char *colon = strchr(line, ':');
-            if (colon) {
-                snprintf(out, len, "%s", colon + 2);
-                out[strcspn(out, "\n")] = '\0';
-            }
-            break;
-        }
-    fclose(f);
-}
-
 static int mkdir_p(const char *dir)
 {
     char buf[1024];
@@ -325,7 +306,7 @@ static void check_transliteration(const Case *cases, int n, BenchResults *br)
 /* Cost by outcome: the ordinary scene's n cases that surely miss and
  * surely hit (exact: their answers), a sample of each timed with every
  * method; and the share of hits.  0, or -1 out of memory. */
-static int cost_by_outcome(const Options *o, const Case *cases, const Exact *exact, int n, BenchResults *br)
+static int cost_by_outcome(const Options *o, const Case *cases, const OracleHit *exact, int n, BenchResults *br)
 {
     const int cap = o->quick ? 2000 : 20000;
     Case *miss = malloc((size_t)cap * sizeof *miss), *hit = malloc((size_t)cap * sizeof *hit);
@@ -339,7 +320,7 @@ static int cost_by_outcome(const Options *o, const Case *cases, const Exact *exa
     br->hit_share = counted > 0 ? (double)hits / (double)counted : 0;
     long step_hit = hits / cap + 1, step_miss = (counted - hits) / cap + 1, kh = 0, km = 0;
     for (int i = 0; miss && hit && i < n; i++) {
-        const Exact *e = &exact[i];
+        const OracleHit *e = &exact[i];
         if (e->ambiguous)
             continue;
         if (e->hit && kh++ % step_hit == 0 && nhit < cap)
@@ -376,7 +357,7 @@ static int step_errors(const Options *o, BenchResults *br, char *err, size_t err
         total += n[f];
         br->family_cases[f] = n[f];
     }
-    Exact *exact[FAMILY_COUNT] = { NULL };
+    OracleHit *exact[FAMILY_COUNT] = { NULL };
     double *errs = malloc((size_t)total * sizeof *errs);
     int status = errs ? 0 : -1;
     for (int f = 0; f < FAMILY_COUNT && status == 0; f++) {
@@ -501,23 +482,22 @@ static int parse_options(int argc, char **argv, Options *o)
     Options defaults = { false, false, "out/bench", "labs/scenes", NULL, "out/build/sub/solutions/render",
                          1920, 1080, 0, 20260101 };
     *o = defaults;
+    /* the options that take a path */
+    const struct { const char *name; const char **to; } paths[] = {
+        { "--placement", &o->placement }, { "--out", &o->out }, { "--render", &o->render },
+        { "--scenes", &o->scenes },
+    };
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        size_t p = 0;
+        while (p < sizeof paths / sizeof paths[0] && strcmp(a, paths[p].name) != 0)
+            p++;
         if (strcmp(a, "--quick") == 0) {
             o->quick = true;
         } else if (strcmp(a, "--ratio-only") == 0) {
             o->ratio_only = true;
-        } else if (strcmp(a, "--placement") == 0 && v) {
-            o->placement = v;
-            i++;
-        } else if (strcmp(a, "--out") == 0 && v) {
-            o->out = v;
-            i++;
-        } else if (strcmp(a, "--render") == 0 && v) {
-            o->render = v;
-            i++;
-        } else if (strcmp(a, "--scenes") == 0 && v) {
-            o->scenes = v;
+        } else if (p < sizeof paths / sizeof paths[0] && v) {
+            *paths[p].to = v;
             i++;
         } else if (strcmp(a, "--size") == 0 && v && sscanf(v, "%dx%d", &o->width, &o->height) == 2 &&
                    o->width > 0 && o->height > 0 && o->width <= 16384 && o->height <= 16384) {
@@ -563,7 +543,8 @@ static void describe_run(const Options *o, BenchResults *br)
     br->quick = o->quick;
     br->seed = o->seed;
     br->load_before = load_average();
-    cpu_model(br->cpu, sizeof br->cpu);
+    if (!cpuinfo("model name", br->cpu, sizeof br->cpu))
+        snprintf(br->cpu, sizeof br->cpu, "unknown CPU");
 #ifdef __VERSION__
     snprintf(br->compiler, sizeof br->compiler, "%s", __VERSION__);
 #endif

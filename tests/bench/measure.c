@@ -49,24 +49,20 @@ double median(double *v, int n)
 
 /* ---- the clock ------------------------------------------------------------ */
 
-/* "cpu MHz" from /proc/cpuinfo (Linux), the first one; 0 if none.  In a
- * virtual machine it is often the nominal clock, not the one running. */
-static double cpuinfo_mhz(void)
+bool cpuinfo(const char *key, char *out, size_t len)
 {
-    FILE *f = fopen("/proc/cpuinfo", "r");     /* portable: 0 without /proc */
+    FILE *f = fopen("/proc/cpuinfo", "r");     /* portable: false without /proc */
     if (!f)
-        return 0;
+        return false;
     char line[256];
-    double mhz = 0;
-    while (fgets(line, sizeof line, f))
-        if (strncmp(line, "cpu MHz", 7) == 0) {
-            const char *colon = strchr(line, ':');
-            if (colon)
-                mhz = atof(colon + 1);
-            break;
+    const char *colon = NULL;
+    while (!colon && fgets(line, sizeof line, f))
+        if (strncmp(line, key, strlen(key)) == 0 && (colon = strchr(line, ':')) != NULL) {
+            snprintf(out, len, "%s", colon + 1 + strspn(colon + 1, " \t"));
+            out[strcspn(out, "\n")] = '\0';
         }
     fclose(f);
-    return mhz;
+    return colon != NULL;
 }
 
 static volatile uint64_t opaque_k1 = 0x9e3779b97f4a7c15ull, opaque_k2 = 12345;
@@ -213,7 +209,10 @@ void measure_ceiling(Ceiling *c, bool quick, double mhz_during)
         sq[r] = lanes_per_us(0, nf / 8);
         dv[r] = lanes_per_us(1, nf / 8);
     }
-    c->mhz_cpuinfo = cpuinfo_mhz();
+    /* "cpu MHz", the first one (Linux); 0 if none.  In a virtual machine it
+     * is often the nominal clock, not the one running. */
+    char mhz_text[64];
+    c->mhz_cpuinfo = cpuinfo("cpu MHz", mhz_text, sizeof mhz_text) ? atof(mhz_text) : 0;
     c->mhz_measured = mhz_during > 0 ? mhz_during : median(mhz, reps);
     c->mhz = c->mhz_measured;
     c->mul_per_cycle = median(mul, reps) / c->mhz;

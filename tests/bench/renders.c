@@ -13,7 +13,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "../oracle/oracle.h"
 #include "kit/scene.h"
 #include "bench.h"
 

@@ -271,21 +271,21 @@ void scaling_md(FILE *f, const ScaleResults *sr)
     fprintf(f, "\n|---|");
     for (int k = 0; k < sr->n; k++)
         fprintf(f, "---:|");
-    fprintf(f, "\n| with the hierarchy (Mrays/s) |");
-    for (int k = 0; k < sr->n; k++)
-        fprintf(f, " %.3g |", mrays(sr->rows[k].pixels_with, sr->rows[k].seconds_with));
-    fprintf(f, "\n| without (Mrays/s) |");
-    for (int k = 0; k < sr->n; k++)
-        fprintf(f, " %.3g |", mrays(sr->rows[k].pixels_without, sr->rows[k].seconds_without));
-    fprintf(f, "\n| nodes |");
-    for (int k = 0; k < sr->n; k++)
-        fprintf(f, " %d |", sr->rows[k].nodes);
-    fprintf(f, "\n| reading (s) |");
-    for (int k = 0; k < sr->n; k++)
-        fprintf(f, " %.3f |", sr->rows[k].read_seconds);
-    fprintf(f, "\n| building (s) |");
-    for (int k = 0; k < sr->n; k++)
-        fprintf(f, " %.3f |", sr->rows[k].build_seconds);
+    /* then a row per quantity */
+    static const struct { const char *name, *format; } rows[] = {
+        { "with the hierarchy (Mrays/s)", " %.3g |" }, { "without (Mrays/s)", " %.3g |" },
+        { "nodes", " %.0f |" }, { "reading (s)", " %.3f |" }, { "building (s)", " %.3f |" },
+    };
+    for (int q = 0; q < 5; q++) {
+        fprintf(f, "\n| %s |", rows[q].name);
+        for (int k = 0; k < sr->n; k++) {
+            const ScaleRow *r = &sr->rows[k];
+            double v[] = { mrays(r->pixels_with, r->seconds_with),
+                           mrays(r->pixels_without, r->seconds_without), r->nodes,
+                           r->read_seconds, r->build_seconds };
+            fprintf(f, rows[q].format, v[q]);
+        }
+    }
     fprintf(f, "\n\n![Rays per second against triangles](plot_scaling.svg)\n\n");
 
     const ScaleRow *big = &sr->rows[sr->n - 1];

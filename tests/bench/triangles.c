@@ -92,27 +92,18 @@ static int step_throughput(const char *scenes, bool quick, TriResults *tr, char 
     Scene scene;
     if (scene_load(&scene, path, err, errlen) != 0)
         return -1;
-    int step = quick ? 4 : 1, nx = scene.nx, ny = scene.ny;
-    int nr = ((nx + step - 1) / step) * ((ny + step - 1) / step), n = scene.ntriangles;
-    Ray *rays = malloc((size_t)nr * sizeof *rays);
-    Rayf *raysf = malloc((size_t)nr * sizeof *raysf);
+    RaySet rs;
+    int n = scene.ntriangles, rounds = quick ? 3 : 21;
+    int rsok = rayset_camera(&rs, &scene, scene.nx, scene.ny, quick ? 4 : 1) == 0, nr = rs.n;
     Trianglef *trisf = malloc((size_t)(n > 0 ? n : 1) * sizeof *trisf);
-    int rounds = quick ? 3 : 21;
     double *secs = malloc((size_t)rounds * tri_nmethods * sizeof *secs);
-    if (!rays || !raysf || !trisf || !secs) {
+    if (!rsok || !trisf || !secs) {
         snprintf(err, errlen, "out of memory");
-        free(rays), free(raysf), free(trisf), free(secs);
+        rayset_free(&rs);           /* rayset_camera leaves it empty if it fails */
+        free(trisf), free(secs);
         scene_free(&scene);
         return -1;
     }
-    double w, h;
-    image_plane_size(scene.fov_degrees, (double)nx / ny, scene.d, &w, &h);
-    int r = 0;
-    for (int j = 0; j < ny; j += step)
-        for (int i = 0; i < nx; i += step, r++) {
-            rays[r] = camera_ray(scene.eye, pixel_coordinates(i, j, nx, ny, w, h, scene.d));
-            raysf[r] = rayf_from(&rays[r]);
-        }
     for (int k = 0; k < n; k++)
         trisf[k] = trianglef_from(&scene.triangles[k]);
     tr->tp_rays = nr;
@@ -124,32 +115,25 @@ static int step_throughput(const char *scenes, bool quick, TriResults *tr, char 
             int m = (q + round) % tri_nmethods;
             double start = now_seconds(), sum = 0;
             for (int i = 0; i < nr; i++) {
-                double t = tri_closest(&tri_methods[m], scene.triangles, trisf, n, &rays[i], &raysf[i]);
+                double t = tri_closest(&tri_methods[m], scene.triangles, trisf, n, &rs.rays[i],
+                                       &rs.raysf[i]);
                 sum += t < INFINITY ? t : 0;
             }
-            secs[round * tri_nmethods + m] = now_seconds() - start;
+            secs[m * rounds + round] = now_seconds() - start;
             bench_sink += sum;
         }
     }
     for (int m = 0; m < tri_nmethods; m++) {
-        double s[512];
-        for (int round = 0; round < rounds; round++)
-            s[round] = secs[round * tri_nmethods + m];
-        double med = median(s, rounds);
+        double med = median(secs + m * rounds, rounds);
         tr->mtests[m] = med > 0 ? (double)nr * n / med / 1e6 : 0;
     }
-    free(rays), free(raysf), free(trisf), free(secs);
+    rayset_free(&rs);
+    free(trisf), free(secs);
     scene_free(&scene);
     return 0;
 }
 
 /* ---- errors ------------------------------------------------------------------ */
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 /* The ordinary workload: a triangle 0.25 to 4 across, 3 to 20 ahead of the
  * eye and in its view, and the camera ray (from the eye at the origin,
@@ -205,7 +189,7 @@ static void measure_errors(const TriMethod *m, const HardCase5 *cases, int n, do
         if (o->kappa <= 100 && r / U > e->max_u_well)
             e->max_u_well = r / U;
     }
-    qsort(rel, (size_t)nrel, sizeof *rel, cmp_double);
+    median(rel, (int)nrel);                 /* sorts rel */
     e->hits = nrel;
     e->max_rel = nrel ? rel[nrel - 1] : 0;
     e->median_rel = nrel ? rel[nrel / 2] : 0;
@@ -387,25 +371,19 @@ static double per_million(long count, long of)
     return of > 0 ? 1e6 * count / of : 0;
 }
 
-static long rays_judged(const TriResults *tr, int m)
+/* A method's count over the four kinds of crack rays (tr->rays[m]: the
+ * rays judged, tr->cracks[m]: those through). */
+static long all_kinds(const long count[CRACK_KINDS])
 {
     long n = 0;
     for (int k = 0; k < CRACK_KINDS; k++)
-        n += tr->rays[m][k];
+        n += count[k];
     return n;
 }
 
-static long rays_through(const TriResults *tr, int m)
+static double tri_cracks_per_million(const TriResults *tr, int m)
 {
-    long n = 0;
-    for (int k = 0; k < CRACK_KINDS; k++)
-        n += tr->cracks[m][k];
-    return n;
-}
-
-double tri_cracks_per_million(const TriResults *tr, int m)
-{
-    return per_million(rays_through(tr, m), rays_judged(tr, m));
+    return per_million(all_kinds(tr->cracks[m]), all_kinds(tr->rays[m]));
 }
 
 static double wrong_per_million(const TriErrors *e)
@@ -520,7 +498,7 @@ void triangles_md(FILE *f, const TriResults *tr)
                    "reference. Counting only the rays that hit no triangle at all would hide "
                    "those cracks (Moller-Trumbore: %ld): a ray that slips through where it "
                    "enters still hits the far side.",
-                rays_judged(tr, ref), rays_through(tr, ref), rays_through(tr, mt),
+                all_kinds(tr->rays[ref]), all_kinds(tr->cracks[ref]), all_kinds(tr->cracks[mt]),
                 tr->cracks[mt][CRACK_EDGE] + tr->cracks[mt][CRACK_FAR_EDGE],
                 tr->rays[mt][CRACK_EDGE] + tr->rays[mt][CRACK_FAR_EDGE],
                 tr->cracks[mt][CRACK_VERTEX] + tr->cracks[mt][CRACK_FAR_VERTEX],
@@ -530,7 +508,7 @@ void triangles_md(FILE *f, const TriResults *tr)
             fprintf(f, " In float, judged on the mesh and ray rounded to float, %ld of %ld rays "
                        "went through (%ld of the %ld far rays were not judged: rounding to "
                        "float squashed their mesh or moved the ray off it).",
-                    rays_through(tr, mtf), rays_judged(tr, mtf),
+                    all_kinds(tr->cracks[mtf]), all_kinds(tr->rays[mtf]),
                     2 * tr->crack_rays_per_kind - tr->rays[mtf][CRACK_FAR_EDGE]
                         - tr->rays[mtf][CRACK_FAR_VERTEX],
                     2 * tr->crack_rays_per_kind);

@@ -68,11 +68,6 @@ void rayset_put(RaySet *rs, int i, Ray ray, unsigned layouts)
     }
 }
 
-void rayset_set(RaySet *rs, int i, Ray ray)
-{
-    rayset_put(rs, i, ray, LAYOUT_AOS_D | LAYOUT_AOS_F | LAYOUT_SOA_D | LAYOUT_SOA_F);
-}
-
 int rayset_camera(RaySet *rs, const Scene *scene, int nx, int ny, int step)
 {
     double w, h;
@@ -84,7 +79,7 @@ int rayset_camera(RaySet *rs, const Scene *scene, int nx, int ny, int step)
     for (int j = 0; j < ny; j += step)
         for (int i = 0; i < nx; i += step) {
             Vec3 pixel = pixel_coordinates(i, j, nx, ny, w, h, scene->d);
-            rayset_set(rs, k++, camera_ray(scene->eye, pixel));
+            rayset_put(rs, k++, camera_ray(scene->eye, pixel), ~0u);
         }
     return 0;
 }
