@@ -244,6 +244,13 @@ void measure_ceiling(Ceiling *c, bool quick, double mhz_during)
 
 /* ---- throughput ------------------------------------------------------------ */
 
+/* How many passes of one seconds make a sample of about sample_s (at least 1). */
+static int passes_for(double sample_s, double one)
+{
+    int p = (int)(sample_s / (one > 1e-9 ? one : 1e-9));
+    return p < 1 ? 1 : p;
+}
+
 /* Runs method m's closest-hit loop passes times over rs; seconds per pass. */
 static double time_passes(const Method *m, const BenchScene *sc, const RaySet *rs,
                           int passes, int *idx, double *t)
@@ -263,22 +270,18 @@ static double time_passes(const Method *m, const BenchScene *sc, const RaySet *r
 int measure_throughput(const BenchScene *sc, const RaySet *rs, int rounds, double sample_s,
                        double *pass_seconds, double *round_mhz)
 {
-    int nm = bench_nmethods;
+    int nm = bench_nmethods, passes[BENCH_MAX_METHODS];
     int *idx = malloc((size_t)rs->n * sizeof *idx);
     double *t = malloc((size_t)rs->n * sizeof *t);
-    int *passes = malloc((size_t)nm * sizeof *passes);
-    if (!idx || !t || !passes) {
+    if (!idx || !t) {
         free(idx);
         free(t);
-        free(passes);
         return -1;
     }
     /* Calibrate: enough passes for each sample to last about sample_s. */
     for (int m = 0; m < nm; m++) {
-        double one = time_passes(&bench_methods[m], sc, rs, 1, idx, t);
-        one = time_passes(&bench_methods[m], sc, rs, 1, idx, t);
-        int p = (int)(sample_s / (one > 1e-9 ? one : 1e-9));
-        passes[m] = p < 1 ? 1 : p;
+        time_passes(&bench_methods[m], sc, rs, 1, idx, t);        /* to warm up */
+        passes[m] = passes_for(sample_s, time_passes(&bench_methods[m], sc, rs, 1, idx, t));
     }
     /* Interleave: every round times every method once, starting each round
      * one method further on, so that a slow spell or a warm cache favours
@@ -295,7 +298,6 @@ int measure_throughput(const BenchScene *sc, const RaySet *rs, int rounds, doubl
     progress("throughput", rounds, rounds);
     free(idx);
     free(t);
-    free(passes);
     return 0;
 }
 
@@ -375,8 +377,7 @@ int measure_outcomes(const Case *miss, int nmiss, const Case *hit, int nhit, int
     int tb = method_find("textbook", PREC_DOUBLE);
     for (int o = 0; o < 2; o++) {
         double one = time_pairs(&bench_methods[tb], &ps[o], 1) * (ps[o].n > 0 ? ps[o].n : 1);
-        int p = (int)(sample_s / (one > 1e-9 ? one : 1e-9));
-        passes[o] = p < 1 ? 1 : p;
+        passes[o] = passes_for(sample_s, one);
     }
     for (int r = 0; r < rounds; r++) {
         progress("cost by outcome", r, rounds);

@@ -25,15 +25,11 @@ static double per_million(const ErrorStats *s)
     return counted > 0 ? 1e6 * (double)s->wrong / (double)counted : 0;
 }
 
-static double ceiling_of(const BenchResults *br, int m)
-{
-    return bench_methods[m].precision == PREC_DOUBLE ? br->ceiling.ceiling_d
-                                                     : br->ceiling.ceiling_f;
-}
-
+/* Method m's throughput over its precision's ceiling. */
 static double share(const BenchResults *br, int m)
 {
-    double c = ceiling_of(br, m);
+    double c = bench_methods[m].precision == PREC_DOUBLE ? br->ceiling.ceiling_d
+                                                         : br->ceiling.ceiling_f;
     return c > 0 ? br->mtests[m] / c : 0;
 }
 
@@ -42,11 +38,6 @@ static double share(const BenchResults *br, int m)
 static double stage_share(const BenchResults *br, int k)
 {
     return br->ref_stage_pairs > 0 ? (double)br->ref_stage[k] / (double)br->ref_stage_pairs : 0;
-}
-
-static int idx(const char *name, Precision p)
-{
-    return method_find(name, p);
 }
 
 /* Numbers as text, from a pool of buffers so one printf can use several. */
@@ -270,7 +261,7 @@ static void md_render_table(FILE *f, const BenchResults *br)
  * the reference costs what it costs. */
 static void md_ratio(FILE *f, const BenchResults *br)
 {
-    int tb = idx("textbook", PREC_DOUBLE), rd = idx("reference", PREC_DOUBLE);
+    int tb = method_find("textbook", PREC_DOUBLE), rd = method_find("reference", PREC_DOUBLE);
     double h = br->hit_share;
     double mix_t = (1 - h) * br->miss_ns[tb] + h * br->hit_ns[tb];
     double mix_r = (1 - h) * br->miss_ns[rd] + h * br->hit_ns[rd];
@@ -409,10 +400,11 @@ static void md_finding_renders(FILE *f, const BenchResults *br, int tb, int rd, 
 
 static void md_findings(FILE *f, const BenchResults *br)
 {
-    int tb = idx("textbook", PREC_DOUBLE), tf = idx("textbook", PREC_FLOAT);
-    int rd = idx("reference", PREC_DOUBLE), rf = idx("reference", PREC_FLOAT);
-    int rgd = idx("rtg", PREC_DOUBLE);
-    int fd = idx("fast", PREC_DOUBLE), ff = idx("fast", PREC_FLOAT), fm = idx("fast", PREC_MIXED);
+    int tb = method_find("textbook", PREC_DOUBLE), tf = method_find("textbook", PREC_FLOAT);
+    int rd = method_find("reference", PREC_DOUBLE), rf = method_find("reference", PREC_FLOAT);
+    int rgd = method_find("rtg", PREC_DOUBLE);
+    int fd = method_find("fast", PREC_DOUBLE), ff = method_find("fast", PREC_FLOAT);
+    int fm = method_find("fast", PREC_MIXED);
 
     /* 1. scalar speed */
     double lo, hi;
@@ -601,9 +593,10 @@ static void md_ratio_headline(FILE *f, const BenchResults *br)
  * fast path's time goes. */
 static void md_headline(FILE *f, const BenchResults *br)
 {
-    int tb = idx("textbook", PREC_DOUBLE), tf = idx("textbook", PREC_FLOAT);
-    int rd = idx("reference", PREC_DOUBLE);
-    int fd = idx("fast", PREC_DOUBLE), ff = idx("fast", PREC_FLOAT), fm = idx("fast", PREC_MIXED);
+    int tb = method_find("textbook", PREC_DOUBLE), tf = method_find("textbook", PREC_FLOAT);
+    int rd = method_find("reference", PREC_DOUBLE);
+    int fd = method_find("fast", PREC_DOUBLE), ff = method_find("fast", PREC_FLOAT);
+    int fm = method_find("fast", PREC_MIXED);
     fprintf(f, "## Headline\n\n");
     md_ratio_headline(f, br);
     fprintf(f, "- **The reference's miss test** sums |f x r|^2 a term at a time and stops at "
