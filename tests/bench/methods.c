@@ -34,6 +34,7 @@ Rayf rayf_from(const Ray *r)
 #define VEC Vec3
 #define SPHERE Sphere
 #define RAY Ray
+#define TRI Triangle
 #define SQRT sqrt
 #define COPYSIGN copysign
 #define TINY DBL_MIN
@@ -46,6 +47,7 @@ Rayf rayf_from(const Ray *r)
 #define VEC Vec3f
 #define SPHERE Spheref
 #define RAY Rayf
+#define TRI Trianglef
 #define SQRT sqrtf
 #define COPYSIGN copysignf
 #define TINY FLT_MIN

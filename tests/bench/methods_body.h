@@ -1,9 +1,11 @@
 /*
- * methods_body.h - the ray/sphere formulations, written once and compiled
- * twice by methods.c: with REAL = double and with REAL = float.
+ * methods_body.h - the ray/sphere formulations, and Moller-Trumbore's
+ * ray/triangle test (Part 5, tri_methods.c), written once and compiled
+ * twice by methods.c: with REAL = double and with REAL = float, so the two
+ * cannot drift apart.
  *
  * methods.c defines, before each inclusion:
- *   REAL, VEC, SPHERE, RAY   the number and struct types
+ *   REAL, VEC, SPHERE, RAY, TRI   the number and struct types
  *   SQRT, COPYSIGN           the <math.h> functions for REAL
  *   TINY                     the smallest normal number
  *   SAFE_LO, SAFE_HI         the range where A R^2 is formed safely
@@ -25,6 +27,12 @@ static VEC NAME(sub)(VEC a, VEC b)
 static REAL NAME(dot)(VEC a, VEC b)
 {
     return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+static VEC NAME(cross)(VEC a, VEC b)
+{
+    VEC v = { a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x };
+    return v;
 }
 
 /* The lecture's quadratic: t = (-B -+ sqrt(B^2 - A C)) / A.  B^2 - A C loses
@@ -191,10 +199,34 @@ bool NAME(isect_reference)(const SPHERE *sphere, const RAY *ray, REAL *t)
     return true;
 }
 
+/* Moller-Trumbore (1997), the skeleton's formula: det = 0 a miss, one
+ * division. */
+bool NAME(tri_moller_trumbore)(const TRI *tri, const RAY *ray, REAL *t)
+{
+    VEC e1 = NAME(sub)(tri->b, tri->a), e2 = NAME(sub)(tri->c, tri->a);
+    VEC s = NAME(sub)(ray->origin, tri->a), q = NAME(cross)(ray->direction, e2);
+    REAL det = NAME(dot)(e1, q);
+    if (det == 0)
+        return false;
+    REAL inv = 1 / det, beta = NAME(dot)(s, q) * inv;
+    if (beta < 0 || beta > 1)
+        return false;
+    VEC sx = NAME(cross)(s, e1);
+    REAL gamma = NAME(dot)(ray->direction, sx) * inv;
+    if (gamma < 0 || beta + gamma > 1)
+        return false;
+    REAL tt = NAME(dot)(e2, sx) * inv;
+    if (!(tt > 0 && tt < INFINITY))
+        return false;
+    *t = tt;
+    return true;
+}
+
 #undef REAL
 #undef VEC
 #undef SPHERE
 #undef RAY
+#undef TRI
 #undef SQRT
 #undef COPYSIGN
 #undef TINY

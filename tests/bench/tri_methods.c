@@ -3,7 +3,7 @@
  * the benchmark (triangles.c), written here apart from solutions/:
  *
  *   moller-trumbore   the skeleton's formula (Moller and Trumbore 1997),
- *                     in double and in float (tri_methods_body.h, written
+ *                     in double and in float (methods_body.h, written
  *                     once for both): det = 0 a miss, one division;
  *   wbw-plain         Woop, Benthin and Wald's shear-and-project test
  *                     (JCGT 2013) in plain double, without the reference's
@@ -21,43 +21,6 @@
  */
 #include <math.h>
 #include "bench.h"
-
-static Vec3f sub_f(Vec3f a, Vec3f b)
-{
-    Vec3f r = { a.x - b.x, a.y - b.y, a.z - b.z };
-    return r;
-}
-
-static Vec3f cross_f(Vec3f a, Vec3f b)
-{
-    Vec3f r = { a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x };
-    return r;
-}
-
-static float dot_f(Vec3f a, Vec3f b)
-{
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-
-#define REAL double
-#define VEC Vec3
-#define TRI Triangle
-#define RAY Ray
-#define SUB vec3_sub
-#define CROSS vec3_cross
-#define DOT vec3_dot
-#define NAME tri_moller_trumbore_d
-#include "tri_methods_body.h"
-
-#define REAL float
-#define VEC Vec3f
-#define TRI Trianglef
-#define RAY Rayf
-#define SUB sub_f
-#define CROSS cross_f
-#define DOT dot_f
-#define NAME tri_moller_trumbore_f
-#include "tri_methods_body.h"
 
 bool tri_wbw_plain_d(const Triangle *tri, const Ray *ray, double *t)
 {
