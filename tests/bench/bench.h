@@ -122,8 +122,7 @@ typedef struct {
 } Case;
 
 typedef enum { FAMILY_SCENE, FAMILY_FAR, FAMILY_NEAR, FAMILY_TANGENT, FAMILY_COUNT } Family;
-const char *family_name(Family f);
-const char *family_title(Family f);
+extern const char *const family_names[FAMILY_COUNT], *const family_titles[FAMILY_COUNT];
 
 /* Generates n cases of a hard family with a fixed seed.  Directions have
  * unit length (rounded).  Returns a malloc'd array or NULL. */
@@ -357,7 +356,6 @@ typedef struct {
     uint64_t seed;
     int rounds;                          /* throughput rounds                 */
     int tp_rays, tp_spheres;             /* the throughput workload           */
-    char tp_scene[64];
     int family_cases[FAMILY_COUNT];
     int render_reps;
     /* per method */

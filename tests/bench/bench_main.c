@@ -255,7 +255,6 @@ static int step_throughput(const Options *o, BenchResults *br, char *err, size_t
     for (int k = 0; k < scene.nspheres; k++)
         sf[k] = spheref_from(&scene.spheres[k]);
     BenchScene bs = { scene.spheres, sf, scene.nspheres, &fs };
-    snprintf(br->tp_scene, sizeof br->tp_scene, "default.scene");
     br->tp_rays = rs.n;
     br->tp_spheres = scene.nspheres;
     br->rounds = o->rounds;
@@ -362,7 +361,7 @@ static int step_errors(const Options *o, BenchResults *br, char *err, size_t err
     int status = errs ? 0 : -1;
     for (int f = 0; f < FAMILY_COUNT && status == 0; f++) {
         char label[64];
-        snprintf(label, sizeof label, "exact answers, %s", family_name((Family)f));
+        snprintf(label, sizeof label, "exact answers, %s", family_names[f]);
         progress(label, 0, 1);
         exact[f] = cases[f] ? exact_answers(cases[f], n[f]) : NULL;
         if (!exact[f])

@@ -16,10 +16,12 @@
 #include "kit/scene.h"
 #include "bench.h"
 
+/* A pixel of the exact render: its nearest sphere (-1: none), and where
+ * either of two is right (amb), the other. */
 typedef struct {
-    int *exact, *alt;
-    unsigned char *amb;
-} ExactRender;
+    int exact, alt;
+    bool amb;
+} ExactPixel;
 
 /* Renders scene at nx x ny with method m into idx (nx * ny entries); with
  * m NULL only makes the rays (the part every renderer shares). */
@@ -51,10 +53,9 @@ static void scene_basename(const char *path, char *out, size_t outlen)
         *dot = '\0';
 }
 
-/* The exact render of scene at nx x ny into ex: each pixel's nearest
- * sphere by oracle_closest, and where either of two is right, the other;
- * counts those pixels in res->ambiguous. */
-static void exact_render(const Scene *scene, int nx, int ny, ExactRender *ex, RenderResult *res)
+/* The exact render of scene at nx x ny into ex, by oracle_closest; counts
+ * the ambiguous pixels in res->ambiguous. */
+static void exact_render(const Scene *scene, int nx, int ny, ExactPixel *ex, RenderResult *res)
 {
     double w, h;
     image_plane_size(scene->fov_degrees, (double)nx / ny, scene->d, &w, &h);
@@ -63,25 +64,21 @@ static void exact_render(const Scene *scene, int nx, int ny, ExactRender *ex, Re
             progress(res->scene, j, ny);
         for (int i = 0; i < nx; i++) {
             Ray ray = camera_ray(scene->eye, pixel_coordinates(i, j, nx, ny, w, h, scene->d));
-            bool amb;
-            int alt;
-            size_t p = (size_t)j * nx + i;
-            ex->exact[p] = oracle_closest(scene, &ray, &amb, &alt);
-            ex->amb[p] = amb;
-            ex->alt[p] = alt;
-            res->ambiguous += amb;
+            ExactPixel *p = &ex[(size_t)j * nx + i];
+            p->exact = oracle_closest(scene, &ray, &p->amb, &p->alt);
+            res->ambiguous += p->amb;
         }
     }
 }
 
 /* How many of the np pixels of the render idx are not as the exact
  * render ex allows (every index goes into the bench's checksum). */
-static long differ_from_exact(const int *idx, const ExactRender *ex, size_t np)
+static long differ_from_exact(const int *idx, const ExactPixel *ex, size_t np)
 {
     long differ = 0, sum = 0;
     for (size_t p = 0; p < np; p++) {
         sum += idx[p];
-        if (idx[p] != ex->exact[p] && !(ex->amb[p] && idx[p] == ex->alt[p]))
+        if (idx[p] != ex[p].exact && !(ex[p].amb && idx[p] == ex[p].alt))
             differ++;
     }
     bench_sink += (double)sum;
@@ -116,12 +113,12 @@ int render_bench(const char *path, int nx, int ny, int reps, RenderResult *res,
     int *idx = malloc(np * sizeof *idx);
     double *trow = malloc((size_t)nx * sizeof *trow);
     double *samples = malloc((size_t)((bench_nmethods + 1) * reps) * sizeof *samples);
-    ExactRender ex = { malloc(np * sizeof(int)), malloc(np * sizeof(int)), malloc(np) };
+    ExactPixel *ex = malloc(np * sizeof *ex);
     RaySet row;
     int rowok = rayset_alloc(&row, nx) == 0;
     int fsok = fast_build(&fs, scene.spheres, scene.nspheres, scene.eye) == 0;
     int status = -1;
-    if (!sf || !idx || !trow || !samples || !ex.exact || !ex.alt || !ex.amb || !rowok || !fsok) {
+    if (!sf || !idx || !trow || !samples || !ex || !rowok || !fsok) {
         snprintf(err, errlen, "%s: out of memory", path);
         goto done;
     }
@@ -129,7 +126,7 @@ int render_bench(const char *path, int nx, int ny, int reps, RenderResult *res,
         sf[k] = spheref_from(&scene.spheres[k]);
     BenchScene bs = { scene.spheres, sf, scene.nspheres, &fs };
 
-    exact_render(&scene, nx, ny, &ex, res);
+    exact_render(&scene, nx, ny, ex, res);
 
     /* The renders, interleaved as in the throughput runs; "method"
      * bench_nmethods only makes the rays. */
@@ -145,7 +142,7 @@ int render_bench(const char *path, int nx, int ny, int reps, RenderResult *res,
             if (m == bench_nmethods)
                 bench_sink += idx[0];
             else
-                res->differ[m] = differ_from_exact(idx, &ex, np);  /* the same every repetition */
+                res->differ[m] = differ_from_exact(idx, ex, np);  /* the same every repetition */
         }
     }
     for (int m = 0; m < bench_nmethods; m++)
@@ -158,9 +155,7 @@ done:
     free(idx);
     free(trow);
     free(samples);
-    free(ex.exact);
-    free(ex.alt);
-    free(ex.amb);
+    free(ex);
     if (rowok)
         rayset_free(&row);
     if (fsok)

@@ -124,7 +124,7 @@ static void csv_families(FILE *f, const void *data)
         for (int m = 0; m < bench_nmethods; m++) {
             const ErrorStats *s = &br->fam[m][fam];
             fprintf(f, "%s,%s,%s,%ld,%ld,%ld,%.2f,%ld,%.3e,%.3e,%.3e,%ld\n",
-                    family_name((Family)fam), bench_methods[m].name,
+                    family_names[fam], bench_methods[m].name,
                     precision_name(bench_methods[m].precision), s->tests, s->ambiguous, s->wrong,
                     per_million(s), s->hits, s->max_rel, s->median_rel, s->max_over_kappa,
                     s->over_tol);
@@ -184,8 +184,8 @@ static int write_plot(const BenchResults *br, const char *dir, char *err, size_t
           "max |t - t_exact| / (u kappa t_exact), u = 2^-53 (log scale; about 1 is the best "
           "possible)", "million ray/sphere tests per second" },
     };
-    const char *sub = subtitle(br, "-O2; throughput on %s (%d rays x %d spheres); errors on %d "
-                                   "cases", br->tp_scene, br->tp_rays, br->tp_spheres,
+    const char *sub = subtitle(br, "-O2; throughput on default.scene (%d rays x %d spheres); "
+                                   "errors on %d cases", br->tp_rays, br->tp_spheres,
                                br->family_cases[0] + br->family_cases[1] +
                                    br->family_cases[2] + br->family_cases[3]);
     return svg_plot(dir, "plot.svg", "Ray/sphere intersection: speed against accuracy", sub,
@@ -647,8 +647,9 @@ static void md_throughput(FILE *f, const BenchResults *br)
 {
     fprintf(f, "## Throughput and error\n\n");
     fprintf(f, "Throughput: the closest-hit loop (every sphere, keep the nearest, as part 3b's "
-               "`ray_color`) over %d camera rays of %s against its %d spheres, one thread; the "
-               "median of %d interleaved rounds, and the interquartile range. Errors: over the "
+               "`ray_color`) over %d camera rays of default.scene against its %d spheres, one "
+               "thread; the median of %d interleaved rounds, and the interquartile range. "
+               "Errors: over the "
                "ordinary scene and the three hard families below (%d cases): relative error in "
                "t where both the method and the exact answer hit; wrong hit/miss answers per "
                "million cases, not counting those the oracle marks ambiguous; the worst error in "
@@ -657,7 +658,7 @@ static void md_throughput(FILE *f, const BenchResults *br)
                "(tests/oracle/hard.h), judged by the grader's own rule; the methods that assume "
                "unit directions (A = 1, geometric, fast) are given r / |r| there and their t "
                "divided by |r|, as a caller would.\n\n",
-            br->tp_rays, br->tp_scene, br->tp_spheres, br->rounds,
+            br->tp_rays, br->tp_spheres, br->rounds,
             br->family_cases[0] + br->family_cases[1] + br->family_cases[2] + br->family_cases[3]);
     md_results_table(f, br);
     fprintf(f, "\n![Throughput against worst error](plot.svg)\n\n");
@@ -669,7 +670,7 @@ static void md_families(FILE *f, const BenchResults *br)
     fprintf(f, "## Errors by family\n\n");
     for (int fam = 0; fam < FAMILY_COUNT; fam++) {
         fprintf(f, "### %s: %s\n\n%d cases, %ld of them ambiguous (not counted).\n\n",
-                family_name((Family)fam), family_title((Family)fam), br->family_cases[fam],
+                family_names[fam], family_titles[fam], br->family_cases[fam],
                 br->fam[0][fam].ambiguous);
         md_family_table(f, br, fam);
         fprintf(f, "\n");

@@ -211,19 +211,10 @@ Case *cases_hard(Family f, int n, uint64_t seed)
     return cases;
 }
 
-const char *family_name(Family f)
-{
-    static const char *names[] = { "scene", "far", "near", "tangent" };
-    return f >= 0 && f < FAMILY_COUNT ? names[f] : "?";
-}
-
-const char *family_title(Family f)
-{
-    static const char *titles[] = {
-        "ordinary scene (default.scene, every camera ray against every sphere)",
-        "far small spheres (D/R from 10 to 10^7)",
-        "origins near big spheres (height R 10^-12 to R 10^-1, either side)",
-        "near-tangent rays (line passes the centre at R (1 +- 10^-14 .. 10^-2))",
-    };
-    return f >= 0 && f < FAMILY_COUNT ? titles[f] : "?";
-}
+const char *const family_names[FAMILY_COUNT] = { "scene", "far", "near", "tangent" };
+const char *const family_titles[FAMILY_COUNT] = {
+    "ordinary scene (default.scene, every camera ray against every sphere)",
+    "far small spheres (D/R from 10 to 10^7)",
+    "origins near big spheres (height R 10^-12 to R 10^-1, either side)",
+    "near-tangent rays (line passes the centre at R (1 +- 10^-14 .. 10^-2))",
+};
