@@ -521,20 +521,6 @@ static int parse_options(int argc, char **argv, Options *o)
     return 0;
 }
 
-/* bench --ratio-only: the throughput step alone, and its one line. */
-static int ratio_only(const Options *o, BenchResults *br)
-{
-    char err[1200] = "";
-    int status = step_throughput(o, br, err, sizeof err);
-    progress_done();
-    if (status != 0) {
-        fprintf(stderr, "bench: %s\n", err);
-        return 1;
-    }
-    printf("ratio %.4f q1 %.4f q3 %.4f\n", br->ratio_of_medians, br->ratio_q1, br->ratio_q3);
-    return 0;
-}
-
 /* How the bench runs: its options, the machine's load and CPU, the
  * compiler, the date. */
 static void describe_run(const Options *o, BenchResults *br)
@@ -590,24 +576,28 @@ int main(int argc, char **argv)
     char err[1200] = "";
     start_time = now_seconds();
     progress_tty = isatty(2);
-    if (o.ratio_only)
-        return ratio_only(&o, &br);
-    if (o.placement && read_placement(o.placement, &br, err, sizeof err) != 0) {
-        fprintf(stderr, "bench: %s\n", err);
-        return 1;
+    int status;
+    if (o.ratio_only) {             /* the throughput step alone, and its one line */
+        status = step_throughput(&o, &br, err, sizeof err);
+    } else if (o.placement && read_placement(o.placement, &br, err, sizeof err) != 0) {
+        status = -1;
+    } else {
+        describe_run(&o, &br);
+        status = mkdir_p(o.out);
+        if (status != 0)
+            snprintf(err, sizeof err, "%s: cannot create the directory", o.out);
+        else
+            status = run_steps(&o, &br, err, sizeof err);
     }
-    describe_run(&o, &br);
-    if (mkdir_p(o.out) != 0) {
-        fprintf(stderr, "bench: %s: cannot create the directory\n", o.out);
-        return 1;
-    }
-    int status = run_steps(&o, &br, err, sizeof err);
     progress_done();
     if (status != 0) {
         fprintf(stderr, "bench: %s\n", err);
         return 1;
     }
-    printf("bench: wrote %s/results.csv, %s/report.md, %s/plot.svg in %.0f s (checksum %g)\n",
-           o.out, o.out, o.out, br.seconds_total, bench_sink);
+    if (o.ratio_only)
+        printf("ratio %.4f q1 %.4f q3 %.4f\n", br.ratio_of_medians, br.ratio_q1, br.ratio_q3);
+    else
+        printf("bench: wrote %s/results.csv, %s/report.md, %s/plot.svg in %.0f s (checksum %g)\n",
+               o.out, o.out, o.out, br.seconds_total, bench_sink);
     return 0;
 }
