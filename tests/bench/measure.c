@@ -109,11 +109,9 @@ typedef double Pair;
 static double ops_per_us(int kind, long n)
 {
     Pair m = PAIR(opaque_one, opaque_one), z = PAIR(opaque_zero, opaque_zero);
-    Pair a[12] = { PAIR(1, 2), PAIR(3, 4), PAIR(5, 6), PAIR(7, 8), PAIR(9, 10), PAIR(11, 12),
-                   PAIR(13, 14), PAIR(15, 16), PAIR(17, 18), PAIR(19, 20), PAIR(21, 22),
-                   PAIR(23, 24) };
-    Pair a0 = a[0], a1 = a[1], a2 = a[2], a3 = a[3], a4 = a[4], a5 = a[5], a6 = a[6],
-         a7 = a[7], a8 = a[8], a9 = a[9], a10 = a[10], a11 = a[11];
+    Pair a0 = PAIR(1, 2), a1 = PAIR(3, 4), a2 = PAIR(5, 6), a3 = PAIR(7, 8), a4 = PAIR(9, 10),
+         a5 = PAIR(11, 12), a6 = PAIR(13, 14), a7 = PAIR(15, 16), a8 = PAIR(17, 18),
+         a9 = PAIR(19, 20), a10 = PAIR(21, 22), a11 = PAIR(23, 24);
     double t0 = now_seconds();
     {
         if (kind == 0) {
@@ -221,22 +219,17 @@ void measure_ceiling(Ceiling *c, bool quick, double mhz_during)
     c->sqrt_per_cycle = median(sq, reps) / c->mhz;
     c->div_per_cycle = median(dv, reps) / c->mhz;
     /* Pipes come in whole numbers: use the nearest (at least 1). */
-    double pm = floor(c->mul_per_cycle + 0.5), pa = floor(c->add_per_cycle + 0.5),
-           px = floor(c->mix_per_cycle + 0.5);
-    c->mul_pipes = pm < 1 ? 1 : pm;
-    c->add_pipes = pa < 1 ? 1 : pa;
-    c->mix_pipes = px < 1 ? 1 : px;
+    c->mul_pipes = fmax(1, floor(c->mul_per_cycle + 0.5));
+    c->add_pipes = fmax(1, floor(c->add_per_cycle + 0.5));
+    c->mix_pipes = fmax(1, floor(c->mix_per_cycle + 0.5));
     c->lanes_d = 2;
     c->lanes_f = 4;
     c->ops_mul = 3;
     c->ops_add = 3;
     /* Cycles per vector of tests: each kind on its own pipes, and both kinds
      * together no faster than the mixed rate. */
-    double cyc = c->ops_mul / c->mul_pipes;
-    if (c->ops_add / c->add_pipes > cyc)
-        cyc = c->ops_add / c->add_pipes;
-    if ((c->ops_mul + c->ops_add) / c->mix_pipes > cyc)
-        cyc = (c->ops_mul + c->ops_add) / c->mix_pipes;
+    double cyc = fmax(fmax(c->ops_mul / c->mul_pipes, c->ops_add / c->add_pipes),
+                      (c->ops_mul + c->ops_add) / c->mix_pipes);
     c->cycles_per_vector = cyc;
     c->ceiling_d = c->mhz * c->lanes_d / cyc;
     c->ceiling_f = c->mhz * c->lanes_f / cyc;

@@ -361,18 +361,18 @@ static int best_share(const BenchResults *br)
  * reference and the fast path in double). */
 static void md_finding_renders(FILE *f, const BenchResults *br, int tb, int rd, int fd)
 {
-    long worst = 0;
-    int ws = 0, wm = 0;
-    for (int s = 0; s < br->nrenders; s++)
+    long worst = 0, accurate_wrong = 0;
+    int ws = 0, wm = 0, sd = 0;
+    for (int s = 0; s < br->nrenders; s++) {
         for (int m = 0; m < bench_nmethods; m++)
             if (br->renders[s].differ[m] > worst) {
                 worst = br->renders[s].differ[m];
                 ws = s;
                 wm = m;
             }
-    long accurate_wrong = 0;
-    for (int s = 0; s < br->nrenders; s++) {
         accurate_wrong += br->renders[s].differ[rd] + br->renders[s].differ[fd];
+        if (strcmp(br->renders[s].scene, "default") == 0)
+            sd = s;
     }
     fprintf(f, "- **In pictures:** ");
     if (worst == 0)
@@ -383,10 +383,6 @@ static void md_finding_renders(FILE *f, const BenchResults *br, int tb, int rd, 
                    "differ from the exact render in %ld pixels over all scenes.",
                 label(wm), br->renders[ws].scene,
                 P((double)worst / (double)br->renders[ws].pixels), accurate_wrong);
-    int sd = 0;
-    for (int s = 0; s < br->nrenders; s++)
-        if (strcmp(br->renders[s].scene, "default") == 0)
-            sd = s;
     const RenderResult *r = &br->renders[sd];
     fprintf(f, " On %s.scene at %dx%d, making the rays (parts 1, 2 and 3b) takes %.0f ms; "
                "intersecting them takes the textbook %.0f ms more and the fast path %.0f ms "
