@@ -37,12 +37,15 @@ static VEC NAME(cross)(VEC a, VEC b)
 
 /* The lecture's quadratic: t = (-B -+ sqrt(B^2 - A C)) / A.  B^2 - A C loses
  * R^2 when the sphere is small and far; -B + sqrt(..) cancels when e is
- * close to a big sphere. */
-bool NAME(isect_textbook)(const SPHERE *sphere, const RAY *ray, REAL *t)
+ * close to a big sphere.  With unit set, A = 1, which holds for unit
+ * directions (camera rays): t = -B -+ sqrt(B^2 - C), one product and two
+ * divisions fewer (multiplying and dividing by a constant 1 are exact, and
+ * the compiler drops them: isect_unit is compiled as if written alone). */
+static inline bool NAME(quadratic)(const SPHERE *sphere, const RAY *ray, REAL *t, bool unit)
 {
     VEC r = ray->direction;
     VEC f = NAME(sub)(ray->origin, sphere->center);
-    REAL A = NAME(dot)(r, r);
+    REAL A = unit ? 1 : NAME(dot)(r, r);
     REAL B = NAME(dot)(f, r);
     REAL C = NAME(dot)(f, f) - sphere->radius * sphere->radius;
     REAL disc = B * B - A * C;
@@ -62,29 +65,14 @@ bool NAME(isect_textbook)(const SPHERE *sphere, const RAY *ray, REAL *t)
     return false;
 }
 
-/* The same with A = 1, which holds for unit directions (camera rays):
- * t = -B -+ sqrt(B^2 - C).  One product and two divisions fewer. */
+bool NAME(isect_textbook)(const SPHERE *sphere, const RAY *ray, REAL *t)
+{
+    return NAME(quadratic)(sphere, ray, t, false);
+}
+
 bool NAME(isect_unit)(const SPHERE *sphere, const RAY *ray, REAL *t)
 {
-    VEC r = ray->direction;
-    VEC f = NAME(sub)(ray->origin, sphere->center);
-    REAL B = NAME(dot)(f, r);
-    REAL C = NAME(dot)(f, f) - sphere->radius * sphere->radius;
-    REAL disc = B * B - C;
-    if (!(disc >= 0))
-        return false;
-    REAL sq = SQRT(disc);
-    REAL t1 = -B - sq;
-    if (t1 > 0) {
-        *t = t1;
-        return true;
-    }
-    REAL t2 = -B + sq;
-    if (t2 > 0) {
-        *t = t2;
-        return true;
-    }
-    return false;
+    return NAME(quadratic)(sphere, ray, t, true);
 }
 
 /* The geometric method (unit r): L = c - e, t_ca = L.r is where the ray
