@@ -33,7 +33,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
-#include <dirent.h>
+#include <glob.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -106,35 +106,6 @@ static int mkdir_p(const char *dir)
     mkdir(buf, 0777);
     struct stat st;
     return stat(buf, &st) == 0 && S_ISDIR(st.st_mode) ? 0 : -1;
-}
-
-static int cmp_str(const void *a, const void *b)
-{
-    return strcmp(*(const char *const *)a, *(const char *const *)b);
-}
-
-/* The *.scene files of dir, sorted; *n of them (at most max). */
-static int list_scenes(const char *dir, char **paths, int max)
-{
-    DIR *d = opendir(dir);
-    if (!d)
-        return -1;
-    int n = 0;
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL && n < max) {
-        size_t len = strlen(e->d_name);
-        if (len > 6 && strcmp(e->d_name + len - 6, ".scene") == 0) {
-            size_t need = strlen(dir) + len + 2;
-            paths[n] = malloc(need);
-            if (!paths[n])
-                break;
-            snprintf(paths[n], need, "%s/%s", dir, e->d_name);
-            n++;
-        }
-    }
-    closedir(d);
-    qsort(paths, (size_t)n, sizeof *paths, cmp_str);
-    return n;
 }
 
 static void pool_stats(ErrorStats *all, const ErrorStats *fam, double *errs, long nerrs)
@@ -428,24 +399,29 @@ static int step_grader(const Options *o, BenchResults *br, char *err, size_t err
 
 static int step_renders(const Options *o, BenchResults *br, char *err, size_t errlen)
 {
-    char *paths[BENCH_MAX_SCENES];
-    int n = list_scenes(o->scenes, paths, BENCH_MAX_SCENES);
-    if (n < 0) {
+    char pattern[1100];
+    glob_t g;                       /* the *.scene files of the directory, sorted */
+    snprintf(pattern, sizeof pattern, "%s/*.scene", o->scenes);
+    int found = glob(pattern, GLOB_ERR, NULL, &g);
+    if (found != 0 && found != GLOB_NOMATCH) {
         snprintf(err, errlen, "%s: cannot list scenes", o->scenes);
         return -1;
     }
+    int n = found == 0 ? (int)g.gl_pathc : 0;
+    n = n < BENCH_MAX_SCENES ? n : BENCH_MAX_SCENES;
     br->render_reps = o->quick ? 1 : 3;
     int status = 0;
     br->nrenders = 0;
-    for (int s = 0; s < n; s++) {
-        int got = status == 0 ? render_bench(paths[s], o->width, o->height, br->render_reps,
-                                             &br->renders[br->nrenders], err, errlen) : -1;
+    for (int s = 0; s < n && status == 0; s++) {
+        int got = render_bench(g.gl_pathv[s], o->width, o->height, br->render_reps,
+                               &br->renders[br->nrenders], err, errlen);
         if (got == 0)
             br->nrenders++;
         else if (got < 0)
             status = -1;                /* 1: a scene of planes or triangles, skipped */
-        free(paths[s]);
     }
+    if (found == 0)
+        globfree(&g);
     return status;
 }
 
