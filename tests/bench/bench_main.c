@@ -73,12 +73,6 @@ void progress(const char *step, int done, int total)
     last_time = now;
 }
 
-static void progress_done(void)
-{
-    if (progress_tty)
-        fprintf(stderr, "\r\033[K");
-}
-
 /* ---- small helpers -------------------------------------------------------------- */
 
 static double load_average(void)
@@ -565,7 +559,8 @@ int main(int argc, char **argv)
         else
             status = run_steps(&o, &br, err, sizeof err);
     }
-    progress_done();
+    if (progress_tty)
+        fprintf(stderr, "\r\033[K");          /* the progress line, cleared */
     if (status != 0) {
         fprintf(stderr, "bench: %s\n", err);
         return 1;
