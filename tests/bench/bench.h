@@ -158,7 +158,8 @@ int method_find(const char *name, Precision p);   /* index, or -1 */
 /* One test: hit and t, computed at the method's precision. */
 bool method_one(const Method *m, const Sphere *sphere, const Ray *ray, double *t);
 /* Nearest hit for rays [0, rs->n): idx[i], t[i] as fast_closest_d. */
-void method_closest(const Method *m, const BenchScene *scene, const RaySet *rs, int *idx, double *t);
+void method_closest(const Method *m, const BenchScene *scene, const RaySet *rs, int *idx,
+                    double *t);
 
 /* ---- tri_methods.c, triangles.c: Part 5 ------------------------------------- */
 typedef struct { Vec3f a, b, c; } Trianglef;

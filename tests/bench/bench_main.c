@@ -270,7 +270,8 @@ static void check_transliteration(const Case *cases, int n, BenchResults *br)
 /* Cost by outcome: the ordinary scene's n cases that surely miss and
  * surely hit (exact: their answers), a sample of each timed with every
  * method; and the share of hits.  0, or -1 out of memory. */
-static int cost_by_outcome(const Options *o, const Case *cases, const OracleHit *exact, int n, BenchResults *br)
+static int cost_by_outcome(const Options *o, const Case *cases, const OracleHit *exact, int n,
+                           BenchResults *br)
 {
     const int cap = o->quick ? 2000 : 20000;
     Case *miss = malloc((size_t)cap * sizeof *miss), *hit = malloc((size_t)cap * sizeof *hit);

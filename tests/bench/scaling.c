@@ -238,8 +238,9 @@ int scaling_write(const ScaleResults *sr, const char *dir, const char *subtitle,
     }
     const PlotSeries series[2] = { { with, sr->n, "with the hierarchy" },
                                    { without, sr->n, "without: every triangle for every ray" } };
-    return svg_lines(dir, "plot_scaling.svg", "Meshes at scale: rays per second against triangles", subtitle,
-                     "triangles in the mesh (log scale)", "million rays per second (log scale)",
+    return svg_lines(dir, "plot_scaling.svg", "Meshes at scale: rays per second against triangles",
+                     subtitle, "triangles in the mesh (log scale)",
+                     "million rays per second (log scale)",
                      series, 2, err, errlen);
 }
 

@@ -450,7 +450,8 @@ int triangles_write(const TriResults *tr, const char *dir, const char *subtitle,
           "max |t - t_exact| / (u kappa t_exact), u = 2^-53 (log scale; smaller is better)",
           "million ray/triangle tests per second" },
     };
-    return svg_plot(dir, "plot_triangles.svg", "Ray/triangle intersection: speed against watertightness and accuracy",
+    return svg_plot(dir, "plot_triangles.svg",
+                    "Ray/triangle intersection: speed against watertightness and accuracy",
                     subtitle, panels, 2, err, errlen);
 }
 
