@@ -1,7 +1,7 @@
 /*
  * jail.c - see jail.h.  The namespaces are Linux's (clone, mount,
- * pivot_root); the fallback's sweep, the removal of a tree and the taking
- * back of a file are POSIX.
+ * pivot_root); the fallback's sweep (but its statfs), the removal of a
+ * tree and the taking back of a file are POSIX.
  */
 #define _GNU_SOURCE             /* clone and the mount flags (Linux) */
 #define _DARWIN_C_SOURCE        /* macOS: the rest */
@@ -29,6 +29,7 @@
 #include <sys/prctl.h>
 #include <sys/sem.h>
 #include <sys/shm.h>
+#include <sys/statfs.h>
 #include <sys/statvfs.h>
 #include <sys/syscall.h>
 /* The seccomp filter (jail_deny_calls) needs the kernel's headers, which a
@@ -47,6 +48,9 @@
 #endif
 #endif
 #endif
+#else
+#include <sys/param.h>
+#include <sys/mount.h>         /* fstatfs, MNT_LOCAL */
 #endif
 
 /* ---- the namespace jail (Linux) ------------------------------------------------ */
@@ -717,13 +721,133 @@ static void remove_ipc(uid_t id)
 }
 #endif
 
+/* The places swept: the folders anyone may write in, found at the first
+ * sweep (find_places).  No run can move one: none lies under a link or a
+ * folder anyone may write in (the walk enters neither). */
+static char **places;
+static size_t nplaces;
+
+static void add_place(const char *path)
+{
+    for (size_t k = 0; k < nplaces; k++)
+        if (strcmp(places[k], path) == 0)
+            return;
+    char **grown = realloc(places, (nplaces + 1) * sizeof *places);
+    if (grown)
+        places = grown;
+    if (grown && (places[nplaces] = strdup(path)))
+        nplaces++;
+}
+
+#if defined(__linux__)
+#define NO_AUTOMOUNT AT_NO_AUTOMOUNT
+#define PATH_ONLY O_PATH                /* portable: Linux only (in its #if) */
+#else
+#define NO_AUTOMOUNT 0
+#define PATH_ONLY O_RDONLY
+#endif
+
+/* Whether the walk goes into a file system mounted under the one it was
+ * in: into any but the network's (and user space's, FUSE), where a walk is
+ * slow or hangs and root is often refused anyway, and autofs, whose mounts
+ * it does not trigger.  Local ones (a /var of its own, a container's
+ * volumes, tmpfs) are walked as the root's: a run may write there too.
+ * (A mount point anyone may write in is a place, whatever its kind.) */
+static bool walked(const struct statfs *sf)
+{
+#if defined(__linux__)
+    /* NFS, SMB, CIFS, SMB2, FUSE, 9p, AFS, kAFS, Ceph, autofs */
+    static const unsigned remote[] = { 0x6969, 0x517B, 0xFF534D42, 0xFE534D42, 0x65735546,
+                                     0x01021997, 0x5346414F, 0x6B414653, 0x00C36400, 0x0187 };
+    for (size_t k = 0; k < sizeof remote / sizeof remote[0]; k++)
+        if ((unsigned)sf->f_type == remote[k])
+            return false;
+    return true;
+#else
+    return sf->f_flags & MNT_LOCAL;
+#endif
+}
+
+/* The folder name in dfd opened to be read, links not followed; when it
+ * is another file system's (other), only one walked, which is opened as
+ * a path only first (Linux's O_PATH triggers no automount). */
+static int open_folder(int dfd, const char *name, bool other)
+{
+    if (!other)
+        return openat(dfd, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    int at = openat(dfd, name, PATH_ONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    struct statfs sf;
+    int fd = -1;
+    if (at >= 0 && fstatfs(at, &sf) == 0 && walked(&sf))
+        fd = openat(at, ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (at >= 0)
+        close(at);
+    return fd;
+}
+
+/* Adds the folders anyone may write in under the folder dfd (path, on
+ * device dev, whose names are depth levels below /), down to PLACES_DEPTH:
+ * not under one found (sweep_folder looks there), nor in /proc or /sys.
+ * Only folders are looked at (a stat each), never through a link, and not
+ * into one with 2 links (no folder in it, where links count folders; 1
+ * where they do not).  dfd is closed. */
+#define PLACES_DEPTH 4
+static void walk(int dfd, const char *path, dev_t dev, int depth)
+{
+    DIR *d = fdopendir(dfd);
+    if (!d) {
+        close(dfd);
+        return;
+    }
+    struct dirent *e;
+    while ((e = readdir(d))) {
+        char sub[PATH_MAX];
+        struct stat st;
+        if ((e->d_type != DT_DIR && e->d_type != DT_UNKNOWN) || !strcmp(e->d_name, ".") ||
+            !strcmp(e->d_name, "..") ||
+            snprintf(sub, sizeof sub, "%s/%s", path, e->d_name) >= (int)sizeof sub ||
+            !strcmp(sub, "/proc") || !strcmp(sub, "/sys") ||
+            fstatat(dfd, e->d_name, &st, AT_SYMLINK_NOFOLLOW | NO_AUTOMOUNT) != 0 ||
+            !S_ISDIR(st.st_mode))
+            continue;
+        if (st.st_mode & S_IWOTH) {
+            add_place(sub);
+        } else if (depth < PLACES_DEPTH && st.st_nlink != 2) {
+            int fd = open_folder(dfd, e->d_name, st.st_dev != dev);
+            if (fd >= 0)
+                walk(fd, sub, st.st_dev, depth + 1);
+        }
+    }
+    closedir(d);
+}
+
+/* The places: the usual ones, and every folder anyone may write in found
+ * within PLACES_DEPTH levels of / (/var/crash, /var/mail, a course's
+ * shared folder...): what a run leaves there, a later run given the same
+ * id would find.  A stat per folder down there: some 2,600 folders and
+ * 15 ms on a Debian container, once per grade process (grade --all grades
+ * each submission in one of its own). */
+static void find_places(void)
+{
+    static const char *const usual[] = { "/tmp", "/var/tmp", "/dev/shm", "/run/lock", "/dev/mqueue" };
+    for (size_t k = 0; k < sizeof usual / sizeof usual[0]; k++)
+        add_place(usual[k]);
+    int fd = open("/", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    struct stat st;
+    if (fd >= 0 && fstat(fd, &st) == 0)
+        walk(fd, "", st.st_dev, 1);
+    else if (fd >= 0)
+        close(fd);
+}
+
 void jail_sweep(uid_t id)
 {
-    static const char *const places[] = { "/tmp", "/var/tmp", "/dev/shm", "/run/lock", "/dev/mqueue" };
     if (id == 0)
         return;
     kill_user(id);
-    for (size_t k = 0; k < sizeof places / sizeof places[0]; k++) {
+    if (nplaces == 0)
+        find_places();
+    for (size_t k = 0; k < nplaces; k++) {
         int fd = open(places[k], O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
         if (fd >= 0) {
             sweep_folder(fd, id, 0);

@@ -697,6 +697,43 @@ static void test_take_file(void)
     check_remove_tree(dir);
 }
 
+/* As root, a folder anyone may write in away from /tmp and the other
+ * usual places, four levels below / (as /var/lib/php/sessions is): what a
+ * run leaves there is gone after it, swept in the fallback jail, never
+ * made in the namespace jail (where the run cannot see the folder).  The
+ * first test: the sweep finds its places at the grader's first run, and
+ * a system's folders are there before it. */
+static void test_sweep_places(void)
+{
+    if (!sandbox_drops_privileges()) {
+        printf("    skipped: not root, so no run has an id of its own to sweep\n");
+        return;
+    }
+    char top[32] = "/rtsweep.XXXXXX", dir[64], left[96], script[160];
+    static const char *const below[] = { "/a", "/a/b", "/a/b/drop" };
+    if (!mkdtemp(top) || chmod(top, 0755) != 0) {
+        CHECK_MSG(0, "cannot make %s: %s", top, strerror(errno));
+        return;
+    }
+    for (int k = 0; k < 3; k++) {
+        snprintf(dir, sizeof dir, "%s%s", top, below[k]);
+        CHECK(mkdir(dir, 0755) == 0 && chmod(dir, k == 2 ? 01777 : 0755) == 0);
+    }
+    snprintf(left, sizeof left, "%s/left", dir);
+    snprintf(script, sizeof script, ": >%s && echo made >&3", left);
+    SandboxResult res;
+    if (run_sh(script, (SandboxSpec){ .memory_mb = 48, .max_procs = 0 }, &res) == 0) {
+        struct stat st;
+        CHECK_MSG(lstat(left, &st) != 0, "what the run left in %s is still there", dir);
+        if (jail_namespaces())
+            CHECK_MSG(!strstr(res.answer, "made"), "a run in the namespace jail wrote in %s", dir);
+        else
+            CHECK_MSG(strstr(res.answer, "made"), "the run could not write in %s: nothing checked", dir);
+        sandbox_result_free(&res);
+    }
+    check_remove_tree(top);
+}
+
 /* A program that cannot be started (no such file), and a jail that cannot
  * be built (a folder to show it that is not there): each is reported as the
  * run's exit status (127, and 125 in the namespace jail), and nothing is
@@ -731,7 +768,7 @@ static void test_cannot_start(void)
 }
 
 static const CheckTest tests[] = {
-    CHECK_TEST(test_cannot_start),
+    CHECK_TEST(test_sweep_places),     CHECK_TEST(test_cannot_start),
     CHECK_TEST(test_remove_deep_tree), CHECK_TEST(test_take_file),
     CHECK_TEST(test_memory_watch),     CHECK_TEST(test_memory_stops_hog), CHECK_TEST(test_small_program_runs),
     CHECK_TEST(test_oom_score_adj),    CHECK_TEST(test_killed_reported),  CHECK_TEST(test_cpu_limit),
