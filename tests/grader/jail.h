@@ -104,8 +104,9 @@ bool jail_filters(void);
 
 /* As root, fallback: kills every process of id and removes every name it
  * owns in the world-writable places (/tmp, /var/tmp, /dev/shm, /run/lock,
- * /dev/mqueue, and folders under them anyone may write in) and its System
- * V IPC objects.  Only for an id this grader holds alone. */
+ * /dev/mqueue, every other folder anyone may write in within 4 levels of /,
+ * found at the first sweep, and folders under them anyone may write in) and
+ * its System V IPC objects.  Only for an id this grader holds alone. */
 void jail_sweep(uid_t id);
 
 /* As root in the fallback jail: makes the folder path unreadable and
