@@ -537,16 +537,8 @@ int hard_part3b(uint64_t seed, HardCase3b *cases, int max)
 
 Scene hard_scene3b(HardCase3b *c)
 {
-    Scene scene;
-    memset(&scene, 0, sizeof scene);
-    scene.nx = 1;
-    scene.ny = 1;
-    scene.fov_degrees = 60;
-    scene.d = 1;
-    scene.eye = c->eye;
-    scene.background = c->background;
-    scene.spheres = c->spheres;
-    scene.nspheres = c->nspheres;
+    Scene scene = { .nx = 1, .ny = 1, .fov_degrees = 60, .d = 1, .eye = c->eye, .background = c->background,
+                    .spheres = c->spheres, .nspheres = c->nspheres };
     return scene;
 }
 

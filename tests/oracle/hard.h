@@ -176,13 +176,12 @@ int  hard_meshes(uint64_t seed, HardMesh *meshes, int max);
 /* The building blocks, for the benchmark and the unit tests: a mesh of one
  * of HARD_MESH_SHAPES shapes about size across, centred near offset and
  * turned at random (without rays); a ray aimed from outside at one of its
- * shared vertices (vertex true) or at a point of one of its shared edges. */
+ * shared vertices (vertex true) or at a point of one of its shared edges,
+ * with the ray parameter at which it enters the mesh (to about 1e-15
+ * relative): a method that lets the ray through there hits nothing at that
+ * t (it may still hit the far side). */
 #define HARD_MESH_SHAPES 3
 void hard_mesh_make(uint64_t *state, int shape, double size, Vec3 offset, HardMesh *m);
-Ray  hard_mesh_ray(uint64_t *state, const HardMesh *m, bool vertex);
-/* The same, with the ray parameter at which it enters the mesh (to about
- * 1e-15 relative): a method that lets the ray through there hits nothing at
- * that t (it may still hit the far side). */
 Ray  hard_mesh_ray_at(uint64_t *state, const HardMesh *m, bool vertex, double *t_entry);
 
 #endif

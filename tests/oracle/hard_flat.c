@@ -437,12 +437,6 @@ void hard_mesh_make(uint64_t *s, int shape, double size, Vec3 offset, HardMesh *
     m->centre = offset;
 }
 
-Ray hard_mesh_ray(uint64_t *s, const HardMesh *m, bool vertex)
-{
-    double t_entry;
-    return hard_mesh_ray_at(s, m, vertex, &t_entry);
-}
-
 Ray hard_mesh_ray_at(uint64_t *s, const HardMesh *m, bool vertex, double *t_entry)
 {
     const Triangle *tr = &m->tris[draw_int(s, 0, m->ntris - 1)];
@@ -478,7 +472,8 @@ int hard_meshes(uint64_t seed, HardMesh *meshes, int max)
         draw_family(m->family, fam_mesh[fam]);
         for (int r = 0; r < HARD_MESH_RAYS; r++) {
             bool vertex = fam == 1 || (fam == 2 && r % 2);
-            m->rays[r] = hard_mesh_ray(&s, m, vertex);
+            double t_entry;
+            m->rays[r] = hard_mesh_ray_at(&s, m, vertex, &t_entry);
             m->expect[r] = oracle_mesh(m->tris, m->ntris, &m->rays[r]);
         }
     }

@@ -106,20 +106,16 @@ static void part5(TestList *l)
 
     t = tg_test(l, PART5, KIND_TRIANGLE, 1, "Part 5: edges and vertices belong to the triangle",
                 "rays exactly through a vertex or an edge hit; just beside it, they miss");
-    tg_triangle(t, V(0, 0, -4), V(2, 0, -4), V(0, 2, -4), V(0.5, 0.5, 0), V(0, 0, -1));
-    tg_triangle(t, V(0, 0, -4), V(2, 0, -4), V(0, 2, -4), V(0, 0, 0), V(0, 0, -1));
-    tg_triangle(t, V(0, 0, -4), V(2, 0, -4), V(0, 2, -4), V(1, 0, 0), V(0, 0, -1));
-    tg_triangle(t, V(0, 0, -4), V(2, 0, -4), V(0, 2, -4), V(1, 1, 0), V(0, 0, -1));
-    tg_triangle(t, V(0, 0, -4), V(2, 0, -4), V(0, 2, -4), V(2, 0, 0), V(0, 0, -1));
-    tg_triangle(t, V(0, 0, -4), V(2, 0, -4), V(0, 2, -4), V(2.0625, 0, 0), V(0, 0, -1));
-    tg_triangle(t, V(0, 0, -4), V(2, 0, -4), V(0, 2, -4), V(1, -0.0625, 0), V(0, 0, -1));
+    static const double front[][3] = { { 0.5, 0.5, 0 }, { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 2, 0, 0 },
+                                       { 2.0625, 0, 0 }, { 1, -0.0625, 0 } };
+    for (int k = 0; k < 7; k++)
+        tg_triangle(t, V(0, 0, -4), V(2, 0, -4), V(0, 2, -4), front[k], V(0, 0, -1));
 
     t = tg_test(l, PART5, KIND_TRIANGLE, 1, "Part 5: edges and vertices met from behind",
                 "the triangle wound the other way (det < 0): its edges and vertices belong to it too");
-    tg_triangle(t, V(0, 0, -4), V(0, 2, -4), V(2, 0, -4), V(1, 0, 0), V(0, 0, -1));
-    tg_triangle(t, V(0, 0, -4), V(0, 2, -4), V(2, 0, -4), V(0, 1, 0), V(0, 0, -1));
-    tg_triangle(t, V(0, 0, -4), V(0, 2, -4), V(2, 0, -4), V(1, 1, 0), V(0, 0, -1));
-    tg_triangle(t, V(0, 0, -4), V(0, 2, -4), V(2, 0, -4), V(0, 2, 0), V(0, 0, -1));
+    static const double back[][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 }, { 0, 2, 0 } };
+    for (int k = 0; k < 4; k++)
+        tg_triangle(t, V(0, 0, -4), V(0, 2, -4), V(2, 0, -4), back[k], V(0, 0, -1));
 
     t = tg_test(l, PART5, KIND_TRIANGLE, 1, "Part 5: triangles behind the ray are misses",
                 "t < 0: the triangle is behind the ray's origin");

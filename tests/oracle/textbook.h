@@ -40,9 +40,4 @@ static inline bool textbook_sphere_above(const Sphere *sp, const Ray *ray, doubl
     return *t > tmin;
 }
 
-static inline bool textbook_intersect(const Sphere *sp, const Ray *ray, double *t)
-{
-    return textbook_sphere_above(sp, ray, 0, t);
-}
-
 #endif
