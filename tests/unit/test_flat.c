@@ -64,8 +64,9 @@ static void test_expansion_exact_on_integers(void)
         CHECK_MSG(exp_ok(&s), "case %d: the expansion says it lost exactness", k);
         CHECK_MSG(exp_sign(&s) == (want > 0) - (want < 0), "case %d: sign %d, want the sign of %lld",
                   k, exp_sign(&s), (long long)want);
-        /* the value is exact: hi + lo holds 106 bits, want has at most 62 */
-        CHECK_MSG(hi + lo == (double)want && hi - (double)want == -lo, "case %d: %.17g + %.17g, want %lld",
+        /* the value is exact: hi + lo holds 106 bits, want has at most 62:
+         * hi is want rounded, lo the integer rest */
+        CHECK_MSG(hi == (double)want && lo == (double)(want - (int64_t)hi), "case %d: %.17g + %.17g, want %lld",
                   k, hi, lo, (long long)want);
     }
 }
