@@ -12,18 +12,12 @@
 #include "../oracle/oracle.h"
 #include "../oracle/expansion.h"
 #include "../oracle/hard.h"
+#include "../oracle/draw.h"
 
 #define V(x, y, z) vec3(x, y, z)
 #define SEED 20261123u
 
 /* ---- exact arithmetic ----------------------------------------------------- */
-
-static uint64_t rng = 0x9E3779B97F4A7C15u;
-
-static int64_t rand_int(int64_t lo, int64_t hi)
-{
-    return lo + (int64_t)(hard_rng_next(&rng) % (uint64_t)(hi - lo + 1));
-}
 
 /* d.(P x Q) in 64-bit integers (|coordinates| < 2^18: no overflow). */
 static int64_t triple_int(const int64_t d[3], const int64_t P[3], const int64_t Q[3])
@@ -34,15 +28,16 @@ static int64_t triple_int(const int64_t d[3], const int64_t P[3], const int64_t 
 
 static void test_expansion_exact_on_integers(void)
 {
+    uint64_t rng = 0x9E3779B97F4A7C15u;
     for (int k = 0; k < 2000; k++) {
         int64_t p[3], q[3], o[3], d[3], P[3], Q[3];
         double pd[3], qd[3], od[3], dd3[3];
-        int scale = (int)rand_int(-60, 60);      /* positions times 2^scale: still exact */
+        int scale = draw_int(&rng, -60, 60);    /* positions times 2^scale: still exact */
         for (int i = 0; i < 3; i++) {
-            p[i] = rand_int(-(1 << 17), 1 << 17);
-            q[i] = rand_int(-(1 << 17), 1 << 17);
-            o[i] = rand_int(-(1 << 17), 1 << 17);
-            d[i] = rand_int(-(1 << 17), 1 << 17);
+            p[i] = draw_int(&rng, -(1 << 17), 1 << 17);
+            q[i] = draw_int(&rng, -(1 << 17), 1 << 17);
+            o[i] = draw_int(&rng, -(1 << 17), 1 << 17);
+            d[i] = draw_int(&rng, -(1 << 17), 1 << 17);
             P[i] = p[i] - o[i];
             if (k % 3 == 0)             /* make the triple product 0 */
                 q[i] = o[i] + 2 * P[i];
