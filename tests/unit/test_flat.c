@@ -498,18 +498,6 @@ static bool plane_float(const Plane *P, const Ray *R, double *t)
     return ahead(pn / rn, t);
 }
 
-/* The number of hard cases of family fam (of n rounds) method gets wrong. */
-static int failures4(PlaneFn fn, const HardCase4 *cases, int n, int fam)
-{
-    int bad = 0;
-    for (int k = fam; k < n; k += HARD_PART4_FAMILIES) {
-        double t = 0;
-        bool hit = fn(&cases[k].plane, &cases[k].ray, &t);
-        bad += !hard_check4(&cases[k], hit, t);
-    }
-    return bad;
-}
-
 static void test_plane_methods_on_hard_cases(void)
 {
     int n = 300 * HARD_PART4_FAMILIES;
@@ -519,12 +507,17 @@ static void test_plane_methods_on_hard_cases(void)
         { "reference", plane_intersect }, { "p.n - e.n", plane_pn_minus_en }, { "unit normal", plane_unit_n },
     };
     int float_bad = 0;
-    for (int f = 0; f < HARD_PART4_FAMILIES; f++) {
+    for (int k = 0; k < n; k++) {
         for (int m = 0; m < CHECK_COUNT(fair); m++) {
-            int bad = failures4(fair[m].fn, cases, n, f);
-            CHECK_MSG(bad == 0, "%s fails %d of 300 hard cases of '%s'", fair[m].name, bad, cases[f].family);
+            double t = 0;
+            bool hit = fair[m].fn(&cases[k].plane, &cases[k].ray, &t);
+            CHECK_MSG(hard_check4(&cases[k], hit, t), "%s fails a case of '%s': hit %d t %.17g, want "
+                      "hit %d t %.17g", fair[m].name, cases[k].family, hit, t, cases[k].expect.hit,
+                      cases[k].expect.t);
         }
-        float_bad += failures4(plane_float, cases, n, f);
+        double t = 0;
+        bool hit = plane_float(&cases[k].plane, &cases[k].ray, &t);
+        float_bad += !hard_check4(&cases[k], hit, t);
     }
     CHECK_MSG(float_bad > n / 4, "the plane in float fails only %d of %d hard cases", float_bad, n);
     free(cases);
@@ -583,8 +576,15 @@ static void test_every_round_catches_unchecked_division_and_one_side(void)
         for (int f = 0; f < HARD_PART4_FAMILIES; f++) {
             if (strstr(cases[f].family, "exact dyadic") || cases[f].expect.ambiguous)
                 continue;
-            int front_bad = failures4(plane_front_only, cases, N, f);
-            int back_bad = failures4(plane_back_only, cases, N, f);
+            int front_bad = 0, back_bad = 0;
+            for (int k = f; k < N; k += HARD_PART4_FAMILIES) {
+                double t = 0;
+                bool hit = plane_front_only(&cases[k].plane, &cases[k].ray, &t);
+                front_bad += !hard_check4(&cases[k], hit, t);
+                t = 0;
+                hit = plane_back_only(&cases[k].plane, &cases[k].ray, &t);
+                back_bad += !hard_check4(&cases[k], hit, t);
+            }
             if (!sides_right(seed * 7919, cases[f].family, f, front_bad, back_bad))
                 return;
         }
