@@ -465,6 +465,7 @@ int hard_part3b(uint64_t seed, HardCase3b *cases, int max)
 
         double t0 = draw_uni(&s, 2, 20), R1 = draw_uni(&s, 0.5, 2);
         Vec3 p = vec3_scale(r, t0);                         /* a point ahead */
+        c->nspheres = fam == 0 ? 3 : 2;
         switch (fam) {
         case 0: {       /* both entered at p; odd: the second one 1e-6 sooner (even rounds) or
                            later (odd rounds); a third one on the ray beyond both */
@@ -476,7 +477,6 @@ int hard_part3b(uint64_t seed, HardCase3b *cases, int max)
             Vec3 beyond = vec3_add(p, vec3_scale(r, 2 * R2 + draw_uni(&s, 2, 4) * R1));
             double across = draw_uni(&s, 0, 0.9) * R1;
             c->spheres[2] = make_sphere(vec3_add(beyond, vec3_scale(draw_perp(&s, r), across)), R1, 2);
-            c->nspheres = 3;
             break;
         }
         case 1: {       /* a small sphere inside a big one, on the ray: listed first (even) or last */
@@ -489,7 +489,6 @@ int hard_part3b(uint64_t seed, HardCase3b *cases, int max)
             Vec3 cs = vec3_add(vec3_add(cb, vec3_scale(r, draw_uni(&s, -0.5, 0.5) * (R2 - R1))), side);
             c->spheres[even ? 0 : 1] = make_sphere(cs, R1, even ? 0 : 1);
             c->spheres[even ? 1 : 0] = make_sphere(cb, R2, even ? 1 : 0);
-            c->nspheres = 2;
             break;
         }
         case 2: {       /* inside a room of radius 50: a sphere before or beyond its wall */
@@ -497,7 +496,6 @@ int hard_part3b(uint64_t seed, HardCase3b *cases, int max)
             double along = even ? draw_uni(&s, 5, 30) : draw_uni(&s, 70, 90);
             double across = draw_uni(&s, 0, 0.9) * R1;
             c->spheres[1] = make_sphere(vec3_add(vec3_scale(r, along), vec3_scale(draw_perp(&s, r), across)), R1, 1);
-            c->nspheres = 2;
             break;
         }
         case 3: {       /* D/R = 1e6 before a huge sphere */
@@ -506,7 +504,6 @@ int hard_part3b(uint64_t seed, HardCase3b *cases, int max)
             Vec3 cs = vec3_add(vec3_scale(r, D), vec3_scale(draw_perp(&s, r), across));
             c->spheres[0] = make_sphere(vec3_scale(r, 3 * D), D, 0);
             c->spheres[1] = make_sphere(cs, R1, 1);
-            c->nspheres = 2;
             break;
         }
         case 4: {       /* a big sphere behind, a small one ahead (hit or missed) */
@@ -515,7 +512,6 @@ int hard_part3b(uint64_t seed, HardCase3b *cases, int max)
             double across = (even ? draw_uni(&s, 0, 0.9) : draw_uni(&s, 1.1, 2)) * R1;
             Vec3 off = vec3_scale(draw_perp(&s, r), across);
             c->spheres[1] = make_sphere(vec3_add(p, off), R1, 1);
-            c->nspheres = 2;
             break;
         }
         default: {      /* one centre and radius, and its neighbour by an ulp */
@@ -525,7 +521,6 @@ int hard_part3b(uint64_t seed, HardCase3b *cases, int max)
             c1.x = nextafter(c1.x, INFINITY);
             c->spheres[0] = make_sphere(c0, R1, 0);
             c->spheres[1] = make_sphere(c1, even ? R1 : nextafter(R1, 0), 1);
-            c->nspheres = 2;
             break;
         }
         }
