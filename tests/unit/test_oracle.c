@@ -71,6 +71,14 @@ static Ray ray_of(double ex, double ey, double ez, double rx, double ry, double 
     return r;
 }
 
+/* got == hi + lo, each part bitwise, reported at the caller's line. */
+static void check_dd(dd got, double hi, double lo, int line)
+{
+    if (got.hi != hi || got.lo != lo)
+        check_fail_(__FILE__, line, "%a + %a, want %a + %a", got.hi, got.lo, hi, lo);
+}
+#define CHECK_DD(got, hi, lo) check_dd(got, hi, lo, __LINE__)
+
 /* got == (x, y, z), reported at the caller's line. */
 static void check_vec3(Vec3 got, double x, double y, double z, int line)
 {
@@ -88,21 +96,11 @@ static bool family_is(const char *family, const char *prefix)
 
 static void test_dd_error_free(void)
 {
-    dd s = dd_two_sum(1, 0x1p-60);
-    CHECK_EQ_DOUBLE(s.hi, 1);
-    CHECK_EQ_DOUBLE(s.lo, 0x1p-60);
-    s = dd_two_sum(0x1p-60, 1);                       /* either order */
-    CHECK_EQ_DOUBLE(s.hi, 1);
-    CHECK_EQ_DOUBLE(s.lo, 0x1p-60);
-    s = dd_quick_two_sum(1, -0x1p-80);
-    CHECK_EQ_DOUBLE(s.hi, 1);
-    CHECK_EQ_DOUBLE(s.lo, -0x1p-80);
-    dd p = dd_two_prod(1 + 0x1p-30, 1 + 0x1p-30);     /* 1 + 2^-29 + 2^-60 */
-    CHECK_EQ_DOUBLE(p.hi, 1 + 0x1p-29);
-    CHECK_EQ_DOUBLE(p.lo, 0x1p-60);
-    p = dd_two_prod(1 + 0x1p-52, 1 - 0x1p-52);        /* 1 - 2^-104 */
-    CHECK_EQ_DOUBLE(p.hi, 1);
-    CHECK_EQ_DOUBLE(p.lo, -0x1p-104);
+    CHECK_DD(dd_two_sum(1, 0x1p-60), 1, 0x1p-60);
+    CHECK_DD(dd_two_sum(0x1p-60, 1), 1, 0x1p-60);                         /* either order */
+    CHECK_DD(dd_quick_two_sum(1, -0x1p-80), 1, -0x1p-80);
+    CHECK_DD(dd_two_prod(1 + 0x1p-30, 1 + 0x1p-30), 1 + 0x1p-29, 0x1p-60);   /* 1 + 2^-29 + 2^-60 */
+    CHECK_DD(dd_two_prod(1 + 0x1p-52, 1 - 0x1p-52), 1, -0x1p-104);          /* 1 - 2^-104 */
 }
 
 static void test_dd_arithmetic(void)
@@ -118,9 +116,7 @@ static void test_dd_arithmetic(void)
     CHECK_EQ_DOUBLE(dd_to_double(dd_sub(dd_make(1, 0x1p-60), dd_from(1))), 0x1p-60);
     /* 3 (1 + 2^-52) / 8 lies halfway between two doubles: exact in dd, and
      * rounded once it goes to the even neighbour */
-    dd q = dd_div_d(dd_two_prod(1 + 0x1p-52, 3), 8);
-    CHECK_EQ_DOUBLE(q.hi, 0x1.8000000000002p-2);
-    CHECK_EQ_DOUBLE(q.lo, -0x1p-55);
+    CHECK_DD(dd_div_d(dd_two_prod(1 + 0x1p-52, 3), 8), 0x1.8000000000002p-2, -0x1p-55);
     CHECK(dd_lt(dd_make(1, 0x1p-60), dd_make(1, 0x1p-59)));
     CHECK_EQ_INT(dd_sign(dd_make(0, -0x1p-80)), -1);
     CHECK_EQ_INT(dd_sign(dd_from(0)), 0);
@@ -157,8 +153,7 @@ static void test_dd_tan_exact_angles(void)
     /* odd; and tan(90 - y) = 1 / tan(y) */
     for (double x = 0.125; x < 90; x += 3.375) {
         dd a = dd_tan_degrees(x), b = dd_tan_degrees(-x);
-        CHECK_EQ_DOUBLE(a.hi, -b.hi);
-        CHECK_EQ_DOUBLE(a.lo, -b.lo);
+        CHECK_DD(a, -b.hi, -b.lo);
         CHECK(rel_err(a, dd_div(dd_from(1), dd_tan_degrees(90 - x))) < 1e-30);
     }
     /* pi and pi / 180 agree with each other */
