@@ -261,7 +261,8 @@ static void test_oracle_unit(void)
         for (int m = 0; m < 3; m++)
             c[m] = ldexp(hard_rng_uniform(&s) - 0.5, (int)(hard_rng_next(&s) % 8));
         f128 n = f128_sqrt((f128)c[0] * c[0] + (f128)c[1] * c[1] + (f128)c[2] * c[2]);
-        CHECK_VEC3(oracle_unit(vec3(c[0], c[1], c[2])), (double)(c[0] / n), (double)(c[1] / n), (double)(c[2] / n));
+        CHECK_VEC3(oracle_unit(vec3(c[0], c[1], c[2])),
+                   (double)(c[0] / n), (double)(c[1] / n), (double)(c[2] / n));
     }
 #endif
 }
@@ -452,7 +453,8 @@ static void test_oracle_sphere_symmetry(void)
         const OracleHit *o = &c->expect;
         /* (x, y, z) -> (-z, x, -y) */
         Sphere s2 = { vec3(-s.center.z, s.center.x, -s.center.y), s.radius, s.color };
-        Ray r2 = { vec3(-r.origin.z, r.origin.x, -r.origin.y), vec3(-r.direction.z, r.direction.x, -r.direction.y) };
+        Ray r2 = { vec3(-r.origin.z, r.origin.x, -r.origin.y),
+                   vec3(-r.direction.z, r.direction.x, -r.direction.y) };
         OracleHit p = oracle_sphere(&s2, &r2);
         CHECK_MSG(p.hit == o->hit && p.t == o->t && p.ambiguous == o->ambiguous,
                   "%s (case %d): rotated", c->family, k);
