@@ -618,7 +618,7 @@ static void test_part1_hard(void)
  * cancels near the centre, does not: the challenge is one it does not
  * meet (it fails a tenth of every family's cases at least; 12% to 40% of
  * the 200 here). */
-static void test_reference_part2_hard(void)
+static void test_part2_hard(void)
 {
     static HardCase2 c[HARD_PART2_FAMILIES * PER_FAMILY];
     int n = hard_part2(SEED, c, HARD_PART2_FAMILIES * PER_FAMILY), lecture_fails[HARD_PART2_FAMILIES] = { 0 };
@@ -680,7 +680,7 @@ static void test_part3a_hard(void)
     CHECK_MSG(tiny_eps > PER_FAMILY / 4, "t > 0.001 fails only %d tiny-scene cases", tiny_eps);
 }
 
-static void test_reference_part3b_hard(void)
+static void test_part3b_hard(void)
 {
     static HardCase3b c[HARD_PART3B_FAMILIES * PER_FAMILY];
     int n = hard_part3b(SEED, c, HARD_PART3B_FAMILIES * PER_FAMILY);
@@ -740,9 +740,9 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_hard_deterministic),
     CHECK_TEST(test_hard_families),
     CHECK_TEST(test_part1_hard),
-    CHECK_TEST(test_reference_part2_hard),
+    CHECK_TEST(test_part2_hard),
     CHECK_TEST(test_part3a_hard),
-    CHECK_TEST(test_reference_part3b_hard),
+    CHECK_TEST(test_part3b_hard),
     CHECK_TEST(test_hard_camera_cases),
 };
 
