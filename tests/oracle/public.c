@@ -48,10 +48,8 @@ static void part2(TestList *l)
     t = tg_test(l, PART2, KIND_PIXEL, 1, "Part 2: the four corner pixels of a 640 x 480 image",
                 "pixel (0, 0) is at the top left: x < 0 and y > 0");
     double w = 4.0 / 3 * 1.1547005383792515, h = 1.1547005383792515;
-    tg_pixel(t, 0, 0, 640, 480, w, h, 1);
-    tg_pixel(t, 639, 0, 640, 480, w, h, 1);
-    tg_pixel(t, 0, 479, 640, 480, w, h, 1);
-    tg_pixel(t, 639, 479, 640, 480, w, h, 1);
+    for (int k = 0; k < 4; k++)                 /* top left, top right, bottom left, bottom right */
+        tg_pixel(t, k % 2 ? 639 : 0, k / 2 ? 479 : 0, 640, 480, w, h, 1);
     t = tg_test(l, PART2, KIND_PIXEL, 1, "Part 2: odd image sizes and the centre pixel",
                 "with nx = 5 the centre column i = 2 has x = 0");
     tg_pixel(t, 2, 1, 5, 3, 5, 3, 1);
