@@ -1,11 +1,8 @@
 /* Checksums, DEFLATE, the zlib wrapper, PNG and the image files of labs/kit. */
 #include "check.h"            /* first: it sets the POSIX feature level */
 
-#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
-#include <stdint.h>
-#include <sys/stat.h>
 
 #include "../../labs/kit/image.h"
 #include "../../labs/kit/png.h"
@@ -158,21 +155,15 @@ static void test_deflate_short(void)
     deflate_round_trip((const unsigned char *)"aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa", 36);
 }
 
-static void test_deflate_random_1mb(void)
+static void test_deflate_1mb(void)
 {
     size_t n = 1 << 20;
     unsigned char *data = random_bytes(n);
     size_t size = deflate_round_trip(data, n);
     /* random data cannot shrink: the stored blocks keep it to 5 bytes a block */
     CHECK_MSG(size <= n + 5 * (n / 65000 + 1) + 8, "random data grew to %zu bytes", size);
-    free(data);
-}
-
-static void test_deflate_zeros_1mb(void)
-{
-    size_t n = 1 << 20;
-    unsigned char *data = calloc(n, 1);
-    size_t size = deflate_round_trip(data, n);
+    memset(data, 0, n);
+    size = deflate_round_trip(data, n);
     CHECK_MSG(size < n / 100, "1 MiB of zeros compressed to %zu bytes", size);
     free(data);
 }
@@ -244,7 +235,7 @@ static void test_deflate_sizes_at_the_window(void)
         return;
     for (size_t k = 0; k < 65278; k++)
         repeated[k] = noise[k % 20000];
-    for (size_t s = 0; s < sizeof sizes / sizeof *sizes; s++) {
+    for (int s = 0; s < CHECK_COUNT(sizes); s++) {
         deflate_round_trip(noise, sizes[s]);
         size_t size = deflate_round_trip(repeated, sizes[s]);
         CHECK_MSG(size < sizes[s] * 3 / 4, "%zu bytes, a 20000-byte pattern repeated: %zu bytes compressed",
@@ -256,71 +247,63 @@ static void test_deflate_sizes_at_the_window(void)
 
 /* ---- inflate of hand-made streams --------------------------------------------------- */
 
-static void test_inflate_stored_by_hand(void)
+/* Streams made by hand, and what each inflates to: out, or an error whose
+ * message holds err. */
+static void test_inflate_by_hand(void)
 {
-    /* BFINAL=1 BTYPE=00, padding, LEN=5, NLEN=~5, "hello" */
-    static const unsigned char stored[] = {0x01, 0x05, 0x00, 0xFA, 0xFF, 'h', 'e', 'l', 'l', 'o'};
+    static const struct {
+        unsigned char in[10];
+        size_t n;
+        const char *out, *err;
+    } streams[] = {
+        /* BFINAL=1 BTYPE=00, padding, LEN=5, NLEN=~5, "hello" */
+        { {0x01, 0x05, 0x00, 0xFA, 0xFF, 'h', 'e', 'l', 'l', 'o'}, 10, "hello", NULL },
+        /* a complement that does not match */
+        { {0x01, 0x05, 0x00, 0xFA, 0xFE, 'h', 'e', 'l', 'l', 'o'}, 10, NULL, "complement" },
+        /*
+         * RFC 1951 3.2.6: literal 0..143 is 8 bits 00110000 + value, end of block
+         * (256) is 7 zero bits; Huffman codes go most significant bit first,
+         * everything else least significant bit first.
+         *   'a' = 97 -> 10010001, 'b' -> 10010010, 'c' -> 10010011.
+         * "a":   1 10 | 10010001 | 0000000             -> 4B 04 00
+         * "abc": 1 10 | 10010001 10010010 10010011 | 0000000 -> 4B 4C 4A 06 00
+         */
+        { {0x4B, 0x04, 0x00}, 3, "a", NULL },
+        { {0x4B, 0x4C, 0x4A, 0x06, 0x00}, 5, "abc", NULL },
+        /* length 3 (code 257 = 0000001), distance 1 (code 0 = 00000) with nothing
+         * before it: 1 10 | 0000001 | 00000 | 0000000 -> 03 02 00 */
+        { {0x03, 0x02, 0x00}, 3, NULL, "before its start" },
+        /* 'a' then length 3 at distance 1 gives "aaaa": 1 10 | 10010001 | 0000001 | 00000 | 0000000 */
+        { {0x4B, 0x04, 0x02, 0x00}, 4, "aaaa", NULL },
+        /* block type 3 is invalid */
+        { {0x07, 0x00}, 2, NULL, "block type" },
+    };
     KitBuf out;
     char err[200] = "";
-    size_t used = 0;
-    CHECK_EQ_INT(inflate_into(stored, sizeof stored, 100, &out, err, sizeof err), 0);
-    CHECK(out.len == 5 && memcmp(out.data, "hello", 5) == 0);
-    kit_buf_free(&out);
+    for (int k = 0; k < CHECK_COUNT(streams); k++) {
+        const char *want = streams[k].out;
+        int rc = inflate_into(streams[k].in, streams[k].n, 100, &out, err, sizeof err);
+        if (want)
+            CHECK_MSG(rc == 0 && out.len == strlen(want) && memcmp(out.data, want, out.len) == 0,
+                      "stream %d: %d, %zu bytes (%s), not \"%s\"", k, rc, out.len, err, want);
+        else
+            CHECK_MSG(rc == -1 && strstr(err, streams[k].err), "stream %d: %d, \"%s\", not about %s", k,
+                      rc, err, streams[k].err);
+        kit_buf_free(&out);
+    }
+    /* the compressor makes the same bytes for "abc" */
+    KitBuf z = {0};
+    kit_deflate("abc", 3, &z);
+    CHECK(z.len == 5 && memcmp(z.data, streams[3].in, 5) == 0);
+    kit_buf_free(&z);
     /* two stored blocks, the first not final, followed by unrelated bytes */
     static const unsigned char two[] = {0x00, 0x02, 0x00, 0xFD, 0xFF, 'a', 'b',
                                         0x01, 0x01, 0x00, 0xFE, 0xFF, 'c', 0xEE, 0xEE};
+    size_t used = 0;
     kit_buf_init(&out);
     CHECK_EQ_INT(kit_inflate(two, sizeof two, 100, &out, &used, err, sizeof err), 0);
     CHECK(out.len == 3 && memcmp(out.data, "abc", 3) == 0);
     CHECK_EQ_INT(used, sizeof two - 2);
-    kit_buf_free(&out);
-    /* a complement that does not match */
-    static const unsigned char bad[] = {0x01, 0x05, 0x00, 0xFA, 0xFE, 'h', 'e', 'l', 'l', 'o'};
-    CHECK_EQ_INT(inflate_into(bad, sizeof bad, 100, &out, err, sizeof err), -1);
-    CHECK_STR_CONTAINS(err, "complement");
-    kit_buf_free(&out);
-}
-
-static void test_inflate_fixed_by_hand(void)
-{
-    /*
-     * RFC 1951 3.2.6: literal 0..143 is 8 bits 00110000 + value, end of block
-     * (256) is 7 zero bits; Huffman codes go most significant bit first,
-     * everything else least significant bit first.
-     *   'a' = 97 -> 10010001, 'b' -> 10010010, 'c' -> 10010011.
-     * "a":   1 10 | 10010001 | 0000000             -> 4B 04 00
-     * "abc": 1 10 | 10010001 10010010 10010011 | 0000000 -> 4B 4C 4A 06 00
-     */
-    static const unsigned char a[] = {0x4B, 0x04, 0x00};
-    static const unsigned char abc[] = {0x4B, 0x4C, 0x4A, 0x06, 0x00};
-    KitBuf out;
-    char err[200] = "";
-    CHECK_EQ_INT(inflate_into(a, sizeof a, 10, &out, err, sizeof err), 0);
-    CHECK(out.len == 1 && out.data[0] == 'a');
-    kit_buf_free(&out);
-    CHECK_EQ_INT(inflate_into(abc, sizeof abc, 10, &out, err, sizeof err), 0);
-    CHECK(out.len == 3 && memcmp(out.data, "abc", 3) == 0);
-    kit_buf_free(&out);
-    /* the compressor makes these same bytes */
-    KitBuf z = {0};
-    kit_deflate("abc", 3, &z);
-    CHECK(z.len == sizeof abc && memcmp(z.data, abc, sizeof abc) == 0);
-    kit_buf_free(&z);
-    /* length 3 (code 257 = 0000001), distance 1 (code 0 = 00000) with nothing
-     * before it: 1 10 | 0000001 | 00000 | 0000000 -> 03 02 00 */
-    static const unsigned char too_far[] = {0x03, 0x02, 0x00};
-    CHECK_EQ_INT(inflate_into(too_far, sizeof too_far, 10, &out, err, sizeof err), -1);
-    CHECK_STR_CONTAINS(err, "before its start");
-    kit_buf_free(&out);
-    /* 'a' then length 3 at distance 1 gives "aaaa": 1 10 | 10010001 | 0000001 | 00000 | 0000000 */
-    static const unsigned char aaaa[] = {0x4B, 0x04, 0x02, 0x00};
-    CHECK_EQ_INT(inflate_into(aaaa, sizeof aaaa, 10, &out, err, sizeof err), 0);
-    CHECK(out.len == 4 && memcmp(out.data, "aaaa", 4) == 0);
-    kit_buf_free(&out);
-    /* block type 3 is invalid */
-    static const unsigned char type3[] = {0x07, 0x00};
-    CHECK_EQ_INT(inflate_into(type3, sizeof type3, 10, &out, err, sizeof err), -1);
-    CHECK_STR_CONTAINS(err, "block type");
     kit_buf_free(&out);
 }
 
@@ -364,22 +347,21 @@ static void test_inflate_dynamic_block(void)
 
 static void test_inflate_truncated(void)
 {
-    KitBuf out;
+    KitBuf out, z = {0};
     char err[200];
-    /* every strict prefix of a valid stream is an error */
-    for (size_t n = 0; n < sizeof dynamic_stream; n++) {
-        CHECK_EQ_INT(inflate_into(dynamic_stream, n, 1000, &out, err, sizeof err), -1);
-        kit_buf_free(&out);
-    }
     unsigned char *data = random_bytes(3000);
     for (int k = 0; k < 3000; k += 3)
         data[k] = 'x';
-    KitBuf z = {0};
     kit_deflate(data, 3000, &z);
-    for (size_t n = 0; n < z.len; n++) {
-        CHECK_EQ_INT(inflate_into(z.data, n, 3000, &out, err, sizeof err), -1);
-        kit_buf_free(&out);
-    }
+    /* every strict prefix of a valid stream is an error */
+    const unsigned char *streams[2] = {dynamic_stream, z.data};
+    size_t sizes[2] = {sizeof dynamic_stream, z.len};
+    for (int k = 0; k < 2; k++)
+        for (size_t n = 0; n < sizes[k]; n++) {
+            CHECK_MSG(inflate_into(streams[k], n, 3000, &out, err, sizeof err) == -1,
+                      "stream %d cut to %zu bytes was read", k, n);
+            kit_buf_free(&out);
+        }
     CHECK_STR_CONTAINS(err, "truncated");
     kit_buf_free(&z);
     free(data);
@@ -458,6 +440,8 @@ static void test_inflate_output_limit(void)
 
 /* ---- PNG -------------------------------------------------------------------------------- */
 
+static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
+
 /* A random image (freed by the caller). */
 static Image random_image(int w, int h)
 {
@@ -474,7 +458,6 @@ static Image random_image(int w, int h)
  * IDAT chunks. */
 static int check_png_chunks(const unsigned char *png, size_t n, int w, int h)
 {
-    static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
     CHECK(n >= 8 && memcmp(png, sig, 8) == 0);
     size_t at = 8;
     int index = 0, idats = 0, ended = 0;
@@ -531,7 +514,7 @@ static int png_round_trip(const Image *img)
 static void test_png_round_trip_random(void)
 {
     static const int sizes[][2] = {{1, 1}, {3, 7}, {257, 5}, {1, 300}, {300, 1}};
-    for (size_t k = 0; k < sizeof sizes / sizeof sizes[0]; k++) {
+    for (int k = 0; k < CHECK_COUNT(sizes); k++) {
         Image img = random_image(sizes[k][0], sizes[k][1]);
         png_round_trip(&img);
         image_free(&img);
@@ -591,7 +574,7 @@ static void test_png_filter_choice(void)
 {
     static const int widths[] = { 1, 2, 10, 11, 12, 13, 21, 22, 43, 64, 100, 331 };
     char err[200];
-    for (size_t wi = 0; wi < sizeof widths / sizeof widths[0]; wi++)
+    for (int wi = 0; wi < CHECK_COUNT(widths); wi++)
         for (int kind = 0; kind < 4; kind++) {
             Image img;
             int w = widths[wi], h = 9;
@@ -661,19 +644,12 @@ static void add_chunk(KitBuf *out, const char *type, const unsigned char *data, 
     free(joined);
 }
 
-static int paeth(int a, int b, int c)
-{
-    int p = a + b - c, pa = abs(p - a), pb = abs(p - b), pc = abs(p - c);
-    return pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
-}
-
 /* Builds a PNG of w x h pixels of `channels` samples (colour type ctype)
  * from samples[], row j filtered with type j % 5, the zlib data split into
  * IDAT chunks of idat_size bytes.  interlace goes into IHDR as given. */
 static void build_png(KitBuf *out, const unsigned char *samples, int w, int h, int ctype,
                       int channels, size_t idat_size, int interlace)
 {
-    static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
     size_t stride = (size_t)w * channels;
     KitBuf raw = {0}, z = {0};
     for (int j = 0; j < h; j++) {
@@ -685,9 +661,7 @@ static void build_png(KitBuf *out, const unsigned char *samples, int w, int h, i
             int a = k >= (size_t)channels ? row[k - channels] : 0;
             int b = up ? up[k] : 0;
             int c = up && k >= (size_t)channels ? up[k - channels] : 0;
-            int pred = type == 0 ? 0 : type == 1 ? a : type == 2 ? b
-                     : type == 3 ? (a + b) / 2 : paeth(a, b, c);
-            kit_buf_push(&raw, (unsigned char)(row[k] - pred));
+            kit_buf_push(&raw, (unsigned char)(row[k] - spec_predict(type, a, b, c)));
         }
     }
     kit_zlib_compress(raw.data, raw.len, &z);
@@ -710,7 +684,7 @@ static void build_png(KitBuf *out, const unsigned char *samples, int w, int h, i
 static void test_png_decode_all_filters_and_types(void)
 {
     static const struct { int ctype, channels; } kinds[] = {{2, 3}, {6, 4}, {0, 1}, {4, 2}};
-    for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; k++) {
+    for (int k = 0; k < CHECK_COUNT(kinds); k++) {
         int w = 13, h = 11, ch = kinds[k].channels;
         unsigned char *samples = random_bytes((size_t)w * h * ch);
         for (size_t idat = 1; idat <= 1000; idat *= 1000) {   /* 1-byte IDATs, then one */
@@ -739,60 +713,60 @@ static void test_png_decode_all_filters_and_types(void)
     }
 }
 
-/* Decodes png, expecting failure with a message containing want. */
-static void expect_png_error(const KitBuf *png, const char *want)
+/* Decodes png, expecting failure with a message containing want; what
+ * names the case. */
+static void expect_png_error(const KitBuf *png, const char *want, const char *what)
 {
     Image img = {5, 5, NULL};
     char err[300] = "";
-    CHECK_EQ_INT(png_decode(png->data, png->len, &img.width, &img.height, &img.rgb, err,
-                            sizeof err), -1);
-    CHECK_STR_CONTAINS(err, want);
+    int rc = png_decode(png->data, png->len, &img.width, &img.height, &img.rgb, err, sizeof err);
+    CHECK_MSG(rc == -1 && strstr(err, want), "%s: %d, \"%s\", not -1 about \"%s\"", what, rc, err, want);
     CHECK(img.rgb == NULL);
 }
 
+/* PNGs of 4 x 3 pixels built with ctype, channels and interlace, their
+ * IHDR then given width w, height h and depth (its CRC made again). */
 static void test_png_decode_refuses(void)
 {
+    static const struct {
+        int ctype, channels, interlace;
+        uint32_t w, h;
+        unsigned char depth;
+        const char *want;
+    } bad[] = {
+        { 2, 3, 1, 4, 3, 8, "interlaced" },
+        { 3, 1, 0, 4, 3, 8, "palette" },
+        { 2, 3, 0, PNG_MAX_SIDE + 1, 1, 8, "each side must be 1 to" },
+        { 2, 3, 0, 1, PNG_MAX_SIDE + 1, 8, "each side must be 1 to" },
+        { 2, 3, 0, 0, 5, 8, "each side must be 1 to" },
+        { 2, 3, 0, 4, 3, 16, "bit depth 16" },
+        { 2, 3, 0, 4, 4, 8, "corrupt" },    /* the image data holds too few bytes for the size */
+    };
     unsigned char samples[4 * 3 * 3];
     memset(samples, 7, sizeof samples);
     KitBuf png = {0};
-    build_png(&png, samples, 4, 3, 2, 3, 1000, 1);
-    expect_png_error(&png, "interlaced");
-    kit_buf_free(&png);
-
+    char what[80];
+    for (int k = 0; k < CHECK_COUNT(bad); k++) {
+        build_png(&png, samples, 4, 3, bad[k].ctype, bad[k].channels, 1000, bad[k].interlace);
+        put_be32(png.data + 16, bad[k].w);
+        put_be32(png.data + 20, bad[k].h);
+        png.data[24] = bad[k].depth;
+        put_be32(png.data + 29, slow_crc32(png.data + 12, 17));
+        snprintf(what, sizeof what, "IHDR %d", k);
+        expect_png_error(&png, bad[k].want, what);
+        kit_buf_free(&png);
+    }
     build_png(&png, samples, 4, 3, 2, 3, 1000, 0);
     png.data[png.len - 20] ^= 0x10;              /* inside the IDAT data */
-    expect_png_error(&png, "CRC");
+    expect_png_error(&png, "CRC", "a bit changed");
     png.data[png.len - 20] ^= 0x10;
     for (size_t n = 0; n < png.len; n++) {       /* every truncation */
         KitBuf cut = {png.data, n, n};
-        expect_png_error(&cut, n < 8 ? "signature" : "truncated");
+        snprintf(what, sizeof what, "cut to %zu bytes", n);
+        expect_png_error(&cut, n < 8 ? "signature" : "truncated", what);
     }
     png.data[0] = 'x';
-    expect_png_error(&png, "signature");
-    kit_buf_free(&png);
-
-    static const int too_big[][2] = {{PNG_MAX_SIDE + 1, 1}, {1, PNG_MAX_SIDE + 1}, {0, 5}};
-    for (int k = 0; k < 3; k++) {
-        build_png(&png, samples, 1, 1, 2, 3, 1000, 0);
-        put_be32(png.data + 16, (uint32_t)too_big[k][0]);
-        put_be32(png.data + 20, (uint32_t)too_big[k][1]);
-        put_be32(png.data + 29, slow_crc32(png.data + 12, 17));
-        expect_png_error(&png, "each side must be 1 to");
-        kit_buf_free(&png);
-    }
-    build_png(&png, samples, 4, 3, 3, 1, 1000, 0);
-    expect_png_error(&png, "palette");
-    kit_buf_free(&png);
-    build_png(&png, samples, 4, 3, 2, 3, 1000, 0);
-    png.data[24] = 16;                            /* bit depth */
-    put_be32(png.data + 29, slow_crc32(png.data + 12, 17));
-    expect_png_error(&png, "bit depth 16");
-    kit_buf_free(&png);
-    /* the image data holds too few bytes for the size in IHDR */
-    build_png(&png, samples, 4, 3, 2, 3, 1000, 0);
-    put_be32(png.data + 20, 4);
-    put_be32(png.data + 29, slow_crc32(png.data + 12, 17));
-    expect_png_error(&png, "corrupt");
+    expect_png_error(&png, "signature", "a signature changed");
     kit_buf_free(&png);
 }
 
@@ -818,50 +792,17 @@ static void test_png_decode_random_damage(void)
 
 /* ---- image files --------------------------------------------------------------------- */
 
-/* The names in dir other than . and .., sorted and joined with spaces. */
-static void list_dir(const char *dir, char *out, size_t size)
-{
-    char names[32][256];
-    int count = 0;
-    out[0] = '\0';
-    DIR *d = opendir(dir);
-    CHECK(d != NULL);
-    if (!d)
-        return;
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL && count < 32)
-        if (strcmp(e->d_name, ".") && strcmp(e->d_name, ".."))
-            snprintf(names[count++], 256, "%s", e->d_name);
-    closedir(d);
-    for (int a = 0; a < count; a++)
-        for (int b = a + 1; b < count; b++)
-            if (strcmp(names[b], names[a]) < 0) {
-                char t[256];
-                memcpy(t, names[a], 256);
-                memcpy(names[a], names[b], 256);
-                memcpy(names[b], t, 256);
-            }
-    for (int k = 0; k < count; k++)
-        snprintf(out + strlen(out), size - strlen(out), "%s%s", k ? " " : "", names[k]);
-}
-
 static void test_image_channel(void)
 {
-    CHECK_EQ_INT(image_channel(0), 0);
-    CHECK_EQ_INT(image_channel(1), 255);
-    CHECK_EQ_INT(image_channel(0.5), 128);
-    CHECK_EQ_INT(image_channel(-1), 0);
-    CHECK_EQ_INT(image_channel(2), 255);
-    CHECK_EQ_INT(image_channel(NAN), 0);
-    CHECK_EQ_INT(image_channel(-NAN), 0);
-    CHECK_EQ_INT(image_channel(INFINITY), 255);
-    CHECK_EQ_INT(image_channel(-INFINITY), 0);
-    CHECK_EQ_INT(image_channel(-0.0), 0);
-    CHECK_EQ_INT(image_channel(1.0 / 255), 1);
-    CHECK_EQ_INT(image_channel(0.5 / 255), 1);            /* 0.5 rounds up */
-    CHECK_EQ_INT(image_channel(0.49 / 255), 0);
-    CHECK_EQ_INT(image_channel(254.5 / 255), 255);
-    CHECK_EQ_INT(image_channel(0x1.fffffffffffffp-1), 255);
+    static const struct { double x; int want; } cases[] = {
+        { 0, 0 }, { 1, 255 }, { 0.5, 128 }, { -1, 0 }, { 2, 255 }, { NAN, 0 }, { -NAN, 0 },
+        { INFINITY, 255 }, { -INFINITY, 0 }, { -0.0, 0 }, { 1.0 / 255, 1 },
+        { 0.5 / 255, 1 },                                   /* 0.5 rounds up */
+        { 0.49 / 255, 0 }, { 254.5 / 255, 255 }, { 0x1.fffffffffffffp-1, 255 },
+    };
+    for (int k = 0; k < CHECK_COUNT(cases); k++)
+        CHECK_MSG(image_channel(cases[k].x) == cases[k].want, "image_channel(%a) is %d, not %d", cases[k].x,
+                  image_channel(cases[k].x), cases[k].want);
 }
 
 static void test_image_alloc(void)
@@ -885,7 +826,7 @@ static void test_image_alloc(void)
 
 static void test_image_write_read(void)
 {
-    char dir[512], path[600], listing[1024];
+    char dir[512], path[600];
     check_temp_dir(dir, sizeof dir, "png");
     static const char *names[] = {"a.ppm", "b.png", "C.PNG", "d.PpM"};
     Image img = random_image(37, 23);
@@ -901,8 +842,7 @@ static void test_image_write_read(void)
         /* overwriting an existing file works too */
         CHECK_MSG(image_write(&img, path, err, sizeof err) == 0, "%s", err);
     }
-    list_dir(dir, listing, sizeof listing);
-    CHECK_MSG(strcmp(listing, "C.PNG a.ppm b.png d.PpM") == 0, "directory holds: %s", listing);
+    CHECK_EQ_INT(check_count_entries(dir), 4);   /* the four, no temporary file */
     /* the file type is read from the content, not the name */
     char from[600], to[600];
     snprintf(from, sizeof from, "%s/b.png", dir);
@@ -971,7 +911,7 @@ static void test_image_read_ppm_variants(void)
         {"GIF89a", "not a PNG or binary PPM"},
         {"", "not a PNG or binary PPM"},
     };
-    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+    for (int k = 0; k < CHECK_COUNT(bad); k++) {
         err[0] = '\0';
         img.rgb = NULL;
         CHECK_EQ_INT(read_bytes_as_image(dir, "bad.ppm", bad[k].bytes, strlen(bad[k].bytes),
@@ -989,38 +929,35 @@ static void test_image_read_ppm_variants(void)
     check_remove_tree(dir);
 }
 
+/* image_write of img to dir/name fails, its message naming the path and
+ * holding want. */
+static void expect_write_error(const Image *img, const char *dir, const char *name, const char *want)
+{
+    char path[700], err[900] = "";
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    CHECK_MSG(image_write(img, path, err, sizeof err) == -1, "%s was written", path);
+    CHECK_MSG(strstr(err, path) && strstr(err, want), "%s: the message is \"%s\", not about \"%s\"", path,
+              err, want);
+}
+
 static void test_image_write_failures(void)
 {
-    char dir[512], path[700], err[900], listing[1024];
+    char dir[512], path[700];
     check_temp_dir(dir, sizeof dir, "png");
     Image img = random_image(5, 4);
     /* a directory that does not exist */
-    snprintf(path, sizeof path, "%s/no/such/dir/out.png", dir);
-    err[0] = '\0';
-    CHECK_EQ_INT(image_write(&img, path, err, sizeof err), -1);
-    CHECK_STR_CONTAINS(err, path);
-    CHECK_STR_CONTAINS(err, strerror(ENOENT));
-    list_dir(dir, listing, sizeof listing);
-    CHECK_MSG(listing[0] == '\0', "directory holds: %s", listing);
+    expect_write_error(&img, dir, "no/such/dir/out.png", strerror(ENOENT));
+    CHECK_EQ_INT(check_count_entries(dir), 0);
     /* the name is taken by a directory: the rename fails, nothing stays */
     snprintf(path, sizeof path, "%s/taken.png", dir);
     CHECK_EQ_INT(mkdir(path, 0755), 0);
-    err[0] = '\0';
-    CHECK_EQ_INT(image_write(&img, path, err, sizeof err), -1);
-    CHECK_STR_CONTAINS(err, path);
-    list_dir(dir, listing, sizeof listing);
-    CHECK_MSG(strcmp(listing, "taken.png") == 0, "directory holds: %s", listing);
+    expect_write_error(&img, dir, "taken.png", "");
+    CHECK_EQ_INT(check_count_entries(dir), 1);
     /* unknown extensions */
     static const char *names[] = {"x.jpg", "x", "x.png.bak", "png", "x.pngg", "dir.png/x"};
-    for (int k = 0; k < 6; k++) {
-        snprintf(path, sizeof path, "%s/%s", dir, names[k]);
-        err[0] = '\0';
-        CHECK_EQ_INT(image_write(&img, path, err, sizeof err), -1);
-        CHECK_STR_CONTAINS(err, path);
-        CHECK_STR_CONTAINS(err, ".png or .ppm");
-    }
-    list_dir(dir, listing, sizeof listing);
-    CHECK_MSG(strcmp(listing, "taken.png") == 0, "directory holds: %s", listing);
+    for (int k = 0; k < CHECK_COUNT(names); k++)
+        expect_write_error(&img, dir, names[k], ".png or .ppm");
+    CHECK_EQ_INT(check_count_entries(dir), 1);
     /* a directory we may not write into (skipped where permissions do not
      * apply, as for the superuser) */
     char ro[600];
@@ -1032,21 +969,13 @@ static void test_image_write_failures(void)
         close(probe);
         unlink(path);
     } else {
-        snprintf(path, sizeof path, "%s/out.ppm", ro);
-        err[0] = '\0';
-        CHECK_EQ_INT(image_write(&img, path, err, sizeof err), -1);
-        CHECK_STR_CONTAINS(err, path);
-        CHECK_STR_CONTAINS(err, strerror(EACCES));
-        list_dir(ro, listing, sizeof listing);
-        CHECK_MSG(listing[0] == '\0', "directory holds: %s", listing);
+        expect_write_error(&img, ro, "out.ppm", strerror(EACCES));
+        CHECK_EQ_INT(check_count_entries(ro), 0);
     }
     /* an invalid image */
     Image empty = {0, 0, NULL};
-    snprintf(path, sizeof path, "%s/empty.png", dir);
-    CHECK_EQ_INT(image_write(&empty, path, err, sizeof err), -1);
-    CHECK_STR_CONTAINS(err, path);
-    list_dir(dir, listing, sizeof listing);
-    CHECK_MSG(strcmp(listing, "readonly taken.png") == 0, "directory holds: %s", listing);
+    expect_write_error(&empty, dir, "empty.png", "");
+    CHECK_EQ_INT(check_count_entries(dir), 2);      /* readonly and taken.png */
     image_free(&img);
     check_remove_tree(dir);
 }
@@ -1056,14 +985,12 @@ static const CheckTest tests[] = {
     CHECK_TEST(test_adler32_known),
     CHECK_TEST(test_deflate_empty),
     CHECK_TEST(test_deflate_short),
-    CHECK_TEST(test_deflate_random_1mb),
-    CHECK_TEST(test_deflate_zeros_1mb),
+    CHECK_TEST(test_deflate_1mb),
     CHECK_TEST(test_deflate_repetitive_text),
     CHECK_TEST(test_deflate_periodic),
     CHECK_TEST(test_deflate_all_sizes_small),
     CHECK_TEST(test_deflate_sizes_at_the_window),
-    CHECK_TEST(test_inflate_stored_by_hand),
-    CHECK_TEST(test_inflate_fixed_by_hand),
+    CHECK_TEST(test_inflate_by_hand),
     CHECK_TEST(test_inflate_dynamic_block),
     CHECK_TEST(test_inflate_truncated),
     CHECK_TEST(test_inflate_corrupt),
