@@ -1,9 +1,6 @@
 /* The ZIP archives of tests/tools/archive.h. */
 #include "check.h"            /* first: it sets the POSIX feature level */
 
-#include <errno.h>
-#include <stdint.h>
-#include <sys/stat.h>
 
 #include "../../labs/kit/zlib.h"
 #include "../tools/archive.h"
@@ -236,7 +233,7 @@ static void test_bad_paths_refused_when_adding(void)
     Archive a;
     char err[300];
     archive_init(&a);
-    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+    for (int k = 0; k < CHECK_COUNT(bad); k++) {
         CHECK_MSG(!archive_path_ok(bad[k]), "\"%s\" accepted", bad[k]);
         CHECK_EQ_INT(archive_add_file(&a, bad[k], "x", 1, 0644, err, sizeof err), -1);
         CHECK_EQ_INT(archive_add_dir(&a, bad[k], 0755, err, sizeof err), -1);
@@ -266,7 +263,7 @@ static int replace_bytes(KitBuf *b, const char *from, const char *to)
 static void test_zip_refuses_unsafe_paths(void)
 {
     static const char *evil[] = {"../evil", "/x/evil", "x/../ev", "x//evil"};
-    for (int k = 0; k < 4; k++) {
+    for (int k = 0; k < CHECK_COUNT(evil); k++) {
         Archive a, b;
         KitBuf z = {0};
         char err[300] = "";

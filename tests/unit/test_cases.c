@@ -62,7 +62,7 @@ static void test_points_text(void)
         { 100.0 / 3, "33.33" }, { 200.0 / 3, "66.67" }, { 0.5 / 16, "0.03" },
         { -1.25, "-1.25" },     { 1e300, "1e+300" },
     };
-    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+    for (int k = 0; k < CHECK_COUNT(cases); k++) {
         PointsText got = points_text(cases[k].points);
         CHECK_MSG(strcmp(got.s, cases[k].want) == 0, "points_text(%.17g) is \"%s\", want \"%s\"",
                   cases[k].points, got.s, cases[k].want);

@@ -13,8 +13,6 @@
 #include "kit/numtext.h"
 
 #include <float.h>
-#include <math.h>
-#include <stdint.h>
 
 /* Values and their text, from the format's definition: sign, "0x", the
  * leading digit (1, or 0 for zero and subnormals), the 52-bit fraction in
@@ -34,7 +32,7 @@ static void test_known_values(void)
         { 4.9406564584124654e-324, "0x0.0000000000001p-1022" },
         { INFINITY, "inf" }, { -INFINITY, "-inf" },
     };
-    for (size_t k = 0; k < sizeof known / sizeof known[0]; k++) {
+    for (int k = 0; k < CHECK_COUNT(known); k++) {
         char out[HEXFLOAT_MAX];
         size_t n = hexfloat_format(out, known[k].x);
         CHECK_MSG(strcmp(out, known[k].text) == 0 && n == strlen(known[k].text),
@@ -120,7 +118,7 @@ static void test_hexfloat_read(void)
         "\n0x1p+0", "infinity", "-Infinity", "INF", "NAN", "nan(1)", "1.5", "", "-", "x", "0x",
         "-0x", "0xp+0",
     };
-    for (size_t k = 0; k < sizeof texts / sizeof texts[0]; k++)
+    for (int k = 0; k < CHECK_COUNT(texts); k++)
         SAME(hexfloat_read, texts[k]);
     /* Random values, each in its own text and in a line of three. */
     uint64_t s = 0x2545f4914f6cdd1du;
@@ -162,7 +160,7 @@ static void test_decimal_read(void)
         "3|4", "\n5", "5\n", "1e308", "1e-308", "4.9406564584124654e-324", "1.7976931348623157e308",
         "0.30000000000000004", "100000000000000000000000", "1000000000000000000000",
     };
-    for (size_t k = 0; k < sizeof texts / sizeof texts[0]; k++)
+    for (int k = 0; k < CHECK_COUNT(texts); k++)
         SAME(decimal_read, texts[k]);
     /* Random numbers in the forms a test file may hold. */
     static const char *const forms[] = { "%.17g", "%.15g", "%.6g", "%.3f", "%.1e", "%g", "%.0f" };
@@ -208,7 +206,7 @@ static void test_shortest(void)
         { INFINITY, "inf" }, { -INFINITY, "-inf" }, { NAN, "nan" },
     };
     char b[40];
-    for (size_t k = 0; k < sizeof known / sizeof known[0]; k++)
+    for (int k = 0; k < CHECK_COUNT(known); k++)
         CHECK_MSG(strcmp(kit_shortest_double(b, sizeof b, known[k].x), known[k].text) == 0,
                   "%a: \"%s\", not \"%s\"", known[k].x, b, known[k].text);
     uint64_t s = 0x2545f4914f6cdd1du;

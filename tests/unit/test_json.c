@@ -3,10 +3,6 @@
  * and numbers (RFC 8259) reads the text instead. */
 #include "check.h"            /* first: it sets the POSIX feature level */
 
-#include <dirent.h>
-#include <stdint.h>
-#include <sys/stat.h>
-
 #include "../tools/json.h"
 
 /* ---- an independent checker: strings in valid UTF-8, numbers (RFC 8259) ---- */
@@ -490,18 +486,7 @@ static void test_write_file(void)
     CHECK_EQ_INT(json_write_file(&w, bad, err, sizeof err), -1);
     CHECK_STR_CONTAINS(err, bad);
     json_free(&w);
-    /* nothing but results.json is left */
-    DIR *d = opendir(dir);
-    int entries = 0;
-    struct dirent *e;
-    while (d && (e = readdir(d)) != NULL)
-        if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..")) {
-            entries++;
-            CHECK(strcmp(e->d_name, "results.json") == 0);
-        }
-    if (d)
-        closedir(d);
-    CHECK_EQ_INT(entries, 1);
+    CHECK_EQ_INT(check_count_entries(dir), 1);        /* nothing but results.json is left */
     check_remove_tree(dir);
 }
 
