@@ -633,15 +633,10 @@ static void add_chunk(KitBuf *out, const char *type, const unsigned char *data, 
     unsigned char head[8], crc[4];
     put_be32(head, (uint32_t)n);
     memcpy(head + 4, type, 4);
-    unsigned char *joined = malloc(4 + n);
-    memcpy(joined, type, 4);
-    if (n)
-        memcpy(joined + 4, data, n);
-    put_be32(crc, slow_crc32(joined, 4 + n));
     kit_buf_append(out, head, 8);
     kit_buf_append(out, data, n);
+    put_be32(crc, slow_crc32(out->data + out->len - n - 4, n + 4));      /* of the type and data */
     kit_buf_append(out, crc, 4);
-    free(joined);
 }
 
 /* Builds a PNG of w x h pixels of `channels` samples (colour type ctype)
