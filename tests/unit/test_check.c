@@ -263,22 +263,24 @@ static void test_core_tolerances(void)
         char err[256];
         CHECK_MSG(tests_read(&list, cases[q].file, false, err, sizeof err) == 0, "%s", err);
         const Case *c = public_case(&list, cases[q].kind, cases[q].in, cases[q].nin);
-        CHECK_MSG(c != NULL, "%s: no case of the worked example's input", cases[q].file);
+        char what[80];                                  /* the file and the kind: the row */
+        snprintf(what, sizeof what, "%s, kind %d", cases[q].file, (int)cases[q].kind);
+        CHECK_MSG(c != NULL, "%s: no case of the worked example's input", what);
         int nout = kind_nout(cases[q].kind);
         for (int k = 0; c && k < nout; k++) {
-            CHECK_MSG(c->want[k] == cases[q].want[k], "%s: output %d expected %.17g, not %.17g", cases[q].file,
-                      k, c->want[k], cases[q].want[k]);
+            CHECK_MSG(c->want[k] == cases[q].want[k], "%s: output %d expected %.17g, not %.17g", what, k,
+                      c->want[k], cases[q].want[k]);
             double got[CASE_MAX_OUT];
             memcpy(got, cases[q].want, sizeof got);
-            CHECK_MSG(case_is_right(cases[q].kind, c, got), "%s: the exact answer is wrong", cases[q].file);
+            CHECK_MSG(case_is_right(cases[q].kind, c, got), "%s: the exact answer is wrong", what);
             for (int side = -1; side <= 1; side += 2) {
                 double unit = side * 1e-9 * cases[q].scale[k], want = cases[q].want[k];
                 got[k] = want + 0.9 * unit;
                 CHECK_MSG(case_is_right(cases[q].kind, c, got), "%s: output %d off by 0.9 of the tolerance "
-                          "(%.3g) is judged wrong", cases[q].file, k, 0.9 * unit);
+                          "(%.3g) is judged wrong", what, k, 0.9 * unit);
                 got[k] = unit ? want + 1.1 * unit : nextafter(want, side * INFINITY);
                 CHECK_MSG(!case_is_right(cases[q].kind, c, got), "%s: output %d off by %.3g (1.1 of the "
-                          "tolerance, or the least double) is judged right", cases[q].file, k, got[k] - want);
+                          "tolerance, or the least double) is judged right", what, k, got[k] - want);
                 got[k] = want;
             }
         }
