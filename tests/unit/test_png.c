@@ -282,6 +282,7 @@ static void test_inflate_by_hand(void)
     char err[200] = "";
     for (int k = 0; k < CHECK_COUNT(streams); k++) {
         const char *want = streams[k].out;
+        err[0] = '\0';
         int rc = inflate_into(streams[k].in, streams[k].n, 100, &out, err, sizeof err);
         if (want)
             CHECK_MSG(rc == 0 && out.len == strlen(want) && memcmp(out.data, want, out.len) == 0,
