@@ -4,14 +4,20 @@
 # and may define its own fail afterwards (to show more of what went wrong).
 #   pass                     counts a check that passed
 #   fail WHAT                counts one that failed and says so: "FAIL: WHAT"
-#   check WHAT COMMAND...    pass if COMMAND succeeds, else fail WHAT
+#   check WHAT COMMAND...    pass if COMMAND succeeds, else fail WHAT (and
+#                            return 1: `check ... || continue`)
+#   check_output WHAT COMMAND...
+#                            check WHAT COMMAND, its output kept in
+#                            $tmp/output and, when it fails, its first 20
+#                            lines shown: `check_output WHAT diff WANT GOT`
 #   finish                   prints "N passed, N failed", the last line that
 #                            tests/run.sh reads, and exits 0 if none failed
 #   need_built PROGRAM...    ends the suite as one failed check, naming the
 #                            first PROGRAM that is not built
 #   temp_dir NAME            sets tmp to a new directory NAME.XXXXXX under
-#                            $TMPDIR (or /tmp), or ends the suite as one
-#                            failed check
+#                            $TMPDIR (or /tmp), removed on exit (KEEP=1
+#                            keeps it and says where), or ends the suite as
+#                            one failed check
 #   fail_showing FILE N PREFIX WHAT
 #                            counts a failure as fail does, then shows the
 #                            first N lines of FILE (if not empty), each after
@@ -19,12 +25,20 @@
 #   need_selftests DIR       writes the grader's self-test submissions into
 #                            DIR, a folder each (tests/lib/selftests.sh), or
 #                            ends the suite as one failed check, with why
+#                            (as where there is no solutions/ to make them)
 # (Not in tests/suites itself: tests/run.sh runs every file there.)
 passed=0
 failed=0
 pass() { passed=$((passed + 1)); }
 fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
-check() { what=$1; shift; if "$@"; then pass; else fail "$what"; fi; }
+check() { what=$1; shift; if "$@"; then pass; else fail "$what"; return 1; fi; }
+check_output() {
+    _what=$1
+    shift
+    "$@" >"$tmp/output" 2>&1 && pass && return
+    fail_showing "$tmp/output" 20 '    | ' "$_what"
+    return 1
+}
 finish() {
     echo "$passed passed, $failed failed"
     [ "$failed" -eq 0 ] && exit 0
@@ -36,6 +50,8 @@ temp_dir() {
         echo "0 passed, 1 failed"
         exit 1
     }
+    trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
+    trap 'exit 1' HUP INT TERM
 }
 fail_showing() {
     _show_file=$1 _show_lines=$2 _show_prefix=$3
@@ -56,6 +72,11 @@ need_built() {
     done
 }
 need_selftests() {
+    if [ ! -d solutions ]; then
+        echo "FAIL: no solutions/ here: run this from the instructor's kit"
+        echo "$passed passed, $((failed + 1)) failed"
+        exit 1
+    fi
     if ! selftests_said=$(sh tests/lib/selftests.sh "$1" 2>&1); then
         printf '%s\n' "$selftests_said"
         echo "FAIL: the self-tests of tests/selftest could not be written out (tests/lib/selftests.sh)"

@@ -25,8 +25,7 @@ set -u
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 top=$(pwd)
 . tests/lib/checks.sh
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtclassroom.XXXXXX") || { echo "0 passed, 1 failed"; exit 1; }
-trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
+temp_dir rtclassroom
 chmod 755 "$tmp"
 # The self-test submissions, a folder each.
 selftest=$tmp/selftest
@@ -190,8 +189,7 @@ js_checks() {
         if [ -f "$tmp/js.$k.out" ]; then
             awk "$pts"' { print $1, pts($2) }' "$tmp/js.$k.out" >"$tmp/js.$k.pts"
             awk "$pts"' { print $1, pts($2) }' "$tmp/c.$k.out" >"$tmp/c.$k.pts"
-            check "$label: JavaScript's totals are reporter()'s" cmp -s "$tmp/c.$k.pts" "$tmp/js.$k.pts"
-            cmp -s "$tmp/c.$k.pts" "$tmp/js.$k.pts" || diff "$tmp/c.$k.pts" "$tmp/js.$k.pts" | sed 's/^/    | /'
+            check_output "$label: JavaScript's totals are reporter()'s" diff "$tmp/c.$k.pts" "$tmp/js.$k.pts"
         else
             fail "$label: the JavaScript check failed: $(head -n 3 "$tmp/js.$k.err" 2>/dev/null)"
         fi
@@ -359,10 +357,8 @@ for case in full partial broken zero; do
 done
 # The partial submission (p1-aspect-inverted with p3a-tangent-miss): each
 # runner's points as committed (Part 1 at 2.5 / 20, Part 3a at 28.33 / 30).
-check "instructor's kit, partial: the reporter's view is tests/classroom/expected/partial.totals" \
-    cmp -s "$tmp/i-partial.totals" tests/classroom/expected/partial.totals
-cmp -s "$tmp/i-partial.totals" tests/classroom/expected/partial.totals ||
-    diff tests/classroom/expected/partial.totals "$tmp/i-partial.totals" | head -n 20 | sed 's/^/    | /'
+check_output "instructor's kit, partial: the reporter's view is tests/classroom/expected/partial.totals" \
+    diff tests/classroom/expected/partial.totals "$tmp/i-partial.totals"
 decode "$(cut -d= -f1 "$tmp/i-full.outputs" | paste -s -d, -)" "$tmp/i-full.env" >"$tmp/i-full.dump"
 check "instructor's kit: hidden tests are among the runners" grep -q '"name":"Part 3a: hidden: ' "$tmp/i-full.dump"
 decode part2test1 "$tmp/i-broken.env" >"$tmp/broken.json"

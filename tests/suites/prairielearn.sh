@@ -24,8 +24,7 @@
 set -u
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 . tests/lib/checks.sh
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtprairielearn.XXXXXX") || { echo "0 passed, 1 failed"; exit 1; }
-trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
+temp_dir rtprairielearn
 chmod 755 "$tmp"
 # The self-test submissions, a folder each.
 selftest=$tmp/selftest

@@ -19,18 +19,12 @@ unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 grade=${GRADE:-out/build/bin/grade}   # make sanitize-grader: the sanitized one
 check_html=out/build/bin/htmlcheck
 compare=out/build/bin/compare
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtreport.XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
-chmod 755 "$tmp"
 . tests/lib/checks.sh
 . tests/lib/browser.sh
+temp_dir rtreport
+chmod 755 "$tmp"
 
 need_built "$grade" "$check_html" "$compare"
-if [ ! -d solutions ]; then
-    echo "FAIL: no solutions/ here: run this from the instructor's kit"
-    echo "0 passed, 1 failed"
-    exit 1
-fi
 selftest=$tmp/selftest
 need_selftests "$selftest"
 
@@ -41,7 +35,7 @@ good='<!DOCTYPE html>
 <body><p id="a">x &amp; y <a href="#a">here</a></p><img src="data:image/png;base64,iVBORw0KGgo=" alt="">
 <figure class="case"><svg width="4" height="4"><circle r="1"/></svg></figure></body></html>'
 printf '%s\n' "$good" >"$tmp/good.html"
-check "htmlcheck passes a good page" sh -c "'$check_html' '$tmp/good.html' >/dev/null 2>&1"
+check_output "htmlcheck passes a good page" "$check_html" "$tmp/good.html"
 check "htmlcheck counts its figure" sh -c "'$check_html' '$tmp/good.html' 2>/dev/null | grep -qx 'figures 1'"
 n=0
 while IFS='|' read -r what from to; do
@@ -139,18 +133,9 @@ subs="$core $flat"
 for name in $subs reference; do
     page=$tmp/grades/$name.html
     json=$tmp/grades/$name.json
-    if [ ! -s "$page" ]; then
-        fail "$name: no page $page"
-        continue
-    fi
-    pass
-    if "$check_html" "$page" >"$tmp/check.out" 2>&1; then
-        pass
-    else
-        fail "$name: the page is not valid:"
-        sed -n '1,8s/^/    | /p' "$tmp/check.out"
-    fi
-    figures=$(sed -n 's/^figures //p' "$tmp/check.out")
+    check "$name: no page $page" [ -s "$page" ] || continue
+    check_output "$name: the page is not valid:" "$check_html" "$page"
+    figures=$(sed -n 's/^figures //p' "$tmp/output")
     failing=$(grep -c '"status": "failed"' "$json")
     # A test of a part whose file did not build could not run: it has no
     # figure, only its name in the part's folded list.
@@ -271,15 +256,11 @@ normal_shown() {
 # the winding of a, b, c, in every such figure of two pages, gives the
 # sign of det = (b - a).(r x (c - a)), worked out here from the case's
 # input (at least one of each sign).
-awk "$awk_attr"'
+check "Part 5's figure is the eye's view along the ray, not its mirror image: a left of c, b above" awk "$awk_attr"'
     index($0, "Part 5: both sides count</h4>") { on = 1 }
     on && />[abc]<\/text>/ { v = substr($0, index($0, "</text>") - 1, 1); x[v] = attr($0, "x"); y[v] = attr($0, "y"); n++ }
     on && /<\/figure>/ { exit }
-    END { exit !(n == 3 && x["a"] < x["c"] && y["b"] < y["a"] && y["b"] < y["c"]) }' \
-    "$page/p5-one-sided.html" >/dev/null
-upright=$?
-check "Part 5's figure is the eye's view along the ray, not its mirror image: a left of c, b above" \
-    [ "$upright" -eq 0 ]
+    END { exit !(n == 3 && x["a"] < x["c"] && y["b"] < y["a"] && y["b"] < y["c"]) }' "$page/p5-one-sided.html"
 # sign_notes NOTE INPUT BODY PAGE...: each figure note on the pages (a line
 # matching the ERE NOTE, saying "&gt; 0", "&lt; 0" or "= 0") against the
 # sign of a number worked out from the case's input that follows it (a
@@ -306,24 +287,20 @@ sign_notes() {
         }
         END { printf "%d %d %d\n", wrong, seen[1], seen[-1]; exit !(wrong == 0 && seen[1] > 0 && seen[-1] > 0) }' "$@"
 }
-sign_notes 'Drawn as seen looking along the ray' 'input: *a[.]x = ' '
+check_output "Part 5's note on a, b, c's winding gives det's sign, worked out from each case (shown: wrong, det > 0, det < 0)" \
+    sign_notes 'Drawn as seen looking along the ray' 'input: *a[.]x = ' '
     e1x = val["b.x"] - val["a.x"]; e1y = val["b.y"] - val["a.y"]; e1z = val["b.z"] - val["a.z"]
     e2x = val["c.x"] - val["a.x"]; e2y = val["c.y"] - val["a.y"]; e2z = val["c.z"] - val["a.z"]
     det = e1x * (val["r.y"] * e2z - val["r.z"] * e2y) + e1y * (val["r.z"] * e2x - val["r.x"] * e2z)
     return det + e1z * (val["r.x"] * e2y - val["r.y"] * e2x)' \
-    "$page/p5-one-sided.html" "$page/p5-strict-edges.html" >"$tmp/winding"
-winding=$?
-check "Part 5's note on a, b, c's winding gives det's sign, worked out from each case (wrong, det > 0, det < 0: $(cat "$tmp/winding"))" \
-    [ "$winding" -eq 0 ]
+    "$page/p5-one-sided.html" "$page/p5-strict-edges.html"
 # Part 4's figure says which side the ray comes from: its note's sign of
 # r.n, in every plane figure of two pages, against r.n worked out here from
 # the case's input (at least one of each sign).
-sign_notes 'The ray comes at the plane from|The ray is parallel to the plane' 'input: *p[.]x = ' '
+check_output "Part 4's note on the side the ray comes from gives r.n's sign, worked out from each case (shown: wrong, r.n > 0, r.n < 0)" \
+    sign_notes 'The ray comes at the plane from|The ray is parallel to the plane' 'input: *p[.]x = ' '
     return val["r.x"] * val["n.x"] + val["r.y"] * val["n.y"] + val["r.z"] * val["n.z"]' \
-    "$page/p4-one-sided.html" "$page/p4-hits-behind.html" >"$tmp/sides"
-sides=$?
-check "Part 4's note on the side the ray comes from gives r.n's sign, worked out from each case (wrong, r.n > 0, r.n < 0: $(cat "$tmp/sides"))" \
-    [ "$sides" -eq 0 ]
+    "$page/p4-one-sided.html" "$page/p4-hits-behind.html"
 check "Part 4's figure, the normal along the ray: it is drawn in the window, off the ray" \
     normal_shown "$page/p4-one-sided.html" "both sides of the plane count</h4>"
 check "Part 4's figure, the plane's nearest point at the window's top: the normal is drawn in the window" \
@@ -379,10 +356,8 @@ grazing_drawn() {
         exit !(F > 1 && dy >= 30 && off <= 1.5 && ratio > 0.99 && ratio < 1.01)
     }' "$1"
 }
-grazing_drawn "$page/p4-float.html" "rounding: grazing ray, 1e-12..1e-3 off the plane" >"$tmp/grazing"
-grazing=$?
-check "Part 4's figure, a grazing ray: heights stretched and said so, the plane's slope true to F ($(cat "$tmp/grazing"))" \
-    [ "$grazing" -eq 0 ]
+check_output "Part 4's figure, a grazing ray: heights stretched and said so, the plane's slope true to F (shown: how it is drawn)" \
+    grazing_drawn "$page/p4-float.html" "rounding: grazing ray, 1e-12..1e-3 off the plane"
 check "Part 4's figure, a plane not grazed: drawn to scale" \
     sh -c "! grep -q 'heights off the ray stretched' '$page/p4-hits-behind.html'"
 check "the scores are at the top" sh -c "grep -n 'id=\"scores\"' '$page/p3a-far-root.html' | \
@@ -393,7 +368,7 @@ make -s --no-print-directory grade SUBMISSION="$tmp/subs/p2-y-not-flipped" PART=
 check "make grade writes out/report/index.html" test -s out/report/index.html
 check "make grade's output ends with the page's path" \
     sh -c "grep -v '^make' '$tmp/make.out' | tail -n 1 | grep -q 'out/report/index.html'"
-check "make grade's page is valid" sh -c "'$check_html' out/report/index.html >/dev/null 2>&1"
+check_output "make grade's page is valid" "$check_html" out/report/index.html
 check "make grade's last line, with failures: the page has their pictures" \
     sh -c "grep -v '^make' '$tmp/make.out' | tail -n 1 | grep -q 'pictures of every failure'"
 make -s --no-print-directory grade SUBMISSION=solutions PART=2 >"$tmp/make-full.out" 2>&1
