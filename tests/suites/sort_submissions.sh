@@ -10,17 +10,21 @@
 # it is given the download itself.
 set -u
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtsort.XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
 . tests/lib/checks.sh
+temp_dir rtsort
 pack=out/build/bin/pack
 sortsubs=${SORTSUBS:-out/build/bin/sortsubs}   # make sanitize-grader: the sanitized one
 grade=${GRADE:-out/build/bin/grade}
 need_built "$sortsubs" "$pack" "$grade"
 selftest=$tmp/selftest
 need_selftests "$selftest"
-sort_subs() {   # sort_subs FROM TO: the sorter, its output in $tmp/out
+sort_subs() {   # sort_subs FROM TO: the sorter, its output in $tmp/out, its exit in status
     "$sortsubs" "$1" "$2" >"$tmp/out" 2>&1
+    status=$?
+}
+make_sort() {   # make_sort VAR=VALUE...: make sort-submissions, as sort_subs
+    make -s --no-print-directory sort-submissions "$@" >"$tmp/out" 2>&1
+    status=$?
 }
 folders() {     # folders DIR: the names of DIR's folders, each followed by a space
     (cd "$1" && ls -d */ | tr -d / | tr '\n' ' ')
@@ -45,8 +49,7 @@ mkdir "$dl/__MACOSX" && echo x >"$dl/__MACOSX/._smithbob_340934_208490284_part1_
 echo x >"$dl/.DS_Store"
 $pack zip "$tmp/canvas.zip" "$dl" >/dev/null 2>&1
 
-make -s --no-print-directory sort-submissions FROM="$tmp/canvas.zip" TO="$tmp/sorted" >"$tmp/out" 2>&1
-status=$?
+make_sort FROM="$tmp/canvas.zip" TO="$tmp/sorted"
 check "a Canvas zip, through make sort-submissions: sorted (exit 0)" [ "$status" -eq 0 ]
 check "each submission in a folder of its own, named for the student and the user id" \
     [ "$(folders "$tmp/sorted")" = 'leeann_77 smithbob_340934 wellslane_334244 ' ]
@@ -69,7 +72,6 @@ check "no temporary folder is left beside it" sh -c "! ls -d '$tmp'/sorted.sorti
 
 # The same download unpacked into a folder: the same folders and files.
 sort_subs "$dl" "$tmp/sorted-dir"
-status=$?
 check "a Canvas download's folder: the same as its zip" \
     sh -c "[ $status -eq 0 ] && cd '$tmp' && [ \"\$(find sorted -type f | sed 's|^sorted/||' | grep -v sorted.txt | sort)\" = \"\$(find sorted-dir -type f | sed 's|^sorted-dir/||' | grep -v sorted.txt | sort)\" ]"
 
@@ -81,7 +83,6 @@ cp solutions/part1_image_plane.c "$a/anon_Xy3Ab_208490284_part1_image_plane.c"
 cp solutions/part2_pixel_coordinates.c "$a/anon_Xy3Ab_208490285_part2_pixel_coordinates.c"
 cp solutions/part1_image_plane.c "$a/LATE_anon_9kPqR_394803489_part1_image_plane.c"
 sort_subs "$a" "$tmp/sorted-anon"
-status=$?
 check "a Canvas download graded anonymously: a folder per anonymous id, the files under their own names" \
     sh -c "[ $status -eq 0 ] && [ '$(folders "$tmp/sorted-anon")' = 'anon_9kPqR anon_Xy3Ab ' ] &&
            cmp -s solutions/part2_pixel_coordinates.c '$tmp/sorted-anon/anon_Xy3Ab/part2_pixel_coordinates.c' &&
@@ -103,7 +104,6 @@ cp solutions/part2_pixel_coordinates.c "$m/Bo Chen_654321_assignsubmission_file_
 cp solutions/part3a_sphere_intersect.c "$m/Cy Diaz_111_assignsubmission_file_part3a_sphere_intersect.c"
 $pack zip "$tmp/moodle.zip" "$m" >/dev/null 2>&1
 sort_subs "$tmp/moodle.zip" "$tmp/msorted"
-status=$?
 check "a Moodle zip, with folders and without: sorted (exit 0)" [ "$status" -eq 0 ]
 check "Moodle: a folder per submission, named for the student and the participant id" \
     sh -c "[ -f '$tmp/msorted/Ann Lee_123456/part1_image_plane.c' ] && [ -f '$tmp/msorted/Bo Chen_654321/part2_pixel_coordinates.c' ] &&
@@ -125,7 +125,6 @@ for a in "jsmith_attempt_$early" "jsmith_attempt_$late" "20103940_attempt_$early
 done
 $pack zip "$tmp/blackboard.zip" "$b" >/dev/null 2>&1
 sort_subs "$tmp/blackboard.zip" "$tmp/bsorted"
-status=$?
 check "a Blackboard zip: a folder per username, the files under their own names" \
     sh -c "[ $status -eq 0 ] && [ '$(folders "$tmp/bsorted")' = '20103940 jsmith ' ] &&
            cmp -s solutions/part2_pixel_coordinates.c '$tmp/bsorted/jsmith/part2_pixel_coordinates.c' &&
@@ -145,7 +144,6 @@ mkdir "$e"
 cp solutions/part1_image_plane.c "$e/$(printf 'Di\033[2JEck')_7_assignsubmission_file_part1_image_plane.c"
 echo x >"$e/$(printf 'x\033]0;title\007y.txt')"
 sort_subs "$e" "$tmp/esorted"
-status=$?
 check "names with escape sequences: sorted, shown as ^[ and ^G, and no ESC or BEL printed" \
     sh -c "[ $status -eq 0 ] && grep -qF 'Di^[[2JEck_7' '$tmp/out' && grep -qF 'x^[]0;title^Gy.txt' '$tmp/out' &&
            ! grep -q \"\$(printf '[\\033\\007]')\" '$tmp/out'"
@@ -153,29 +151,23 @@ check "names with escape sequences: sorted, shown as ^[ and ^G, and no ESC or BE
 # ---- refused, nothing written ------------------------------------------------
 mkdir "$tmp/full" && echo x >"$tmp/full/keep.txt"
 sort_subs "$tmp/canvas.zip" "$tmp/full"
-status=$?
 check "TO not empty: refused (exit 1), its files untouched" \
     sh -c "[ $status -eq 1 ] && grep -q 'it is not empty' '$tmp/out' && [ \"\$(ls '$tmp/full')\" = keep.txt ]"
 mkdir "$tmp/empty"
 sort_subs "$tmp/canvas.zip" "$tmp/empty"
-status=$?
 check "TO an empty folder: sorted into it" sh -c "[ $status -eq 0 ] && [ -d '$tmp/empty/smithbob_340934' ]"
 mkdir "$tmp/plain" && cp solutions/part1_image_plane.c "$tmp/plain/"
 sort_subs "$tmp/plain" "$tmp/none"
-status=$?
 check "no file named as a download names them: refused (exit 1), nothing written" \
     sh -c "[ $status -eq 1 ] && grep -q 'holds no file named as Canvas, Moodle or Blackboard' '$tmp/out' && [ ! -e '$tmp/none' ] &&
            ! ls -d '$tmp'/none.sorting.* >/dev/null 2>&1"
 sort_subs "$tmp/no-such.zip" "$tmp/none"
-status=$?
 check "a download that is not there: refused (exit 1)" sh -c "[ $status -eq 1 ] && [ ! -e '$tmp/none' ]"
 printf 'PK not a zip' >"$tmp/bad.zip"
 sort_subs "$tmp/bad.zip" "$tmp/none"
-status=$?
 check "a zip that is not one: refused (exit 1), nothing written" \
     sh -c "[ $status -eq 1 ] && grep -q 'could not be read' '$tmp/out' && [ ! -e '$tmp/none' ]"
-make -s --no-print-directory sort-submissions FROM="$tmp/canvas.zip" >"$tmp/out" 2>&1
-status=$?
+make_sort FROM="$tmp/canvas.zip"
 check "make sort-submissions without TO: its usage (exit 2)" sh -c "[ $status -eq 2 ] && grep -q 'usage: make sort-submissions' '$tmp/out'"
 
 # ---- a download that would unpack to too much: refused before it is unpacked ----
@@ -187,20 +179,16 @@ mkdir "$bomb"
 dd if=/dev/zero of="$bomb/smithbob_340934_208490284_part1_image_plane.c" bs=1048576 count=8 2>/dev/null
 $pack zip "$tmp/bomb.zip" "$bomb" >/dev/null 2>&1
 sort_subs "$tmp/bomb.zip" "$tmp/none"
-status=$?
 check "a zip whose file unpacks to over 100 times its size: refused (exit 1), nothing written" \
     sh -c "[ $status -eq 1 ] && grep -q 'more than 100 times as many (a zip bomb?); nothing written' '$tmp/out' && [ ! -e '$tmp/none' ]"
-make -s --no-print-directory sort-submissions FROM="$tmp/bomb.zip" TO="$tmp/none" MAX_RATIO=100000 MAX_MB=4 >"$tmp/out" 2>&1
-status=$?
+make_sort FROM="$tmp/bomb.zip" TO="$tmp/none" MAX_RATIO=100000 MAX_MB=4
 check "with MAX_RATIO raised, a zip over MAX_MB=4: refused (make fails), nothing written" \
     sh -c "[ $status -ne 0 ] && grep -q 'unpacks to more than 4 MiB' '$tmp/out' && [ ! -e '$tmp/none' ]"
-make -s --no-print-directory sort-submissions FROM="$tmp/bomb.zip" TO="$tmp/none" MAX_RATIO=100000 MAX_MB=16 >"$tmp/out" 2>&1
-status=$?
+make_sort FROM="$tmp/bomb.zip" TO="$tmp/none" MAX_RATIO=100000 MAX_MB=16
 check "with both raised, the same zip is sorted (exit $status, want 0)" \
     sh -c "[ $status -eq 0 ] && [ \$(wc -c <'$tmp/none/smithbob_340934/part1_image_plane.c') -eq 8388608 ]"
 rm -rf "$tmp/none"
-make -s --no-print-directory sort-submissions FROM="$tmp/bomb.zip" TO="$tmp/none" MAX_MB=lots >"$tmp/out" 2>&1
-status=$?
+make_sort FROM="$tmp/bomb.zip" TO="$tmp/none" MAX_MB=lots
 check "MAX_MB that is not a number: the usage (make fails)" sh -c "[ $status -ne 0 ] && grep -q 'max-mb' '$tmp/out' && [ ! -e '$tmp/none' ]"
 
 # ---- grade-all given the download itself names the sorter ------------------
