@@ -20,19 +20,11 @@ COMPARE=${COMPARE:-out/build/bin/compare}
 temp_dir render_cli
 # `make compare SUBMISSION=$tmp/...` builds in out/build/sub/<path with / as _>.
 trap 'rm -rf "$tmp" "$top/out/build/sub/$(printf "%s" "$tmp" | tr / _)"_*' EXIT
-trap 'exit 1' HUP INT TERM
 
-# absolute PATH: prints PATH made absolute (relative to the top directory).
-absolute() {
-    case $1 in
-        /*) echo "$1" ;;
-        *) echo "$top/$1" ;;
-    esac
-}
-RENDER=$(absolute "$RENDER")
-RENDER_LABS=$(absolute "$RENDER_LABS")
-RENDER_ASAN=$(absolute "$RENDER_ASAN")
-COMPARE=$(absolute "$COMPARE")
+# The programs by absolute paths (a relative one is from the top directory).
+for v in RENDER RENDER_LABS RENDER_ASAN COMPARE; do
+    eval "case \$$v in /*) ;; *) $v=\$top/\$$v ;; esac"
+done
 
 # fail WHAT: counts a failure, shown with what went wrong.
 fail() { fail_showing "$tmp/stderr" 5 '    stderr: ' "$@"; }
@@ -65,6 +57,19 @@ crashed() {
     return 1
 }
 
+# exited WHAT N: true when the last run exited N; otherwise counts a
+# failure that says how it ended instead (a crash, or another status).
+exited() {
+    if crashed; then
+        fail "$1 crashed (exit $status)"
+    elif [ "$status" -ne "$2" ]; then
+        fail "$1: exit $status, want $2"
+    else
+        return 0
+    fi
+    return 1
+}
+
 # png_size FILE: prints "W H" from the PNG's header, or nothing if it is no PNG.
 png_size() {
     [ -f "$1" ] || return 0
@@ -85,11 +90,8 @@ for scene in labs/scenes/*.scene; do
     out="$tmp/$name.png"
     run "$RENDER" "$scene" -o "$out"
     want=$(scene_size "$scene")
-    if crashed; then
-        fail "render $scene crashed (exit $status)"
-    elif [ "$status" -ne 0 ]; then
-        fail "render $scene: exit $status, want 0"
-    elif [ "$(png_size "$out")" != "$want" ]; then
+    exited "render $scene" 0 || continue
+    if [ "$(png_size "$out")" != "$want" ]; then
         fail "render $scene: $out is '$(png_size "$out")', want a PNG of $want"
     elif ! grep -q "^rendered $name.scene $(echo "$want" | tr ' ' x) with [0-9]* threads* in [0-9.]* s: [0-9.]* million rays/s" "$tmp/stdout"; then
         fail "render $scene: no summary line: $(head -n 1 "$tmp/stdout")"
@@ -104,29 +106,22 @@ done
 mkdir "$tmp/home"
 (cd "$tmp/home" && "$RENDER" "$top/labs/scenes/flip.scene" --quiet >"$tmp/stdout" 2>"$tmp/stderr")
 status=$?
-if [ "$status" -eq 0 ] && [ "$(png_size "$tmp/home/out/flip.png")" = "320 320" ] && [ ! -s "$tmp/stdout" ]; then
-    pass
-else
-    fail "render flip.scene --quiet without -o: exit $status, out/flip.png '$(png_size "$tmp/home/out/flip.png")'"
-fi
+got=$(png_size "$tmp/home/out/flip.png")
+check "render flip.scene --quiet without -o: exit $status, out/flip.png '$got', want 0, '320 320' and no output" \
+    sh -c "[ $status -eq 0 ] && [ '$got' = '320 320' ] && [ ! -s '$tmp/stdout' ]"
 
 # A PPM output when the name ends in .ppm.
 run "$RENDER" labs/scenes/flip.scene --size 16x8 --threads 1 -o "$tmp/flip.ppm"
-if [ "$status" -eq 0 ] && [ "$(head -c 2 "$tmp/flip.ppm" 2>/dev/null)" = "P6" ]; then
-    pass
-else
-    fail "render -o flip.ppm: exit $status, want a P6 file"
-fi
+check "render -o flip.ppm: exit $status, want a P6 file" \
+    sh -c "[ $status -eq 0 ] && [ \"\$(head -c 2 '$tmp/flip.ppm' 2>/dev/null)\" = P6 ]"
 
 # ---- --size overrides the scene's size ------------------------------------
 for size in 37x23 1x1 1x300 300x1; do
     run "$RENDER" labs/scenes/default.scene --size "$size" -o "$tmp/sized.png"
-    if [ "$status" -eq 0 ] && [ "$(png_size "$tmp/sized.png")" = "$(echo "$size" | tr x ' ')" ] &&
-        grep -q "^rendered default.scene $size with" "$tmp/stdout"; then
-        pass
-    else
-        fail "render --size $size: exit $status, image '$(png_size "$tmp/sized.png")'"
-    fi
+    got=$(png_size "$tmp/sized.png")
+    check "render --size $size: exit $status, image '$got'" \
+        sh -c "[ $status -eq 0 ] && [ '$got' = '$(echo "$size" | tr x ' ')' ] &&
+               grep -q '^rendered default.scene $size with' '$tmp/stdout'"
     rm -f "$tmp/sized.png"
 done
 
@@ -134,12 +129,9 @@ done
 run "$RENDER" labs/scenes/default.scene --size 160x120 --threads 1 -o "$tmp/t1.png"
 status1=$status
 run "$RENDER" labs/scenes/default.scene --size 160x120 --threads 3 -o "$tmp/t3.png"
-if [ "$status1" -eq 0 ] && [ "$status" -eq 0 ] && grep -q "with 3 threads" "$tmp/stdout" &&
-    cmp -s "$tmp/t1.png" "$tmp/t3.png"; then
-    pass
-else
-    fail "render --threads 1 and --threads 3: exits $status1 $status, or the images differ"
-fi
+check "render --threads 1 and --threads 3: exits $status1 $status, or the images differ" \
+    sh -c "[ $status1 -eq 0 ] && [ $status -eq 0 ] && grep -q 'with 3 threads' '$tmp/stdout' &&
+           cmp -s '$tmp/t1.png' '$tmp/t3.png'"
 
 # ---- bad command lines: exit 2 and the usage ------------------------------
 # refused WHAT PROGRAM ARGS...: passes when PROGRAM exits 2 without a crash,
@@ -148,42 +140,24 @@ refused() {
     what=$1
     shift
     run "$@"
-    if crashed; then
-        fail "$what crashed (exit $status)"
-    elif [ "$status" -ne 2 ]; then
-        fail "$what: exit $status, want 2"
-    elif [ "$1" = "$RENDER" ] && ! grep -q "usage: render" "$tmp/stderr"; then
-        fail "$what: no usage on stderr"
-    else
-        pass
-    fi
+    exited "$what" 2 || return 0
+    case $1 in
+    "$RENDER") check "$what: no usage on stderr" grep -q "usage: render" "$tmp/stderr" ;;
+    *) pass ;;
+    esac
 }
-bad_usage() {   # bad_usage WHAT ARGS...
-    what=$1
-    shift
-    refused "render $what" "$RENDER" "$@"
-}
-bad_usage "(no arguments)"
-bad_usage "--size 0x5" labs/scenes/default.scene --size 0x5 -o "$tmp/u.png"
-bad_usage "--size 5x" labs/scenes/default.scene --size 5x -o "$tmp/u.png"
-bad_usage "--size abc" labs/scenes/default.scene --size abc -o "$tmp/u.png"
-bad_usage "--size 99999x2" labs/scenes/default.scene --size 99999x2 -o "$tmp/u.png"
-bad_usage "--size 16385x1" labs/scenes/default.scene --size 16385x1 -o "$tmp/u.png"
-bad_usage "--size 5x5x5" labs/scenes/default.scene --size 5x5x5 -o "$tmp/u.png"
-bad_usage "--size -5x5" labs/scenes/default.scene --size -5x5 -o "$tmp/u.png"
-bad_usage "--size 99999999999999999999x5" labs/scenes/default.scene --size 99999999999999999999x5 -o "$tmp/u.png"
-bad_usage "--size (no value)" labs/scenes/default.scene --size
-bad_usage "--threads abc" labs/scenes/default.scene --threads abc -o "$tmp/u.png"
-bad_usage "--threads 0" labs/scenes/default.scene --threads 0 -o "$tmp/u.png"
-bad_usage "-o (no value)" labs/scenes/default.scene -o
-bad_usage "-o x.jpg" labs/scenes/default.scene -o "$tmp/u.jpg"
-bad_usage "--bogus" labs/scenes/default.scene --bogus
-bad_usage "(two scenes)" labs/scenes/default.scene labs/scenes/flip.scene
-if [ -e "$tmp/u.png" ] || [ -e "$tmp/u.jpg" ]; then
-    fail "a refused command line still wrote an image"
-else
-    pass
-fi
+refused "render (no arguments)" "$RENDER"
+# each an option and a value it refuses (split on the space)
+for bad in "--size 0x5" "--size 5x" "--size abc" "--size 99999x2" "--size 16385x1" "--size 5x5x5" \
+           "--size -5x5" "--size 99999999999999999999x5" "--threads abc" "--threads 0"; do
+    refused "render $bad" "$RENDER" labs/scenes/default.scene $bad -o "$tmp/u.png"
+done
+refused "render --size (no value)" "$RENDER" labs/scenes/default.scene --size
+refused "render -o (no value)" "$RENDER" labs/scenes/default.scene -o
+refused "render -o x.jpg" "$RENDER" labs/scenes/default.scene -o "$tmp/u.jpg"
+refused "render --bogus" "$RENDER" labs/scenes/default.scene --bogus
+refused "render (two scenes)" "$RENDER" labs/scenes/default.scene labs/scenes/flip.scene
+check "a refused command line still wrote an image" sh -c "[ ! -e '$tmp/u.png' ] && [ ! -e '$tmp/u.jpg' ]"
 
 # ---- bad scenes: exit 1, "file:line: reason", no image, never a crash -----
 # bad_scene PROGRAM NAME LINE WORD [LINES...]: writes the LINES to
@@ -198,14 +172,11 @@ bad_scene() {
     check_bad_scene "$program" "$file" "$name.scene" "$line" "$word"
 }
 check_bad_scene() {   # check_bad_scene PROGRAM FILE NAME LINE WORD
-    [ -e "$tmp/bad-out.png" ] && rm -f "$tmp/bad-out.png"
+    rm -f "$tmp/bad-out.png"
     run "$1" "$2" -o "$tmp/bad-out.png"
     if [ "$4" = "-" ]; then where="$3: "; else where="$3:$4: "; fi
-    if crashed; then
-        fail "${1##*/} $3 crashed (exit $status)"
-    elif [ "$status" -ne 1 ]; then
-        fail "${1##*/} $3: exit $status, want 1"
-    elif case $stderr_text in *"$where"*) false ;; *) true ;; esac then
+    exited "${1##*/} $3" 1 || return 0
+    if case $stderr_text in *"$where"*) false ;; *) true ;; esac then
         fail "${1##*/} $3: the message does not say '$where'"
     elif case $stderr_text in *"$5"*) false ;; *) true ;; esac then
         fail "${1##*/} $3: the message does not say '$5'"
@@ -300,39 +271,24 @@ bad_scenes "$RENDER"
 mkdir -p "$tmp/w/x.png"
 run "$RENDER" labs/scenes/flip.scene --size 40x40 -o "$tmp/w/x.png"
 left=$(ls -A "$tmp/w")
-if crashed; then
-    fail "render -o onto a directory crashed (exit $status)"
-elif [ "$status" -ne 1 ] || [ "$left" != "x.png" ] || [ ! -d "$tmp/w/x.png" ]; then
-    fail "render -o onto a directory: exit $status, left '$left'"
-elif ! grep -q "x.png" "$tmp/stderr"; then
-    fail "render -o onto a directory: the message does not name the file"
-else
-    pass
-fi
+exited "render -o onto a directory" 1 &&
+    check "render -o onto a directory: it left '$left' (want the directory x.png alone), or the message does not name it" \
+        sh -c "[ '$left' = x.png ] && [ -d '$tmp/w/x.png' ] && grep -q x.png '$tmp/stderr'"
 run "$RENDER" labs/scenes/flip.scene --size 40x40 -o "$tmp/no/such/dir/x.png"
-if [ "$status" -eq 1 ] && [ ! -e "$tmp/no" ] && grep -q "x.png" "$tmp/stderr"; then
-    pass
-else
-    fail "render -o into a missing directory: exit $status"
-fi
+check "render -o into a missing directory: exit $status" \
+    sh -c "[ $status -eq 1 ] && [ ! -e '$tmp/no' ] && grep -q x.png '$tmp/stderr'"
 
 # ---- compare ---------------------------------------------------------------
 run "$RENDER" labs/scenes/default.scene --size 120x90 --quiet -o "$tmp/ref.png"
 run "$COMPARE" "$tmp/ref.png" "$tmp/ref.png"
-if [ "$status" -eq 0 ] && grep -q "identical" "$tmp/stdout"; then
-    pass
-else
-    fail "compare of an image with itself: exit $status, want 0 and 'identical'"
-fi
+check "compare of an image with itself: exit $status, want 0 and 'identical'" \
+    sh -c "[ $status -eq 0 ] && grep -q identical '$tmp/stdout'"
 
 # the same render as PPM compares identical with the PNG
 run "$RENDER" labs/scenes/default.scene --size 120x90 --quiet -o "$tmp/ref.ppm"
 run "$COMPARE" "$tmp/ref.ppm" "$tmp/ref.png" -o "$tmp/same-side.png"
-if [ "$status" -eq 0 ] && grep -q "identical" "$tmp/stdout" && [ -f "$tmp/same-side.png" ]; then
-    pass
-else
-    fail "compare of the PPM and the PNG of one render: exit $status, want 0"
-fi
+check "compare of the PPM and the PNG of one render: exit $status, want 0" \
+    sh -c "[ $status -eq 0 ] && grep -q identical '$tmp/stdout' && [ -f '$tmp/same-side.png' ]"
 
 # the skeleton's render (the background only) against the reference's
 run "$RENDER_LABS" labs/scenes/default.scene --size 120x90 --quiet -o "$tmp/sub.png"
@@ -340,10 +296,8 @@ run "$COMPARE" "$tmp/sub.png" "$tmp/ref.png" -o "$tmp/side.png"
 size=$(png_size "$tmp/side.png")
 width=${size% *}
 height=${size#* }
-if crashed; then
-    fail "compare of the skeleton's render crashed (exit $status)"
-elif [ "$status" -ne 1 ]; then
-    fail "compare of the skeleton's render with the reference: exit $status, want 1"
+if ! exited "compare of the skeleton's render with the reference" 1; then
+    :
 elif ! grep -q "differ" "$tmp/stdout" || ! grep -q "PSNR" "$tmp/stdout" || ! grep -q "%" "$tmp/stdout"; then
     fail "compare: no share of differing pixels or PSNR in: $(tr '\n' ' ' <"$tmp/stdout")"
 elif [ -z "$size" ] || [ "$height" -ne $((90 + 11)) ] || [ "$width" -le 360 ] || [ "$width" -gt $((360 + 2 * 16)) ] ||
@@ -355,7 +309,7 @@ fi
 
 # The self-test submissions, a folder each (the instructor's kit).
 selftest=$tmp/selftest
-[ -d solutions ] && [ -d tests/selftest ] && need_selftests "$selftest"
+need_selftests "$selftest"
 
 # A correct submission written independently of solutions/
 # (tests/selftest/independent: the geometric method, the plain pixel
@@ -366,7 +320,7 @@ selftest=$tmp/selftest
 # shows the cracks of a triangle test that is not watertight: its Part 5
 # is Moller-Trumbore (tests/selftest/moller-trumbore, the skeleton's
 # formula).
-if [ -d solutions ] && [ -d "$selftest/independent" ] && [ -d "$selftest/moller-trumbore" ]; then
+if [ -d "$selftest/independent" ] && [ -d "$selftest/moller-trumbore" ]; then
     # In out/tests, not in $tmp: a folder the suite clears.
     sub=$PWD/out/tests/independent
     rm -rf "$sub"
@@ -376,19 +330,14 @@ if [ -d solutions ] && [ -d "$selftest/independent" ] && [ -d "$selftest/moller-
         name=$(basename "$scene" .scene)
         run ${MAKE:-make} --no-print-directory compare SUBMISSION="$sub" SCENE="$scene"
         # make turns compare's exit 1 (the images differ) into 2
-        if [ "$name" = far ]; then
-            if grep -q "the images differ" "$tmp/stdout"; then pass; else
-                fail "the independent submission renders far.scene like the reference (exit $status): the scene no longer shows the far sphere's rounding"
-            fi
-        elif [ "$name" = cracks ]; then
-            if grep -q "the images differ" "$tmp/stdout"; then pass; else
-                fail "Moller-Trumbore renders cracks.scene like the watertight reference (exit $status): the scene no longer shows cracks"
-            fi
-        elif [ "$status" -eq 0 ] && grep -q "^identical" "$tmp/stdout"; then
-            pass
-        else
-            fail "the independent submission renders $name.scene unlike the reference (exit $status): $(grep 'differ' "$tmp/stdout")"
-        fi
+        case $name in
+        far) check "the independent submission renders far.scene like the reference (exit $status): the scene no longer shows the far sphere's rounding" \
+                 grep -q "the images differ" "$tmp/stdout" ;;
+        cracks) check "Moller-Trumbore renders cracks.scene like the watertight reference (exit $status): the scene no longer shows cracks" \
+                    grep -q "the images differ" "$tmp/stdout" ;;
+        *) check "the independent submission renders $name.scene unlike the reference (exit $status): $(grep 'differ' "$tmp/stdout")" \
+               sh -c "[ $status -eq 0 ] && grep -q '^identical' '$tmp/stdout'" ;;
+        esac
     done
 fi
 
@@ -400,7 +349,7 @@ fi
 # takes the reference's pixels on an edge (render --edges) in their other
 # colour as equal: identical on every shipped scene.  Without them the
 # same renders differ (the check has something to forgive).
-if [ -d solutions ] && [ -d "$selftest/textbook-ground" ]; then
+if [ -d "$selftest/textbook-ground" ]; then
     sub=$PWD/out/tests/textbook-ground
     rm -rf "$sub"
     mkdir -p "$sub"
@@ -472,15 +421,13 @@ fi
 # A repository made from the student kit: its stage files are in labs/,
 # and make compare renders them from there, as the grader grades them (it
 # once rendered the kit's own skeletons instead, without a word).
-if [ -d solutions ]; then
-    repo=$PWD/out/tests/repo-layout
-    rm -rf "$repo"
-    mkdir -p "$repo/labs"
-    cp solutions/*.c "$repo/labs/"
-    run ${MAKE:-make} --no-print-directory compare SUBMISSION="$repo"
-    check "make compare SUBMISSION=<a student kit's repository> renders its labs/ (exit $status)" \
-        sh -c "[ $status -eq 0 ] && grep -q '^identical' '$tmp/stdout'"
-fi
+repo=$PWD/out/tests/repo-layout
+rm -rf "$repo"
+mkdir -p "$repo/labs"
+cp solutions/*.c "$repo/labs/"
+run ${MAKE:-make} --no-print-directory compare SUBMISSION="$repo"
+check "make compare SUBMISSION=<a student kit's repository> renders its labs/ (exit $status)" \
+    sh -c "[ $status -eq 0 ] && grep -q '^identical' '$tmp/stdout'"
 
 # A mistyped SUBMISSION is refused, and nothing is drawn (it once drew the
 # skeletons over the picture).
@@ -493,103 +440,94 @@ check "make render SUBMISSION=<no such folder> is refused (exit $status), and dr
 # space and a curly quote, as pasted from a web page): make render names
 # them with their line, as the grader does; it once showed only the
 # compiler's "stray '\342' in program".  One saved as UTF-16 is named so.
-if [ -d solutions ]; then
-    mkdir -p "$tmp/pasted" "$tmp/utf16"
-    nbsp=$(printf '\302\240')
-    sed "/^ *double tan_half = /s/ = / $nbsp= /" solutions/part1_image_plane.c >"$tmp/pasted/part1_image_plane.c"
-    printf 'static const char *where = \342\200\234here\342\200\235;\n' >>"$tmp/pasted/part1_image_plane.c"
-    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/pasted" OUT="$tmp/pasted.png"
-    at=$(grep -n 'double tan_half' "$tmp/pasted/part1_image_plane.c" | sed -n 1s/:.*//p)
-    check "make render names a pasted non-breaking space and curly quotes, with their lines (exit $status)" \
-        sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/pasted.png' ] &&
-               grep -q 'characters that look like C.s but are not' '$tmp/stderr' &&
-               grep -q 'part1_image_plane.c:$at: a non-breaking space (U+00A0): type an ordinary space' '$tmp/stderr' &&
-               grep -q 'part1_image_plane.c:[0-9]*: a curly opening double quote (U+201C): type a straight \"' '$tmp/stderr'"
-    printf '\377\376i\000n\000t\000 \000x\000;\000\n\000' >"$tmp/utf16/part1_image_plane.c"
-    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/utf16" OUT="$tmp/utf16.png"
-    check "make render says a stage file saved as UTF-16 is, and to save it as UTF-8 (exit $status)" \
-        sh -c "[ $status -eq 2 ] && grep -q 'part1_image_plane.c is saved as UTF-16 .*save it as UTF-8' '$tmp/stderr'"
-fi
+mkdir -p "$tmp/pasted" "$tmp/utf16"
+nbsp=$(printf '\302\240')
+sed "/^ *double tan_half = /s/ = / $nbsp= /" solutions/part1_image_plane.c >"$tmp/pasted/part1_image_plane.c"
+printf 'static const char *where = \342\200\234here\342\200\235;\n' >>"$tmp/pasted/part1_image_plane.c"
+run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/pasted" OUT="$tmp/pasted.png"
+at=$(grep -n 'double tan_half' "$tmp/pasted/part1_image_plane.c" | sed -n 1s/:.*//p)
+check "make render names a pasted non-breaking space and curly quotes, with their lines (exit $status)" \
+    sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/pasted.png' ] &&
+           grep -q 'characters that look like C.s but are not' '$tmp/stderr' &&
+           grep -q 'part1_image_plane.c:$at: a non-breaking space (U+00A0): type an ordinary space' '$tmp/stderr' &&
+           grep -q 'part1_image_plane.c:[0-9]*: a curly opening double quote (U+201C): type a straight \"' '$tmp/stderr'"
+printf '\377\376i\000n\000t\000 \000x\000;\000\n\000' >"$tmp/utf16/part1_image_plane.c"
+run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/utf16" OUT="$tmp/utf16.png"
+check "make render says a stage file saved as UTF-16 is, and to save it as UTF-8 (exit $status)" \
+    sh -c "[ $status -eq 2 ] && grep -q 'part1_image_plane.c is saved as UTF-16 .*save it as UTF-8' '$tmp/stderr'"
 
 # A stage file that includes a header of the student's own, beside it:
 # make render found it (the file is compiled where it lies), the grader
 # does not (it builds each stage file alone), so the render worked and the
 # grade was 0.  make render now refuses it, saying why, as the grader does;
 # with the header's function moved into the file it renders.
-if [ -d solutions ]; then
-    mkdir -p "$tmp/ownhdr"
-    cp solutions/*.c "$tmp/ownhdr/"
-    printf 'static double my_dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }\n' \
-        >"$tmp/ownhdr/myvec.h"
-    { sed -n '1,/#include "raytracer.h"/p' solutions/part3a_sphere_intersect.c
-      echo '#include "myvec.h"'
-      echo 'double twice_dot(Vec3 a) { return 2 * my_dot(a, a); }'
-      sed '1,/#include "raytracer.h"/d' solutions/part3a_sphere_intersect.c; } >"$tmp/ownhdr/part3a.c"
-    mv "$tmp/ownhdr/part3a.c" "$tmp/ownhdr/part3a_sphere_intersect.c"
-    at=$(grep -n '#include "myvec.h"' "$tmp/ownhdr/part3a_sphere_intersect.c" | sed 's/:.*//')
-    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/ownhdr" OUT="$tmp/ownhdr.png"
-    check "make render refuses a stage file that includes a header of its own, naming it and its line (exit $status)" \
-        sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/ownhdr.png' ] &&
-               grep -q 'part3a_sphere_intersect.c:$at: #include \"myvec.h\": the grader will not have myvec.h' '$tmp/stderr' &&
-               grep -q 'put what myvec.h holds into .*part3a_sphere_intersect.c itself' '$tmp/stderr'"
-    { sed -n '1,/#include "raytracer.h"/p' solutions/part3a_sphere_intersect.c
-      cat "$tmp/ownhdr/myvec.h"
-      echo 'double twice_dot(Vec3 a) { return 2 * my_dot(a, a); }'
-      sed '1,/#include "raytracer.h"/d' solutions/part3a_sphere_intersect.c; } >"$tmp/ownhdr/part3a.c"
-    mv "$tmp/ownhdr/part3a.c" "$tmp/ownhdr/part3a_sphere_intersect.c"
-    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/ownhdr" OUT="$tmp/ownhdr.png"
-    check "... and renders it once the header's function is in the file (exit $status)" \
-        sh -c "[ $status -eq 0 ] && [ -s '$tmp/ownhdr.png' ]"
-    # What the grader refuses outright, make render refuses with its words
-    # (a kit header by a path with .., which the compiler would find).
-    mkdir -p "$tmp/dotdot"
-    cp solutions/*.c "$tmp/dotdot/"
-    sed "s|#include \"raytracer.h\"|#include \"../../labs/raytracer.h\"|" solutions/part2_pixel_coordinates.c \
-        >"$tmp/dotdot/part2_pixel_coordinates.c"
-    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/dotdot" OUT="$tmp/dotdot.png"
-    check "make render refuses an include the grader refuses, in the grader's words (exit $status)" \
-        sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/dotdot.png' ] &&
-               grep -q 'part2_pixel_coordinates.c: refused, as the grader refuses it: .*write #include \"raytracer.h\"' '$tmp/stderr'"
-fi
+mkdir -p "$tmp/ownhdr"
+cp solutions/*.c "$tmp/ownhdr/"
+printf 'static double my_dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }\n' \
+    >"$tmp/ownhdr/myvec.h"
+{ sed -n '1,/#include "raytracer.h"/p' solutions/part3a_sphere_intersect.c
+  echo '#include "myvec.h"'
+  echo 'double twice_dot(Vec3 a) { return 2 * my_dot(a, a); }'
+  sed '1,/#include "raytracer.h"/d' solutions/part3a_sphere_intersect.c; } >"$tmp/ownhdr/part3a_sphere_intersect.c"
+at=$(grep -n '#include "myvec.h"' "$tmp/ownhdr/part3a_sphere_intersect.c" | sed 's/:.*//')
+run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/ownhdr" OUT="$tmp/ownhdr.png"
+check "make render refuses a stage file that includes a header of its own, naming it and its line (exit $status)" \
+    sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/ownhdr.png' ] &&
+           grep -q 'part3a_sphere_intersect.c:$at: #include \"myvec.h\": the grader will not have myvec.h' '$tmp/stderr' &&
+           grep -q 'put what myvec.h holds into .*part3a_sphere_intersect.c itself' '$tmp/stderr'"
+awk -v h="$(cat "$tmp/ownhdr/myvec.h")" '$0 == "#include \"myvec.h\"" { $0 = h } 1' \
+    "$tmp/ownhdr/part3a_sphere_intersect.c" >"$tmp/ownhdr/part3a.c"
+mv "$tmp/ownhdr/part3a.c" "$tmp/ownhdr/part3a_sphere_intersect.c"
+run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/ownhdr" OUT="$tmp/ownhdr.png"
+check "... and renders it once the header's function is in the file (exit $status)" \
+    sh -c "[ $status -eq 0 ] && [ -s '$tmp/ownhdr.png' ]"
+# What the grader refuses outright, make render refuses with its words
+# (a kit header by a path with .., which the compiler would find).
+mkdir -p "$tmp/dotdot"
+cp solutions/*.c "$tmp/dotdot/"
+sed "s|#include \"raytracer.h\"|#include \"../../labs/raytracer.h\"|" solutions/part2_pixel_coordinates.c \
+    >"$tmp/dotdot/part2_pixel_coordinates.c"
+run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/dotdot" OUT="$tmp/dotdot.png"
+check "make render refuses an include the grader refuses, in the grader's words (exit $status)" \
+    sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/dotdot.png' ] &&
+           grep -q 'part2_pixel_coordinates.c: refused, as the grader refuses it: .*write #include \"raytracer.h\"' '$tmp/stderr'"
 
 # Links that fail.  A helper defined, not static, in two stage files: the
 # grader builds each file alone and gives full marks, but make render links
 # them together and the linker refuses; make render says why, and that
 # static is the cure.  A function of the contract defined twice, and one
 # its file does not define: said as plainly.
-if [ -d solutions ]; then
-    mkdir -p "$tmp/twice"
-    cp solutions/*.c "$tmp/twice/"
-    for f in part2_pixel_coordinates part3a_sphere_intersect; do
-        printf 'double sq(double x);\ndouble sq(double x) { return x * x; }\n' >>"$tmp/twice/$f.c"
-    done
-    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/twice" OUT="$tmp/twice.png"
-    check "make render says a helper is defined in two stage files, and to make each static (exit $status)" \
-        sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/twice.png' ] &&
-               grep -q 'make render: sq is defined in .*/part2_pixel_coordinates.c and .*/part3a_sphere_intersect.c' '$tmp/stderr' &&
-               grep -q 'write static in front of each' '$tmp/stderr' &&
-               grep -q 'definition of sq' '$tmp/stderr'"
-    for f in part2_pixel_coordinates part3a_sphere_intersect; do
-        sed 's/^double sq(/static double sq(/' "$tmp/twice/$f.c" >"$tmp/twice/x.c"
-        mv "$tmp/twice/x.c" "$tmp/twice/$f.c"
-    done
-    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/twice" OUT="$tmp/twice.png"
-    check "... and renders once both are static (exit $status)" \
-        sh -c "[ $status -eq 0 ] && [ -s '$tmp/twice.png' ]"
-    sed -n '/^bool sphere_intersect(/,/^}/p' solutions/part3a_sphere_intersect.c >>"$tmp/twice/part3b_ray_color.c"
-    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/twice" OUT="$tmp/twice.png"
-    check "make render says a function of the contract defined twice belongs in its own file (exit $status)" \
-        sh -c "[ $status -eq 2 ] &&
-               grep -q 'It belongs in part3a_sphere_intersect.c only .*remove it from .*/part3b_ray_color.c' '$tmp/stderr'"
-    cp solutions/part3b_ray_color.c "$tmp/twice/"
-    sed 's/^bool sphere_intersect(/bool sphere_intersects(/' solutions/part3a_sphere_intersect.c \
-        >"$tmp/twice/part3a_sphere_intersect.c"
-    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/twice" OUT="$tmp/twice.png"
-    check "make render says a stage file does not define its function of the contract (exit $status)" \
-        sh -c "[ $status -eq 2 ] &&
-               grep -q 'part3a_sphere_intersect.c defines no function sphere_intersect, which the renderer\$' '$tmp/stderr' &&
-               grep -q 'The functions it defines: sphere_intersects\.\$' '$tmp/stderr'"
-fi
+mkdir -p "$tmp/twice"
+cp solutions/*.c "$tmp/twice/"
+for f in part2_pixel_coordinates part3a_sphere_intersect; do
+    printf 'double sq(double x);\ndouble sq(double x) { return x * x; }\n' >>"$tmp/twice/$f.c"
+done
+run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/twice" OUT="$tmp/twice.png"
+check "make render says a helper is defined in two stage files, and to make each static (exit $status)" \
+    sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/twice.png' ] &&
+           grep -q 'make render: sq is defined in .*/part2_pixel_coordinates.c and .*/part3a_sphere_intersect.c' '$tmp/stderr' &&
+           grep -q 'write static in front of each' '$tmp/stderr' &&
+           grep -q 'definition of sq' '$tmp/stderr'"
+for f in part2_pixel_coordinates part3a_sphere_intersect; do
+    sed 's/^double sq(/static double sq(/' "$tmp/twice/$f.c" >"$tmp/twice/x.c"
+    mv "$tmp/twice/x.c" "$tmp/twice/$f.c"
+done
+run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/twice" OUT="$tmp/twice.png"
+check "... and renders once both are static (exit $status)" \
+    sh -c "[ $status -eq 0 ] && [ -s '$tmp/twice.png' ]"
+sed -n '/^bool sphere_intersect(/,/^}/p' solutions/part3a_sphere_intersect.c >>"$tmp/twice/part3b_ray_color.c"
+run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/twice" OUT="$tmp/twice.png"
+check "make render says a function of the contract defined twice belongs in its own file (exit $status)" \
+    sh -c "[ $status -eq 2 ] &&
+           grep -q 'It belongs in part3a_sphere_intersect.c only .*remove it from .*/part3b_ray_color.c' '$tmp/stderr'"
+cp solutions/part3b_ray_color.c "$tmp/twice/"
+sed 's/^bool sphere_intersect(/bool sphere_intersects(/' solutions/part3a_sphere_intersect.c \
+    >"$tmp/twice/part3a_sphere_intersect.c"
+run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/twice" OUT="$tmp/twice.png"
+check "make render says a stage file does not define its function of the contract (exit $status)" \
+    sh -c "[ $status -eq 2 ] &&
+           grep -q 'part3a_sphere_intersect.c defines no function sphere_intersect, which the renderer\$' '$tmp/stderr' &&
+           grep -q 'The functions it defines: sphere_intersects\.\$' '$tmp/stderr'"
 
 # misbehaving DIR STATEMENT: a submission in DIR, the reference's but for a
 # Part 3b whose ray_color runs STATEMENT for the pixels right of the centre.
@@ -619,35 +557,31 @@ EOF2
 # Code of the parts that crashes while drawing: the renderer says where
 # and what, and still ends by the signal (make reports it); nothing is
 # written.  It once ended with the shell's "Segmentation fault" alone.
-if [ -d solutions ]; then
-    misbehaving "$tmp/crashes" '*(volatile int *)NULL = 1;'
-    run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/crashes" SIZE=40x30 OUT="$tmp/crashes.png"
-    check "code that crashes while drawing: the renderer says where and what (exit $status)" \
-        sh -c "[ $status -ne 0 ] &&
-               grep -q 'render: the code of the parts crashed while drawing rows* [0-9]*.*: a segmentation fault (SIGSEGV)' '$tmp/stderr'"
-    check "... and writes no picture" [ ! -e "$tmp/crashes.png" ]
-fi
+misbehaving "$tmp/crashes" '*(volatile int *)NULL = 1;'
+run ${MAKE:-make} --no-print-directory render SUBMISSION="$tmp/crashes" SIZE=40x30 OUT="$tmp/crashes.png"
+check "code that crashes while drawing: the renderer says where and what (exit $status)" \
+    sh -c "[ $status -ne 0 ] &&
+           grep -q 'render: the code of the parts crashed while drawing rows* [0-9]*.*: a segmentation fault (SIGSEGV)' '$tmp/stderr'"
+check "... and writes no picture" [ ! -e "$tmp/crashes.png" ]
 
 # Code that loops forever: once no row has been finished for a while
 # (RENDER_STALLED_SECONDS here, 10 s by default), a line says how to stop
 # it, on a terminal and elsewhere (output to a file or a pipe, as a log or
 # an editor's pane takes it), where it once waited in silence.  A terminal through
 # util-linux's script, where there is one.
-if [ -d solutions ]; then
-    misbehaving "$tmp/loops" 'for (volatile int forever = 1; forever;) ;'
-    loops_bin=out/build/sub/$(printf '%s' "$tmp/loops" | tr / _)/render
-    run ${MAKE:-make} --no-print-directory "$loops_bin" SUBMISSION="$tmp/loops"
-    RENDER_STALLED_SECONDS=1 "$loops_bin" labs/scenes/default.scene --size 40x30 -o "$tmp/loops.png" \
-        </dev/null >"$tmp/loops-pipe.out" 2>&1 &
-    loops_pid=$!
-    sleep 3
-    kill "$loops_pid" 2>/dev/null
-    wait "$loops_pid" 2>/dev/null
-    check "code that loops forever, its output to a file: a line says how to stop it" \
-        grep -q '^render: no row finished in the last 1 s: if the code loops forever, stop it with Ctrl-C' \
-        "$tmp/loops-pipe.out"
-fi
-if [ -d solutions ] && script --version 2>/dev/null | grep -q util-linux; then
+misbehaving "$tmp/loops" 'for (volatile int forever = 1; forever;) ;'
+loops_bin=out/build/sub/$(printf '%s' "$tmp/loops" | tr / _)/render
+run ${MAKE:-make} --no-print-directory "$loops_bin" SUBMISSION="$tmp/loops"
+RENDER_STALLED_SECONDS=1 "$loops_bin" labs/scenes/default.scene --size 40x30 -o "$tmp/loops.png" \
+    </dev/null >"$tmp/loops-pipe.out" 2>&1 &
+loops_pid=$!
+sleep 3
+kill "$loops_pid" 2>/dev/null
+wait "$loops_pid" 2>/dev/null
+check "code that loops forever, its output to a file: a line says how to stop it" \
+    grep -q '^render: no row finished in the last 1 s: if the code loops forever, stop it with Ctrl-C' \
+    "$tmp/loops-pipe.out"
+if script --version 2>/dev/null | grep -q util-linux; then
     loops_cmd="timeout 3 $loops_bin labs/scenes/default.scene --size 40x30 -o $tmp/loops.png"  # portable: util-linux only
     RENDER_STALLED_SECONDS=1 script -qec "$loops_cmd" /dev/null </dev/null >"$tmp/loops.out" 2>&1  # portable: util-linux only
     check "code that loops forever: on a terminal, a line says how to stop it" \
@@ -664,40 +598,25 @@ check "a scene named 'wide': exit $status, and the message names labs/scenes/wid
 # images of different sizes: a clear message, exit 1
 run "$RENDER" labs/scenes/default.scene --size 60x90 --quiet -o "$tmp/small.png"
 run "$COMPARE" "$tmp/small.png" "$tmp/ref.png"
-if [ "$status" -eq 1 ] && grep -q "size" "$tmp/stderr" && grep -q "60x90" "$tmp/stderr"; then
-    pass
-else
-    fail "compare of images of different sizes: exit $status, want 1 and a message"
-fi
+check "compare of images of different sizes: exit $status, want 1 and a message" \
+    sh -c "[ $status -eq 1 ] && grep -q size '$tmp/stderr' && grep -q 60x90 '$tmp/stderr'"
 
 # errors and bad usage: exit 2
-compare_error() {   # compare_error WHAT ARGS...
-    what=$1
-    shift
-    refused "compare $what" "$COMPARE" "$@"
-}
-compare_error "(no arguments)"
-compare_error "(one image)" "$tmp/ref.png"
-compare_error "(three images)" "$tmp/ref.png" "$tmp/ref.png" "$tmp/ref.png"
-compare_error "(a missing image)" "$tmp/ref.png" "$tmp/missing.png"
-compare_error "(a scene, not an image)" labs/scenes/default.scene "$tmp/ref.png"
-compare_error "(-o without a name)" "$tmp/ref.png" "$tmp/ref.png" -o
-compare_error "(unwritable -o)" "$tmp/ref.png" "$tmp/ref.png" -o "$tmp/no/such/side.png"
+refused "compare (no arguments)" "$COMPARE"
+refused "compare (one image)" "$COMPARE" "$tmp/ref.png"
+refused "compare (three images)" "$COMPARE" "$tmp/ref.png" "$tmp/ref.png" "$tmp/ref.png"
+refused "compare (a missing image)" "$COMPARE" "$tmp/ref.png" "$tmp/missing.png"
+refused "compare (a scene, not an image)" "$COMPARE" labs/scenes/default.scene "$tmp/ref.png"
+refused "compare (-o without a name)" "$COMPARE" "$tmp/ref.png" "$tmp/ref.png" -o
+refused "compare (unwritable -o)" "$COMPARE" "$tmp/ref.png" "$tmp/ref.png" -o "$tmp/no/such/side.png"
 run "$COMPARE"
-if grep -q "usage: compare" "$tmp/stderr" && grep -q "exit status: 0 identical, 1 .*differ, 2 error" "$tmp/stderr"; then
-    pass
-else
-    fail "compare: the usage does not explain the exit status"
-fi
+check "compare: the usage does not explain the exit status" \
+    sh -c "grep -q 'usage: compare' '$tmp/stderr' && grep -q 'exit status: 0 identical, 1 .*differ, 2 error' '$tmp/stderr'"
 
 # ---- the same bad scenes against the address-sanitized renderer -----------
 if [ -x "$RENDER_ASAN" ]; then
     run "$RENDER_ASAN" labs/scenes/default.scene --size 64x48 --threads 2 -o "$tmp/asan.png"
-    if crashed || [ "$status" -ne 0 ]; then
-        fail "sanitized render of default.scene: exit $status"
-    else
-        pass
-    fi
+    exited "sanitized render of default.scene" 0 && pass
     bad_scenes "$RENDER_ASAN"
 else
     echo "note: no sanitized renderer at $RENDER_ASAN (make $RENDER_ASAN): its checks were skipped"
