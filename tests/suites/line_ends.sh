@@ -17,8 +17,6 @@ unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 . tests/lib/checks.sh
 top=$(pwd)
 temp_dir line_ends
-trap 'rm -rf "$tmp"' EXIT
-trap 'exit 1' HUP INT TERM
 cr=$(printf '\r')
 
 # The refusal needs no git: a copy whose tests/run.sh has CRLF.
