@@ -343,15 +343,15 @@ $(1)/tests/test_bvh: tests/unit/test_bvh.c tests/unit/check.h $(BVH_OWN:%=$(1)/t
                      $(filter-out $(BVH_OWN:%=$(1)/sub/$(REF_DIR)/%.o),$(call ref_obj,$(1))) \
                      $(call unit_libs,$(1)) | $(1)/tests/.
 	$$(Q)$$(CC) $$($(3)) $$(THREADS) -Ilabs $$(filter-out %.h,$$^) -o $$@ $$(LDLIBS)
-# A grader part's unit test links that part alone, with the .c files it needs.
+# A grader part's unit test links that part alone: the build's objects it needs.
 $(GRADER_UNITS:%=$(1)/tests/test_%): $(1)/tests/test_%: tests/unit/test_%.c tests/unit/check.h \
-                                     tests/grader/%.c $(GRADER_HDR) $(1)/kit/libkit.a | $(1)/tests/.
-	$$(Q)$$(CC) $$($(3)) -Ilabs $$(filter %.c,$$^) $(1)/kit/libkit.a -o $$@ $$(LDLIBS)
-$(1)/tests/test_check: tests/grader/cases.c
-$(1)/tests/test_terminal $(1)/tests/test_lookalike: tests/tools/utf8.c
-$(1)/tests/test_own_headers: tests/grader/include_scan.c
+                                     $(1)/grader/%.o $(GRADER_HDR) $(1)/kit/libkit.a | $(1)/tests/.
+	$$(Q)$$(CC) $$($(3)) -Ilabs $$(filter %.c %.o,$$^) $(1)/kit/libkit.a -o $$@ $$(LDLIBS)
+$(1)/tests/test_check: $(1)/grader/cases.o
+$(1)/tests/test_terminal $(1)/tests/test_lookalike: $(1)/tools/utf8.o
+$(1)/tests/test_own_headers: $(1)/grader/include_scan.o
 # init_sh, plain in both builds: a sanitized one would not fit a test's memory.
-$(1)/tests/test_sandbox: tests/grader/jail.c | $(1)/tests/init_sh
+$(1)/tests/test_sandbox: $(1)/grader/jail.o | $(1)/tests/init_sh
 $(1)/tests/init_sh: tests/unit/init_sh.c tests/grader/harness_init.h | $(1)/tests/.
 	$$(Q)$$(CC) $$(CFLAGS) $$< -o $$@
 # The hidden tests' and the figures' unit tests (instructor's kit only).
