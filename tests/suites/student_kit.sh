@@ -312,10 +312,14 @@ done <"$tmp/unique"
 
 # A student who puts a macro in labs/raytracer.h is told that the
 # instructor grades with the kit's own (their stage file would not build
-# there), and which file that is.
-cp "$kit/labs/raytracer.h" "$tmp/raytracer.h"
-printf '#define EPSILON 1e-9\n' >>"$kit/labs/raytracer.h"
-(cd "$kit" && out/build/bin/grade --submission labs --part 1 --quiet) >"$tmp/out" 2>&1 </dev/null
+# there), and which file that is.  Tried in a copy of the built kit (its
+# times kept, cp -p), so that the kit itself stays built from the files
+# it shipped with: what the header changes is built again in the copy
+# alone, and the kit's make rebuilds nothing for it below.
+changed=$tmp/changed
+cp -R -p "$kit" "$changed"
+printf '#define EPSILON 1e-9\n' >>"$changed/labs/raytracer.h"
+(cd "$changed" && out/build/bin/grade --submission labs --part 1 --quiet) >"$tmp/out" 2>&1 </dev/null
 check "a changed labs/raytracer.h: make grade warns that the instructor grades with the kit's own" \
     sh -c "grep -q 'grade: labs/raytracer.h is not the one the kit came with' '$tmp/out' &&
            grep -q 'tests/grader/shipped/raytracer.h' '$tmp/out' && cmp -s labs/raytracer.h '$kit/tests/grader/shipped/raytracer.h'"
@@ -323,27 +327,28 @@ check "a changed labs/raytracer.h: make grade warns that the instructor grades w
 # and got full marks, where the instructor's grader (the kit's own header)
 # gives 0. make grade here builds it with the kit's own too, and says so
 # below the compiler's message.
-cp "$kit/labs/part1_image_plane.c" "$tmp/part1_image_plane.c"
 sed 's/\*h = 2 \* d \* tan_half;/*h = 2 * d * tan_half * (1 + EPSILON);/' solutions/part1_image_plane.c \
-    >"$kit/labs/part1_image_plane.c"
-(cd "$kit" && out/build/bin/grade --submission labs --part 1) >"$tmp/out" 2>&1 </dev/null
+    >"$changed/labs/part1_image_plane.c"
+(cd "$changed" && out/build/bin/grade --submission labs --part 1) >"$tmp/out" 2>&1 </dev/null
 status=$?
 check "a stage file that uses a macro added to labs/raytracer.h does not build in make grade either (exit $status)" \
     sh -c "[ $status -eq 1 ] && grep -q 'EPSILON' '$tmp/out' && grep -q '^Part 1: .*  0 / 20' '$tmp/out' &&
            grep -q 'labs/raytracer.h is not the one the kit came with: part1_image_plane.c was built with the kit.s own' '$tmp/out'"
-(cd "$kit" && ${MAKE:-make} --no-print-directory render OUT="$tmp/changed.png") >"$tmp/out" 2>&1 </dev/null
+(cd "$changed" && ${MAKE:-make} --no-print-directory render OUT="$tmp/changed.png") >"$tmp/out" 2>&1 </dev/null
 status=$?
 check "... while make render, which builds with labs/raytracer.h, draws and notes that it is not the kit's (exit $status)" \
     sh -c "[ $status -eq 0 ] && [ -s '$tmp/changed.png' ] &&
            grep -q '^note: labs/raytracer.h is not the one the kit came with. make render used yours' '$tmp/out' &&
            ! grep -q 'labs/vec3.h is not' '$tmp/out'"
-cp "$tmp/raytracer.h" "$kit/labs/raytracer.h"
-(cd "$kit" && out/build/bin/grade --submission labs --part 1) >"$tmp/out" 2>&1 </dev/null
+# The header as shipped, with its time: make render below builds Part 1
+# again (the stage file is newer) and nothing the header alone changed.
+cp -p "$kit/labs/raytracer.h" "$changed/labs/raytracer.h"
+(cd "$changed" && out/build/bin/grade --submission labs --part 1) >"$tmp/out" 2>&1 </dev/null
 status=$?
 check "... and, with the header as shipped, neither it nor the warning is there (exit $status)" \
     sh -c "[ $status -eq 1 ] && grep -q 'EPSILON' '$tmp/out' && ! grep -q 'is not the one the kit came with' '$tmp/out'"
-cp "$tmp/part1_image_plane.c" "$kit/labs/part1_image_plane.c"
-(cd "$kit" && ${MAKE:-make} --no-print-directory render OUT="$tmp/changed.png") >"$tmp/out" 2>&1 </dev/null
+cp "$kit/labs/part1_image_plane.c" "$changed/labs/part1_image_plane.c"
+(cd "$changed" && ${MAKE:-make} --no-print-directory render OUT="$tmp/changed.png") >"$tmp/out" 2>&1 </dev/null
 status=$?
 check "make render says nothing of the header once it is as shipped (exit $status)" \
     sh -c "[ $status -eq 0 ] && ! grep -q 'is not the one the kit came with' '$tmp/out'"
