@@ -206,9 +206,10 @@ void fig_window(Markup *m, const FigView *v, const char *frame)
         svg_rect(m, v->px0, v->py0, v->pw, v->ph, frame, "none", 0);
 }
 
-void fig_window_end(Markup *m)
+void fig_window_end(Markup *m, const FigView *v, bool zoom)
 {
     mk_printf(m, "</svg>\n");
+    svg_rect(m, v->px0, v->py0, v->pw, v->ph, "none", zoom ? "#7a4fbf" : "#bbbbbb", zoom ? 1.4 : 1);
 }
 
 const char *fig_hex(char *buf, const double *rgb)

@@ -49,9 +49,10 @@ void fig_polygon(Markup *m, const FigView *v, const double *wx, const double *wy
 void fig_begin(Markup *m, double width, double height, const char *title);
 void fig_end(Markup *m);
 /* Opens a window whose drawing is clipped to it (a nested <svg>), with a
- * frame; fig_window_end closes it. */
+ * frame; fig_window_end closes it and outlines it, in purple if it is a
+ * zoomed-in window. */
 void fig_window(Markup *m, const FigView *v, const char *frame);
-void fig_window_end(Markup *m);
+void fig_window_end(Markup *m, const FigView *v, bool zoom);
 
 /* A colour (r, g, b in [0, 1]) as "#rrggbb" in buf (at least 8 bytes). */
 const char *fig_hex(char *buf, const double *rgb);

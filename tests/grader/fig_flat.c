@@ -166,18 +166,12 @@ void fig_planehit(Markup *m, const Test *t, const Case *c, const double *got)
     double along = dot3(nh, u), v[3], q[3];
     for (int k = 0; k < 3; k++)
         v[k] = nh[k] - along * u[k];
-    if (!unit3(v, v)) {
+    if (!unit3(v, v))
         square_to(u, v, q);                     /* the normal is along the ray */
-    }
-    RayFig f;
-    memset(&f, 0, sizeof f);
-    f.title = "The plane seen edge on (the thick line), in the plane of the ray and the plane's normal";
-    f.rlen = ray_norm(r);
-    f.target = -1;
-    f.has_line = true;
-    f.line_A = along;
-    f.line_B = dot3(nh, v);
-    f.line_C = plane_height(p, n, e);
+    RayFig f = { .title = "The plane seen edge on (the thick line), in the plane of the ray and the "
+                          "plane's normal",
+                 .rlen = ray_norm(r), .target = -1, .has_line = true,
+                 .line_A = along, .line_B = dot3(nh, v), .line_C = plane_height(p, n, e) };
     ray_answers(&f, c->want, got, c->flags & CASE_EITHER_HIT ? "within rounding" : NULL);
     f.note = along < 0 ? "The ray comes at the plane from the side its normal points to (r.n < 0)."
              : along > 0 ? "The ray comes at the plane from behind, against its normal (r.n > 0)."
@@ -192,7 +186,6 @@ typedef struct {
     double x[3], y[3];          /* the vertices, projected (the ray at 0, 0) */
     double t;                   /* where the ray's line meets its plane      */
     bool crossed;               /* the ray's point is inside or on it        */
-    int index;
 } Flat;
 
 /* Projects the triangle v (a, b, c) seen along the ray. */
@@ -319,8 +312,7 @@ static void draw_window(Markup *m, const FigView *w, int k, const Flat *fl, int 
         svg_mark_want(m, ox - (got_hit ? 7 : 0), oy);
     if (got_hit)
         svg_mark_got(m, ox + (want_hit ? 7 : 0), oy);
-    fig_window_end(m);
-    svg_rect(m, v->px0, v->py0, v->pw, v->ph, "none", k ? "#7a4fbf" : "#bbbbbb", k ? 1.4 : 1);
+    fig_window_end(m, v, k > 0);
     if (k == 1) {
         svg_text(m, v->px0 + 6, v->py0 + 16, "start", 12, "#7a4fbf", true, "zoomed in %s times on the ray",
                  fig_times(b1, sizeof b1, v->s / w[0].s));
@@ -352,17 +344,14 @@ static void triangle_caption(Markup *m, double y, const Flat *fl, int nf, bool m
             }
         svg_text(m, 12, y, "start", 12, COL_TEXT, false, "%d triangles; the ray's line crosses %s%s",
                  nf, ncross ? "triangles " : "none of them", list);
+        svg_text(m, 12, y + 18, "start", 11, COL_NOTE, false, "Seen along the ray, every triangle the ray "
+                 "goes through covers the cross; a ray through a shared edge lies on that edge.");
     } else {
         double tp = fl[0].t;
         svg_text(m, 12, y, "start", 12, COL_TEXT, false, "The ray's line meets the triangle's plane at "
                  "t = %s%s; the point is %s the triangle (yellow: the ray goes through it).",
                  fig_num(b1, sizeof b1, tp, 10), tp < 0 ? " (behind e: t < 0)" : "",
                  fl[0].crossed ? "inside or on the edge of" : "outside");
-    }
-    if (mesh) {
-        svg_text(m, 12, y + 18, "start", 11, COL_NOTE, false, "Seen along the ray, every triangle the ray "
-                 "goes through covers the cross; a ray through a shared edge lies on that edge.");
-    } else {
         /* the side the ray comes from: the winding of a, b, c as drawn
          * (as the eye sees them), whose sign is det's */
         const Flat *f = &fl[0];
@@ -386,10 +375,8 @@ void fig_triangle(Markup *m, const Test *t, const Case *c, const double *got)
     Flat *fl = calloc((size_t)nf + 1, sizeof *fl);
     if (!fl)
         return;
-    for (int k = 0; k < nf; k++) {
+    for (int k = 0; k < nf; k++)
         project(mesh ? t->triangles[k].v : c->in, e, r, p, q, &fl[k]);
-        fl[k].index = k;
-    }
     Extent x = flats_extent(fl, nf);
     fig_begin(m, 760, 356, mesh ? "the mesh seen along the ray" : "the triangle seen along the ray");
     svg_text(m, 10, 19, "start", 14, COL_TEXT, true, "%s seen along the ray: the ray is the point %s",

@@ -547,8 +547,7 @@ static bool draw_window(Markup *m, const RayLayout *ly, int k)
         double cxp = (x0 + x1) / 2, cyp = (ya + yb) / 2, rw = fmax(x1 - x0, 10), rh = fmax(yb - ya, 10);
         svg_rect(m, cxp - rw / 2, cyp - rh / 2, rw, rh, "none", "#7a4fbf", 1.4);
     }
-    fig_window_end(m);
-    svg_rect(m, v->px0, v->py0, v->pw, v->ph, "none", k ? "#7a4fbf" : "#bbbbbb", k ? 1.4 : 1);
+    fig_window_end(m, v, k > 0);
     hit_labels(m, ly, k, want_in, got_in);
     window_note(m, ly, k);
     return got_in;

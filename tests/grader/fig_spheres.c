@@ -19,14 +19,10 @@ void fig_sphere(Markup *m, const Test *t, const Case *c, const double *got)
     (void)t;
     const double *cen = c->in, *e = c->in + 4, *r = c->in + 7;
     double R = c->in[3];
-    RayFig f;
-    memset(&f, 0, sizeof f);
-    f.title = "The plane through the ray and the sphere's centre (the sphere is the circle)";
-    double a, b, dist;
-    f.rlen = ray_frame_sphere(e, r, cen, &a, &b, &dist);
-    f.ncircles = 1;
-    f.circles[0] = (RayCircle){ a, b, R, "#c9c9c9", "c" };
-    f.target = 0;
+    RayFig f = { .title = "The plane through the ray and the sphere's centre (the sphere is the circle)",
+                 .ncircles = 1, .circles = { { 0, 0, R, "#c9c9c9", "c" } }, .target = 0 };
+    double dist;
+    f.rlen = ray_frame_sphere(e, r, cen, &f.circles[0].a, &f.circles[0].b, &dist);
     ray_answers(&f, c->want, got, c->flags & CASE_EITHER_HIT ? "the ray grazes the sphere" : NULL);
     if (!(f.rlen > 0)) {
         /* no ray to draw along: r is zero (or not a number) */
@@ -89,13 +85,11 @@ static int sphere_hits(const Test *t, const double e[3], const double r[3], Sphe
  * -1 for the background, -2 for none. */
 static int colour_owner(const Test *t, const double *rgb)
 {
-    for (int k = 0; k < t->nspheres; k++)
-        if (fabs(rgb[0] - t->spheres[k].color[0]) < 1e-9 && fabs(rgb[1] - t->spheres[k].color[1]) < 1e-9
-            && fabs(rgb[2] - t->spheres[k].color[2]) < 1e-9)
-            return k;
-    if (fabs(rgb[0] - t->background[0]) < 1e-9 && fabs(rgb[1] - t->background[1]) < 1e-9
-        && fabs(rgb[2] - t->background[2]) < 1e-9)
-        return -1;
+    for (int k = 0; k <= t->nspheres; k++) {                /* the spheres, then the background */
+        const double *own = k < t->nspheres ? t->spheres[k].color : t->background;
+        if (fabs(rgb[0] - own[0]) < 1e-9 && fabs(rgb[1] - own[1]) < 1e-9 && fabs(rgb[2] - own[2]) < 1e-9)
+            return k < t->nspheres ? k : -1;
+    }
     return -2;
 }
 
@@ -173,12 +167,9 @@ static void sphere_table(Markup *m, const Test *t, const double e[3], const doub
 void fig_color(Markup *m, const Test *t, const Case *c, const double *got)
 {
     const double *e = c->in, *r = c->in + 3;
-    RayFig f;
-    memset(&f, 0, sizeof f);
-    f.title = "The ray and its spheres (each turned about the ray into this plane)";
+    RayFig f = { .title = "The ray and its spheres (each turned about the ray into this plane)", .target = -1 };
     double a, b, dist;
     f.rlen = ray_frame_sphere(e, r, e, &a, &b, &dist);
-    f.target = -1;
     /* the spheres nearest the ray's line first, as many as fit */
     SphereHit *h = calloc((size_t)t->nspheres + 1, sizeof *h);
     int n = h ? sphere_hits(t, e, r, h) : 0;
@@ -194,14 +185,10 @@ void fig_color(Markup *m, const Test *t, const Case *c, const double *got)
             f.target = f.ncircles;
         f.ncircles++;
     }
-    double tw = 0, tg = 0;
-    f.want_hit = want_owner >= 0 && ray_sphere_t(e, r, t->spheres[want_owner].c,
-                                                 t->spheres[want_owner].R, &tw);
-    f.want_t = tw;
+    const TestSphere *sp = t->spheres;
+    f.want_hit = want_owner >= 0 && ray_sphere_t(e, r, sp[want_owner].c, sp[want_owner].R, &f.want_t);
     f.got_known = got != NULL;
-    f.got_hit = got_owner >= 0 && ray_sphere_t(e, r, t->spheres[got_owner].c,
-                                               t->spheres[got_owner].R, &tg);
-    f.got_t = tg;
+    f.got_hit = got_owner >= 0 && ray_sphere_t(e, r, sp[got_owner].c, sp[got_owner].R, &f.got_t);
     char wt[120], gt[120];
     if (want_owner >= 0)
         snprintf(wt, sizeof wt, "expected: sphere %d's colour", want_owner + 1);
@@ -271,6 +258,7 @@ void fig_image(Markup *m, const Test *t, const TestResult *r, int c)
              "shown %d times larger)", nx, ny, scale);
     for (int k = 0; k < 2; k++) {
         double x = x0 + k * (W + gap);
+        const char *col = k ? COL_WANT : COL_GOT;
         mk_printf(m, "<image x=\"%.0f\" y=\"%.0f\" width=\"%.0f\" height=\"%.0f\" href=\"", x, top, W, H);
         mk_png_uri(m, k ? &ref : &mine);
         mk_printf(m, "\"/>\n");
@@ -278,13 +266,11 @@ void fig_image(Markup *m, const Test *t, const TestResult *r, int c)
         /* every wrong pixel outlined thinly, the one shown strongly */
         for (int q = 0; q < a->answered && q < t->ncases; q++)
             if (a->ok && !a->ok[q] && q != c)
-                svg_rect(m, x + (q % nx) * scale, top + (q / nx) * scale, scale, scale, "none",
-                         k ? COL_WANT : COL_GOT, 0.8);
+                svg_rect(m, x + (q % nx) * scale, top + (q / nx) * scale, scale, scale, "none", col, 0.8);
         double px = x + (c % nx) * scale, py = top + (c / nx) * scale;
-        svg_rect(m, px - 2, py - 2, scale + 4, scale + 4, "none", k ? COL_WANT : COL_GOT, 2.5);
-        svg_circle(m, px + scale / 2.0, py + scale / 2.0, scale / 2.0 + 9, "none", k ? COL_WANT : COL_GOT, 1.5);
-        svg_text(m, x, top + H + 18, "start", 13, k ? COL_WANT : COL_GOT, true, "%s",
-                 k ? "the reference" : "your code");
+        svg_rect(m, px - 2, py - 2, scale + 4, scale + 4, "none", col, 2.5);
+        svg_circle(m, px + scale / 2.0, py + scale / 2.0, scale / 2.0 + 9, "none", col, 1.5);
+        svg_text(m, x, top + H + 18, "start", 13, col, true, "%s", k ? "the reference" : "your code");
     }
     svg_text(m, x0, top + H + 38, "start", 12, COL_NOTE, false,
              "The circled pixel is (i = %d, j = %d): column i from the left, row j from the top. "

@@ -68,8 +68,7 @@ void fig_plane(Markup *m, const Test *t, const Case *c, const double *got)
     if (hg_ok)
         svg_line(m, px + 4, fig_py(&v, hg / 2), px + 4, fig_py(&v, -hg / 2), COL_GOT, 3, "6 3");
     svg_circle(m, ex, ey, 4, "#222222", "none", 0);
-    fig_window_end(m);
-    svg_rect(m, v.px0, v.py0, v.pw, v.ph, "none", "#bbbbbb", 1);
+    fig_window_end(m, &v, false);
     svg_text(m, ex - 6, ey + 4, "end", 13, COL_TEXT, true, "eye");
     svg_text(m, 16, 274, "start", 12, COL_TEXT, false, "fov = %s\xC2\xB0 (the angle between the "
              "lines), d = %s", fig_num(b1, sizeof b1, fov, 8), fig_num(b2, sizeof b2, d, 6));
@@ -103,8 +102,7 @@ void fig_plane(Markup *m, const Test *t, const Case *c, const double *got)
     if (wg_ok && hg_ok)
         svg_rect(m, fig_px(&f, 0) - fmax(wg * f.s, 2) / 2, fig_py(&f, 0) - fmax(hg * f.s, 2) / 2,
                  fmax(wg * f.s, 2), fmax(hg * f.s, 2), "none", COL_GOT, 2.5);
-    fig_window_end(m);
-    svg_rect(m, f.px0, f.py0, f.pw, f.ph, "none", "#bbbbbb", 1);
+    fig_window_end(m, &f, false);
     svg_text(m, 476, 276, "start", 11, COL_NOTE, false, "aspect = nx / ny = %s: w = aspect x h",
              fig_num(b1, sizeof b1, aspect, 6));
     if (hw * f.s < 2 || ww * f.s < 2)
@@ -279,8 +277,7 @@ void fig_pixel(Markup *m, const Test *t, const Case *c, const double *got)
         svg_mark_got(m, pgx, pgy);
     }
     svg_mark_want(m, pwx, pwy);
-    fig_window_end(m);
-    svg_rect(m, v.px0, v.py0, v.pw, v.ph, "none", "#bbbbbb", 1);
+    fig_window_end(m, &v, false);
     number_grid(m, &v, &pc, &g);
     if (pc.have)
         offset_caption(m, &v, &pc);
@@ -393,8 +390,7 @@ void fig_camera(Markup *m, const Test *t, const Case *c, const double *got)
     }
     svg_circle(m, fig_px(&v, 0), fig_py(&v, 0), 4.5, "#222222", "none", 0);
     svg_text(m, fig_px(&v, 0) - 8, fig_py(&v, 0) - 9, "end", 13, COL_TEXT, true, "eye");
-    fig_window_end(m);
-    svg_rect(m, v.px0, v.py0, v.pw, v.ph, "none", "#bbbbbb", 1);
+    fig_window_end(m, &v, false);
     if (!fig_inside(&v, ppx, ppy))
         svg_text(m, v.px0 + v.pw - 8, fig_py(&v, 0) - 8, "end", 12, COL_TEXT, true,
                  "the pixel is %s away, this way \xE2\x86\x92", fig_num(b1, sizeof b1, pd, 4));
