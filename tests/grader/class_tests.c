@@ -8,7 +8,6 @@
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "class_model.h"
 #include "figures.h"
-#include "fig_parts.h"
 
 #include <math.h>
 #include <string.h>

@@ -2,7 +2,7 @@
  * fig_draw.h - what every figure of the report page draws with: a window
  * of world coordinates on the page, lines, circles and polygons clipped to
  * it, the figure's frame, short numbers, and the legend.  The lowest of the
- * figure files: fig_ray.c and the figures of each part (fig_parts.h) draw
+ * figure files: fig_ray.c and the figures of each part (figures.h) draw
  * with these, and figures.c picks the part's figure.
  */
 #ifndef FIG_DRAW_H

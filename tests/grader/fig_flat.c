@@ -8,19 +8,13 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "fig_draw.h"
-#include "fig_parts.h"
+#include "figures.h"
 #include "fig_ray.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* The dot product a . b. */
-static double dot3(const double *a, const double *b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
 
 /* u = v / |v|; false when v is zero or not finite. */
 static bool unit3(const double *v, double *u)
@@ -43,7 +37,7 @@ static void square_to(const double *u, double *p, double *q)
     double up[3] = { 0, 1, 0 };
     if (fabs(u[1]) > 0.9)               /* looking up (down), the head tilted back (forward) */
         up[1] = 0, up[2] = u[1] > 0 ? 1 : -1;
-    double along = dot3(up, u);
+    double along = ray_dot(up, u);
     for (int k = 0; k < 3; k++)
         q[k] = up[k] - along * u[k];
     unit3(q, q);
@@ -163,7 +157,7 @@ void fig_planehit(Markup *m, const Test *t, const Case *c, const double *got)
         return;
     }
     /* the drawing's plane: u, and the part of the normal square to u */
-    double along = dot3(nh, u), v[3], q[3];
+    double along = ray_dot(nh, u), v[3], q[3];
     for (int k = 0; k < 3; k++)
         v[k] = nh[k] - along * u[k];
     if (!unit3(v, v))
@@ -171,7 +165,7 @@ void fig_planehit(Markup *m, const Test *t, const Case *c, const double *got)
     RayFig f = { .title = "The plane seen edge on (the thick line), in the plane of the ray and the "
                           "plane's normal",
                  .rlen = ray_norm(r), .target = -1, .has_line = true,
-                 .line_A = along, .line_B = dot3(nh, v), .line_C = plane_height(p, n, e) };
+                 .line_A = along, .line_B = ray_dot(nh, v), .line_C = plane_height(p, n, e) };
     ray_answers(&f, c->want, got, c->flags & CASE_EITHER_HIT ? "within rounding" : NULL);
     f.note = along < 0 ? "The ray comes at the plane from the side its normal points to (r.n < 0)."
              : along > 0 ? "The ray comes at the plane from behind, against its normal (r.n > 0)."
@@ -194,8 +188,8 @@ static void project(const double *v, const double *e, const double *r, const dou
 {
     for (int k = 0; k < 3; k++) {
         double d[3] = { v[3 * k] - e[0], v[3 * k + 1] - e[1], v[3 * k + 2] - e[2] };
-        out->x[k] = dot3(d, p);
-        out->y[k] = dot3(d, q);
+        out->x[k] = ray_dot(d, p);
+        out->y[k] = ray_dot(d, q);
     }
     /* the signs of the ray's point against the three edges */
     double s[3];
@@ -214,7 +208,7 @@ static void project(const double *v, const double *e, const double *r, const dou
     N[0] = ab[1] * ac[2] - ab[2] * ac[1];
     N[1] = ab[2] * ac[0] - ab[0] * ac[2];
     N[2] = ab[0] * ac[1] - ab[1] * ac[0];
-    out->t = dot3(ae, N) / dot3(r, N);
+    out->t = ray_dot(ae, N) / ray_dot(r, N);
 }
 
 /* The distance from the origin to the segment (x0, y0) - (x1, y1). */

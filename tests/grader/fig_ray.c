@@ -26,6 +26,11 @@ double ray_norm(const double v[3])
     return big * sqrt(x * x + y * y + z * z);
 }
 
+double ray_dot(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
 double ray_frame_sphere(const double e[3], const double r[3], const double c[3], double *a,
                         double *b, double *dist)
 {
@@ -37,7 +42,7 @@ double ray_frame_sphere(const double e[3], const double r[3], const double c[3],
         u[k] = r[k] / rl;
         m[k] = c[k] - e[k];
     }
-    double along = m[0] * u[0] + m[1] * u[1] + m[2] * u[2];
+    double along = ray_dot(m, u);
     for (int k = 0; k < 3; k++)
         p[k] = m[k] - along * u[k];
     *a = along;
@@ -458,39 +463,22 @@ static int ray_digits(const RayFig *f)
     return digits;
 }
 
-/* A hit's label at height y, over the hit at a but inside the window's
- * frame. */
-static void hit_label(Markup *m, const FigView *v, double a, double y, const char *color, const char *text)
+/* A hit's label in window k (the returned one's if got, else the expected
+ * one's), outside the clipping so that none is cut: expected above the
+ * axis, returned below, over the hit but inside the window's frame; with
+ * its t in the main window. */
+static void hit_label(Markup *m, const RayLayout *ly, int k, bool got)
 {
-    double lo = v->px0 + 4, hi = v->px0 + v->pw - 4;
-    double w = 6.6 * (double)strlen(text), px = fmin(fmax(fig_px(v, a), lo + w / 2), hi - w / 2);
-    svg_text(m, px, y, "middle", 12, color, true, "%s", text);
-}
-
-/* The labels of the hits in window k, outside the clipping so that none
- * is cut: expected above the axis, returned below; with their t in the
- * main window. */
-static void hit_labels(Markup *m, const RayLayout *ly, int k, bool want_in, bool got_in)
-{
-    const RayFig *f = ly->f;
     const FigView *v = &ly->win[k];
     char buf[64], text[64];
-    double y0 = fig_py(v, 0);
-    bool apart = !(want_in && got_in) || fabs(fig_px(v, ly->aw) - fig_px(v, ly->ag)) > 4;
-    if (want_in) {
-        if (k == 0)
-            snprintf(text, sizeof text, "expected t = %s", fig_num(buf, sizeof buf, f->want_t, ly->digits));
-        else
-            snprintf(text, sizeof text, "expected");
-        hit_label(m, v, ly->aw, y0 - 14, COL_WANT, text);
-    }
-    if (got_in && (apart || k == 0)) {
-        if (k == 0)
-            snprintf(text, sizeof text, "your t = %s", fig_num(buf, sizeof buf, f->got_t, ly->digits));
-        else
-            snprintf(text, sizeof text, "yours");
-        hit_label(m, v, ly->ag, y0 + 34, COL_GOT, text);
-    }
+    if (k == 0)
+        snprintf(text, sizeof text, "%s t = %s", got ? "your" : "expected",
+                 fig_num(buf, sizeof buf, got ? ly->f->got_t : ly->f->want_t, ly->digits));
+    else
+        snprintf(text, sizeof text, "%s", got ? "yours" : "expected");
+    double lo = v->px0 + 4, hi = v->px0 + v->pw - 4, w = 6.6 * (double)strlen(text);
+    double px = fmin(fmax(fig_px(v, got ? ly->ag : ly->aw), lo + w / 2), hi - w / 2);
+    svg_text(m, px, fig_py(v, 0) + (got ? 34 : -14), "middle", 12, got ? COL_GOT : COL_WANT, true, "%s", text);
 }
 
 /* The words in window k's corners: of a zoomed-in window, how far it
@@ -548,7 +536,10 @@ static bool draw_window(Markup *m, const RayLayout *ly, int k)
         svg_rect(m, cxp - rw / 2, cyp - rh / 2, rw, rh, "none", "#7a4fbf", 1.4);
     }
     fig_window_end(m, v, k > 0);
-    hit_labels(m, ly, k, want_in, got_in);
+    if (want_in)
+        hit_label(m, ly, k, false);
+    if (got_in && (k == 0 || !want_in || fabs(fig_px(v, ly->aw) - fig_px(v, ly->ag)) > 4))
+        hit_label(m, ly, k, true);
     window_note(m, ly, k);
     return got_in;
 }
@@ -559,18 +550,15 @@ static void got_off_figure(Markup *m, const RayLayout *ly)
 {
     const RayFig *f = ly->f;
     const FigView *main = &ly->win[0];
-    char buf[64];
-    if (isnan(f->got_t)) {
-        svg_text(m, main->px0 + main->pw - 6, fig_py(main, 0) + 34, "end", 12, COL_GOT, true,
-                 "your t = NaN: no point of the ray");
-        return;
-    }
-    bool ahead = !(ly->ag < 0) && !(f->got_t < 0);
-    double y0 = fig_py(main, 0);
-    double xe = ahead ? main->px0 + main->pw - 6 : main->px0 + 6;
-    svg_text(m, xe, y0 + 34, ahead ? "end" : "start", 12, COL_GOT, true, "%syour t = %s: off "
-             "the figure%s", ahead ? "" : "\xE2\x86\x90 ", fig_num(buf, sizeof buf, f->got_t, 6),
-             ahead ? " \xE2\x86\x92" : "");
+    char buf[64], text[120];
+    bool ahead = !(ly->ag < 0) && !(f->got_t < 0);             /* and a NaN's words at the right */
+    if (isnan(f->got_t))
+        snprintf(text, sizeof text, "your t = NaN: no point of the ray");
+    else
+        snprintf(text, sizeof text, "%syour t = %s: off the figure%s", ahead ? "" : "\xE2\x86\x90 ",
+                 fig_num(buf, sizeof buf, f->got_t, 6), ahead ? " \xE2\x86\x92" : "");
+    svg_text(m, ahead ? main->px0 + main->pw - 6 : main->px0 + 6, fig_py(main, 0) + 34, ahead ? "end" : "start",
+             12, COL_GOT, true, "%s", text);
 }
 
 /* The legend and the notes under the windows. */

@@ -51,8 +51,9 @@ typedef struct {
 double ray_frame_sphere(const double e[3], const double r[3], const double c[3], double *a,
                         double *b, double *dist);
 
-/* The length of v, without overflow or underflow. */
+/* The length of v, without overflow or underflow; the dot product a . b. */
 double ray_norm(const double v[3]);
+double ray_dot(const double a[3], const double b[3]);
 
 /* The smaller root t > 0 of the ray and the sphere, computed in double
  * (for display); false when the ray misses it or it lies behind. */

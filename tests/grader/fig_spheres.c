@@ -6,13 +6,12 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "fig_draw.h"
-#include "fig_parts.h"
+#include "figures.h"
 #include "fig_ray.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 void fig_sphere(Markup *m, const Test *t, const Case *c, const double *got)
 {

@@ -7,7 +7,7 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "fig_draw.h"
-#include "fig_parts.h"
+#include "figures.h"
 #include "fig_ray.h"
 
 #include <math.h>
@@ -134,23 +134,17 @@ typedef struct {
 
 static PixelCase pixel_case(const Case *c, const double *got)
 {
-    PixelCase pc;
-    int nx = (int)c->in[2], ny = (int)c->in[3];
-    double w = c->in[4], h = c->in[5];
-    double xw = c->want[0], yw = c->want[1];
     bool have = got && isfinite(got[0]) && isfinite(got[1]);
-    double xg = have ? got[0] : 0, yg = have ? got[1] : 0;
-    double pw = w / nx, ph = h / ny;
-    double Xw = (xw + w / 2) / pw, Yw = (h / 2 - yw) / ph;
-    double Xg = (xg + w / 2) / pw, Yg = (h / 2 - yg) / ph;
-    double span = have ? fmax(fabs(Xg - Xw), fabs(Yg - Yw)) : 0;
-    pc.i = (int)c->in[0], pc.j = (int)c->in[1], pc.nx = nx, pc.ny = ny;
-    pc.w = w, pc.h = h, pc.pw = pw, pc.ph = ph;
-    pc.xw = xw, pc.yw = yw, pc.xg = xg, pc.yg = yg;
-    pc.Xw = Xw, pc.Yw = Yw, pc.Xg = Xg, pc.Yg = Yg;
-    pc.have = have;
-    pc.whole = have && span > 24;               /* the offset is large: the whole plane */
-    pc.far = have && fabs(Xg - Xw) + fabs(Yg - Yw) > 60.0 * (nx + ny);
+    PixelCase pc = { .i = (int)c->in[0], .j = (int)c->in[1], .nx = (int)c->in[2], .ny = (int)c->in[3],
+                     .w = c->in[4], .h = c->in[5], .xw = c->want[0], .yw = c->want[1],
+                     .xg = have ? got[0] : 0, .yg = have ? got[1] : 0, .have = have };
+    pc.pw = pc.w / pc.nx;
+    pc.ph = pc.h / pc.ny;
+    pc.Xw = (pc.xw + pc.w / 2) / pc.pw, pc.Yw = (pc.h / 2 - pc.yw) / pc.ph;
+    pc.Xg = (pc.xg + pc.w / 2) / pc.pw, pc.Yg = (pc.h / 2 - pc.yg) / pc.ph;
+    double dX = fabs(pc.Xg - pc.Xw), dY = fabs(pc.Yg - pc.Yw);
+    pc.whole = have && fmax(dX, dY) > 24;       /* the offset is large: the whole plane */
+    pc.far = have && dX + dY > 60.0 * (pc.nx + pc.ny);
     return pc;
 }
 
@@ -306,7 +300,7 @@ static void camera_frame(const double *E, const double *dw, const double *got, d
         for (int k = 0; k < 3; k++)
             across[k] = got[3 + k] + (got[k] - E[k]);
     }
-    double along = across[0] * ux[0] + across[1] * ux[1] + across[2] * ux[2];
+    double along = ray_dot(across, ux);
     for (int k = 0; k < 3; k++)
         uy[k] = across[k] - along * ux[k];
     double ny = ray_norm(uy);
@@ -345,18 +339,16 @@ void fig_camera(Markup *m, const Test *t, const Case *c, const double *got)
     char b1[40];
     double ux[3], uy[3];
     camera_frame(E, dw, got, ux, uy);
-    /* 2D coordinates relative to the eye */
-#define PX(v) ((v)[0] * ux[0] + (v)[1] * ux[1] + (v)[2] * ux[2])
-#define PY(v) ((v)[0] * uy[0] + (v)[1] * uy[1] + (v)[2] * uy[2])
+    /* 2D coordinates relative to the eye: (v . ux, v . uy) */
     double rel[3], ox = 0, oy = 0, gx = 0, gy = 0, glen = 0, off = 0;
     for (int k = 0; k < 3; k++)
         rel[k] = P[k] - E[k];
-    double pd = ray_norm(rel), ppx = PX(rel), ppy = PY(rel);
+    double pd = ray_norm(rel), ppx = ray_dot(rel, ux), ppy = ray_dot(rel, uy);
     bool have = got && isfinite(got[0] + got[1] + got[2] + got[3] + got[4] + got[5]);
     if (have) {
         double o[3] = { got[0] - E[0], got[1] - E[1], got[2] - E[2] };
-        ox = PX(o), oy = PY(o);
-        gx = PX(got + 3), gy = PY(got + 3);
+        ox = ray_dot(o, ux), oy = ray_dot(o, uy);
+        gx = ray_dot(got + 3, ux), gy = ray_dot(got + 3, uy);
         glen = ray_norm(got + 3);
         double rest = glen * glen - gx * gx - gy * gy;
         off = rest > 0 ? sqrt(rest) : 0;              /* out of the drawing's plane */
@@ -402,6 +394,4 @@ void fig_camera(Markup *m, const Test *t, const Case *c, const double *got)
     fig_legend(m, 12, 334, "expected: starts at the eye, unit length, towards the pixel",
                got ? "your ray: where it starts and its direction" : "your code: no answer");
     fig_end(m);
-#undef PX
-#undef PY
 }

@@ -1,9 +1,7 @@
 /*
- * figures.c - see figures.h: which figure (fig_parts.h) draws a case, by
- * its test's kind.
+ * figures.c - see figures.h: which figure draws a case, by its test's kind.
  */
 #include "figures.h"
-#include "fig_parts.h"
 
 void figure_case(Markup *m, const Test *t, const TestResult *r, int c, const double *got)
 {

@@ -13,8 +13,10 @@
  *   Part 5   the triangle (or the mesh near the ray) seen along the ray
  *
  * Hit points are computed again here, in double, for display only: the
- * grade never depends on them.  The figures of the parts are in
- * fig_parts.h; this is the top of the figure files, which picks one.
+ * grade never depends on them.  This is the top of the figure files:
+ * figure_case picks the figure of a case's kind, one function a kind below
+ * (fig_view.c, fig_spheres.c, fig_flat.c), drawn with fig_draw.h and
+ * fig_ray.h.
  */
 #ifndef FIGURES_H
 #define FIGURES_H
@@ -27,5 +29,16 @@
  * case, or NULL when it gave none (the figure then shows the expected
  * answer alone).  For image tests r gives every pixel's answer. */
 void figure_case(Markup *m, const Test *t, const TestResult *r, int c, const double *got);
+
+/* The figure of each kind; each appends an inline <svg> (and, for some, a
+ * table) to m, as figure_case does. */
+void fig_plane(Markup *m, const Test *t, const Case *c, const double *got);      /* Part 1  */
+void fig_pixel(Markup *m, const Test *t, const Case *c, const double *got);      /* Part 2  */
+void fig_sphere(Markup *m, const Test *t, const Case *c, const double *got);     /* Part 3a */
+void fig_camera(Markup *m, const Test *t, const Case *c, const double *got);     /* Part 3b */
+void fig_color(Markup *m, const Test *t, const Case *c, const double *got);      /* Part 3b */
+void fig_image(Markup *m, const Test *t, const TestResult *r, int c);            /* Part 3b */
+void fig_planehit(Markup *m, const Test *t, const Case *c, const double *got);   /* Part 4  */
+void fig_triangle(Markup *m, const Test *t, const Case *c, const double *got);   /* Part 5  */
 
 #endif
