@@ -113,11 +113,12 @@ static void normal_arrow(double px, double py, double ux, double uy, double len,
     *ly = py + (len + 6) * uy + 4;
 }
 
-/* The normal drawn where no point of the plane's line has room for it
- * (normal_anchor: a plane along the window's edge, its normal pointing
- * out): the arrow shortened until its tip is inside the window (to
- * NORMAL_LEN_MIN pixels at the least), and its label, if it does not fit
- * past the tip, beside it, on the side with room. */
+/* The normal drawn from (px, py), also where no point of the plane's line
+ * has room for it (normal_anchor: a plane along the window's edge, its
+ * normal pointing out): the arrow shortened until its tip is inside the
+ * window (to NORMAL_LEN_MIN pixels at the least), and its label, if it
+ * does not fit past the tip, beside it, on the side with room.  (At a
+ * point normal_anchor chose, both fit as they are.) */
 static void normal_squeeze(const FigView *v, double px, double py, double ux, double uy, double *tx, double *ty,
                            double *lx0, double *lx1, double *ly)
 {
@@ -199,10 +200,7 @@ static void draw_content(Markup *m, const FigView *v, const RayFig *f, double aw
         bool room = main && normal_anchor(v, f, fa, fb, da, db, fig_py(v, 0), &anchor_a, &anchor_b);
         if (room || (main && fig_inside(v, fa, fb))) {
             double px = fig_px(v, anchor_a), py = fig_py(v, anchor_b), tx, ty, lx0, lx1, ly;
-            if (room)
-                normal_arrow(px, py, f->line_A / n, -f->line_B / n, NORMAL_LEN, &tx, &ty, &lx0, &lx1, &ly);
-            else
-                normal_squeeze(v, px, py, f->line_A / n, -f->line_B / n, &tx, &ty, &lx0, &lx1, &ly);
+            normal_squeeze(v, px, py, f->line_A / n, -f->line_B / n, &tx, &ty, &lx0, &lx1, &ly);
             svg_arrow(m, px, py, tx, ty, "#333333", 1.4, NULL);
             svg_text(m, lx0, ly, "start", 12, COL_TEXT, false, "normal n");
         }
@@ -607,13 +605,9 @@ void ray_figure(Markup *m, const RayFig *given)
 {
     /* a grazing plane is drawn with heights stretched: b becomes k b, so
      * the line A a + B b = C becomes A a + (B / k) b = C */
-    RayLayout ly = { .f = given, .stretch = line_stretch(given) };
-    RayFig stretched;
-    if (ly.stretch > 1) {
-        stretched = *given;
-        stretched.line_B = given->line_B / ly.stretch;
-        ly.f = &stretched;
-    }
+    RayFig stretched = *given;
+    RayLayout ly = { .f = &stretched, .stretch = line_stretch(given) };
+    stretched.line_B = given->line_B / ly.stretch;
     const RayFig *f = ly.f;
     ly.aw = f->want_hit ? f->want_t * f->rlen : NAN;
     ly.ag = f->got_known && f->got_hit ? f->got_t * f->rlen : NAN;

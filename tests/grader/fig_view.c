@@ -18,12 +18,6 @@
 
 /* ---- Part 1 --------------------------------------------------------------------- */
 
-/* Whether a returned size can be drawn: a finite number > 0. */
-static bool drawable(double v)
-{
-    return v > 0 && isfinite(v);
-}
-
 /* The legend at y: the expected pair c->want[0], [1] in want_fmt, the
  * code's got[0], [1] and then got_note in got_fmt, or no answer. */
 static void pair_legend(Markup *m, double y, const Case *c, const double *got, const char *want_fmt,
@@ -44,7 +38,8 @@ void fig_plane(Markup *m, const Test *t, const Case *c, const double *got)
     (void)t;
     double fov = c->in[0], aspect = c->in[1], d = c->in[2];
     double ww = c->want[0], hw = c->want[1];
-    bool wg_ok = got && drawable(got[0]), hg_ok = got && drawable(got[1]);
+    /* a returned size is drawn if it is a finite number > 0 */
+    bool wg_ok = got && got[0] > 0 && isfinite(got[0]), hg_ok = got && got[1] > 0 && isfinite(got[1]);
     double wg = wg_ok ? got[0] : 0, hg = hg_ok ? got[1] : 0;
     char b1[40], b2[40];
     fig_begin(m, 760, 336, "the view frustum from the side, and the image plane face on");
@@ -356,10 +351,8 @@ void fig_camera(Markup *m, const Test *t, const Case *c, const double *got)
     double reach = 1.3;
     if (pd <= 8)
         reach = fmax(reach, pd * 1.1);
-    if (have && hypot(ox, oy) <= 8)
-        reach = fmax(reach, hypot(ox, oy) + fmin(glen, 8) * 1.05);
-    else if (have)
-        reach = fmax(reach, fmin(glen, 8) * 1.05);
+    if (have)           /* the returned ray, from where it starts if that is near */
+        reach = fmax(reach, (hypot(ox, oy) <= 8 ? hypot(ox, oy) : 0) + fmin(glen, 8) * 1.05);
     fig_begin(m, 760, 356, "the eye, the pixel and the expected and returned ray direction");
     svg_text(m, 10, 19, "start", 14, COL_TEXT, true, "The plane of the eye, the pixel and the two "
              "rays (the dashed circle has radius 1)");

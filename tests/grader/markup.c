@@ -76,12 +76,14 @@ void mk_text(Markup *m, const char *text)
 {
     if (!text)
         return;
+    static const char special[] = "&<>\"'";
+    static const char *const entity[] = { "&amp;", "&lt;", "&gt;", "&quot;", "&#39;" };
     const unsigned char *s = (const unsigned char *)text;
     size_t n = strlen(text), k = 0;
     while (k < n) {
         size_t run = k;
         while (run < n && s[run] < 0x80 && (s[run] >= 0x20 || s[run] == '\n' || s[run] == '\t')
-               && s[run] != 0x7F && !strchr("&<>\"'", s[run]))
+               && s[run] != 0x7F && !strchr(special, s[run]))
             run++;
         mk_raw(m, text + k, run - k);
         k = run;
@@ -89,16 +91,9 @@ void mk_text(Markup *m, const char *text)
             break;
         unsigned char c = s[k];
         int len = c >= 0x80 ? utf8_sequence(s + k, n - k) : 1;
-        if (c == '&')
-            mk_raw(m, "&amp;", 5);
-        else if (c == '<')
-            mk_raw(m, "&lt;", 4);
-        else if (c == '>')
-            mk_raw(m, "&gt;", 4);
-        else if (c == '"')
-            mk_raw(m, "&quot;", 6);
-        else if (c == '\'')
-            mk_raw(m, "&#39;", 5);
+        const char *at = strchr(special, c);
+        if (at)
+            mk_raw(m, entity[at - special], strlen(entity[at - special]));
         else if (len > 1)
             mk_raw(m, text + k, (size_t)len);
         else
