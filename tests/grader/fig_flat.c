@@ -76,15 +76,6 @@ static void plain_figure(Markup *m, const char *title, const char *line1, const 
     fig_end(m);
 }
 
-/* Whether any of v[0 .. n-1] is NaN. */
-static bool any_nan(const double *v, int n)
-{
-    for (int k = 0; k < n; k++)
-        if (isnan(v[k]))
-            return true;
-    return false;
-}
-
 /* The plain figure of an input that makes the answer a miss whatever the
  * shape (what: "plane", "triangle"): a NaN among its nin numbers, or a ray
  * r with no direction.  Returns whether it drew one; if not, u is r's unit
@@ -92,11 +83,12 @@ static bool any_nan(const double *v, int n)
 static bool plain_ray_figure(Markup *m, const Case *c, int nin, const double *r, double *u, const char *what,
                              const double *got)
 {
-    if (any_nan(c->in, nin)) {
-        plain_figure(m, "NaN input", "A number of the input is NaN (not a number).",
-                     "No point can be computed from it: the answer must be a miss.", c, got);
-        return true;
-    }
+    for (int k = 0; k < nin; k++)
+        if (isnan(c->in[k])) {
+            plain_figure(m, "NaN input", "A number of the input is NaN (not a number).",
+                         "No point can be computed from it: the answer must be a miss.", c, got);
+            return true;
+        }
     if (!unit3(r, u)) {
         char line[100];
         snprintf(line, sizeof line, "A ray that goes nowhere meets no %s: the answer must be a miss.", what);

@@ -88,14 +88,21 @@ static void box_add(Box *bx, double x, double y)
     bx->y0 = fmin(bx->y0, y), bx->y1 = fmax(bx->y1, y);
 }
 
-/* Where the plane's line comes nearest e: (A, B) C / (A^2 + B^2). */
-static void line_foot(const RayFig *f, double *fa, double *fb)
-{
-    double n = hypot(f->line_A, f->line_B);
-    double A = f->line_A / n, B = f->line_B / n, C = f->line_C / n;
-    *fa = A * C;
-    *fb = B * C;
-}
+/* A figure as ray_figure lays it out: what its steps share. */
+typedef struct {
+    const RayFig *f;           /* the figure, with heights stretched (line_stretch) */
+    double stretch;            /* by how much (1: not at all)                       */
+    double aw, ag;             /* a of the expected and of the returned hit, or NaN */
+    bool got_drawable;         /* the returned hit is near enough to be drawn       */
+    bool both;                 /* both hits are drawn, and apart                    */
+    const RayCircle *tc;       /* the circle the hits are about, or NULL            */
+    double fa, fb;             /* the plane's foot (ray_figure), or 0, 0            */
+    Box bx;                    /* what the main window shows                        */
+    int nwin;                  /* the windows: the main one, then zoomed-in ones    */
+    FigView win[3];
+    const char *why[3];        /* why each zoomed-in window is there                */
+    int digits;                /* of the t in the labels                            */
+} RayLayout;
 
 /* The normal's arrow, drawn from (px, py): len pixels along the normal,
  * (ux, uy) in pixels (y down), to (*tx, *ty); its label "normal n" past
@@ -168,16 +175,19 @@ static bool normal_anchor(const FigView *v, const RayFig *f, double fa, double f
 
 /* ---- drawing ------------------------------------------------------------------ */
 
-/* Draws what the window v shows: the circles or the line, the ray (marked
- * in t in the main window), e, and the hits that fall inside it. */
-static void draw_content(Markup *m, const FigView *v, const RayFig *f, double aw, double ag,
-                         bool want_in, bool got_in, bool main)
+/* Draws what window k shows: the circles or the line, the ray (marked in
+ * t in the main window), e, and the hits that fall inside it. */
+static void draw_content(Markup *m, const RayLayout *lay, int k, bool want_in, bool got_in)
 {
+    const FigView *v = &lay->win[k];
+    const RayFig *f = lay->f;
+    double aw = lay->aw, ag = lay->ag;
+    bool main = k == 0;
     double left = v->cx - v->pw / 2 / v->s, right = v->cx + v->pw / 2 / v->s;
     /* the objects first, the ray and the marks over them */
-    for (int k = 0; k < f->ncircles; k++) {
-        const RayCircle *c = &f->circles[k];
-        fig_circle(m, v, c->a, c->b, c->R, c->fill, 0.45, "#333333", k == f->target ? 1.6 : 1);
+    for (int q = 0; q < f->ncircles; q++) {
+        const RayCircle *c = &f->circles[q];
+        fig_circle(m, v, c->a, c->b, c->R, c->fill, 0.45, "#333333", q == f->target ? 1.6 : 1);
         /* the centre, and the label above the circle */
         if (c->R * v->s > 6 && fig_inside(v, c->a, c->b))
             svg_circle(m, fig_px(v, c->a), fig_py(v, c->b), 2, "#333333", "none", 0);
@@ -191,8 +201,7 @@ static void draw_content(Markup *m, const FigView *v, const RayFig *f, double aw
         }
     }
     if (f->has_line) {
-        double fa, fb, n = hypot(f->line_A, f->line_B);
-        line_foot(f, &fa, &fb);
+        double fa = lay->fa, fb = lay->fb, n = hypot(f->line_A, f->line_B);
         double da = f->line_B / n, db = -f->line_A / n, far = 4 * (right - left) + fabs(fa - v->cx)
                                                               + fabs(fb - v->cy);
         fig_segment(m, v, fa - far * da, fb - far * db, fa + far * da, fb + far * db, "#333333", 3, NULL);
@@ -263,22 +272,6 @@ static double line_stretch(const RayFig *f)
 }
 
 /* ---- the figure ---------------------------------------------------------------- */
-
-/* A figure as ray_figure lays it out: what its steps share. */
-typedef struct {
-    const RayFig *f;           /* the figure, with heights stretched (line_stretch) */
-    double stretch;            /* by how much (1: not at all)                       */
-    double aw, ag;             /* a of the expected and of the returned hit, or NaN */
-    bool got_drawable;         /* the returned hit is near enough to be drawn       */
-    bool both;                 /* both hits are drawn, and apart                    */
-    const RayCircle *tc;       /* the circle the hits are about, or NULL            */
-    double fa, fb;             /* the plane's foot (line_foot), or 0, 0             */
-    Box bx;                    /* what the main window shows                        */
-    int nwin;                  /* the windows: the main one, then zoomed-in ones    */
-    FigView win[3];
-    const char *why[3];        /* why each zoomed-in window is there                */
-    int digits;                /* of the t in the labels                            */
-} RayLayout;
 
 /* How far the interesting things are from e: the expected hit, the
  * circles' nearest points and the plane's foot (or else the circles'
@@ -524,7 +517,7 @@ static bool draw_window(Markup *m, const RayLayout *ly, int k)
     bool want_in = isfinite(ly->aw) && fig_inside(v, ly->aw, 0);
     bool got_in = ly->got_drawable && fig_inside(v, ly->ag, 0);
     fig_window(m, v, k ? "#f8f5fd" : "#fbfbfb");
-    draw_content(m, v, ly->f, ly->aw, ly->ag, want_in, got_in, k == 0);
+    draw_content(m, ly, k, want_in, got_in);
     if (k + 1 < ly->nwin) {
         /* where the next window is, in this one */
         const FigView *z = &ly->win[k + 1];
@@ -612,8 +605,12 @@ void ray_figure(Markup *m, const RayFig *given)
     ly.aw = f->want_hit ? f->want_t * f->rlen : NAN;
     ly.ag = f->got_known && f->got_hit ? f->got_t * f->rlen : NAN;
     ly.tc = f->target >= 0 && f->target < f->ncircles ? &f->circles[f->target] : NULL;
-    if (f->has_line)
-        line_foot(f, &ly.fa, &ly.fb);
+    if (f->has_line) {
+        /* where the plane's line comes nearest e: (A, B) C / (A^2 + B^2) */
+        double n = hypot(f->line_A, f->line_B);
+        ly.fa = f->line_A / n * (f->line_C / n);
+        ly.fb = f->line_B / n * (f->line_C / n);
+    }
     ray_main_box(&ly, ray_reach(&ly));
     fig_fit(&ly.win[0], ly.bx.x0, ly.bx.y0, ly.bx.x1, ly.bx.y1, 0.06, 10, TOP, 740, WH);
     ly.both = isfinite(ly.aw) && ly.got_drawable && ly.aw != ly.ag;
