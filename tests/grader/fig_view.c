@@ -72,10 +72,9 @@ void fig_plane(Markup *m, const Test *t, const Case *c, const double *got)
     if (hg_ok)
         svg_text(m, fmin(px + 10, 440), fmin(fig_py(&v, -hg / 2) - 2, 274), "start", 12, COL_GOT, true,
                  "your h");
-    if (hmax * v.s < 4)
-        svg_text(m, 16, 46, "start", 11, COL_NOTE, false, "the plane is too small to see at this scale");
-    else if (d * v.s < 4)
-        svg_text(m, 16, 46, "start", 11, COL_NOTE, false, "d is too small to see beside h at this scale");
+    if (hmax * v.s < 4 || d * v.s < 4)
+        svg_text(m, 16, 46, "start", 11, COL_NOTE, false, "%s is too small to see%s at this scale",
+                 hmax * v.s < 4 ? "the plane" : "d", hmax * v.s < 4 ? "" : " beside h");
     if (hg_ok && hg != hw && fabs(hg - hw) * v.s < 2)
         svg_text(m, 16, 60, "start", 11, COL_NOTE, false, "the two h differ by %s of h: drawn side by "
                  "side to show both", fig_num(b1, sizeof b1, fabs(hg - hw) / hw, 2));
