@@ -469,7 +469,8 @@ static void hit_label(Markup *m, const RayLayout *ly, int k, bool got)
         snprintf(text, sizeof text, "%s", got ? "yours" : "expected");
     double lo = v->px0 + 4, hi = v->px0 + v->pw - 4, w = 6.6 * (double)strlen(text);
     double px = fmin(fmax(fig_px(v, got ? ly->ag : ly->aw), lo + w / 2), hi - w / 2);
-    svg_text(m, px, fig_py(v, 0) + (got ? 34 : -14), "middle", 12, got ? COL_GOT : COL_WANT, true, "%s", text);
+    svg_text(m, px, fig_py(v, 0) + (got ? 34 : -14), "middle", 12, got ? COL_GOT : COL_WANT, true, "%s",
+             text);
 }
 
 /* The words in window k's corners: of a zoomed-in window, how far it
@@ -529,6 +530,7 @@ static bool draw_window(Markup *m, const RayLayout *ly, int k)
     fig_window_end(m, v, k > 0);
     if (want_in)
         hit_label(m, ly, k, false);
+    /* the returned one's where it is apart from the expected (always in the main window) */
     if (got_in && (k == 0 || !want_in || fabs(fig_px(v, ly->aw) - fig_px(v, ly->ag)) > 4))
         hit_label(m, ly, k, true);
     window_note(m, ly, k);
@@ -548,8 +550,8 @@ static void got_off_figure(Markup *m, const RayLayout *ly)
     else
         snprintf(text, sizeof text, "%syour t = %s: off the figure%s", ahead ? "" : "\xE2\x86\x90 ",
                  fig_num(buf, sizeof buf, f->got_t, 6), ahead ? " \xE2\x86\x92" : "");
-    svg_text(m, ahead ? main->px0 + main->pw - 6 : main->px0 + 6, fig_py(main, 0) + 34, ahead ? "end" : "start",
-             12, COL_GOT, true, "%s", text);
+    svg_text(m, ahead ? main->px0 + main->pw - 6 : main->px0 + 6, fig_py(main, 0) + 34,
+             ahead ? "end" : "start", 12, COL_GOT, true, "%s", text);
 }
 
 /* The legend and the notes under the windows. */
