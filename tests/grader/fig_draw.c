@@ -104,8 +104,8 @@ void fig_polygon(Markup *m, const FigView *v, const double *wx, const double *wy
     if (n < 2 || n > 8)
         return;
     for (int k = 0; k < n; k++) {
-        x[k] = v->px0 + v->pw / 2 + (wx[k] - v->cx) * v->s;
-        y[k] = v->py0 + v->ph / 2 - (wy[k] - v->cy) * v->s;
+        x[k] = fig_px(v, wx[k]);
+        y[k] = fig_py(v, wy[k]);
         if (!isfinite(x[k]) || !isfinite(y[k]))
             return;
     }

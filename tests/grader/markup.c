@@ -194,12 +194,6 @@ void svg_rect(Markup *m, double x, double y, double w, double h, const char *fil
     mk_printf(m, "/>\n");
 }
 
-void svg_cross(Markup *m, double cx, double cy, double r, const char *color, double width)
-{
-    svg_line(m, cx - r, cy - r, cx + r, cy + r, color, width, NULL);
-    svg_line(m, cx - r, cy + r, cx + r, cy - r, color, width, NULL);
-}
-
 void svg_text(Markup *m, double x, double y, const char *anchor, double size, const char *color,
               bool bold, const char *fmt, ...)
 {
@@ -225,5 +219,6 @@ void svg_mark_want(Markup *m, double x, double y)
 void svg_mark_got(Markup *m, double x, double y)
 {
     svg_circle(m, x, y, 7.5, "none", COL_GOT, 2.2);
-    svg_cross(m, x, y, 4.2, COL_GOT, 2);
+    svg_line(m, x - 4.2, y - 4.2, x + 4.2, y + 4.2, COL_GOT, 2, NULL);      /* and an x across it */
+    svg_line(m, x - 4.2, y + 4.2, x + 4.2, y - 4.2, COL_GOT, 2, NULL);
 }

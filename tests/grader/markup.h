@@ -61,8 +61,6 @@ void svg_circle(Markup *m, double cx, double cy, double r, const char *fill, con
 /* A rectangle. */
 void svg_rect(Markup *m, double x, double y, double w, double h, const char *fill,
               const char *stroke, double width);
-/* An x-shaped cross of half-size r. */
-void svg_cross(Markup *m, double cx, double cy, double r, const char *color, double width);
 /* Text; anchor is "start", "middle" or "end"; size in pixels; bold or not.
  * The text is escaped. */
 void svg_text(Markup *m, double x, double y, const char *anchor, double size, const char *color,
