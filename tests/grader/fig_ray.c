@@ -434,8 +434,7 @@ static void lay_out_windows(RayLayout *ly)
                 left = (bx->x0 + bx->x1) / 2 - seen / 2;
             v->cx = left + w / 2 / v->s;
         } else {
-            FigView z = *v;
-            double cx = z.cx, cy = z.cy, sw = z.pw / z.s, sh = z.ph / z.s;
+            double cx = v->cx, cy = v->cy, sw = v->pw / v->s, sh = v->ph / v->s;
             fig_fit(v, cx - sw / 2, cy - sh / 2, cx + sw / 2, cy + sh / 2, 0, x, TOP, w, WH);
         }
         v->px0 = x;

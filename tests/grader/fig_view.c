@@ -287,12 +287,10 @@ void fig_pixel(Markup *m, const Test *t, const Case *c, const double *got)
  * across it, or any way square to ux where it adds nothing across. */
 static void camera_frame(const double *E, const double *dw, const double *got, double *ux, double *uy)
 {
-    double across[3] = { 0, 0, 0 };
-    for (int k = 0; k < 3; k++)
-        ux[k] = dw[k], uy[k] = 0;
-    if (got) {
-        for (int k = 0; k < 3; k++)
-            across[k] = got[3 + k] + (got[k] - E[k]);
+    double across[3];
+    for (int k = 0; k < 3; k++) {
+        ux[k] = dw[k];
+        across[k] = got ? got[3 + k] + (got[k] - E[k]) : 0;
     }
     double along = ray_dot(across, ux);
     for (int k = 0; k < 3; k++)
