@@ -156,11 +156,8 @@ static void cost(Markup *m, const ClassView *v)
 int class_page_write(const char *path, const ClassView *v, char *err, size_t errlen)
 {
     Markup m;
-    mk_init(&m);
-    mk_printf(&m, "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-                  "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-                  "<title>The class at a glance</title>\n<style>\n%s%s</style>\n</head>\n<body>\n"
-                  "<h1>The class at a glance</h1>\n", report_style, class_style);
+    report_page_begin(&m, "The class at a glance", NULL, class_style);
+    mk_printf(&m, "<h1>The class at a glance</h1>\n");
     summary(&m, v);
     mk_printf(&m, "<nav><a href=\"#scores\">Scores</a><a href=\"#causes\">What went wrong</a>"
                   "<a href=\"#tests\">Tests most failed</a><a href=\"#people\">Need a person</a>%s"
@@ -173,15 +170,11 @@ int class_page_write(const char *path, const ClassView *v, char *err, size_t err
     class_people(&m, v);
     class_changes(&m, v);
     cost(&m, v);
-    mk_printf(&m, "<footer>Written by the kit's grader (tests/grader) at the end of "
-                  "<code>make grade-all</code>, from what each submission's grading found: the same "
-                  "grading as its results file and its page. This page names every student: it is "
-                  "readable by its owner alone.</footer>\n</body>\n</html>\n");
-    if (!mk_ok(&m)) {
-        snprintf(err, errlen, "%s: out of memory", path);
-        mk_free(&m);
+    if (report_page_end(&m, "Written by the kit's grader (tests/grader) at the end of <code>make grade-all"
+                            "</code>, from what each submission's grading found: the same grading as its "
+                            "results file and its page. This page names every student: it is readable by "
+                            "its owner alone.", path, err, errlen) != 0)
         return -1;
-    }
     char tmp[PATH_MAX + 32];
     FILE *f = class_private_open(path, tmp, sizeof tmp);
     if (!f) {

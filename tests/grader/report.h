@@ -12,6 +12,7 @@
 #include "config.h"
 #include "grade.h"
 #include "kit/image.h"
+#include "markup.h"
 #include "../tools/json.h"
 
 /* The table: per part score / max, each test PASS or FAIL, and for each
@@ -22,6 +23,10 @@ void report_table(FILE *f, const Grade *g, const GradeConfig *cfg, const char *s
 
 /* Writes results.json through a temporary file and rename; 0 or -1. */
 int report_json(const char *path, const Grade *g, const char *submission, char *err, size_t errlen);
+
+/* Appends printf-style text to a malloc'd string (left as it was if memory
+ * runs out). */
+void appendf(char **s, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 /* A results.json for a submission the grader could not grade at all. */
 int report_json_error(const char *path, const char *message, char *err, size_t errlen);
@@ -70,6 +75,12 @@ int report_html(const char *path, const Grade *g, const GradeConfig *cfg, const 
 
 /* The style sheet of the pages (this one and the class page's). */
 extern const char report_style[];
+/* Starts m with a page in that style, up to its <body>: its title (title
+ * then name, escaped; name may be NULL) and the style sheet, style after it. */
+void report_page_begin(Markup *m, const char *title, const char *name, const char *style);
+/* Ends m's page with its footer (footer, as it is); 0, or -1 with "path:
+ * out of memory" in err, m freed, when memory ran out on the way. */
+int report_page_end(Markup *m, const char *footer, const char *path, char *err, size_t errlen);
 
 /* The case a failing test's figure shows, and the answer drawn: the first
  * wrong case, else the case where the answers stopped (no answer: *got is

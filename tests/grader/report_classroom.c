@@ -36,12 +36,9 @@ static const char *status_word(const TestResult *r)
 static void test_entry(JsonWriter *j, const Test *t, const TestResult *r, bool counted, size_t max)
 {
     json_begin_object(j);
-    json_key(j, "name");
-    json_string(j, t->name);
-    json_key(j, "status");
-    json_string(j, status_word(r));
-    json_key(j, "score");
-    json_number(j, counted ? r->score : 0);
+    json_member_string(j, "name", t->name);
+    json_member_string(j, "status", status_word(r));
+    json_member_number(j, "score", counted ? r->score : 0);
     json_key(j, "message");
     if (r->passed)
         json_string(j, "");
@@ -57,8 +54,7 @@ static void test_entry(JsonWriter *j, const Test *t, const TestResult *r, bool c
     if (!r->passed) {
         char code[64];
         snprintf(code, sizeof code, "make grade PART=%s", part_label(t->part));
-        json_key(j, "test_code");
-        json_string(j, code);
+        json_member_string(j, "test_code", code);
     }
     json_end_object(j);
 }
@@ -86,12 +82,9 @@ static void runner_begin(JsonWriter *j, const char *status, double max_score)
 {
     json_init(j, 0);
     json_begin_object(j);
-    json_key(j, "version");
-    json_int(j, 1);
-    json_key(j, "status");
-    json_string(j, status);
-    json_key(j, "max_score");
-    json_number(j, max_score);
+    json_member_int(j, "version", 1);
+    json_member_string(j, "status", status);
+    json_member_number(j, "max_score", max_score);
     json_key(j, "tests");
     json_begin_array(j);
 }
@@ -132,14 +125,10 @@ static int hard_runner(KitBuf *out, const Grade *g)
     }
     if (n == 0) {
         json_begin_object(&j);
-        json_key(&j, "name");
-        json_string(&j, "no hard cases are graded");
-        json_key(&j, "status");
-        json_string(&j, "pass");
-        json_key(&j, "score");
-        json_int(&j, 0);
-        json_key(&j, "line_no");
-        json_int(&j, 0);
+        json_member_string(&j, "name", "no hard cases are graded");
+        json_member_string(&j, "status", "pass");
+        json_member_int(&j, "score", 0);
+        json_member_int(&j, "line_no", 0);
         json_end_object(&j);
     }
     return runner_end(out, "hard", &j);

@@ -74,6 +74,26 @@ const char report_style[] =
     "a{color:inherit;text-decoration:none}details{display:none}"
     "article.test{border:1px solid #999}}\n";
 
+void report_page_begin(Markup *m, const char *title, const char *name, const char *style)
+{
+    mk_init(m);
+    mk_printf(m, "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+                 "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>");
+    mk_text(m, title);
+    mk_text(m, name);
+    mk_printf(m, "</title>\n<style>\n%s%s</style>\n</head>\n<body>\n", report_style, style);
+}
+
+int report_page_end(Markup *m, const char *footer, const char *path, char *err, size_t errlen)
+{
+    mk_printf(m, "<footer>%s</footer>\n</body>\n</html>\n", footer);
+    if (mk_ok(m))
+        return 0;
+    snprintf(err, errlen, "%s: out of memory", path);
+    mk_free(m);
+    return -1;
+}
+
 /* How many of a part's graded tests failed, and how many there are. */
 static void count_tests(const Grade *g, int part, int *failed, int *total)
 {
@@ -83,6 +103,17 @@ static void count_tests(const Grade *g, int part, int *failed, int *total)
             (*total)++;
             *failed += !g->results[k].passed;
         }
+}
+
+/* A box of what part p's grading said, under "Part P, " said; text as it
+ * is with pre. */
+#define PROBES "probes run on your code confirmed it)"
+static void diag(Markup *m, int p, const char *said, const char *text, bool pre)
+{
+    mk_printf(m, "<div class=\"diag\"><strong>Part %s, %s:</strong>\n%s", part_label(p), said,
+              pre ? "<pre>" : "");
+    mk_text(m, text);
+    mk_printf(m, "%s</div>\n", pre ? "</pre>" : "");
 }
 
 /* The table of each part's points, the total, and each part's diagnosis. */
@@ -117,27 +148,15 @@ static void scores(Markup *m, const Grade *g, const GradeConfig *cfg)
     for (int p = 0; p < NPARTS; p++) {
         /* Its causes one a line, as the terminal shows them ("- "): of the
          * core's failures, then of the hard cases' alone. */
-        if (g->graded[p] && g->diagnosis[p] && g->core[p] < g->core_max[p]) {
-            mk_printf(m, "<div class=\"diag\"><strong>Part %s, what went wrong (probes run on your code "
-                         "confirmed it):</strong>\n", part_label(p));
-            mk_text(m, g->diagnosis[p]);
-            mk_printf(m, "</div>\n");
-        }
-        if (g->graded[p] && g->diagnosis_hard[p]) {
-            mk_printf(m, "<div class=\"diag\"><strong>Part %s, the hard cases (%sprobes run on your code "
-                         "confirmed it):</strong>\n", part_label(p), cfg->hard_is_bonus ? "extra credit; " : "");
-            mk_text(m, g->diagnosis_hard[p]);
-            mk_printf(m, "</div>\n");
-        }
+        if (g->graded[p] && g->diagnosis[p] && g->core[p] < g->core_max[p])
+            diag(m, p, "what went wrong (" PROBES, g->diagnosis[p], false);
+        if (g->graded[p] && g->diagnosis_hard[p])
+            diag(m, p, cfg->hard_is_bonus ? "the hard cases (extra credit; " PROBES : "the hard cases (" PROBES,
+                 g->diagnosis_hard[p], false);
     }
-    for (int p = 0; p < NPARTS; p++) {
-        if (!grade_warned(g, p))
-            continue;
-        mk_printf(m, "<div class=\"diag\"><strong>Part %s, the compiler warned (a warning often points "
-                     "at a mistake):</strong>\n<pre>", part_label(p));
-        mk_text(m, g->build_messages[p]);
-        mk_printf(m, "</pre></div>\n");
-    }
+    for (int p = 0; p < NPARTS; p++)
+        if (grade_warned(g, p))
+            diag(m, p, "the compiler warned (a warning often points at a mistake)", g->build_messages[p], true);
 }
 
 /* What the figures' colours and windows mean. */
@@ -338,6 +357,23 @@ static void failing_test(Markup *m, const Test *t, const TestResult *r, int inde
     mk_printf(m, "</article>\n");
 }
 
+/* The end of a <details> element's summary, and the names of the tests
+ * of the graded parts (of part alone, unless it is -1) that passed or not:
+ * the tests a page lists without their details. */
+static void test_names(Markup *m, const Grade *g, int part, bool passed)
+{
+    mk_printf(m, "</summary>\n<ul>\n");
+    for (int k = 0; k < g->tests->n; k++) {
+        const Test *t = &g->tests->tests[k];
+        if (!g->graded[t->part] || (part >= 0 && t->part != part) || g->results[k].passed != passed)
+            continue;
+        mk_printf(m, "<li>");
+        mk_text(m, t->name);
+        mk_printf(m, "%s</li>\n", t->hard ? " <span class=\"tag\">hard case</span>" : "");
+    }
+    mk_printf(m, "</ul>\n</details>\n");
+}
+
 /* Every failing test, part by part, core tests before hard ones (as the
  * terminal lists them), the hard ones under a heading of their own (bonus:
  * they are extra credit); a part that did not build shows the compiler's
@@ -388,16 +424,8 @@ static void failures(Markup *m, const Grade *g, bool bonus)
             if (failed == total) {      /* counted in unrun above */
                 /* Each test's own article would only say it could not run. */
                 mk_printf(m, "<details><summary>None of its %d tests could run (open to list "
-                             "them)</summary>\n<ul>\n", total);
-                for (int k = 0; k < g->tests->n; k++) {
-                    const Test *t = &g->tests->tests[k];
-                    if (t->part != p)
-                        continue;
-                    mk_printf(m, "<li>");
-                    mk_text(m, t->name);
-                    mk_printf(m, "%s</li>\n", t->hard ? " <span class=\"tag\">hard case</span>" : "");
-                }
-                mk_printf(m, "</ul>\n</details>\n");
+                             "them)", total);
+                test_names(m, g, p, false);
                 continue;
             }
         }
@@ -427,16 +455,8 @@ static void passed(Markup *m, const Grade *g)
     if (n == 0)
         return;
     mk_printf(m, "<h2 id=\"passed\">What passed</h2>\n<details><summary>%d test%s passed "
-                 "(open to list them)</summary>\n<ul>\n", n, n == 1 ? "" : "s");
-    for (int k = 0; k < g->tests->n; k++) {
-        const Test *t = &g->tests->tests[k];
-        if (!g->graded[t->part] || !g->results[k].passed)
-            continue;
-        mk_printf(m, "<li>");
-        mk_text(m, t->name);
-        mk_printf(m, "%s</li>\n", t->hard ? " <span class=\"tag\">hard case</span>" : "");
-    }
-    mk_printf(m, "</ul>\n</details>\n");
+                 "(open to list them)", n, n == 1 ? "" : "s");
+    test_names(m, g, -1, true);
 }
 
 /* Makes the directories of path's parents that are missing; never fails
@@ -459,12 +479,7 @@ int report_html(const char *path, const Grade *g, const GradeConfig *cfg, const 
                 const ReportRenders *rr, char *err, size_t errlen)
 {
     Markup m;
-    mk_init(&m);
-    mk_printf(&m, "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-                  "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
-                  "<title>Grade report: ");
-    mk_text(&m, submission);
-    mk_printf(&m, "</title>\n<style>\n%s</style>\n</head>\n<body>\n", report_style);
+    report_page_begin(&m, "Grade report: ", submission, "");
     mk_printf(&m, "<h1>Your grade, with pictures</h1>\n<p>Submission <code>");
     mk_text(&m, submission);
     mk_printf(&m, "</code>, graded by <code>make grade</code>. This page is for you to read on "
@@ -487,14 +502,10 @@ int report_html(const char *path, const Grade *g, const GradeConfig *cfg, const 
         renders(&m, rr);
     failures(&m, g, cfg->hard_is_bonus);
     passed(&m, g);
-    mk_printf(&m, "<footer>Written by the kit's grader (tests/grader). The pictures are drawn "
-                  "from the numbers of each test: the expected answers, computed independently, "
-                  "and your code's answers.</footer>\n</body>\n</html>\n");
-    if (!mk_ok(&m)) {
-        snprintf(err, errlen, "%s: out of memory", path);
-        mk_free(&m);
+    if (report_page_end(&m, "Written by the kit's grader (tests/grader). The pictures are drawn from the "
+                            "numbers of each test: the expected answers, computed independently, and your "
+                            "code's answers.", path, err, errlen) != 0)
         return -1;
-    }
     make_parents(path);
     int status = kit_save_file(path, m.b.data, m.b.len, err, errlen);
     mk_free(&m);

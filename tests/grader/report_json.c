@@ -10,22 +10,37 @@
 #include "jail.h"
 #include "../tools/json.h"
 
+#include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+
+#define SUMMARY_MAX 16383
+
+void appendf(char **s, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    size_t old = *s ? strlen(*s) : 0;
+    char *t = n >= 0 ? realloc(*s, old + (size_t)n + 1) : NULL;
+    if (!t)
+        return;
+    va_start(ap, fmt);
+    vsnprintf(t + old, (size_t)n + 1, fmt, ap);
+    va_end(ap);
+    *s = t;
+}
 
 static void test_entry(JsonWriter *j, const Test *t, const TestResult *r)
 {
     json_begin_object(j);
-    json_key(j, "name");
-    json_string(j, t->name);
-    json_key(j, "score");
-    json_number(j, r->score);
-    json_key(j, "max_score");
-    json_number(j, r->max_score);
-    json_key(j, "status");
-    json_string(j, r->passed ? "passed" : "failed");
-    json_key(j, "output");
-    json_string(j, r->passed ? "" : (r->output ? r->output : ""));
+    json_member_string(j, "name", t->name);
+    json_member_number(j, "score", r->score);
+    json_member_number(j, "max_score", r->max_score);
+    json_member_string(j, "status", r->passed ? "passed" : "failed");
+    json_member_string(j, "output", r->passed ? "" : (r->output ? r->output : ""));
     json_key(j, "tags");
     json_begin_array(j);
     char tag[16];
@@ -34,8 +49,7 @@ static void test_entry(JsonWriter *j, const Test *t, const TestResult *r)
     if (t->hard)
         json_string(j, "hard");
     json_end_array(j);
-    json_key(j, "visibility");
-    json_string(j, t->hidden ? "after_published" : "visible");
+    json_member_string(j, "visibility", t->hidden ? "after_published" : "visible");
     json_end_object(j);
 }
 
@@ -44,55 +58,45 @@ int report_json(const char *path, const Grade *g, const char *submission, char *
     JsonWriter j;
     json_init(&j, 2);
     json_begin_object(&j);
-    json_key(&j, "score");
-    json_number(&j, g->total + g->bonus);
-    json_key(&j, "execution_time");
-    json_number(&j, g->seconds);
-    char summary[16384];
-    int n = snprintf(summary, sizeof summary, "Graded %s: %s / %s", submission, points_text(g->total).s,
-                     points_text(g->total_max).s);
+    json_member_number(&j, "score", g->total + g->bonus);
+    json_member_number(&j, "execution_time", g->seconds);
+    /* The output is cut to SUMMARY_MAX bytes. */
+    char *summary = NULL;
+    appendf(&summary, "Graded %s: %s / %s", submission, points_text(g->total).s,
+            points_text(g->total_max).s);
     if (g->bonus_max > 0)
-        n += snprintf(summary + n, sizeof summary - (size_t)n, ", hard-case bonus %s / %s",
-                      points_text(g->bonus).s, points_text(g->bonus_max).s);
-    for (int p = 0; p < NPARTS; p++) {
-        if (!g->graded[p] || (size_t)n >= sizeof summary)
-            continue;
-        n += snprintf(summary + n, sizeof summary - (size_t)n, "\nPart %s: %s / %s", part_label(p),
-                      points_text(g->core[p]).s, points_text(g->core_max[p]).s);
-    }
+        appendf(&summary, ", hard-case bonus %s / %s", points_text(g->bonus).s,
+                points_text(g->bonus_max).s);
+    for (int p = 0; p < NPARTS; p++)
+        if (g->graded[p])
+            appendf(&summary, "\nPart %s: %s / %s", part_label(p), points_text(g->core[p]).s,
+                    points_text(g->core_max[p]).s);
     /* A part that did not build: why, once, above its tests (each of which
      * says only that it could not run). */
     for (int p = 0; p < NPARTS; p++) {
-        if (!g->graded[p] || g->built[p] || (size_t)n >= sizeof summary)
+        if (!g->graded[p] || g->built[p])
             continue;
         char why[200];
         grade_unbuilt_why(g, p, false, why, sizeof why);
-        n += snprintf(summary + n, sizeof summary - (size_t)n, "\n\nPart %s: %s, so none of its tests "
-                      "could run:\n%s", part_label(p), why, g->build_messages[p] ? g->build_messages[p] : "");
+        appendf(&summary, "\n\nPart %s: %s, so none of its tests could run:\n%s", part_label(p), why,
+                g->build_messages[p] ? g->build_messages[p] : "");
     }
-    for (int p = 0; p < NPARTS; p++) {
-        if (!g->diagnosis[p] || g->core[p] >= g->core_max[p] || (size_t)n >= sizeof summary)
-            continue;
-        n += snprintf(summary + n, sizeof summary - (size_t)n,
-                      "\n\nPart %s, what went wrong (probes run on your code confirmed it):\n%s",
-                      part_label(p), g->diagnosis[p]);
-    }
-    for (int p = 0; p < NPARTS; p++) {
-        if (!g->diagnosis_hard[p] || (size_t)n >= sizeof summary)
-            continue;
-        n += snprintf(summary + n, sizeof summary - (size_t)n,
-                      "\n\nPart %s, the hard cases (extra credit; probes run on your code confirmed it):\n%s",
-                      part_label(p), g->diagnosis_hard[p]);
-    }
-    for (int p = 0; p < NPARTS; p++) {
-        if (!grade_warned(g, p) || (size_t)n >= sizeof summary)
-            continue;
-        n += snprintf(summary + n, sizeof summary - (size_t)n,
-                      "\n\nPart %s, the compiler warned (a warning often points at a mistake):\n%s",
-                      part_label(p), g->build_messages[p]);
-    }
+    for (int p = 0; p < NPARTS; p++)
+        if (g->diagnosis[p] && g->core[p] < g->core_max[p])
+            appendf(&summary, "\n\nPart %s, what went wrong (probes run on your code confirmed it):\n%s",
+                    part_label(p), g->diagnosis[p]);
+    for (int p = 0; p < NPARTS; p++)
+        if (g->diagnosis_hard[p])
+            appendf(&summary, "\n\nPart %s, the hard cases (extra credit; probes run on your code "
+                    "confirmed it):\n%s", part_label(p), g->diagnosis_hard[p]);
+    for (int p = 0; p < NPARTS; p++)
+        if (grade_warned(g, p))
+            appendf(&summary, "\n\nPart %s, the compiler warned (a warning often points at a "
+                    "mistake):\n%s", part_label(p), g->build_messages[p]);
+    size_t n = summary ? strlen(summary) : 0;
     json_key(&j, "output");
-    json_string(&j, summary);
+    json_string_bytes(&j, summary ? summary : "", n < SUMMARY_MAX ? n : SUMMARY_MAX);
+    free(summary);
     /* The causes' keys (tests/selftest/README.md), for instructors' tools. */
     json_key(&j, "extra_data");
     json_begin_object(&j);
@@ -106,8 +110,7 @@ int report_json(const char *path, const Grade *g, const char *submission, char *
     }
     json_end_object(&j);
     /* Where the submission's code ran (jail.h), and what that guarantees. */
-    json_key(&j, "jail");
-    json_string(&j, jail_describe());
+    json_member_string(&j, "jail", jail_describe());
     json_end_object(&j);
     json_key(&j, "tests");
     json_begin_array(&j);
@@ -126,15 +129,13 @@ int report_json_error(const char *path, const char *message, char *err, size_t e
     JsonWriter j;
     json_init(&j, 2);
     json_begin_object(&j);
-    json_key(&j, "score");
-    json_number(&j, 0);
+    json_member_number(&j, "score", 0);
     return report_json_error_end(&j, path, message, err, errlen);
 }
 
 int report_json_error_end(JsonWriter *j, const char *path, const char *message, char *err, size_t errlen)
 {
-    json_key(j, "output");
-    json_string(j, message);
+    json_member_string(j, "output", message);
     json_key(j, "tests");
     json_begin_array(j);
     json_end_array(j);

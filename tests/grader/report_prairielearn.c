@@ -8,7 +8,6 @@
 #include "report.h"
 #include "../tools/json.h"
 
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,25 +17,6 @@
  * RESULTS_MAX. */
 #define OUTPUT_MAX 3000
 #define RESULTS_MAX (900 * 1024)
-
-/* Appends printf-style text to a malloc'd string (left as it was if memory
- * runs out). */
-static void append(char **s, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static void append(char **s, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    int n = vsnprintf(NULL, 0, fmt, ap);
-    va_end(ap);
-    size_t old = *s ? strlen(*s) : 0;
-    char *t = n >= 0 ? realloc(*s, old + (size_t)n + 1) : NULL;
-    if (!t)
-        return;
-    va_start(ap, fmt);
-    vsnprintf(t + old, (size_t)n + 1, fmt, ap);
-    va_end(ap);
-    *s = t;
-}
 
 /* Whether any test of a graded part ran: the submission could be graded. */
 static bool any_test_ran(const Grade *g)
@@ -69,17 +49,13 @@ static void cut_string(JsonWriter *j, const char *s, size_t max)
 static void test_entry(JsonWriter *j, const Test *t, const TestResult *r, size_t output_max)
 {
     json_begin_object(j);
-    json_key(j, "name");
-    json_string(j, t->name);
-    json_key(j, "description");
-    json_string(j, t->hard ? "a hard case: extra credit, not counted in this question's score"
-                           : t->note[0] ? t->note : "");
-    json_key(j, "points");
-    json_number(j, t->hard ? 0 : r->score);
-    json_key(j, "max_points");
-    json_number(j, t->hard ? 0 : r->max_score);
-    json_key(j, "message");
-    json_string(j, r->passed ? "passed" : r->ran ? "failed" : "not run");
+    json_member_string(j, "name", t->name);
+    json_member_string(j, "description", t->hard ? "a hard case: extra credit, not counted in this "
+                                                   "question's score"
+                                                 : t->note[0] ? t->note : "");
+    json_member_number(j, "points", t->hard ? 0 : r->score);
+    json_member_number(j, "max_points", t->hard ? 0 : r->max_score);
+    json_member_string(j, "message", r->passed ? "passed" : r->ran ? "failed" : "not run");
     json_key(j, "output");
     if (r->passed)
         json_string(j, "");
@@ -108,48 +84,47 @@ static void write_results(JsonWriter *j, const Grade *g, size_t output_max)
 
     char *message = NULL, *output = NULL, *format_errors = NULL;
     if (gradable) {
-        append(&message, "Core points: %s / %s.", points_text(core).s, points_text(core_max).s);
+        appendf(&message, "Core points: %s / %s.", points_text(core).s, points_text(core_max).s);
         if (hard_max > 0)
-            append(&message, " Hard cases: %s / %s (extra credit, not counted here).", points_text(hard).s,
-                   points_text(hard_max).s);
+            appendf(&message, " Hard cases: %s / %s (extra credit, not counted here).", points_text(hard).s,
+                    points_text(hard_max).s);
     } else {
-        append(&message, "Nothing could be graded: no file of the graded parts could be built.");
+        appendf(&message, "Nothing could be graded: no file of the graded parts could be built.");
     }
     for (int p = 0; p < NPARTS; p++) {
         if (!g->graded[p])
             continue;
-        append(&output, "%s%s: %s / %s", output ? "\n" : "", part_title(p), points_text(g->core[p]).s,
-               points_text(g->core_max[p]).s);
+        appendf(&output, "%s%s: %s / %s", output ? "\n" : "", part_title(p), points_text(g->core[p]).s,
+                points_text(g->core_max[p]).s);
         if (g->hard_max[p] > 0)
-            append(&output, "   (hard cases: %s / %s)", points_text(g->hard[p]).s, points_text(g->hard_max[p]).s);
-        append(&output, "\n");
+            appendf(&output, "   (hard cases: %s / %s)", points_text(g->hard[p]).s,
+                    points_text(g->hard_max[p]).s);
+        appendf(&output, "\n");
         if (g->build_messages[p] && g->build_messages[p][0]) {
             if (grade_warned(g, p))
-                append(&output, "The compiler warned (a warning often points at a mistake):\n");
+                appendf(&output, "The compiler warned (a warning often points at a mistake):\n");
             else if (!g->built[p]) {
                 char why[200];
                 grade_unbuilt_why(g, p, true, why, sizeof why);
-                append(&output, "%s, so none of its tests could run:\n", why);
+                appendf(&output, "%s, so none of its tests could run:\n", why);
             }
-            append(&output, "%s", g->build_messages[p]);
+            appendf(&output, "%s", g->build_messages[p]);
             if (!gradable)
-                append(&format_errors, "Part %s: %s", part_label(p), g->build_messages[p]);
+                appendf(&format_errors, "Part %s: %s", part_label(p), g->build_messages[p]);
         }
         if (g->diagnosis[p] && g->core[p] < g->core_max[p])
-            append(&output, "What went wrong (probes run on your code confirmed it):\n%s\n", g->diagnosis[p]);
+            appendf(&output, "What went wrong (probes run on your code confirmed it):\n%s\n", g->diagnosis[p]);
         if (g->diagnosis_hard[p])
-            append(&output, "The hard cases (extra credit; probes run on your code confirmed it):\n%s\n",
-                   g->diagnosis_hard[p]);
+            appendf(&output, "The hard cases (extra credit; probes run on your code confirmed it):\n%s\n",
+                    g->diagnosis_hard[p]);
     }
-    append(&output, "\nCore points: %s / %s\n", points_text(core).s, points_text(core_max).s);
+    appendf(&output, "\nCore points: %s / %s\n", points_text(core).s, points_text(core_max).s);
 
     json_begin_object(j);
     json_key(j, "gradable");
     json_bool(j, gradable);
-    json_key(j, "score");
-    json_number(j, gradable ? score : 0);
-    json_key(j, "message");
-    json_string(j, message ? message : "");
+    json_member_number(j, "score", gradable ? score : 0);
+    json_member_string(j, "message", message ? message : "");
     if (!gradable) {
         json_key(j, "format_errors");
         cut_string(j, format_errors ? format_errors : "no stage file was submitted", 4 * OUTPUT_MAX);
@@ -191,11 +166,9 @@ int report_prairielearn_error(const char *path, const char *message, char *err, 
     json_begin_object(&j);
     json_key(&j, "gradable");
     json_bool(&j, false);
-    json_key(&j, "score");
-    json_number(&j, 0);
-    json_key(&j, "message");
-    json_string(&j, "The autograder could not grade this submission. Please tell the course staff.");
-    json_key(&j, "format_errors");
-    json_string(&j, message);
+    json_member_number(&j, "score", 0);
+    json_member_string(&j, "message", "The autograder could not grade this submission. Please tell the "
+                                      "course staff.");
+    json_member_string(&j, "format_errors", message);
     return report_json_error_end(&j, path, message, err, errlen);
 }

@@ -20,28 +20,16 @@
 #define HINTS_ON_TOP 6             /* distinct hints said at a part's top    */
 #define HINT_LINE "    hint:      "
 
-static void print_indented(FILE *f, const char *text)
-{
-    /* text is already indented by two spaces per line; keep it tidy */
-    const char *p = text;
-    while (*p) {
-        const char *nl = strchr(p, '\n');
-        size_t n = nl ? (size_t)(nl - p) : strlen(p);
-        fputs("    ", f);
-        term_put(f, p, n);
-        fputc('\n', f);
-        p += n + (nl ? 1 : 0);
-    }
-}
-
-/* A test's output without its hint lines (said at the part's top). */
-static void print_without_hints(FILE *f, const char *text)
+/* text, each line indented by four spaces (it is indented by two
+ * already: this keeps it tidy); with strip_hints, without its hint lines
+ * (said at the part's top). */
+static void print_indented(FILE *f, const char *text, bool strip_hints)
 {
     const char *p = text;
     while (*p) {
         const char *nl = strchr(p, '\n');
         size_t n = nl ? (size_t)(nl - p) : strlen(p);
-        if (strncmp(p, HINT_LINE, strlen(HINT_LINE)) != 0) {
+        if (!strip_hints || strncmp(p, HINT_LINE, strlen(HINT_LINE)) != 0) {
             fputs("    ", f);
             term_put(f, p, n);
             fputc('\n', f);
@@ -71,7 +59,7 @@ static bool unbuilt(FILE *f, const Grade *g, int p)
     fprintf(f, "  FAIL  all %d tests (%d core, %d hard cases): %s, so none could run:\n", n, n - hard,
             hard, why);
     if (g->build_messages[p])
-        print_indented(f, g->build_messages[p]);
+        print_indented(f, g->build_messages[p], false);
     return true;
 }
 
@@ -164,10 +152,7 @@ static int tests_of(FILE *f, const Grade *g, int p, bool hard, bool strip_hints,
         if (r->passed || !r->output || !*r->output)
             continue;
         if (in_full < SHOWN_IN_FULL || every_failure) {
-            if (strip_hints)
-                print_without_hints(f, r->output);
-            else
-                print_indented(f, r->output);
+            print_indented(f, r->output, strip_hints);
             in_full++;
         } else {
             by_name++;
@@ -203,7 +188,7 @@ static int hard_cases(FILE *f, const Grade *g, const GradeConfig *cfg, int p, bo
         return 0;
     if (g->diagnosis_hard[p]) {
         fprintf(f, "  About them (probes run on your code confirmed it):\n");
-        print_indented(f, g->diagnosis_hard[p]);
+        print_indented(f, g->diagnosis_hard[p], false);
     }
     return tests_of(f, g, p, true, strip_hints, every_failure);
 }
@@ -221,11 +206,11 @@ static void part_table(FILE *f, const Grade *g, const GradeConfig *cfg, int p, b
     bool core_lost = g->core[p] < g->core_max[p];
     if (g->diagnosis[p] && core_lost) {
         fprintf(f, "  What went wrong (probes run on your code confirmed it):\n");
-        print_indented(f, g->diagnosis[p]);
+        print_indented(f, g->diagnosis[p], false);
     }
     if (grade_warned(g, p)) {
         fprintf(f, "  The compiler warned (a warning often points at a mistake):\n");
-        print_indented(f, g->build_messages[p]);
+        print_indented(f, g->build_messages[p], false);
     }
     if (!g->built[p] && unbuilt(f, g, p))
         return;

@@ -260,6 +260,24 @@ void json_null(JsonWriter *w)
     json_after_value(w);
 }
 
+void json_member_string(JsonWriter *w, const char *key, const char *s)
+{
+    json_key(w, key);
+    json_string(w, s);
+}
+
+void json_member_number(JsonWriter *w, const char *key, double x)
+{
+    json_key(w, key);
+    json_number(w, x);
+}
+
+void json_member_int(JsonWriter *w, const char *key, long long x)
+{
+    json_key(w, key);
+    json_int(w, x);
+}
+
 /* Why the writer failed, or NULL. */
 const char *json_error(const JsonWriter *w)
 {

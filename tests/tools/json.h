@@ -64,6 +64,10 @@ void json_number(JsonWriter *w, double x);
 void json_int(JsonWriter *w, long long x);
 void json_bool(JsonWriter *w, bool b);
 void json_null(JsonWriter *w);
+/* A member of the current object: its key, then its value. */
+void json_member_string(JsonWriter *w, const char *key, const char *s);
+void json_member_number(JsonWriter *w, const char *key, double x);
+void json_member_int(JsonWriter *w, const char *key, long long x);
 
 /* NULL while all is well, else a short description of the failure. */
 const char *json_error(const JsonWriter *w);
