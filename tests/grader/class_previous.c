@@ -34,74 +34,64 @@ static int column_of(const char *field)
     return strncmp(field, "part", 4) == 0 ? part_from_label(field + 4) : -1;
 }
 
-/* The fields of the line at *p, one by one, to its end; *p moves to the
- * next line.  Each field is given to take (its column k); false when
- * memory ran out. */
-static bool read_line(const char **p, void (*take)(void *ctx, int k, char *field), void *ctx)
+/* The fields of the line at *p, the first max of them into field (the
+ * others freed); *p moves to the next line.  Returns how many it had, or
+ * -1 when memory ran out. */
+static int read_line(const char **p, char **field, int max)
 {
-    int end = 0;
-    for (int k = 0; !end; k++) {
-        char *field = csv_read_field(p, &end);
-        if (!field)
-            return false;
-        take(ctx, k, field);
+    int end = 0, n = 0;
+    while (!end) {
+        char *f = csv_read_field(p, &end);
+        if (!f) {
+            for (int k = 0; k < n && k < max; k++)
+                free(field[k]);
+            return -1;
+        }
+        if (n < max)
+            field[n] = f;
+        else
+            free(f);
+        n++;
     }
     *p += **p == '\r';
     *p += **p == '\n';
-    return true;
+    return n;
 }
 
-typedef struct {
-    int column[64];            /* each field's column (column_of) */
-    int ncolumns;
-    Before row;
-} Reading;
-
-static void take_header(void *ctx, int k, char *field)
-{
-    Reading *r = ctx;
-    if (k < 64) {
-        r->column[k] = column_of(field);
-        r->ncolumns = k + 1;
-    }
-    free(field);
-}
-
-static void take_value(void *ctx, int k, char *field)
-{
-    Reading *r = ctx;
-    char *end;
-    if (k == 0) {
-        r->row.name = field;
-        return;
-    }
-    double x = strtod(field, &end);
-    if (k < r->ncolumns && r->column[k] >= 0 && end != field && !*end)
-        r->row.v[r->column[k]] = x;
-    free(field);
-}
-
-/* The rows of the previous gradebook, text; -1 when it is not one. */
+/* The rows of the previous gradebook, text; -1 when it is not one.  Each
+ * field of its header is a column (column_of). */
 static int read_before(const char *text, Before **rows, int *n)
 {
     const char *p = text;
-    Reading r = { .ncolumns = 0 };
-    if (!text || !read_line(&p, take_header, &r) || r.ncolumns < 2 || r.column[0] != -1)
+    char *field[64];
+    int column[64], ncolumns = text ? read_line(&p, field, 64) : -1;
+    ncolumns = ncolumns < 64 ? ncolumns : 64;
+    for (int k = 0; k < ncolumns; k++) {
+        column[k] = column_of(field[k]);
+        free(field[k]);
+    }
+    if (ncolumns < 2 || column[0] != -1)
         return -1;
     *rows = NULL;
     *n = 0;
     while (*p) {
-        for (int c = 0; c < NPARTS + 2; c++)
-            r.row.v[c] = NAN;
-        r.row.name = NULL;
         Before *grown = realloc(*rows, (size_t)(*n + 1) * sizeof *grown);
         if (grown)
             *rows = grown;
-        if (!grown || !read_line(&p, take_value, &r) || !r.row.name) {
-            free(r.row.name);
+        int nfields = grown ? read_line(&p, field, 64) : -1;
+        if (nfields < 0)
             break;
+        Before *row = &(*rows)[(*n)++];
+        row->name = field[0];
+        for (int c = 0; c < NPARTS + 2; c++)
+            row->v[c] = NAN;
+        for (int k = 1; k < nfields && k < 64; k++) {
+            char *end;
+            double x = strtod(field[k], &end);
+            if (k < ncolumns && column[k] >= 0 && end != field[k] && !*end)
+                row->v[column[k]] = x;
+            free(field[k]);
         }
-        (*rows)[(*n)++] = r.row;
     }
     return 0;
 }

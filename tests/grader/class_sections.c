@@ -97,27 +97,15 @@ static const char *const need_names[NNEEDS] = {
     "grader error", "no stage file", "did not build", "refused", "file missing", "out of time",
 };
 
-static bool names_error(const char *line, size_t len)
-{
-    for (size_t k = 0; k + 5 <= len; k++)
-        if (strncmp(line + k, "error", 5) == 0)
-            return true;
-    return false;
-}
-
 /* The line of a build's messages that says why: the first that names an
- * error, else the first. */
+ * error (the line of the first "error" in them), else the first. */
 static void why_line(const char *why, char *out, size_t n)
 {
     const char *pick = why ? why : "";
-    for (const char *s = pick; *s;) {
-        size_t len = strcspn(s, "\n");
-        if (names_error(s, len)) {
-            pick = s;
-            break;
-        }
-        s += len + (s[len] == '\n');
-    }
+    const char *error = strstr(pick, "error");
+    while (error && error > pick && error[-1] != '\n')
+        error--;
+    pick = error ? error : pick;
     snprintf(out, n, "%.*s", (int)strcspn(pick, "\n"), pick);
 }
 

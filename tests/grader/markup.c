@@ -72,18 +72,21 @@ void mk_printf(Markup *m, const char *fmt, ...)
     va_end(ap);
 }
 
+/* What mk_text writes for each of the characters it escapes. */
+static const char *const entity[128] = {
+    ['&'] = "&amp;", ['<'] = "&lt;", ['>'] = "&gt;", ['"'] = "&quot;", ['\''] = "&#39;",
+};
+
 void mk_text(Markup *m, const char *text)
 {
     if (!text)
         return;
-    static const char special[] = "&<>\"'";
-    static const char *const entity[] = { "&amp;", "&lt;", "&gt;", "&quot;", "&#39;" };
     const unsigned char *s = (const unsigned char *)text;
     size_t n = strlen(text), k = 0;
     while (k < n) {
         size_t run = k;
         while (run < n && s[run] < 0x80 && (s[run] >= 0x20 || s[run] == '\n' || s[run] == '\t')
-               && s[run] != 0x7F && !strchr(special, s[run]))
+               && s[run] != 0x7F && !entity[s[run]])
             run++;
         mk_raw(m, text + k, run - k);
         k = run;
@@ -91,9 +94,8 @@ void mk_text(Markup *m, const char *text)
             break;
         unsigned char c = s[k];
         int len = c >= 0x80 ? utf8_sequence(s + k, n - k) : 1;
-        const char *at = strchr(special, c);
-        if (at)
-            mk_raw(m, entity[at - special], strlen(entity[at - special]));
+        if (c < 0x80 && entity[c])
+            mk_raw(m, entity[c], strlen(entity[c]));
         else if (len > 1)
             mk_raw(m, text + k, (size_t)len);
         else
@@ -174,14 +176,20 @@ void svg_arrow(Markup *m, double x1, double y1, double x2, double y2, const char
               x2 - ux * head + uy * head * 0.4, y2 - uy * head - ux * head * 0.4, color);
 }
 
+/* A shape's stroke, unless it is "none", and its end. */
+static void stroke_end(Markup *m, const char *stroke, double width)
+{
+    if (strcmp(stroke, "none") != 0)
+        mk_printf(m, " stroke=\"%s\" stroke-width=\"%.2g\"", stroke, width);
+    mk_printf(m, "/>\n");
+}
+
 void svg_circle(Markup *m, double cx, double cy, double r, const char *fill, const char *stroke,
                 double width)
 {
     mk_printf(m, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"%s\"", mk_clamp(cx),
               mk_clamp(cy), mk_clamp(r), fill);
-    if (strcmp(stroke, "none") != 0)
-        mk_printf(m, " stroke=\"%s\" stroke-width=\"%.2g\"", stroke, width);
-    mk_printf(m, "/>\n");
+    stroke_end(m, stroke, width);
 }
 
 void svg_rect(Markup *m, double x, double y, double w, double h, const char *fill,
@@ -189,9 +197,7 @@ void svg_rect(Markup *m, double x, double y, double w, double h, const char *fil
 {
     mk_printf(m, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"%s\"",
               mk_clamp(x), mk_clamp(y), mk_clamp(fmax(w, 0)), mk_clamp(fmax(h, 0)), fill);
-    if (strcmp(stroke, "none") != 0)
-        mk_printf(m, " stroke=\"%s\" stroke-width=\"%.2g\"", stroke, width);
-    mk_printf(m, "/>\n");
+    stroke_end(m, stroke, width);
 }
 
 void svg_text(Markup *m, double x, double y, const char *anchor, double size, const char *color,

@@ -149,49 +149,44 @@ static void count_causes(ClassView *v)
 
 /* ---- the tests most failed ---------------------------------------------------- */
 
+/* Whether two answers are the same: the same case, the same numbers to
+ * the bit. */
+static bool same_answer(const ClassFail *x, const ClassFail *y)
+{
+    return x->c == y->c && x->nout == y->nout &&
+           memcmp(x->got, y->got, (size_t)x->nout * sizeof x->got[0]) == 0;
+}
+
 typedef struct {
     int sub;
     const ClassFail *f;
 } Wrong;
 
-/* Orders answers: by the case, then by the numbers' bits. */
-static int answer_order(const ClassFail *x, const ClassFail *y)
-{
-    if (x->c != y->c)
-        return x->c < y->c ? -1 : 1;
-    if (x->nout != y->nout)
-        return x->nout - y->nout;
-    return memcmp(x->got, y->got, (size_t)x->nout * sizeof x->got[0]);
-}
-
-static int by_answer(const void *a, const void *b)
-{
-    const Wrong *x = a, *y = b;
-    int d = answer_order(x->f, y->f);
-    return d ? d : x->sub - y->sub;
-}
-
 /* Row's distinct wrong answers and the most common one (of two as common,
- * the one given first in the gradebook's order), from its n answers wrong. */
-static void common_answer(ClassTestRow *row, Wrong *wrong, int n)
+ * the one given first in the gradebook's order), from its n answers wrong,
+ * in the gradebook's order. */
+static void common_answer(ClassTestRow *row, const Wrong *wrong, int n)
 {
-    qsort(wrong, (size_t)n, sizeof *wrong, by_answer);
     int best = 0, most = 0;
-    for (int i = 0, j; i < n; i = j) {
-        for (j = i + 1; j < n && answer_order(wrong[i].f, wrong[j].f) == 0; j++)
-            ;
-        row->answers++;
-        if (j - i > most || (j - i == most && wrong[i].sub < wrong[best].sub)) {
-            most = j - i;
+    for (int i = 0; i < n; i++) {
+        int same = 0, first = i;
+        for (int j = n - 1; j >= 0; j--)
+            if (same_answer(wrong[i].f, wrong[j].f)) {
+                same++;
+                first = j;
+            }
+        row->answers += first == i;
+        if (same > most) {
+            most = same;
             best = i;
         }
     }
     if (most == 0 || !(row->common_subs = malloc((size_t)most * sizeof *row->common_subs)))
         return;
     row->common = wrong[best].f;
-    row->ncommon = most;
-    for (int k = 0; k < most; k++)
-        row->common_subs[k] = wrong[best + k].sub;
+    for (int j = 0; j < n; j++)
+        if (same_answer(wrong[best].f, wrong[j].f))
+            row->common_subs[row->ncommon++] = wrong[j].sub;
 }
 
 static double fail_rate(const ClassTestRow *r)

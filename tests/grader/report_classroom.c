@@ -154,36 +154,22 @@ int report_classroom(const char *path, const Grade *g, char *err, size_t errlen)
     }
     if (status == 0)
         status = hard_runner(&out, g);
-    if (status != 0) {
-        snprintf(err, errlen, "%s: out of memory", path);
-        kit_buf_free(&out);
-        return -1;
-    }
     /* One write of every line, appended: the file may hold other steps'
      * outputs already. */
-    int fd = open(path, O_WRONLY | O_APPEND | O_CREAT, 0666);
-    if (fd < 0) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        kit_buf_free(&out);
-        return -1;
-    }
-    size_t done = 0;
-    while (done < out.len) {
+    int fd = status == 0 ? open(path, O_WRONLY | O_APPEND | O_CREAT, 0666) : -1;
+    const char *why = status != 0 ? "out of memory" : fd < 0 ? strerror(errno) : NULL;
+    for (size_t done = 0; !why && done < out.len;) {
         ssize_t w = write(fd, out.data + done, out.len - done);
-        if (w < 0 && errno == EINTR)
-            continue;
-        if (w <= 0) {
-            snprintf(err, errlen, "%s: %s", path, w < 0 ? strerror(errno) : "nothing written");
-            close(fd);
-            kit_buf_free(&out);
-            return -1;
-        }
-        done += (size_t)w;
+        if (w > 0)
+            done += (size_t)w;
+        else if (w == 0 || errno != EINTR)
+            why = w < 0 ? strerror(errno) : "nothing written";
     }
+    if (fd >= 0 && close(fd) != 0 && !why)
+        why = strerror(errno);
     kit_buf_free(&out);
-    if (close(fd) != 0) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        return -1;
-    }
-    return 0;
+    if (!why)
+        return 0;
+    snprintf(err, errlen, "%s: %s", path, why);
+    return -1;
 }

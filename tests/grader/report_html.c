@@ -116,6 +116,21 @@ static void diag(Markup *m, int p, const char *said, const char *text, bool pre)
     mk_printf(m, "%s</div>\n", pre ? "</pre>" : "");
 }
 
+/* How many tests of the graded parts failed; *unrun of them are those of
+ * parts that did not build, where none could run (none is drawn). */
+static int failed_tests(const Grade *g, int *unrun)
+{
+    int nfailed = 0;
+    *unrun = 0;
+    for (int p = 0; p < NPARTS; p++) {
+        int failed, total;
+        count_tests(g, p, &failed, &total);
+        nfailed += g->graded[p] ? failed : 0;
+        *unrun += g->graded[p] && !g->built[p] && failed == total ? total : 0;
+    }
+    return nfailed;
+}
+
 /* The table of each part's points, the total, and each part's diagnosis. */
 static void scores(Markup *m, const Grade *g, const GradeConfig *cfg)
 {
@@ -228,22 +243,15 @@ static void picture(Markup *m, const Image *img, const char *alt, const char *ca
     mk_printf(m, "</figcaption></figure>\n");
 }
 
-/* In place of a picture: why there is none. */
-static void no_picture(Markup *m, const char *caption, const char *why)
+/* In place of a picture: why there is none (same: in place of the heat
+ * map of identical pictures, which is all black). */
+static void no_picture(Markup *m, const char *caption, const char *why, bool same)
 {
-    mk_printf(m, "<figure><div class=\"nopic\"><pre>");
+    mk_printf(m, "<figure><div class=\"nopic%s\">%s", same ? " same" : "", same ? "" : "<pre>");
     mk_text(m, why);
-    mk_printf(m, "</pre></div><figcaption>");
+    mk_printf(m, "%s</div><figcaption>", same ? "" : "</pre>");
     mk_text(m, caption);
     mk_printf(m, "</figcaption></figure>\n");
-}
-
-/* In place of the heat map of identical pictures, which is all black. */
-static void no_difference(Markup *m)
-{
-    mk_printf(m, "<figure><div class=\"nopic same\">The two pictures are identical, pixel for "
-                 "pixel: there is no difference to map.</div><figcaption>difference: none"
-                 "</figcaption></figure>\n");
 }
 
 /* The scene drawn by the submission, by the reference, and their heat map. */
@@ -269,18 +277,19 @@ static void renders(Markup *m, const ReportRenders *rr)
         picture(m, &rr->sub, "the scene drawn by your code", "your code", NULL,
                 same ? rr->ref_png : NULL, rr->ref_png_len, &sub_uri);
     else
-        no_picture(m, "your code: no picture", rr->sub_note);
+        no_picture(m, "your code: no picture", rr->sub_note, false);
     if (rr->have_ref)
         picture(m, &rr->ref, "the scene drawn by the reference solution", "the reference",
                 same ? &sub_uri : NULL, rr->ref_png, rr->ref_png_len, NULL);
     else
-        no_picture(m, "the reference: no picture", rr->ref_note);
+        no_picture(m, "the reference: no picture", rr->ref_note, false);
     /* Identical pictures have an all-black heat map: a box says so
      * instead, and the page spares encoding it and the map's scale. */
     Image heat;
     char err[256];
     if (same) {
-        no_difference(m);
+        no_picture(m, "difference: none", "The two pictures are identical, pixel for pixel: there is no "
+                   "difference to map.", true);
     } else if (comparable && compare_heat_map(&rr->sub, &rr->ref, &heat, err, sizeof err) == 0) {
         char caption[200];
         snprintf(caption, sizeof caption, "difference: %.3g%% of the pixels differ, by up to "
@@ -380,13 +389,7 @@ static void test_names(Markup *m, const Grade *g, int part, bool passed)
  * messages once. */
 static void failures(Markup *m, const Grade *g, bool bonus)
 {
-    int nfailed = 0, unrun = 0;         /* unrun: those of parts that did not build */
-    for (int p = 0; p < NPARTS; p++) {
-        int failed, total;
-        count_tests(g, p, &failed, &total);
-        nfailed += g->graded[p] ? failed : 0;
-        unrun += g->graded[p] && !g->built[p] && failed == total ? total : 0;
-    }
+    int unrun, nfailed = failed_tests(g, &unrun);
     mk_printf(m, "<h2 id=\"failures\">What failed</h2>\n");
     if (nfailed == 0) {
         mk_printf(m, "<p>Nothing: every test passed.</p>\n");
@@ -488,13 +491,8 @@ int report_html(const char *path, const Grade *g, const GradeConfig *cfg, const 
     scores(&m, g, cfg);
     /* The legend is for the failures' figures: a page with none has no use
      * for it (a part that did not build is listed, not drawn). */
-    int drawn = 0;
-    for (int p = 0; p < NPARTS; p++) {
-        int failed, total;
-        count_tests(g, p, &failed, &total);
-        drawn += g->graded[p] && (g->built[p] || failed < total) ? failed : 0;
-    }
-    if (drawn > 0) {
+    int unrun;
+    if (failed_tests(g, &unrun) > unrun) {
         mk_printf(&m, "<h2 id=\"reading\">How to read the pictures</h2>\n");
         legend(&m);
     }
