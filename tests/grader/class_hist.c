@@ -168,18 +168,15 @@ static void table_row(Markup *m, const Scores *s)
 
 void class_scores(Markup *m, const ClassView *v)
 {
-    Scores all[NPARTS + 1];
-    bool have[NPARTS + 1];
-    for (int p = 0; p <= NPARTS; p++)
-        have[p] = scores_of(v, p, &all[p]);
+    Scores all[NPARTS + 1];             /* x is NULL where there are none */
+    int drawn = 0;
     mk_printf(m, "<h2 id=\"scores\">Scores</h2>\n<table class=\"scores\">\n<tr><th>part</th>"
                  "<th>points</th><th>median</th><th>quartiles</th><th>full points</th></tr>\n");
-    for (int p = 0; p <= NPARTS; p++)
-        if (have[p])
+    for (int p = 0; p <= NPARTS; p++) {
+        if (scores_of(v, p, &all[p]))
             table_row(m, &all[p]);
-    int drawn = 0;
-    for (int p = 0; p <= NPARTS; p++)
-        drawn += have[p] && all[p].n > 0;
+        drawn += all[p].x && all[p].n > 0;
+    }
     mk_printf(m, "</table>\n");
     if (drawn > 0)
         mk_printf(m, "<p class=\"note\">Each histogram counts the submissions by their "
@@ -188,16 +185,15 @@ void class_scores(Markup *m, const ClassView *v)
                  "less than its left end, a quarter more than its right end) and its tick is the "
                  "median.</p>\n<div class=\"hists\">\n");
     for (int p = 0; p <= NPARTS; p++) {
-        if (!have[p] || all[p].n == 0)
-            continue;
-        mk_printf(m, "<figure class=\"hist\" id=\"hist-%s\">\n", all[p].id);
-        histogram(m, &all[p]);
-        mk_printf(m, "<figcaption>");
-        mk_text(m, all[p].title);
-        mk_printf(m, "</figcaption></figure>\n");
+        if (all[p].x && all[p].n > 0) {
+            mk_printf(m, "<figure class=\"hist\" id=\"hist-%s\">\n", all[p].id);
+            histogram(m, &all[p]);
+            mk_printf(m, "<figcaption>");
+            mk_text(m, all[p].title);
+            mk_printf(m, "</figcaption></figure>\n");
+        }
+        free(all[p].x);
     }
     if (drawn > 0)
         mk_printf(m, "</div>\n");
-    for (int p = 0; p <= NPARTS; p++)
-        free(have[p] ? all[p].x : NULL);
 }

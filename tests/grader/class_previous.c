@@ -113,6 +113,13 @@ static int by_change(const void *a, const void *b)
     return x->sub - y->sub;
 }
 
+/* Whether points then and now differ: one of them none (NAN), or more
+ * than rounding apart. */
+static bool changed(double then, double now)
+{
+    return isnan(then) != isnan(now) || (!isnan(then) && fabs(now - then) > 1e-9);
+}
+
 /* Submission s's points now, as its gradebook row has them. */
 static void now_of(const ClassView *v, int s, double *after)
 {
@@ -149,9 +156,7 @@ static void compare(ClassView *v, Before *rows, int n)
         c->sub = s;
         memcpy(c->before, rows[b].v, sizeof c->before);
         now_of(v, s, c->after);
-        double then = c->before[NPARTS + 1], now = c->after[NPARTS + 1];
-        if (isnan(then) != isnan(now) || (!isnan(then) && fabs(now - then) > 1e-9))
-            pr->nchanges++;
+        pr->nchanges += changed(c->before[NPARTS + 1], c->after[NPARTS + 1]);
     }
     for (int b = 0; seen && pr->gone && b < n; b++)
         if (!seen[b])
@@ -207,9 +212,7 @@ static void parts_changed(Markup *m, const ClassChange *c)
     int said = 0;
     for (int k = 0; k < NPARTS + 1; k++) {
         double then = c->before[k], now = c->after[k];
-        if (isnan(then) && isnan(now))
-            continue;
-        if (!isnan(then) && !isnan(now) && fabs(now - then) <= 1e-9)
+        if (!changed(then, now))
             continue;
         mk_printf(m, "%s%s%s ", said++ ? ", " : "", k < NPARTS ? "Part " : "hard cases",
                   k < NPARTS ? part_label(k) : "");

@@ -138,20 +138,6 @@ static char *get_text(const char *s)
     return out;
 }
 
-/* The part named by the word at *s, moving *s past it and its space; -1
- * if none. */
-static int get_part(const char **s)
-{
-    size_t n = strcspn(*s, " \n");
-    char label[8];
-    if (n == 0 || n >= sizeof label)
-        return -1;
-    memcpy(label, *s, n);
-    label[n] = '\0';
-    *s += n + ((*s)[n] == ' ');
-    return part_from_label(label);
-}
-
 static bool read_fail(ClassSub *s, const char *line)
 {
     ClassFail fl = { 0 };
@@ -198,17 +184,17 @@ static bool read_cause(ClassPart *cp, const char *line)
 /* One line of the record; false when it is not one the format has. */
 static bool read_line(ClassSub *s, const char *line)
 {
-    int b, r, t;
+    char label[8];
+    int b, r, t, at = 0;
     if (strncmp(line, "fail ", 5) == 0)
         return read_fail(s, line + 5);
     if (strncmp(line, "error ", 6) == 0 && !s->error)
         return (s->error = get_text(line + 6)) != NULL;
-    const char *rest = line + strcspn(line, " \n");
-    if (*rest++ != ' ')
-        return false;
-    int p = get_part(&rest);
+    /* The others name a part: "WORD P REST". */
+    int p = sscanf(line, "%*[a-z] %7[^ \n]%n", label, &at) == 1 ? part_from_label(label) : -1;
     if (p < 0)
         return false;
+    const char *rest = line + at + (line[at] == ' ');
     ClassPart *cp = &s->part[p];
     if (strncmp(line, "part ", 5) == 0 && !cp->graded &&
         sscanf(rest, "%d %d %d", &b, &r, &t) == 3) {

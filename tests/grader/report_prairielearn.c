@@ -35,15 +35,10 @@ static void cut_string(JsonWriter *j, const char *s, size_t max)
         json_string(j, s ? s : "");
         return;
     }
-    char *t = malloc(max + 40);
-    if (!t) {
-        json_string(j, "[output cut: out of memory]");
-        return;
-    }
-    memcpy(t, s, max);
-    strcpy(t + max, "\n[... the rest cut]");
-    json_string(j, t);
-    free(t);
+    char *cut = NULL;
+    appendf(&cut, "%.*s\n[... the rest cut]", (int)max, s);
+    json_string(j, cut ? cut : "[output cut: out of memory]");
+    free(cut);
 }
 
 static void test_entry(JsonWriter *j, const Test *t, const TestResult *r, size_t output_max)
