@@ -26,6 +26,8 @@ typedef struct {
     double max;
     int n;
     double *x;
+    double q1, med, q3;        /* x's quartiles and median                 */
+    int full;                  /* how many of x are full points            */
 } Scores;
 
 static int by_value(const void *a, const void *b)
@@ -34,7 +36,9 @@ static int by_value(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-double class_quantile(const double *x, int n, double q)
+/* The q-quantile (0..1) of the n sorted values x, interpolated between
+ * the two nearest ranks (the sample's (n-1) q-th value). */
+static double quantile(const double *x, int n, double q)
 {
     if (n <= 0)
         return 0;
@@ -64,15 +68,12 @@ static bool scores_of(const ClassView *v, int p, Scores *s)
             s->x[s->n++] = p < NPARTS ? sub->core[p] : sub->hard;
     }
     qsort(s->x, (size_t)s->n, sizeof *s->x, by_value);
-    return true;
-}
-
-static int full_count(const Scores *s)
-{
-    int full = 0;
+    s->q1 = quantile(s->x, s->n, 0.25);
+    s->med = quantile(s->x, s->n, 0.5);
+    s->q3 = quantile(s->x, s->n, 0.75);
     for (int k = 0; k < s->n; k++)
-        full += s->x[k] >= s->max;
-    return full;
+        s->full += s->x[k] >= s->max;
+    return true;
 }
 
 /* The histogram's geometry: where its bars are, left to right. */
@@ -91,14 +92,14 @@ static double value_x(const Scores *s, double x)
 
 /* Under the bars, a box from the first quartile to the third with a tick
  * at the median (a box plot), and the three numbers above the bars. */
-static void quartile_marks(Markup *m, const Scores *s, double q1, double med, double q3)
+static void quartile_marks(Markup *m, const Scores *s)
 {
-    double y = HTOP + HPLOT + 5, x1 = value_x(s, q1), x3 = value_x(s, q3);
+    double y = HTOP + HPLOT + 5, x1 = value_x(s, s->q1), x3 = value_x(s, s->q3), med = s->med;
     svg_line(m, HX0, y + 5, value_x(s, s->max), y + 5, COL_GRID, 1, NULL);
     svg_rect(m, x1, y, x3 - x1 > 2 ? x3 - x1 : 2, 10, "#fde2d2", COL_GOT, 1.2);
     svg_line(m, value_x(s, med), y - 2, value_x(s, med), y + 12, COL_GOT, 3, NULL);
     svg_text(m, HX0, 14, "start", 12, COL_TEXT, false, "median %s, quartiles %s and %s",
-             points_text(med).s, points_text(q1).s, points_text(q3).s);
+             points_text(med).s, points_text(s->q1).s, points_text(s->q3).s);
 }
 
 /* The bar of x points: NBINS for full points. */
@@ -140,8 +141,7 @@ static void histogram(Markup *m, const Scores *s)
     svg_text(m, HX0 + NBINS * HBAR / 2, labels + 14, "middle", 11, COL_NOTE, false,
              "points (the green bar: full points)");
     if (s->n > 0)
-        quartile_marks(m, s, class_quantile(s->x, s->n, 0.25), class_quantile(s->x, s->n, 0.5),
-                       class_quantile(s->x, s->n, 0.75));
+        quartile_marks(m, s);
     fig_end(m);
 }
 
@@ -149,11 +149,8 @@ static void histogram(Markup *m, const Scores *s)
  * (and the kit's tests). */
 static void table_row(Markup *m, const Scores *s)
 {
-    double q1 = class_quantile(s->x, s->n, 0.25), med = class_quantile(s->x, s->n, 0.5),
-           q3 = class_quantile(s->x, s->n, 0.75);
-    int full = full_count(s);
     mk_printf(m, "<tr data-scores=\"%s\" data-n=\"%d\" data-median=\"%.10g\" data-q1=\"%.10g\" "
-                 "data-q3=\"%.10g\" data-full=\"%d\"><td>", s->id, s->n, med, q1, q3, full);
+                 "data-q3=\"%.10g\" data-full=\"%d\"><td>", s->id, s->n, s->med, s->q1, s->q3, s->full);
     if (s->n > 0)                       /* its histogram, drawn below */
         mk_printf(m, "<a href=\"#hist-%s\">", s->id);
     mk_text(m, s->title);
@@ -162,8 +159,8 @@ static void table_row(Markup *m, const Scores *s)
         mk_printf(m, "<td colspan=\"3\">no scores</td></tr>\n");
     else
         mk_printf(m, "<td class=\"num\">%s</td><td class=\"num\">%s to %s</td><td class=\"num\">%d "
-                     "of %d</td></tr>\n", points_text(med).s, points_text(q1).s, points_text(q3).s,
-                  full, s->n);
+                     "of %d</td></tr>\n", points_text(s->med).s, points_text(s->q1).s, points_text(s->q3).s,
+                  s->full, s->n);
 }
 
 void class_scores(Markup *m, const ClassView *v)

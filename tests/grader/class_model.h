@@ -130,9 +130,6 @@ typedef struct {
 /* The histograms of the scores, with their medians and quartiles, and the
  * table of them (class_hist.c). */
 void class_scores(Markup *m, const ClassView *v);
-/* The q-quantile (0..1) of the n sorted values x, interpolated between
- * the two nearest ranks (the sample's (n-1) q-th value). */
-double class_quantile(const double *x, int n, double q);
 
 /* The causes, the tests most failed, the submissions that need a person,
  * the changes (class_sections.c). */

@@ -57,11 +57,9 @@ void class_link(Markup *m, const ClassView *v, int s)
     if (page) {
         mk_printf(m, "<a href=\"");
         for (const unsigned char *c = (const unsigned char *)name; *c; c++) {
-            if ((*c >= 'A' && *c <= 'Z') || (*c >= 'a' && *c <= 'z') || (*c >= '0' && *c <= '9') ||
-                strchr("-._~", *c))
-                mk_printf(m, "%c", *c);
-            else
-                mk_printf(m, "%%%02X", *c);
+            bool plain = (*c >= 'A' && *c <= 'Z') || (*c >= 'a' && *c <= 'z') || (*c >= '0' && *c <= '9') ||
+                         strchr("-._~", *c);
+            mk_printf(m, plain ? "%c" : "%%%02X", *c);
         }
         mk_printf(m, ".html\">");
     }
@@ -144,13 +142,12 @@ static void cost(Markup *m, const ClassView *v)
                  "<tr><td>time</td><td class=\"num\">%.1f s</td><td>from the start of "
                  "<code>make grade-all</code>'s grading to this page</td></tr>\n"
                  "<tr><td>CPU</td><td class=\"num\">%.1f s</td><td>the grader and every program it "
-                 "ran (compilers, the students' code): %.2f s a submission</td></tr>\n",
-              v->seconds, v->cpu, n ? v->cpu / n : 0);
-    mk_printf(m, "<tr><td>compiled</td><td class=\"num\">%d</td><td>stage files</td></tr>\n",
-              v->compiled);
-    mk_printf(m, "<tr><td>this page</td><td class=\"num\">%.2f s</td><td>reading what each "
+                 "ran (compilers, the students' code): %.2f s a submission</td></tr>\n"
+                 "<tr><td>compiled</td><td class=\"num\">%d</td><td>stage files</td></tr>\n"
+                 "<tr><td>this page</td><td class=\"num\">%.2f s</td><td>reading what each "
                  "grading found, counting it and drawing it (after the time above)</td></tr>\n"
-                 "</table>\n", sandbox_now() - v->page_start);
+                 "</table>\n", v->seconds, v->cpu, n ? v->cpu / n : 0, v->compiled,
+              sandbox_now() - v->page_start);
 }
 
 int class_page_write(const char *path, const ClassView *v, char *err, size_t errlen)

@@ -20,12 +20,8 @@
 ClassRun *class_begin(const char *out, const char *previous)
 {
     ClassRun *run = calloc(1, sizeof *run);
-    char err[256];
-    if (!run) {
-        fprintf(stderr, "grade: no class page: out of memory\n");
-        return NULL;
-    }
-    if (build_tempdir(run->records, sizeof run->records, err, sizeof err) != 0) {
+    char err[256] = "out of memory";
+    if (!run || build_tempdir(run->records, sizeof run->records, err, sizeof err) != 0) {
         fprintf(stderr, "grade: no class page: %s\n", err);
         free(run);
         return NULL;
@@ -61,12 +57,9 @@ void class_add(ClassRun *run, int k, const char *name, const double *values, int
     if (!copy)
         return;
     ClassSub *s = &run->subs[run->n++];
-    memset(s, 0, sizeof *s);
-    s->name = copy;
-    s->status = status;
-    s->no_stage_file = no_stage_file;
+    *s = (ClassSub){ .name = copy, .status = status, .no_stage_file = no_stage_file,
+                     .summary = values != NULL };
     if (values) {
-        s->summary = true;
         memcpy(s->core, values, sizeof s->core);
         s->hard = values[NPARTS];
         s->total = values[NPARTS + 1];

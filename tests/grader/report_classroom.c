@@ -49,8 +49,7 @@ static void test_entry(JsonWriter *j, const Test *t, const TestResult *r, bool c
         size_t n = strlen(out);
         json_string_bytes(j, out, n < max ? n : max);
     }
-    json_key(j, "line_no");               /* 0: the reporter prints no line number */
-    json_int(j, 0);
+    json_member_int(j, "line_no", 0);     /* 0: the reporter prints no line number */
     if (!r->passed) {
         char code[64];
         snprintf(code, sizeof code, "make grade PART=%s", part_label(t->part));
@@ -99,15 +98,6 @@ static int runner_end(KitBuf *out, const char *name, JsonWriter *j)
     return status;
 }
 
-/* The runner of one core test. */
-static int core_runner(KitBuf *out, const char *name, const Test *t, const TestResult *r)
-{
-    JsonWriter j;
-    runner_begin(&j, status_word(r), r->max_score);
-    test_entry(&j, t, r, true, MESSAGE_MAX);
-    return runner_end(out, name, &j);
-}
-
 /* The runner "hard": every hard-case test of the graded parts, worth 0
  * here (the reporter would otherwise divide by no tests, so an empty list
  * gets one line saying so). */
@@ -147,9 +137,13 @@ int report_classroom(const char *path, const Grade *g, char *err, size_t errlen)
             const Test *t = &g->tests->tests[k];
             if (t->part != p || t->hard)
                 continue;
+            /* The runner of one core test. */
             char name[32];
+            JsonWriter j;
             snprintf(name, sizeof name, "part%stest%d", part_label(p), ++index);
-            status = core_runner(&out, name, t, &g->results[k]);
+            runner_begin(&j, status_word(&g->results[k]), g->results[k].max_score);
+            test_entry(&j, t, &g->results[k], true, MESSAGE_MAX);
+            status = runner_end(&out, name, &j);
         }
     }
     if (status == 0)

@@ -20,12 +20,14 @@
 #define HINTS_ON_TOP 6             /* distinct hints said at a part's top    */
 #define HINT_LINE "    hint:      "
 
-/* text, each line indented by four spaces (it is indented by two
- * already: this keeps it tidy); with strip_hints, without its hint lines
- * (said at the part's top). */
-static void print_indented(FILE *f, const char *text, bool strip_hints)
+/* text under its heading (if not NULL), each line indented by four
+ * spaces (it is indented by two already: this keeps it tidy); with
+ * strip_hints, without its hint lines (said at the part's top). */
+static void print_indented(FILE *f, const char *heading, const char *text, bool strip_hints)
 {
     const char *p = text;
+    if (heading)
+        fprintf(f, "  %s:\n", heading);
     while (*p) {
         const char *nl = strchr(p, '\n');
         size_t n = nl ? (size_t)(nl - p) : strlen(p);
@@ -59,7 +61,7 @@ static bool unbuilt(FILE *f, const Grade *g, int p)
     fprintf(f, "  FAIL  all %d tests (%d core, %d hard cases): %s, so none could run:\n", n, n - hard,
             hard, why);
     if (g->build_messages[p])
-        print_indented(f, g->build_messages[p], false);
+        print_indented(f, NULL, g->build_messages[p], false);
     return true;
 }
 
@@ -152,7 +154,7 @@ static int tests_of(FILE *f, const Grade *g, int p, bool hard, bool strip_hints,
         if (r->passed || !r->output || !*r->output)
             continue;
         if (in_full < SHOWN_IN_FULL || every_failure) {
-            print_indented(f, r->output, strip_hints);
+            print_indented(f, NULL, r->output, strip_hints);
             in_full++;
         } else {
             by_name++;
@@ -186,10 +188,8 @@ static int hard_cases(FILE *f, const Grade *g, const GradeConfig *cfg, int p, bo
     fprintf(f, "%s\n", failed ? "" : ", every test passed");
     if (failed == 0 && !every_failure)
         return 0;
-    if (g->diagnosis_hard[p]) {
-        fprintf(f, "  About them (probes run on your code confirmed it):\n");
-        print_indented(f, g->diagnosis_hard[p], false);
-    }
+    if (g->diagnosis_hard[p])
+        print_indented(f, "About them (probes run on your code confirmed it)", g->diagnosis_hard[p], false);
     return tests_of(f, g, p, true, strip_hints, every_failure);
 }
 
@@ -204,14 +204,11 @@ static void part_table(FILE *f, const Grade *g, const GradeConfig *cfg, int p, b
     }
     fprintf(f, "\n");
     bool core_lost = g->core[p] < g->core_max[p];
-    if (g->diagnosis[p] && core_lost) {
-        fprintf(f, "  What went wrong (probes run on your code confirmed it):\n");
-        print_indented(f, g->diagnosis[p], false);
-    }
-    if (grade_warned(g, p)) {
-        fprintf(f, "  The compiler warned (a warning often points at a mistake):\n");
-        print_indented(f, g->build_messages[p], false);
-    }
+    if (g->diagnosis[p] && core_lost)
+        print_indented(f, "What went wrong (probes run on your code confirmed it)", g->diagnosis[p], false);
+    if (grade_warned(g, p))
+        print_indented(f, "The compiler warned (a warning often points at a mistake)", g->build_messages[p],
+                       false);
     if (!g->built[p] && unbuilt(f, g, p))
         return;
     bool strip = !every_failure && hints_on_top(f, g, p, !core_lost);
