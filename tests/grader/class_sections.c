@@ -109,16 +109,6 @@ static void why_line(const char *why, char *out, size_t n)
     snprintf(out, n, "%.*s", (int)strcspn(pick, "\n"), pick);
 }
 
-/* Why the grading of a submission stopped without reporting its points:
- * the first line of what its record says, or its status. */
-static void error_line(const ClassSub *sub, char *out, size_t n)
-{
-    if (sub->error && sub->error[0])
-        snprintf(out, n, "%.*s", (int)strcspn(sub->error, "\n"), sub->error);
-    else
-        snprintf(out, n, "its grading ended with status %d and reported no points", sub->status);
-}
-
 static void need_row(Markup *m, const ClassView *v, int s, int need, int part, const char *why)
 {
     mk_printf(m, "<tr class=\"person\" data-need=\"%s\"><td>", need_names[need]);
@@ -137,7 +127,12 @@ static int need_rows(Markup *m, const ClassView *v, int s, int need)
     char why[600];
     int rows = 0;
     if (need == NEED_ERROR && !sub->summary) {
-        error_line(sub, why, sizeof why);
+        /* Why its grading stopped without reporting its points: the first
+         * line of what its record says, or its status. */
+        if (sub->error && sub->error[0])
+            snprintf(why, sizeof why, "%.*s", (int)strcspn(sub->error, "\n"), sub->error);
+        else
+            snprintf(why, sizeof why, "its grading ended with status %d and reported no points", sub->status);
         need_row(m, v, s, need, -1, why);
         return 1;
     }
