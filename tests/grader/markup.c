@@ -11,7 +11,6 @@
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 void mk_init(Markup *m)
@@ -37,30 +36,21 @@ void mk_raw(Markup *m, const char *s, size_t n)
         m->failed = true;
 }
 
-/* mk_printf with a va_list: short texts through a buffer on the stack,
- * long ones through malloc (failure sets m->failed). */
+/* mk_printf with a va_list: written into the buffer's room, made larger
+ * first when the text does not fit (failure sets m->failed). */
 static void mk_vprintf(Markup *m, const char *fmt, va_list ap)
 {
-    char small[512];
     va_list again;
     va_copy(again, ap);
-    int n = vsnprintf(small, sizeof small, fmt, ap);
-    if (n < 0) {
-        va_end(again);
-        return;
+    size_t room = m->b.cap - m->b.len;
+    int n = vsnprintf(room ? (char *)m->b.data + m->b.len : NULL, room, fmt, ap);
+    if (n >= 0 && (size_t)n >= room && kit_buf_reserve(&m->b, (size_t)n + 1) != 0) {
+        m->failed = true;
+        n = -1;
+    } else if (n >= 0 && (size_t)n >= room) {
+        vsnprintf((char *)m->b.data + m->b.len, (size_t)n + 1, fmt, again);
     }
-    if ((size_t)n < sizeof small) {
-        mk_raw(m, small, (size_t)n);
-    } else {
-        char *big = malloc((size_t)n + 1);
-        if (!big) {
-            m->failed = true;
-        } else {
-            vsnprintf(big, (size_t)n + 1, fmt, again);
-            mk_raw(m, big, (size_t)n);
-            free(big);
-        }
-    }
+    m->b.len += n > 0 ? (size_t)n : 0;
     va_end(again);
 }
 
