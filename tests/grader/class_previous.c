@@ -16,13 +16,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* A row of the previous gradebook: the name, then each part's points, the
- * hard cases' and the total (NAN where the run had none). */
-typedef struct {
-    char *name;
-    double v[NPARTS + 2];
-} Before;
-
 /* The column of a gradebook's header field: a part, NPARTS for "hard",
  * NPARTS + 1 for "total", -1 for any other. */
 static int column_of(const char *field)
@@ -56,44 +49,6 @@ static int read_line(const char **p, char **field, int max)
     *p += **p == '\r';
     *p += **p == '\n';
     return n;
-}
-
-/* The rows of the previous gradebook, text; -1 when it is not one.  Each
- * field of its header is a column (column_of). */
-static int read_before(const char *text, Before **rows, int *n)
-{
-    const char *p = text;
-    char *field[64];
-    int column[64], ncolumns = text ? read_line(&p, field, 64) : -1;
-    ncolumns = ncolumns < 64 ? ncolumns : 64;
-    for (int k = 0; k < ncolumns; k++) {
-        column[k] = column_of(field[k]);
-        free(field[k]);
-    }
-    if (ncolumns < 2 || column[0] != -1)
-        return -1;
-    *rows = NULL;
-    *n = 0;
-    while (*p) {
-        Before *grown = realloc(*rows, (size_t)(*n + 1) * sizeof *grown);
-        if (grown)
-            *rows = grown;
-        int nfields = grown ? read_line(&p, field, 64) : -1;
-        if (nfields < 0)
-            break;
-        Before *row = &(*rows)[(*n)++];
-        row->name = field[0];
-        for (int c = 0; c < NPARTS + 2; c++)
-            row->v[c] = NAN;
-        for (int k = 1; k < nfields && k < 64; k++) {
-            char *end;
-            double x = strtod(field[k], &end);
-            if (k < ncolumns && column[k] >= 0 && end != field[k] && !*end)
-                row->v[column[k]] = x;
-            free(field[k]);
-        }
-    }
-    return 0;
 }
 
 /* The change of a submission: after's total less before's (an unknown
@@ -134,36 +89,65 @@ static void now_of(const ClassView *v, int s, double *after)
     after[NPARTS + 1] = sub->total;
 }
 
-/* Compares the run's submissions with the previous rows. */
-static void compare(ClassView *v, Before *rows, int n)
+/* Compares the run's submissions with the rows of the previous gradebook,
+ * text, its header first (each field a column, column_of); -1 when it is
+ * not a gradebook. */
+static int compare(ClassView *v, const char *text)
 {
     ClassPrevious *pr = &v->previous;
     const ClassRun *run = v->run;
-    char *seen = calloc((size_t)n + 1, 1);
+    const char *p = text;
+    char *field[64];
+    int column[64], ncolumns = text ? read_line(&p, field, 64) : -1;
+    ncolumns = ncolumns < 64 ? ncolumns : 64;
+    for (int k = 0; k < ncolumns; k++) {
+        column[k] = column_of(field[k]);
+        free(field[k]);
+    }
+    if (ncolumns < 2 || column[0] != -1)
+        return -1;
+    size_t lines = 1;                   /* the most rows there can be */
+    for (const char *c = p; *c; c++)
+        lines += *c == '\n';
+    char *seen = calloc((size_t)run->n + 1, 1);
     pr->changes = calloc((size_t)run->n + 1, sizeof *pr->changes);
-    pr->gone = calloc((size_t)n + 1, sizeof *pr->gone);
-    for (int s = 0; seen && pr->changes && s < run->n; s++) {
-        int b = 0;
-        while (b < n && strcmp(rows[b].name, run->subs[s].name) != 0)
-            b++;
-        if (b == n) {
-            pr->nnew++;
+    pr->gone = calloc(lines, sizeof *pr->gone);
+    while (*p && seen && pr->changes && pr->gone) {
+        int nfields = read_line(&p, field, 64);
+        if (nfields < 0)
+            break;
+        /* The row's points (NAN where it has none), in the next change's
+         * place; the submission of its name, the first row of a name. */
+        ClassChange *c = &pr->changes[pr->nchanges];
+        for (int k = 0; k < NPARTS + 2; k++)
+            c->before[k] = NAN;
+        for (int k = 1; k < nfields && k < 64; k++) {
+            char *end;
+            double x = strtod(field[k], &end);
+            if (k < ncolumns && column[k] >= 0 && end != field[k] && !*end)
+                c->before[column[k]] = x;
+            free(field[k]);
+        }
+        int s = 0;
+        while (s < run->n && (seen[s] || strcmp(run->subs[s].name, field[0]) != 0))
+            s++;
+        if (s == run->n) {
+            pr->gone[pr->ngone++] = field[0];
             continue;
         }
-        seen[b] = 1;
+        free(field[0]);
+        seen[s] = 1;
         pr->compared++;
-        ClassChange *c = &pr->changes[pr->nchanges];
         c->sub = s;
-        memcpy(c->before, rows[b].v, sizeof c->before);
         now_of(v, s, c->after);
         pr->nchanges += changed(c->before[NPARTS + 1], c->after[NPARTS + 1]);
     }
-    for (int b = 0; seen && pr->gone && b < n; b++)
-        if (!seen[b])
-            pr->gone[pr->ngone++] = rows[b].name, rows[b].name = NULL;
+    for (int s = 0; seen && s < run->n; s++)
+        pr->nnew += !seen[s];
     free(seen);
     if (pr->nchanges > 1)
         qsort(pr->changes, (size_t)pr->nchanges, sizeof *pr->changes, by_change);
+    return 0;
 }
 
 void class_previous_read(ClassView *v)
@@ -171,20 +155,11 @@ void class_previous_read(ClassView *v)
     ClassPrevious *pr = &v->previous;
     if (!v->run->previous[0])
         return;
-    char path[PATH_MAX + 16];
-    snprintf(path, sizeof path, "%s/gradebook.csv", v->run->previous);
-    Before *rows = NULL;
-    int n = 0;
-    if (read_before(v->run->previous_csv, &rows, &n) != 0) {
-        snprintf(pr->note, sizeof pr->note, "%s could not be read as a gradebook: nothing was "
-                 "compared", path);
-        return;
-    }
-    pr->have = true;
-    compare(v, rows, n);
-    for (int b = 0; b < n; b++)
-        free(rows[b].name);
-    free(rows);
+    if (compare(v, v->run->previous_csv) != 0)
+        snprintf(pr->note, sizeof pr->note, "%s/gradebook.csv could not be read as a gradebook: nothing "
+                 "was compared", v->run->previous);
+    else
+        pr->have = true;
 }
 
 void class_previous_free(ClassPrevious *p)
