@@ -14,10 +14,11 @@
 #                            tests/run.sh reads, and exits 0 if none failed
 #   need_built PROGRAM...    ends the suite as one failed check, naming the
 #                            first PROGRAM that is not built
-#   temp_dir NAME            sets tmp to a new directory NAME.XXXXXX under
-#                            $TMPDIR (or /tmp), removed on exit (KEEP=1
-#                            keeps it and says where), or ends the suite as
-#                            one failed check
+#   temp_dir NAME [MORE]     sets tmp to a new directory NAME.XXXXXX under
+#                            $TMPDIR (or /tmp), removed on exit with MORE
+#                            (shell words, read then: other paths the suite
+#                            made; KEEP=1 keeps both and says where tmp is),
+#                            or ends the suite as one failed check
 #   fail_showing FILE N PREFIX WHAT
 #                            counts a failure as fail does, then shows the
 #                            first N lines of FILE (if not empty), each after
@@ -50,7 +51,8 @@ temp_dir() {
         echo "0 passed, 1 failed"
         exit 1
     }
-    trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
+    temp_more=${2:-}
+    trap 'if [ -n "${KEEP:-}" ]; then echo "kept $tmp"; else eval "rm -rf \"\$tmp\" $temp_more"; fi' EXIT
     trap 'exit 1' HUP INT TERM
 }
 fail_showing() {

@@ -17,9 +17,8 @@ RENDER_ASAN=${RENDER_ASAN:-out/asan/bin/render-solutions}
 COMPARE=${COMPARE:-out/build/bin/compare}
 
 . tests/lib/checks.sh
-temp_dir render_cli
 # `make compare SUBMISSION=$tmp/...` builds in out/build/sub/<path with / as _>.
-trap 'rm -rf "$tmp" "$top/out/build/sub/$(printf "%s" "$tmp" | tr / _)"_*' EXIT
+temp_dir render_cli '"$top/out/build/sub/$(printf "%s" "$tmp" | tr / _)"_*'
 
 # The programs by absolute paths (a relative one is from the top directory).
 for v in RENDER RENDER_LABS RENDER_ASAN COMPARE; do
