@@ -104,7 +104,9 @@ static void hit_case(Test *t, const char *const *mistakes, int nmistakes)
  * one named here.  Otherwise neither is named.  A test whose cases the
  * code answered with misses alone shows less: every mistake that misses
  * hits would fit it, so it names only a mistake another test named and
- * none ruled out, never one by elimination. */
+ * none ruled out, never one by elimination.  A case with NaN input rules
+ * nothing out (code that turns NaN away early passes it whatever its
+ * mistake). */
 static void test_two_mistakes_fit(void)
 {
     static const char A[] = "mistake A", B[] = "mistake B";
@@ -121,25 +123,32 @@ static void test_two_mistakes_fit(void)
     Test *failed_misses = testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: misses alone");
     hit_case(failed_misses, both, 2);
     hit_case(failed_misses, both, 2);
+    Test *a_fails_on_nan = testlist_add(&list, PART5, KIND_TRIANGLE, "Part 5: A fails on NaN input");
+    hit_case(a_fails_on_nan, a_only, 1);
+    a_fails_on_nan->cases[0].in[0] = NAN;
     const char with_hit[] = "0x0p+0 0x0p+0\n0x0p+0 0x0p+0\n0x1p+0 0x1p+2\nend 3\n";
     const char misses[] = "0x0p+0 0x0p+0\n0x0p+0 0x0p+0\nend 2\n";
 
     const Test *passed[2] = { &list.tests[1], &list.tests[2] };
+    const Test *passed_nan[2] = { &list.tests[1], &list.tests[4] };
     const char *named_a[] = { A }, *named_ab[] = { A, B };
     static const struct {
-        int npassed, nnamed, ab;       /* ab: named_ab, not named_a */
+        int npassed, nnamed, ab, nan;  /* ab: named_ab, not named_a;
+                                          nan: A's test passed is the NaN one */
         const char *want, *want_misses;
     } cases[] = {
-        { 1, 0, 0, NULL, NULL },       /* nothing tells them apart        */
-        { 2, 0, 0, B, NULL },          /* a passed test rules A out       */
-        { 1, 1, 0, A, A },             /* A was named for a failed test   */
-        { 1, 2, 1, NULL, NULL },       /* both were: name neither         */
-        { 2, 1, 0, B, NULL },          /* A ruled out, though named       */
+        { 1, 0, 0, 0, NULL, NULL },    /* nothing tells them apart        */
+        { 2, 0, 0, 0, B, NULL },       /* a passed test rules A out       */
+        { 1, 1, 0, 0, A, A },          /* A was named for a failed test   */
+        { 1, 2, 1, 0, NULL, NULL },    /* both were: name neither         */
+        { 2, 1, 0, 0, B, NULL },       /* A ruled out, though named       */
+        { 2, 0, 0, 1, NULL, NULL },    /* A's case passed has NaN input   */
     };
     for (int m = 0; m < 2; m++) {
         const char *answers = m ? misses : with_hit;
         for (int k = 0; k < CHECK_COUNT(cases); k++) {
-            PartSoFar part = { passed, cases[k].npassed, cases[k].ab ? named_ab : named_a, cases[k].nnamed };
+            PartSoFar part = { cases[k].nan ? passed_nan : passed, cases[k].npassed,
+                               cases[k].ab ? named_ab : named_a, cases[k].nnamed };
             const char *want = m ? cases[k].want_misses : cases[k].want;
             char *out = NULL;
             Answers a;
