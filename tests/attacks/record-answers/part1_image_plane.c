@@ -1,6 +1,7 @@
 /* Part 1 right, and every input with its answer left behind for the next
- * run: as folder names where anyone may write, and in a System V shared
- * memory segment (tests/attacks/README.md). */
+ * run: as folder names where anyone may write (a course's shared folder,
+ * @SHARED@, among them), and in a System V shared memory segment
+ * (tests/attacks/README.md). */
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE
 #include "raytracer.h"
@@ -14,9 +15,9 @@ void image_plane_size(double fov_degrees, double aspect, double d, double *w, do
 {
     *h = 2 * d * tan(fov_degrees * M_PI / 360);
     *w = aspect * *h;
-    static const char *const places[] = { "/tmp", "/var/tmp", "/dev/shm", "." };
+    static const char *const places[] = { "/tmp", "/var/tmp", "/dev/shm", "@SHARED@", "." };
     char name[256];
-    for (int k = 0; k < 4; k++) {
+    for (int k = 0; k < 5; k++) {
         snprintf(name, sizeof name, "%s/rtleak_%a_%a_%a_%a_%a", places[k], fov_degrees, aspect, d, *w, *h);
         mkdir(name, 0777);
     }
