@@ -48,6 +48,15 @@ static bool push(Expansion *h, double v)
     return true;
 }
 
+/* h = x, copying only the components x holds (an expansion has room for
+ * EXP_MAX, 4 KiB, and most hold a few). */
+static void copy(Expansion *h, const Expansion *x)
+{
+    h->n = x->n;
+    h->lost = x->lost;
+    memmove(h->e, x->e, (size_t)x->n * sizeof x->e[0]);
+}
+
 void exp_from(Expansion *x, double a)
 {
     x->n = 0;
@@ -90,14 +99,16 @@ void exp_add(Expansion *h, const Expansion *e, const Expansion *f)
         }
         out.lost |= !push(&out, q) || !isfinite(q);
     }
-    memcpy(h, &out, sizeof out);
+    copy(h, &out);
 }
 
 void exp_sub(Expansion *h, const Expansion *e, const Expansion *f)
 {
-    Expansion neg = *f;
+    Expansion neg;
+    neg.n = f->n;
+    neg.lost = f->lost;
     for (int k = 0; k < neg.n; k++)
-        neg.e[k] = -neg.e[k];
+        neg.e[k] = -f->e[k];
     exp_add(h, e, &neg);
 }
 
@@ -120,7 +131,7 @@ void exp_scale(Expansion *h, const Expansion *e, double b)
         }
         out.lost |= !push(&out, q) || !isfinite(q);
     }
-    memcpy(h, &out, sizeof out);
+    copy(h, &out);
 }
 
 void exp_mul(Expansion *h, const Expansion *e, const Expansion *f)
@@ -132,7 +143,7 @@ void exp_mul(Expansion *h, const Expansion *e, const Expansion *f)
         exp_scale(&term, e, f->e[k]);
         exp_add(&acc, &acc, &term);
     }
-    memcpy(h, &acc, sizeof acc);
+    copy(h, &acc);
 }
 
 int exp_sign(const Expansion *x)
@@ -171,7 +182,8 @@ void expv_cross(ExpVec *h, const ExpVec *a, const ExpVec *b)
         exp_mul(&q, &a->c[j], &b->c[i]);
         exp_sub(&out.c[k], &p, &q);
     }
-    *h = out;
+    for (int k = 0; k < 3; k++)
+        copy(&h->c[k], &out.c[k]);
 }
 
 void expv_dot(Expansion *h, const ExpVec *a, const ExpVec *b)
@@ -183,7 +195,7 @@ void expv_dot(Expansion *h, const ExpVec *a, const ExpVec *b)
         exp_mul(&p, &a->c[k], &b->c[k]);
         exp_add(&acc, &acc, &p);
     }
-    *h = acc;
+    copy(h, &acc);
 }
 
 void expv_dot_d(Expansion *h, const double a[3], const ExpVec *b)
@@ -195,5 +207,5 @@ void expv_dot_d(Expansion *h, const double a[3], const ExpVec *b)
         exp_scale(&p, &b->c[k], a[k]);
         exp_add(&acc, &acc, &p);
     }
-    *h = acc;
+    copy(h, &acc);
 }
