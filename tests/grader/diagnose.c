@@ -900,7 +900,7 @@ static bool p3_explains(const void *ctx, int tag, const Test *t, const Case *c, 
     if (tag == M_CANCEL)                 /* the textbook's losses: the hard cases */
         return t->hard;
     if (tag == M_NAN)
-        return got[0] == 1 && isnan(got[1]);
+        return got[0] == 1 && !isfinite(got[1]);
     if (tag == M_T_ZERO)                 /* a hit at the ray's own origin */
         return got[0] == 1 && got[1] == 0;
     if (tag == M_FLOAT && p->float_digits)   /* a t right to float's digits, not further */
@@ -984,6 +984,7 @@ static const double near_gaps[] = { 0x1p-30, 0x1p-23, 0x1p-17, 0x1p-14, 0x1p-12,
 static const double nan_rays[][CASE_MAX_IN] = {
     SPH(0, 0, -5, 1, 0, 0, 0, 0, 0, 0),
     SPH(NAN, 0, -5, 1, 0, 0, 0, 0, 0, -1),
+    SPH(0, 0, -1, 5, 0, 0, 0, 0, 0, 0),     /* a zero direction from inside */
 };
 /* Far, small spheres: B^2 and A C agree to 16 digits; the hit is at
  * D - sqrt(R^2 - rho^2), rho the line's distance from c. */
@@ -1002,7 +1003,7 @@ static const double on_sphere_rays[][CASE_MAX_IN] = {
     SPH(1, 1, -3, 3, 1, 1, 0, 0, 0, -1),
 };
 enum { N_ORDINARY = 6, N_SCALED = 8, N_BEHIND = 4, N_INSIDE = 5, N_TANGENT = 3,
-       N_NEAR = sizeof near_gaps / sizeof *near_gaps, N_NAN = 2, N_FAR = 3, N_ON_SPHERE = 5 };
+       N_NEAR = sizeof near_gaps / sizeof *near_gaps, N_NAN = 3, N_FAR = 3, N_ON_SPHERE = 5 };
 
 static void add_probe3(ProbeSet *ps, const char *name, const double (*in)[CASE_MAX_IN], int n)
 {
@@ -1277,20 +1278,26 @@ static void p3_tangent(Found *f, P3aFound *out, const Answers *got)
     }
 }
 
-/* A zero direction or NaN input answered as a hit at NaN. */
+/* A zero direction or NaN input answered as a hit at NaN, or a zero
+ * direction from inside the sphere at infinity (a root written C / q). */
 static void p3_nan(Found *f, P3aFound *out, const Answers *got)
 {
-    bool nan_hit = false;
-    for (int c = 0; c < got->answered; c++)
-        nan_hit = nan_hit || (got->got[c][0] == 1 && !isfinite(got->got[c][1]));
-    if (nan_hit) {
-        out->model[M_NAN] = true;
+    int c = 0;
+    while (c < got->answered && !(got->got[c][0] == 1 && !isfinite(got->got[c][1])))
+        c++;
+    if (c == got->answered)
+        return;
+    out->model[M_NAN] = true;
+    if (!isnan(got->got[c][1]))
+        name_cause(f, "nan-hit", M_NAN, "a hit at t = infinity was returned (for a zero direction from "
+                   "inside the sphere): with r = 0, A = 0, B = 0 and C < 0, so a root written C / q is "
+                   "C / 0 = infinity, which passes t > 0. Reject A = 0 first: no direction, no ray.");
+    else
         name_cause(f, "nan-hit", M_NAN, "a hit at t = NaN was returned (%s): with r = 0, A = 0 and the "
                    "roots are 0/0 = NaN, and every comparison with NaN is false, so a test written "
                    "as \"if (t < tmin) return false\" lets it through. Write it as "
                    "\"if (!(t > tmin)) return false\", or reject A = 0 first.",
-                   got->answered > 0 && got->got[0][0] == 1 ? "for a zero direction" : "for NaN input");
-    }
+                   c == 1 ? "for NaN input" : "for a zero direction");
 }
 
 /* Far, small spheres: right on ordinary rays, wrong here. */

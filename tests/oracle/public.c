@@ -115,6 +115,7 @@ static void part3a(TestList *l)
     t = tg_test(l, PART3A, KIND_SPHERE, 1, "Part 3a: a zero direction is a miss",
                 "r = 0 gives A = 0: no ray, no hit (and no division by zero)");
     tg_sphere(t, V(0, 0, -5), 1, V(0, 0, 0), V(0, 0, 0));
+    tg_sphere(t, V(0, 0, -1), 5, V(0, 0, 0), V(0, 0, 0));          /* from inside */
     tg_sphere(t, V(0, 0, -5), 1, V(0, 0, 0), V(0, 0.6, -0.8));
     tg_sphere(t, V(0, 0, -5), 1, V(0, 0, 0), V(0, 0.1, -0.9));
     t = tg_test(l, PART3A, KIND_SPHERE, 1, "Part 3a: a ray that starts on the sphere",
