@@ -667,6 +667,21 @@ status=$?
 check "a folder with no submission in it is refused (exit $status, want 2), and nothing is written" \
     sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/grades-none' ] &&
            grep -q 'no-class holds no submissions: .*left out: .git)' '$tmp/none.out'"
+# A folder the outputs cannot name: "index" (its page would be the class
+# page, index.html) and a name too long for NAME.json.  Refused, naming it,
+# before anything is written.
+long=$(awk 'BEGIN { while (n++ < 251) printf "x" }')
+for bad in Index "$long"; do
+    mkdir -p "$tmp/misnamed/ok" "$tmp/misnamed/$bad"
+    cp solutions/part1_image_plane.c "$tmp/misnamed/$bad/"
+    chmod -R a+rX "$tmp/misnamed"
+    $grade --all "$tmp/misnamed" --out "$tmp/grades-misnamed" >"$tmp/misnamed.out" 2>&1
+    status=$?
+    check "a submission's folder named ${bad%"${bad#?????}"}... (${#bad} bytes) is refused (exit $status, want 2), naming it, and nothing is written" \
+        sh -c "[ $status -eq 2 ] && [ ! -e '$tmp/grades-misnamed' ] &&
+               grep -q 'misnamed/${bad%"${bad#?????}"}.*rename the folder' '$tmp/misnamed.out'"
+    rm -rf "$tmp/misnamed"
+done
 # A submission with no stage file (an empty folder, or only files under
 # other names) is told apart in the gradebook from one that lost points.
 mkdir -p "$tmp/handed/empty" "$tmp/handed/renamed" "$tmp/handed/part1-only" "$tmp/handed/in-labs/labs"
