@@ -50,13 +50,17 @@ if ! (cd "$work/kit" && make -s -j"$jobs" grader) >"$work/build.log" 2>&1; then
     exit 0
 fi
 
-# The stage files, wherever they are under student/ (the first by name).
+# The stage files, wherever they are under student/ (the first by name;
+# not a path with a newline, which would split find's line in two, the
+# second a path of the student's choosing).
 rm -rf "$work/submission"
 mkdir "$work/submission"
 found=""
+nl='
+'
 for stage in part1_image_plane part2_pixel_coordinates part3a_sphere_intersect part3b_ray_color \
              part4_plane_intersect part5_triangle_intersect; do
-    file=$(find "$root/student" -type f -name "$stage.c" 2>/dev/null | sort | head -n 1)
+    file=$(find "$root/student" -type f -name "$stage.c" ! -path "*$nl*" 2>/dev/null | sort | head -n 1)
     if [ -n "$file" ]; then
         cp "$file" "$work/submission/$stage.c"
         found="$found $stage.c"

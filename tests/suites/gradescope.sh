@@ -71,6 +71,21 @@ check "an upload whose labs is a link to the reference: nothing taken from it" \
     sh -c "grep -q '^found: none of the stage files' '$tmp/run-link.log' && grep -q '\"score\": 0' '$ag/results/results.json'"
 rm -f "$ag/submission/labs"
 
+# A folder whose name ends in a newline splits find's line in two, the
+# second a path of the folders below it: one named as the kit's reference,
+# shallower than the file itself, was copied in its place.  Such a path is
+# not taken.
+rm -rf "$ag/submission"/* "$ag/results/results.json"
+nl='
+'
+fake="$ag/submission/a/b/c/d/e/f/g/h/x$nl$ag/source/solutions"
+mkdir -p "$fake"
+echo 'not a stage file' >"$fake/part1_image_plane.c"
+AUTOGRADER_ROOT="$ag" "$ag/run_autograder" >"$tmp/run-newline.log" 2>&1
+check "a folder named with a newline cannot make the kit's reference the student's Part 1" \
+    sh -c "grep -q '^found: none of the stage files' '$tmp/run-newline.log' && grep -q '\"score\": 0' '$ag/results/results.json'"
+rm -rf "$ag/submission"/*
+
 # Files under another name, as a browser names a second download and as
 # editors capitalise: 0 for those parts, and the message names the files.
 rm -rf "$ag/submission"/* "$ag/results/results.json"

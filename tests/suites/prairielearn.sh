@@ -133,6 +133,19 @@ cp labs/part*.c "$job/student/"
 run skeleton
 check "skeleton: gradable, score 0" sh -c "[ '$(field gradable skeleton)' = true ] && [ '$(field score skeleton)' = 0 ]"
 
+# A folder named "x", a newline and ".." splits find's line in two, the
+# second "../" and the folders below it, sorted first: named as the way
+# from here to the kit's reference, it was copied as the student's file.
+# Such a path is not taken.
+rm -rf "$job/student"/*
+fake="$job/student/x
+../${PWD##*/}/solutions"
+mkdir -p "$fake"
+echo 'not a stage file' >"$fake/part1_image_plane.c"
+run newline
+check "newline: a folder named with a newline cannot make the kit's reference the student's Part 1" \
+    sh -c "grep -q '^found: none of the stage files' '$tmp/newline.log' && [ '$(field gradable newline)' = false ]"
+
 # Nothing uploaded.
 rm -rf "$job/student"/*
 run empty
