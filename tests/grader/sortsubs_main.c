@@ -434,6 +434,10 @@ int main(int argc, char **argv)
     if (arg < 0 || argc - arg != 2 || !*argv[arg] || !*argv[arg + 1])
         return usage();
     const char *from = argv[arg], *to = argv[arg + 1];
+    /* "sorted/", as a shell completes a folder's name, is "sorted": its
+     * temporary folder goes beside it, not inside. */
+    for (size_t n = strlen(to); n > 1 && to[n - 1] == '/'; n--)
+        argv[arg + 1][n - 1] = '\0';
     char err[ERR_MAX], why[ERR_MAX];
     bool exists;
     if (!new_destination(to, &exists, why, sizeof why)) {

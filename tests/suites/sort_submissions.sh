@@ -156,6 +156,15 @@ check "TO not empty: refused (exit 1), its files untouched" \
 mkdir "$tmp/empty"
 sort_subs "$tmp/canvas.zip" "$tmp/empty"
 check "TO an empty folder: sorted into it" sh -c "[ $status -eq 0 ] && [ -d '$tmp/empty/smithbob_340934' ]"
+# TO as a shell completes a folder's name, with a "/" after it: the same
+# as without (its temporary folder went inside it, then was not empty).
+mkdir "$tmp/slash"
+sort_subs "$tmp/canvas.zip" "$tmp/slash/"
+check "TO an empty folder, given with a \"/\" after it: sorted into it" \
+    sh -c "[ $status -eq 0 ] && [ -d '$tmp/slash/smithbob_340934' ] && [ \"\$(ls -a '$tmp/slash' | grep -c sorting)\" -eq 0 ]"
+sort_subs "$tmp/canvas.zip" "$tmp/new-slash//"
+check "TO a new folder, given with \"/\" after it: made, and sorted into it" \
+    sh -c "[ $status -eq 0 ] && [ -d '$tmp/new-slash/smithbob_340934' ]"
 mkdir "$tmp/plain" && cp solutions/part1_image_plane.c "$tmp/plain/"
 sort_subs "$tmp/plain" "$tmp/none"
 check "no file named as a download names them: refused (exit 1), nothing written" \
