@@ -174,6 +174,7 @@ static bool blackboard(const char *path, LmsName *out)
             return false;
         memcpy(out->attempt, date, (size_t)(e - date));
         out->attempt[e - date] = '\0';
+        out->user_at = (size_t)(user - base);
         out->lms = LMS_BLACKBOARD;
         out->late = false;
         out->again = 0;

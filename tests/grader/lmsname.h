@@ -27,12 +27,15 @@
  * when it is given such a download.  (Blackboard's form is read as the
  * tools that sort its downloads read it, BBGradebookOrganiser among them:
  * the username is what comes between the last "_" before "_attempt_" and
- * it, the file's own name what follows the date.)
+ * it, the file's own name what follows the date.  A username may hold "_"
+ * too: sortsubs takes the name of the assignment, which a download's files
+ * share, for the rest.)
  */
 #ifndef GRADER_LMSNAME_H
 #define GRADER_LMSNAME_H
 
 #include <stdbool.h>
+#include <stddef.h>
 
 typedef enum { LMS_CANVAS = 1, LMS_MOODLE, LMS_BLACKBOARD } Lms;
 
@@ -49,6 +52,8 @@ typedef struct {
                                  Blackboard's text file of an attempt,
                                  "attempt_DATE.txt"                         */
     char attempt[32];         /* Blackboard: the attempt's DATE; else ""    */
+    size_t user_at;           /* Blackboard: where who begins in the path's
+                                 last component; else 0                     */
     int again;                /* Canvas's "-N" taken off name: N; else 0     */
     bool late;                /* Canvas's LATE mark                          */
 } LmsName;

@@ -221,6 +221,50 @@ static int name_files(Sorting *s, const char *from)
     return fail(err, NULL);
 }
 
+/* The last component of path. */
+static const char *last_part(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash ? slash + 1 : path;
+}
+
+/* Blackboard's username is read as the last "_"-separated part before
+ * "_attempt_" (lmsname.h), but a username may hold "_" too: "j_smith"'s
+ * and "k_smith"'s files were both "smith"'s, one student's attempts taken
+ * for the other's earlier ones.  A download is of one assignment, whose
+ * name, up to a "_", all its Blackboard files' names start with: each
+ * username is all that follows it up to "_attempt_". */
+static void blackboard_users(Sorting *s)
+{
+    const char *first = NULL;          /* the first such name's last component */
+    size_t common = 0;                 /* the bytes all of them share          */
+    for (size_t k = 0; k < s->nitems; k++) {
+        const LmsName *n = &s->items[k].n;
+        if (n->lms != LMS_BLACKBOARD)
+            continue;
+        const char *base = last_part(s->items[k].entry->path);
+        size_t len = n->user_at + strlen(n->who), c = 0;
+        if (!first) {
+            first = base;
+            common = len;
+        }
+        while (c < common && c < len && base[c] == first[c])
+            c++;
+        common = c;
+    }
+    size_t at = common;                /* where the usernames begin */
+    while (at > 0 && first[at - 1] != '_')
+        at--;
+    for (size_t k = 0; k < s->nitems && at > 1; k++) {
+        LmsName *n = &s->items[k].n;
+        size_t len = n->user_at + strlen(n->who);
+        if (n->lms == LMS_BLACKBOARD && len - at < sizeof n->who) {
+            memmove(n->who, last_part(s->items[k].entry->path) + at, len - at);
+            n->who[len - at] = '\0';
+        }
+    }
+}
+
 /* By submission, then name.  Of a submission's attempts, the latest is
  * kept (Blackboard's dates, written so that their order is that of their
  * text); of one file uploaded more than once, the last (Canvas's highest
@@ -450,6 +494,7 @@ int main(int argc, char **argv)
     if (status == 0)
         status = name_files(&s, from);
     if (status == 0) {
+        blackboard_users(&s);
         keep_latest(&s);
         status = write_sorted(&s, from, to, exists);
     }

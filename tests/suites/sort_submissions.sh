@@ -137,6 +137,18 @@ check "Blackboard: each attempt's own text file is kept beside its files, named 
     sh -c "[ -f '$tmp/bsorted/jsmith/attempt_$late.txt' ] && [ ! -e '$tmp/bsorted/jsmith/attempt_$early.txt' ] &&
            [ -f '$tmp/bsorted/20103940/attempt_$early.txt' ]"
 
+# Usernames with "_" in them, of an assignment with "_" in its name: two
+# students' files are not taken for one student's attempts.
+u=$tmp/underscores
+mkdir "$u"
+cp labs/part1_image_plane.c "$u/Ray_Tracing Lab_j_smith_attempt_${early}_part1_image_plane.c"
+cp solutions/part1_image_plane.c "$u/Ray_Tracing Lab_k_smith_attempt_${late}_part1_image_plane.c"
+sort_subs "$u" "$tmp/usorted"
+check "Blackboard usernames j_smith and k_smith: a folder each, with its own file" \
+    sh -c "[ $status -eq 0 ] && [ '$(folders "$tmp/usorted")' = 'j_smith k_smith ' ] &&
+           cmp -s labs/part1_image_plane.c '$tmp/usorted/j_smith/part1_image_plane.c' &&
+           cmp -s solutions/part1_image_plane.c '$tmp/usorted/k_smith/part1_image_plane.c'"
+
 # Names are the students' to choose, escape sequences and all: the run shows
 # them (ESC as ^[, BEL as ^G) and passes none of them to the terminal.
 e=$tmp/escapes

@@ -128,6 +128,8 @@ static void test_blackboard(void)
     }
     LmsName n;                                           /* the other platforms have no attempt */
     CHECK(lms_name("smithbob_340934_208490284_part1_image_plane.c", stages, 4, &n) && n.attempt[0] == '\0');
+    /* where the username begins, in the path's last component */
+    CHECK(lms_name("gradebook/Lab 1_a.b-c_attempt_2024-03-15-10-30-00_x.c", stages, 4, &n) && n.user_at == 6);
 }
 
 /* Names too long for the result are refused, not cut. */
