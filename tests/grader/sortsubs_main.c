@@ -53,11 +53,37 @@ typedef struct {
     bool earlier_attempt;           /* left out as of an earlier attempt */
 } Item;
 
-/* A name from the download, on standard output: the students chose the
- * names of their files (and Moodle's folders carry their own names). */
+/* name in buf (size bytes), each newline and tab in it shown as ^J and
+ * ^I, cut with "..." where it does not fit: the students chose the names
+ * of their files (and Moodle's folders carry their own names), and a line
+ * of the run's output or of sorted.txt says one file's. */
+static const char *one_line(const char *name, char *buf, size_t size)
+{
+    size_t used = 0;
+    const char *s = name;
+    for (; *s && used + 6 < size; s++) {
+        if (*s == '\n' || *s == '\t') {
+            buf[used++] = '^';
+            buf[used++] = *s == '\n' ? 'J' : 'I';
+        } else {
+            buf[used++] = *s;
+        }
+    }
+    if (*s) {
+        memcpy(buf + used, "...", 3);
+        used += 3;
+    }
+    buf[used] = '\0';
+    return buf;
+}
+
+/* A name from the download, on standard output, on one line (one_line)
+ * and with no escape sequence the terminal would obey (terminal.h). */
 static void put_name(const char *name)
 {
-    term_put(stdout, name, strlen(name));
+    char shown[ERR_MAX];
+    one_line(name, shown, sizeof shown);
+    term_put(stdout, shown, strlen(shown));
 }
 
 static int usage(void)
@@ -310,11 +336,12 @@ static int pack_sorted(const Sorting *s, const char *from, Archive *out, char *w
     int status = kit_buf_append(&list, line, strlen(line));
     for (size_t k = 0; k < s->nitems && status == 0; k++) {
         const Item *it = &s->items[k];
-        char path[2 * LMS_NAME_MAX + 2];
+        char path[2 * LMS_NAME_MAX + 2], to[ERR_MAX], was[ERR_MAX];
         snprintf(path, sizeof path, "%s/%s", it->n.who, it->n.name);
         if (it->kept)
             status = archive_add_file(out, path, it->entry->data, it->entry->size, 0644, why, whylen);
-        snprintf(line, sizeof line, "%s\t%s%s%s\n", it->kept ? path : "(left out)", it->entry->path,
+        snprintf(line, sizeof line, "%s\t%s%s%s\n", it->kept ? one_line(path, to, sizeof to) : "(left out)",
+                 one_line(it->entry->path, was, sizeof was),
                  it->n.late ? "\t(late)" : "",
                  it->kept ? "" : it->earlier_attempt ? "\t(of an earlier attempt)"
                                                      : "\t(an earlier upload of the same file)");
@@ -322,7 +349,8 @@ static int pack_sorted(const Sorting *s, const char *from, Archive *out, char *w
             status = kit_buf_append(&list, line, strlen(line));
     }
     for (size_t k = 0; k < s->nunsorted && status == 0; k++) {
-        snprintf(line, sizeof line, "(not sorted)\t%s\n", s->unsorted[k]->path);
+        char was[ERR_MAX];
+        snprintf(line, sizeof line, "(not sorted)\t%s\n", one_line(s->unsorted[k]->path, was, sizeof was));
         status = kit_buf_append(&list, line, strlen(line));
     }
     if (status == 0)

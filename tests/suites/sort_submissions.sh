@@ -160,6 +160,17 @@ check "names with escape sequences: sorted, shown as ^[ and ^G, and no ESC or BE
     sh -c "[ $status -eq 0 ] && grep -qF 'Di^[[2JEck_7' '$tmp/out' && grep -qF 'x^[]0;title^Gy.txt' '$tmp/out' &&
            ! grep -q \"\$(printf '[\\033\\007]')\" '$tmp/out'"
 
+# A newline or a tab in a name would forge a line of the run's output and a
+# record of sorted.txt: they are shown as ^J and ^I in both.
+mkdir "$tmp/lines"
+cp solutions/part1_image_plane.c "$tmp/lines/smithbob_340934_208490284_part1_image_plane.c"
+echo x >"$tmp/lines/$(printf 'y.txt\n(not sorted)\tforged.txt')"
+sort_subs "$tmp/lines" "$tmp/lsorted"
+check "a name with a newline and a tab: one line of the output and of sorted.txt, shown as ^J and ^I" \
+    sh -c "[ $status -eq 0 ] && grep -qF 'y.txt^J(not sorted)^Iforged.txt' '$tmp/out' &&
+           grep -qF '(not sorted)	y.txt^J(not sorted)^Iforged.txt' '$tmp/lsorted/sorted.txt' &&
+           ! grep -q '^(not sorted)' '$tmp/out' && ! grep -q '^(not sorted)	forged' '$tmp/lsorted/sorted.txt'"
+
 # ---- refused, nothing written ------------------------------------------------
 mkdir "$tmp/full" && echo x >"$tmp/full/keep.txt"
 sort_subs "$tmp/canvas.zip" "$tmp/full"
