@@ -40,20 +40,29 @@ static void put_text(FILE *f, const char *s)
     fputc('\n', f);
 }
 
+/* The first "- " line of text at or after s, or NULL. */
+static const char *next_item(const char *s)
+{
+    while (s && *s && strncmp(s, "- ", 2) != 0)
+        s = strchr(s, '\n') ? strchr(s, '\n') + 1 : NULL;
+    return s && *s ? s : NULL;
+}
+
 /* Part p's causes: the i-th key of g->causes[p] with the i-th "- " line
- * of its diagnosis, the sentence the student read. */
+ * of its diagnosis, the sentence the student read: the core failures'
+ * causes first, then those of the hard cases alone (diagnose.h). */
 static void put_causes(FILE *f, const Grade *g, int p)
 {
-    const char *keys = g->causes[p], *text = g->diagnosis[p];
+    const char *keys = g->causes[p];
+    const char *core = next_item(g->diagnosis[p]), *hard = next_item(g->diagnosis_hard[p]);
     while (keys && *keys) {
         size_t n = strcspn(keys, " ");
-        while (text && *text && strncmp(text, "- ", 2) != 0)
-            text = strchr(text, '\n') ? strchr(text, '\n') + 1 : NULL;
-        const char *line = text && *text ? text + 2 : "";
+        const char **at = core ? &core : &hard;
+        const char *line = *at ? *at + 2 : "";
         size_t len = strcspn(line, "\n");
         fprintf(f, "cause %s %.*s %.*s\n", part_label(p), (int)n, keys, (int)len, line);
-        if (text && *text)
-            text = line + len + (line[len] == '\n');
+        if (*at)
+            *at = next_item(line + len);
         keys += n;
         keys += *keys == ' ';
     }

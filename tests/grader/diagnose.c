@@ -219,11 +219,15 @@ static void write_diagnosis(Found *f, int part, const TestList *tests, const Tes
     char **out[2] = { text, hard_text };
     size_t len[2] = { 0, 0 }, klen = 0;
     int named[2] = { 0, 0 };
-    for (int q = 0; q < f->ncauses; q++) {
-        const Cause *c = &f->cause[q];
+    /* The core failures' causes first, then the hard cases' alone: the keys
+     * in the order of the two texts' lines. */
+    for (int q = 0; q < 2 * f->ncauses; q++) {
+        const Cause *c = &f->cause[q % f->ncauses];
         if (failing[0] + failing[1] > 0 && c->explained[0] + c->explained[1] == 0)
             continue;
         int group = c->explained[0] == 0 && c->explained[1] > 0;      /* the hard cases' alone */
+        if (group != q / f->ncauses)
+            continue;
         if (klen)
             append(keys, &klen, " ");
         append(keys, &klen, c->key);

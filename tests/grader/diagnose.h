@@ -37,8 +37,9 @@ typedef struct {
 /* Diagnoses part (PART1 .. PART3B) from its tests' results and its probes.
  * *text receives the explanation for the student of the core tests'
  * failures, *hard_text that of causes which explain hard cases alone (the
- * extra credit, told apart), and *keys every cause's key, space-separated;
- * each malloc'd, or NULL when nothing is confirmed. */
+ * extra credit, told apart), and *keys every cause's key, space-separated,
+ * in the order of the two texts' "- " lines (*text's first); each
+ * malloc'd, or NULL when nothing is confirmed. */
 void diagnose_part(int part, const TestList *tests, const TestResult *results, const Probes *probes,
                    char **text, char **hard_text, char **keys);
 

@@ -95,6 +95,26 @@ check "a class with no points lost: the page says there is nothing to diagnose, 
            grep -q 'None: every submission.s files were there and built' '$tmp/allfull-out/index.html' &&
            [ \$(wc -l <'$tmp/allfull-out/causes.csv') -eq 1 ]"
 
+# A cause of the hard cases alone is worded as the students read it, as
+# the others are: on the page, as the most common cause, in causes.csv.
+# textbook's Part 1 is the lecture's formula (tan-near-90); tmin's Part 3a
+# misses tangent rays (a core cause) and hits before 1e-9 (hard cases
+# alone), the hard cases' cause named first by the probes.
+mkdir -p "$tmp/hardonly/textbook" "$tmp/hardonly/tmin"
+cp "$selftest/textbook/part1_image_plane.c" "$tmp/hardonly/textbook/"
+sed 's/ > 0) {/ > 1e-9) {/' "$selftest/p3a-tangent-miss/part3a_sphere_intersect.c" \
+    >"$tmp/hardonly/tmin/part3a_sphere_intersect.c"
+chmod -R a+rX "$tmp/hardonly"
+sed 's/^parts .*/parts 1 3a/' "$tmp/p1.conf" >"$tmp/p13a.conf"
+$grade --all "$tmp/hardonly" --out "$tmp/hardonly-out" --weights "$tmp/p13a.conf" --jobs 2 \
+    >"$tmp/hardonly.out" 2>&1
+check "a cause of the hard cases alone has its sentence: on the page, as the most common, in causes.csv" \
+    sh -c "grep -q '<p class=\"said\">your formula is right, but near 180 degrees' '$tmp/hardonly-out/index.html' &&
+           ! grep -q -e '<p class=\"said\"></p>' -e '&ldquo;&rdquo;' '$tmp/hardonly-out/index.html' &&
+           grep -q '^1,tan-near-90,\"your formula is right' '$tmp/hardonly-out/causes.csv' &&
+           grep -q '^3a,tmin-epsilon,\"hits closer than a tmin' '$tmp/hardonly-out/causes.csv' &&
+           grep -q '^3a,tangent-miss,\"a tangent ray' '$tmp/hardonly-out/causes.csv'"
+
 # A class the grader could not grade at all (no compiler on PATH): each
 # submission needs a person, with the grader's own message, and the page
 # still passes.
