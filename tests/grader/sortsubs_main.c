@@ -481,8 +481,8 @@ static void say_earlier_uploads(const Sorting *s)
     }
 }
 
-/* The files not sorted, those of the system's own left out, and where
- * sorted.txt is. */
+/* The files not sorted, those of the system's own left out, where
+ * sorted.txt is, and the next step. */
 static void say_left_out(const Sorting *s, const char *to)
 {
     if (s->nunsorted) {
@@ -497,6 +497,7 @@ static void say_left_out(const Sorting *s, const char *to)
         printf("left out %zu file%s of the system's own (names starting with \".\", __MACOSX)\n", s->nsystem,
                s->nsystem == 1 ? "" : "s");
     printf("where each file came from: %s/sorted.txt\n", to);
+    printf("to grade them: make grade-all SUBMISSIONS=%s\n", to);
 }
 
 int main(int argc, char **argv)

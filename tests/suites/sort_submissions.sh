@@ -68,6 +68,8 @@ check "sorted.txt says where each file came from" \
     sh -c "grep -q '^smithbob_340934/part2_pixel_coordinates.c	smithbob_340934_208490284_part2_pixel_coordinates.c\$' '$tmp/sorted/sorted.txt' &&
            grep -q '^(left out)	wellslane_LATE_334244_394803489_part1_image_plane.c	(late)	(an earlier upload' '$tmp/sorted/sorted.txt' &&
            grep -q '^(not sorted)	README.txt\$' '$tmp/sorted/sorted.txt'"
+check "it ends with the next step, the command that grades them" \
+    sh -c "tail -n 1 '$tmp/out' | grep -qx 'to grade them: make grade-all SUBMISSIONS=$tmp/sorted'"
 check "no temporary folder is left beside it" sh -c "! ls -d '$tmp'/sorted.sorting.* >/dev/null 2>&1"
 
 # The same download unpacked into a folder: the same folders and files.
