@@ -212,7 +212,7 @@ grade: grader $(REPORT_REF)
 	    $(if $(CLASSROOM),--classroom "$(CLASSROOM)") $(if $(filter all,$(FAILURES)),--all-failures) \
 	    --report out/report
 grade-all: grader $(REPORT_REF)
-	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade-all SUBMISSIONS=dir [OUT=dir] [PREVIOUS=dir]"; exit 2; }
+	@test -n "$(SUBMISSIONS)" || { echo "usage: make grade-all SUBMISSIONS=dir [OUT=dir] [JOBS=n] [PREVIOUS=dir]"; exit 2; }
 	@$(BUILD)/bin/grade --all "$(SUBMISSIONS)" --out "$(if $(OUT),$(OUT),out/grades)" $(if $(JOBS),--jobs $(JOBS)) \
 	    $(if $(PREVIOUS),--previous "$(PREVIOUS)")
 sort-submissions: $(BUILD)/bin/sortsubs

@@ -6,7 +6,8 @@
 # - labs/scenes/cracks.obj and knot.obj are what tests/tools/cracks-mesh.sh
 #   and knot-mesh.sh write;
 # - labs/raytracer.h keeps the lab contract (when the contract probe is
-#   beside the kit).
+#   beside the kit);
+# - a make target's usage names the settings make help names.
 set -u
 . tests/lib/checks.sh
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtconsistency.XXXXXX")
@@ -41,6 +42,16 @@ for mesh in cracks knot; do
         check "labs/scenes/$mesh.obj is out of date: run sh tests/tools/$mesh-mesh.sh >labs/scenes/$mesh.obj" \
             cmp -s "labs/scenes/$mesh.obj" "$tmp/$mesh.obj"
     fi
+done
+
+# A make target's usage, given when a setting it needs is missing, is the
+# line make help gives it: the same settings.
+make -s --no-print-directory help >"$tmp/help" 2>&1 </dev/null
+for target in grade-all sort-submissions; do
+    make -s --no-print-directory "$target" >"$tmp/usage" 2>&1 </dev/null
+    usage=$(sed -n 's/^usage: //p' "$tmp/usage")
+    check "make $target's usage ($usage) is its line in make help" \
+        sh -c "[ -n \"\$1\" ] && grep -qxF -e \"\$1\" '$tmp/help'" sh "$usage"
 done
 
 probe=../shared/contract/probe.c
