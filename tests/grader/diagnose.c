@@ -488,8 +488,9 @@ static void p1_tan_near_90(const ProbeSet *ps, Found *f, P1Found *out, const Ans
     }
     if (wrong && rounding) {
         out->tan90 = true;
-        name_cause(f, "tan-near-90", TAG_ALL, "your formula is right, but near 180 degrees it loses "
-                   "digits (at alpha = %.12g, h is off by %.2g of itself): alpha pi / 360 is "
+        name_cause(f, "tan-near-90", TAG_ALL, "h = 2 d tan(alpha / 2), the lecture's formula, loses "
+                   "digits near 180 degrees, and so do your answers (at alpha = %.12g, h is off by "
+                   "%.2g of itself): alpha pi / 360 is "
                    "rounded to a double like any number, and tan is so steep near 90 degrees that "
                    "this rounding of 1e-16 is magnified many times. Keeping those digits is the "
                    "handout's hard-case challenge (extra credit).%s", worst_fov, worst,
@@ -1317,10 +1318,10 @@ static void p3_far(const ProbeSet *ps, Found *f, P3aFound *out, const Answers *g
     }
     if (wrong) {
         out->cancellation = true;
-        name_cause(f, "cancellation", M_CANCEL, "your formula is right, but it loses the sphere when it is "
-                   "small and far (a sphere of radius 1 at 2^27): B^2 and A C (or |L|^2 and "
-                   "tca^2) agree to 16 digits there, and their difference, the part that says "
-                   "where the ray is, is rounding error. Computing it without that cancellation "
+        name_cause(f, "cancellation", M_CANCEL, "B^2 - A C, the lecture's discriminant, loses the sphere "
+                   "when it is small and far, and so do your answers (a sphere of radius 1 at 2^27): "
+                   "B^2 and A C (or |L|^2 and tca^2) agree to 16 digits there, and their difference, "
+                   "the part that says where the ray is, is rounding error. Computing it without that cancellation "
                    "is the handout's hard-case challenge (extra credit).%s",
                    ps->probes->full_hints ? " The discriminant is A R^2 - |f x r|^2." : "");
     }

@@ -109,9 +109,9 @@ sed 's/^parts .*/parts 1 3a/' "$tmp/p1.conf" >"$tmp/p13a.conf"
 $grade --all "$tmp/hardonly" --out "$tmp/hardonly-out" --weights "$tmp/p13a.conf" --jobs 2 \
     >"$tmp/hardonly.out" 2>&1
 check "a cause of the hard cases alone has its sentence: on the page, as the most common, in causes.csv" \
-    sh -c "grep -q '<p class=\"said\">your formula is right, but near 180 degrees' '$tmp/hardonly-out/index.html' &&
+    sh -c "grep -q '<p class=\"said\">h = 2 d tan(alpha / 2), the lecture&#39;s formula, loses digits near 180 degrees' '$tmp/hardonly-out/index.html' &&
            ! grep -q -e '<p class=\"said\"></p>' -e '&ldquo;&rdquo;' '$tmp/hardonly-out/index.html' &&
-           grep -q '^1,tan-near-90,\"your formula is right' '$tmp/hardonly-out/causes.csv' &&
+           grep -q '^1,tan-near-90,\"h = 2 d tan(alpha / 2), the lecture.s formula, loses digits' '$tmp/hardonly-out/causes.csv' &&
            grep -q '^3a,tmin-epsilon,\"hits closer than a tmin' '$tmp/hardonly-out/causes.csv' &&
            grep -q '^3a,tangent-miss,\"a tangent ray' '$tmp/hardonly-out/causes.csv'"
 
