@@ -157,10 +157,4 @@ bool class_handout_lists(int part, const char *text, char *mistake, size_t n);
 void class_previous_read(ClassView *v);
 void class_previous_free(ClassPrevious *p);
 
-/* Opens path's temporary file, private to its owner (mode 0600), for
- * writing; tmp (n bytes) receives its name.  class_private_close closes it
- * and renames it to path; 0, or -1 with "path: reason" in err (report_class.c). */
-FILE *class_private_open(const char *path, char *tmp, size_t n);
-int class_private_close(FILE *f, const char *tmp, const char *path, char *err, size_t errlen);
-
 #endif

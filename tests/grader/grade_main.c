@@ -722,11 +722,10 @@ static void gradebook_row(FILE *f, const GradeConfig *cfg, const AllRun *run, co
 static int write_gradebook(const char *csv, const GradeConfig *cfg, const AllRun *run, const Job *all,
                            int n, Gradebook *gb)
 {
-    char tmp[PATH_MAX + 8];
-    snprintf(tmp, sizeof tmp, "%s.tmp", csv);
-    FILE *f = fopen(tmp, "w");
+    char tmp[PATH_MAX + 16], err[PATH_MAX + 64];
+    FILE *f = class_private_open(csv, tmp, sizeof tmp);    /* every grade in it: the owner's alone */
     if (!f)
-        return fail(NULL, "%s: cannot write", tmp);
+        return fail(NULL, "%s: cannot write", csv);
     /* One column per graded part (the "parts" line), then the hard-case
      * points, the total and the status. */
     fprintf(f, "submission");
@@ -739,8 +738,8 @@ static int write_gradebook(const char *csv, const GradeConfig *cfg, const AllRun
     fprintf(f, ",hard,total,status\n");
     for (int k = 0; k < n; k++)
         gradebook_row(f, cfg, run, &all[k], k, ncols, gb);
-    if (fclose(f) != 0 || rename(tmp, csv) != 0)
-        return fail(NULL, "%s: cannot write", csv);
+    if (class_private_close(f, tmp, csv, err, sizeof err) != 0)
+        return fail(NULL, "%s", err);
     return 0;
 }
 

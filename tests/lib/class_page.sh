@@ -252,7 +252,7 @@ check_class_page() {
     csv=$out/causes.csv
     check "it says where the class page is" grep -q "^the class at a glance: $out/index.html" "$log"
     check "the class page and causes.csv are written" test -f "$page" -a -f "$csv"
-    for f in "$page" "$csv"; do
+    for f in "$page" "$csv" "$out/gradebook.csv"; do
         check "${f##*/} is readable by its owner alone ($(ls -l "$f" | cut -c1-10))" \
             sh -c "ls -l '$f' | grep -q '^-rw-------'"
     done
