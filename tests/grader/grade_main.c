@@ -432,7 +432,33 @@ typedef struct {
     int lms;            /* files named as a platform's download names them (lmsname.h) */
 } Submissions;
 
-/* Reads the folder dir into s; returns 0, or fail's status. */
+/* A submission whose name the outputs cannot carry: "index", whose page
+ * would be the class page (OUT/index.html, in any case where the file
+ * system ignores case), or a name too long for NAME.json (a file's name
+ * is at most 255 bytes).  Refused before anything is written, naming the
+ * folder; returns 0, or fail's status. */
+static int misnamed_submission(const char *dir, const Submissions *s)
+{
+    for (int k = 0; k < s->n; k++) {
+        char shown[120] = "", err[1024];
+        term_append(shown, sizeof shown, s->names[k]);
+        size_t n = strlen(s->names[k]);
+        if (strcasecmp(s->names[k], "index") == 0)
+            snprintf(err, sizeof err, "%.600s/%s: a submission's folder may not be named %s, as its page "
+                     "would be the class page (index.html): rename the folder", dir, shown, shown);
+        else if (n > 255 - strlen(".json"))
+            snprintf(err, sizeof err, "%.600s/%s%s: the folder's name is %zu bytes long, too long for its "
+                     "results' file (the name and .json, at most 255 bytes): rename the folder", dir,
+                     shown, strlen(shown) < n ? "..." : "", n);
+        else
+            continue;
+        return fail(NULL, "%s", err);
+    }
+    return 0;
+}
+
+/* Reads the folder dir into s, refusing a misnamed submission; returns 0,
+ * or fail's status (and s holds no names). */
 static int read_submissions(const char *dir, Submissions *s)
 {
     memset(s, 0, sizeof *s);
@@ -493,7 +519,15 @@ static int read_submissions(const char *dir, Submissions *s)
     free(dots);
     if (s->n > 1)
         qsort(s->names, (size_t)s->n, sizeof *s->names, by_name);
-    return 0;
+    int rc = misnamed_submission(dir, s);
+    if (rc != 0) {
+        for (int k = 0; k < s->n; k++)
+            free(s->names[k]);
+        free(s->names);
+        s->names = NULL;
+        s->n = 0;
+    }
+    return rc;
 }
 
 /* A folder with no submissions: a wrong folder, most likely, and nothing
@@ -519,31 +553,6 @@ static int no_submissions(const char *dir, const Submissions *s)
         append_text(err, sizeof err, more);
     }
     return fail(NULL, "%s", err);
-}
-
-/* A submission whose name the outputs cannot carry: "index", whose page
- * would be the class page (OUT/index.html, in any case where the file
- * system ignores case), or a name too long for NAME.json (a file's name
- * is at most 255 bytes).  Refused before anything is written, naming the
- * folder; returns 0, or fail's status. */
-static int misnamed_submission(const char *dir, const Submissions *s)
-{
-    for (int k = 0; k < s->n; k++) {
-        char shown[120] = "", err[1024];
-        term_append(shown, sizeof shown, s->names[k]);
-        size_t n = strlen(s->names[k]);
-        if (strcasecmp(s->names[k], "index") == 0)
-            snprintf(err, sizeof err, "%.600s/%s: a submission's folder may not be named %s, as its page "
-                     "would be the class page (index.html): rename the folder", dir, shown, shown);
-        else if (n > 255 - strlen(".json"))
-            snprintf(err, sizeof err, "%.600s/%s%s: the folder's name is %zu bytes long, too long for its "
-                     "results' file (the name and .json, at most 255 bytes): rename the folder", dir,
-                     shown, strlen(shown) < n ? "..." : "", n);
-        else
-            continue;
-        return fail(NULL, "%s", err);
-    }
-    return 0;
 }
 
 /* What every child of a grade --all run is given. */
@@ -788,8 +797,6 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     int n = s.n;
     if (n == 0)
         return no_submissions(dir, &s);
-    if ((rc = misnamed_submission(dir, &s)) != 0)
-        return rc;
     if (mkdir(out, 0755) != 0 && errno != EEXIST)
         return fail(NULL, "%s: cannot make the output directory", out);
     char here[PATH_MAX];
