@@ -30,12 +30,17 @@ page_renders() {
 }
 
 # browser_shot URL PNG TMP: a screenshot with a fresh profile, at most 120 s
-# where timeout(1) exists.
+# where timeout(1) exists; tried twice, as headless chromium now and then
+# exits at start with no screenshot (seen once in make sanitize-grader).
 browser_shot() {
-    profile=$(mktemp -d "$3/profile.XXXXXX")
     quiet="--disable-background-networking --disable-component-update --disable-sync"  # portable: chromium's flags
-    set -- "$1" "$2" "$browser" --headless --no-sandbox --disable-gpu --no-first-run $quiet \
-        --user-data-dir="$profile" --hide-scrollbars --window-size=1280,1600 --screenshot="$2" "$1"
-    shift 2
+    for try in 1 2; do
+        profile=$(mktemp -d "$3/profile.XXXXXX")
+        within_120s "$browser" --headless --no-sandbox --disable-gpu --no-first-run $quiet \
+            --user-data-dir="$profile" --hide-scrollbars --window-size=1280,1600 --screenshot="$2" "$1"
+        [ -s "$2" ] && return 0
+    done
+}
+within_120s() {
     if command -v timeout >/dev/null 2>&1; then timeout 120 "$@" >/dev/null 2>&1; else "$@" >/dev/null 2>&1; fi  # portable: guarded
 }
