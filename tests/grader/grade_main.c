@@ -335,7 +335,7 @@ static int grade_one(const char *submission, const char *part, const char *resul
         say_cost(&g);
     int status = g.total < g.total_max || g.bonus < g.bonus_max ? 1 : 0;
     if (results && (results_prairielearn ? report_prairielearn(results, &g, err, sizeof err)
-                                         : report_json(results, &g, submission, err, sizeof err)) != 0) {
+                                         : report_json(results, &g, err, sizeof err)) != 0) {
         fprintf(stderr, "grade: %s\n", err);
         status = 2;
     }

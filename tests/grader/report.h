@@ -22,7 +22,7 @@ void report_table(FILE *f, const Grade *g, const GradeConfig *cfg, const char *s
                   bool every_failure);
 
 /* Writes results.json through a temporary file and rename; 0 or -1. */
-int report_json(const char *path, const Grade *g, const char *submission, char *err, size_t errlen);
+int report_json(const char *path, const Grade *g, char *err, size_t errlen);
 
 /* Appends printf-style text to a malloc'd string (left as it was if memory
  * runs out). */

@@ -53,16 +53,18 @@ static void test_entry(JsonWriter *j, const Test *t, const TestResult *r)
     json_end_object(j);
 }
 
-int report_json(const char *path, const Grade *g, const char *submission, char *err, size_t errlen)
+int report_json(const char *path, const Grade *g, char *err, size_t errlen)
 {
     JsonWriter j;
     json_init(&j, 2);
     json_begin_object(&j);
     json_member_number(&j, "score", g->total + g->bonus);
     json_member_number(&j, "execution_time", g->seconds);
-    /* The output is cut to SUMMARY_MAX bytes. */
+    /* The output is cut to SUMMARY_MAX bytes.  It names no folder: on
+     * Gradescope the submission's is a temporary one, meaningless to the
+     * student who reads this. */
     char *summary = NULL;
-    appendf(&summary, "Graded %s: %s / %s", submission, points_text(g->total).s,
+    appendf(&summary, "Score: %s / %s", points_text(g->total).s,
             points_text(g->total_max).s);
     if (g->bonus_max > 0)
         appendf(&summary, ", hard-case bonus %s / %s", points_text(g->bonus).s,

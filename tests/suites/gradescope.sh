@@ -32,6 +32,9 @@ check "results.json for a correct submission" grep -q '"score": 1[01][0-9]' "$ag
 check "every test passed" sh -c "! grep -q '\"status\": \"failed\"' '$ag/results/results.json'"
 check "hidden tests are after_published" grep -q '"visibility": "after_published"' "$ag/results/results.json"
 check "hard tests are tagged" grep -q '"hard"' "$ag/results/results.json"
+check "the summary the student reads starts with the score, and names no temporary folder" \
+    sh -c "grep -m 1 '\"output\": ' '$ag/results/results.json' | grep -q '\"output\": \"Score: 1[01][0-9] / ' &&
+           ! grep -q 'submission\.' '$ag/results/results.json'"
 check "Parts 4 and 5 are not graded by default" sh -c "! grep -q '\"Part [45]: ' '$ag/results/results.json'"
 
 # With Parts 4 and 5 turned on in the bundle's weights.conf, they are graded
