@@ -722,8 +722,12 @@ static void remove_ipc(uid_t id)
 #endif
 
 /* The places swept: the folders anyone may write in, found at the first
- * sweep (find_places).  No run can move one: none lies under a link or a
- * folder anyone may write in (the walk enters neither). */
+ * sweep (find_places).  None lies under a link (the walk follows none),
+ * but one below a folder anyone may write in (the walk enters those too,
+ * for a course's /tmp/course/shared) may be a folder the first run made,
+ * and a later run may put a link where it was.  That costs nothing: a
+ * place is opened without following its last name, and sweep_folder
+ * removes only what the run's own id owns, wherever it is. */
 static char **places;
 static size_t nplaces;
 
