@@ -18,6 +18,16 @@
 #include <stdlib.h>
 #include "bench.h"
 
+double per_million(long count, long of)
+{
+    return of > 0 ? 1e6 * (double)count / (double)of : 0;
+}
+
+double wrong_per_million(const ErrorStats *s)
+{
+    return per_million(s->wrong, s->tests - s->ambiguous);
+}
+
 OracleHit *exact_answers(const Case *cases, int n)
 {
     OracleHit *ex = malloc((size_t)(n > 0 ? n : 1) * sizeof *ex);

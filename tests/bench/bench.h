@@ -161,6 +161,25 @@ bool method_one(const Method *m, const Sphere *sphere, const Ray *ray, double *t
 void method_closest(const Method *m, const BenchScene *scene, const RaySet *rs, int *idx,
                     double *t);
 
+/* ---- errors of one method on one workload, against the oracle ------------ */
+typedef struct {
+    long tests;                /* cases                                    */
+    long ambiguous;            /* oracle: either answer acceptable         */
+    long wrong;                /* hit/miss differs, not ambiguous          */
+    long hits;                 /* both hit, not ambiguous: t compared      */
+    long over_tol;             /* of those, error above ORACLE_K_T u kappa
+                                  (spheres)                                */
+    long hard_failed;          /* the grader's rule, hard_check5 (triangles) */
+    double max_rel, median_rel;
+    double max_over_kappa;     /* max of error / (u kappa)                 */
+    double max_u_well;         /* max error in u where kappa <= 100
+                                  (triangles)                              */
+} ErrorStats;
+
+/* Wrong hit/miss answers per million cases the oracle is sure of. */
+double wrong_per_million(const ErrorStats *s);
+double per_million(long count, long of);       /* 0 if of is 0 */
+
 /* ---- tri_methods.c, triangles.c: Part 5 ------------------------------------- */
 typedef struct { Vec3f a, b, c; } Trianglef;
 
@@ -180,16 +199,6 @@ typedef struct {
 extern const TriMethod tri_methods[];
 extern const int tri_nmethods;
 
-/* Errors of one method on one workload, against oracle_triangle. */
-typedef struct {
-    long cases;
-    long ambiguous;           /* cases either answer is right for          */
-    long wrong;               /* hit/miss not the oracle's, not ambiguous   */
-    long hits;                /* both hit, not ambiguous: t compared        */
-    long hard_failed;         /* the grader's rule (hard_check5)            */
-    double max_rel, median_rel, max_over_kappa;
-    double max_u_well;        /* max error in u where kappa <= 100         */
-} TriErrors;
 
 /* The four kinds of crack rays: at shared edges and shared vertices, of
  * meshes near the origin and at offsets 10^3 to 10^6. */
@@ -199,8 +208,8 @@ typedef struct {
     bool ran;
     int tp_rays, tp_triangles;             /* the throughput workload         */
     double mtests[TRI_MAX_METHODS];        /* million tests per second        */
-    TriErrors ordinary[TRI_MAX_METHODS];   /* triangles in view, camera rays  */
-    TriErrors hard[TRI_MAX_METHODS];       /* Part 5's hard families          */
+    ErrorStats ordinary[TRI_MAX_METHODS];  /* triangles in view, camera rays  */
+    ErrorStats hard[TRI_MAX_METHODS];      /* Part 5's hard families          */
     long crack_rays_per_kind;              /* rays aimed, per kind            */
     long rays[TRI_MAX_METHODS][CRACK_KINDS];   /* of them, judged for the
                                               method: those whose mesh its
@@ -308,15 +317,6 @@ int measure_outcomes(const Case *miss, int nmiss, const Case *hit, int nhit, int
                      double sample_s, double *miss_ns, double *hit_ns);
 
 /* ---- accuracy.c ---------------------------------------------------------- */
-typedef struct {
-    long tests;                /* cases                                    */
-    long ambiguous;            /* oracle: either answer acceptable         */
-    long wrong;                /* hit/miss differs, not ambiguous          */
-    long hits;                 /* both hit, not ambiguous: t compared      */
-    long over_tol;             /* of those, error above 64 u kappa         */
-    double max_rel, median_rel;
-    double max_over_kappa;     /* max of error / (u kappa)                 */
-} ErrorStats;
 
 /* Exact answers for cases (oracle_sphere's), computed once. */
 OracleHit *exact_answers(const Case *cases, int n);

@@ -19,12 +19,6 @@
 
 /* ---- small helpers --------------------------------------------------------------- */
 
-static double per_million(const ErrorStats *s)
-{
-    long counted = s->tests - s->ambiguous;
-    return counted > 0 ? 1e6 * (double)s->wrong / (double)counted : 0;
-}
-
 /* Method m's throughput over its precision's ceiling. */
 static double share(const BenchResults *br, int m)
 {
@@ -106,7 +100,7 @@ static void csv_results(FILE *f, const void *data)
         fprintf(f, "%s,%s,%.2f,%.2f,%.2f,%.4f,%.3e,%.3e,%.2f,%.3e,%ld,%ld,%ld,%ld,",
                 bench_methods[m].name, precision_name(bench_methods[m].precision), br->mtests[m],
                 br->mtests_q1[m], br->mtests_q3[m], share(br, m), s->max_rel, s->median_rel,
-                per_million(s), s->max_over_kappa, s->tests, s->ambiguous, s->wrong, s->hits);
+                wrong_per_million(s), s->max_over_kappa, s->tests, s->ambiguous, s->wrong, s->hits);
         if (isnan(br->miss_ns[m]))
             fprintf(f, ",,");                   /* not a scalar method */
         else
@@ -126,7 +120,7 @@ static void csv_families(FILE *f, const void *data)
             fprintf(f, "%s,%s,%s,%ld,%ld,%ld,%.2f,%ld,%.3e,%.3e,%.3e,%ld\n",
                     family_names[fam], bench_methods[m].name,
                     precision_name(bench_methods[m].precision), s->tests, s->ambiguous, s->wrong,
-                    per_million(s), s->hits, s->max_rel, s->median_rel, s->max_over_kappa,
+                    wrong_per_million(s), s->hits, s->max_rel, s->median_rel, s->max_over_kappa,
                     s->over_tol);
         }
 }
@@ -205,8 +199,8 @@ static void md_results_table(FILE *f, const BenchResults *br)
         fprintf(f, "| %s | %s | %.0f | %.0f-%.0f | %s | %s | %s | %s | %s | %d / %d |\n",
                 bench_methods[m].name, precision_name(bench_methods[m].precision), br->mtests[m],
                 br->mtests_q1[m], br->mtests_q3[m], P(share(br, m)), E(s->max_rel),
-                E(s->median_rel), W(per_million(s)), E(s->max_over_kappa), br->grader_failed[m],
-                br->grader_cases);
+                E(s->median_rel), W(wrong_per_million(s)), E(s->max_over_kappa),
+                br->grader_failed[m], br->grader_cases);
     }
 }
 
@@ -219,7 +213,7 @@ static void md_family_table(FILE *f, const BenchResults *br, int fam)
         const ErrorStats *s = &br->fam[m][fam];
         fprintf(f, "| %s | %s | %s | %s | %s | %s | %ld |\n", bench_methods[m].name,
                 precision_name(bench_methods[m].precision), E(s->max_rel), E(s->median_rel),
-                W(per_million(s)), E(s->max_over_kappa), s->hits);
+                W(wrong_per_million(s)), E(s->max_over_kappa), s->hits);
     }
 }
 
@@ -422,8 +416,8 @@ static void md_findings(FILE *f, const BenchResults *br)
                "B^2 - A C loses R^2 when both terms are near |f|^2, an error growing like "
                "(D/R)^2. The reference's worst there is %s with %s wrong answers.\n",
             E(br->fam[tb][FAMILY_SCENE].max_rel), E(br->fam[rd][FAMILY_SCENE].max_rel),
-            E(far_t->max_rel), W(per_million(far_t)), E(far_r->max_rel),
-            W(per_million(far_r)));
+            E(far_t->max_rel), W(wrong_per_million(far_t)), E(far_r->max_rel),
+            W(wrong_per_million(far_r)));
     fprintf(f, "- **Some errors belong to the question, not the method.** From an origin "
                "10^-12 R above a big sphere, rounding the origin alone moves t by about 10^-4 "
                "of itself: every double method's worst relative error in that family is near "
@@ -439,8 +433,9 @@ static void md_findings(FILE *f, const BenchResults *br)
                "family the textbook in float is wrong %s times per million, the reference's "
                "float version %s, the float fast path %s. On the ordinary scene float's worst "
                "error in t is %s (textbook) to %s (reference), still well under a pixel.\n",
-            W(per_million(&br->fam[tf][FAMILY_FAR])), W(per_million(&br->fam[rf][FAMILY_FAR])),
-            W(per_million(&br->fam[ff][FAMILY_FAR])), E(br->fam[tf][FAMILY_SCENE].max_rel),
+            W(wrong_per_million(&br->fam[tf][FAMILY_FAR])),
+            W(wrong_per_million(&br->fam[rf][FAMILY_FAR])),
+            W(wrong_per_million(&br->fam[ff][FAMILY_FAR])), E(br->fam[tf][FAMILY_SCENE].max_rel),
             E(br->fam[rf][FAMILY_SCENE].max_rel));
     /* 4. the fast path */
     fprintf(f, "- **Specialising is what buys speed.** The fast path knows the eye is at the "
@@ -738,7 +733,7 @@ int report_write(const BenchResults *br, const char *dir, char *err, size_t errl
         triangles_write(&br->tri, dir, subtitle(br, "-O2; throughput on cracks.scene (%d rays x "
                                                     "%d triangles); errors on %ld hard cases",
                                                 br->tri.tp_rays, br->tri.tp_triangles,
-                                                br->tri.hard[0].cases), err, errlen) != 0)
+                                                br->tri.hard[0].tests), err, errlen) != 0)
         return -1;
     if (br->scale.ran &&
         scaling_write(&br->scale, dir, subtitle(br, "the reference; closed knots in knot.scene's "

@@ -31,12 +31,13 @@
 #define U 0x1p-53
 
 /* The formulations compared; the reference is the linked solution. */
+enum { REF, MT, MT_FLOAT, WBW_PLAIN, GEOMETRIC };
 const TriMethod tri_methods[] = {
-    { "reference", PREC_DOUBLE, triangle_intersect, NULL },
-    { "moller-trumbore", PREC_DOUBLE, tri_moller_trumbore_d, NULL },
-    { "moller-trumbore", PREC_FLOAT, NULL, tri_moller_trumbore_f },
-    { "wbw-plain", PREC_DOUBLE, tri_wbw_plain_d, NULL },
-    { "geometric", PREC_DOUBLE, tri_geometric_d, NULL },
+    [REF] = { "reference", PREC_DOUBLE, triangle_intersect, NULL },
+    [MT] = { "moller-trumbore", PREC_DOUBLE, tri_moller_trumbore_d, NULL },
+    [MT_FLOAT] = { "moller-trumbore", PREC_FLOAT, NULL, tri_moller_trumbore_f },
+    [WBW_PLAIN] = { "wbw-plain", PREC_DOUBLE, tri_wbw_plain_d, NULL },
+    [GEOMETRIC] = { "geometric", PREC_DOUBLE, tri_geometric_d, NULL },
 };
 const int tri_nmethods = (int)(sizeof tri_methods / sizeof tri_methods[0]);
 
@@ -162,10 +163,10 @@ static void ordinary_cases(uint64_t seed, HardCase5 *cases, int n)
 
 /* One method's errors over n cases (rel: room for n doubles). */
 static void measure_errors(const TriMethod *m, const HardCase5 *cases, int n, double *rel,
-                           TriErrors *e)
+                           ErrorStats *e)
 {
     memset(e, 0, sizeof *e);
-    e->cases = n;
+    e->tests = n;
     long nrel = 0;
     for (int k = 0; k < n; k++) {
         const OracleFlat *o = &cases[k].expect;
@@ -366,11 +367,6 @@ int triangle_bench(const char *scenes, bool quick, uint64_t seed, TriResults *tr
 
 /* ---- output ---------------------------------------------------------------------- */
 
-static double per_million(long count, long of)
-{
-    return of > 0 ? 1e6 * count / of : 0;
-}
-
 /* A method's count over the four kinds of crack rays (tr->rays[m]: the
  * rays judged, tr->cracks[m]: those through). */
 static long all_kinds(const long count[CRACK_KINDS])
@@ -386,19 +382,6 @@ static double tri_cracks_per_million(const TriResults *tr, int m)
     return per_million(all_kinds(tr->cracks[m]), all_kinds(tr->rays[m]));
 }
 
-static double wrong_per_million(const TriErrors *e)
-{
-    return per_million(e->wrong, e->cases - e->ambiguous);
-}
-
-static int tri_find(const char *name, Precision p)
-{
-    for (int m = 0; m < tri_nmethods; m++)
-        if (tri_methods[m].precision == p && strcmp(tri_methods[m].name, name) == 0)
-            return m;
-    return -1;
-}
-
 /* results_triangles.csv's body, for out_write (outfile.c): data is the TriResults. */
 static void csv_triangles(FILE *f, const void *data)
 {
@@ -411,12 +394,12 @@ static void csv_triangles(FILE *f, const void *data)
                "cracks_per_million,cracks_edges,cracks_vertices,cracks_far_edges,cracks_far_vertices,"
                "rays_edges,rays_vertices,rays_far_edges,rays_far_vertices,missed_whole_mesh\n");
     for (int m = 0; m < tri_nmethods; m++) {
-        const TriErrors *o = &tr->ordinary[m], *h = &tr->hard[m];
+        const ErrorStats *o = &tr->ordinary[m], *h = &tr->hard[m];
         fprintf(f, "%s,%s,%.6g,%.3e,%.3e,%.6g,%.3e,%ld,%.3e,%.3e,%.3g,%.6g,%.3e,%ld,%ld,%.6g",
                 tri_methods[m].name, precision_name(tri_methods[m].precision), tr->mtests[m],
-                o->max_rel, o->median_rel, wrong_per_million(o), o->max_over_kappa, o->cases,
+                o->max_rel, o->median_rel, wrong_per_million(o), o->max_over_kappa, o->tests,
                 h->max_rel, h->median_rel, h->max_u_well, wrong_per_million(h), h->max_over_kappa,
-                h->hard_failed, h->cases, tri_cracks_per_million(tr, m));
+                h->hard_failed, h->tests, tri_cracks_per_million(tr, m));
         for (int k = 0; k < CRACK_KINDS; k++)
             fprintf(f, ",%ld", tr->cracks[m][k]);
         for (int k = 0; k < CRACK_KINDS; k++)
@@ -471,7 +454,7 @@ void triangles_md(FILE *f, const TriResults *tr)
                "10^6; a crack is a ray that no triangle stops where it enters the mesh (before "
                "the middle of its chord through the mesh). The four columns after it are per "
                "million rays of their kind. kappa is the condition number of t (oracle.h).\n\n",
-            tr->tp_rays, tr->tp_triangles, tr->ordinary[0].cases, tr->hard[0].cases,
+            tr->tp_rays, tr->tp_triangles, tr->ordinary[0].tests, tr->hard[0].tests,
             tr->crack_rays_per_kind);
     fprintf(f, "| method | precision | Mtests/s | max rel. error (ordinary) | median rel. error "
                "(ordinary) | wrong per million (ordinary) | max error / (u kappa) (hard) | wrong "
@@ -479,46 +462,41 @@ void triangles_md(FILE *f, const TriResults *tr)
                "far edges | far vertices |\n");
     fprintf(f, "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int m = 0; m < tri_nmethods; m++) {
-        const TriErrors *o = &tr->ordinary[m], *h = &tr->hard[m];
+        const ErrorStats *o = &tr->ordinary[m], *h = &tr->hard[m];
         fprintf(f, "| %s | %s | %.0f | %.2g | %.2g | %.0f | %.2g | %.0f | %ld / %ld | %.0f",
                 tri_methods[m].name, precision_name(tri_methods[m].precision), tr->mtests[m],
                 o->max_rel, o->median_rel, wrong_per_million(o), h->max_over_kappa,
-                wrong_per_million(h), h->hard_failed, h->cases, tri_cracks_per_million(tr, m));
+                wrong_per_million(h), h->hard_failed, h->tests, tri_cracks_per_million(tr, m));
         for (int k = 0; k < CRACK_KINDS; k++)
             fprintf(f, " | %.0f", per_million(tr->cracks[m][k], tr->rays[m][k]));
         fprintf(f, " |\n");
     }
 
     /* What it shows, in figures of this run. */
-    int ref = tri_find("reference", PREC_DOUBLE), mt = tri_find("moller-trumbore", PREC_DOUBLE),
-        mtf = tri_find("moller-trumbore", PREC_FLOAT);
-    if (ref >= 0 && mt >= 0) {
-        fprintf(f, "\nOf %ld rays aimed at shared edges and vertices, %ld went through the "
-                   "reference's meshes and %ld through Moller-Trumbore's in double (%ld of %ld "
-                   "at edges, %ld of %ld at vertices), which runs %.2f times as fast as the "
-                   "reference. Counting only the rays that hit no triangle at all would hide "
-                   "those cracks (Moller-Trumbore: %ld): a ray that slips through where it "
-                   "enters still hits the far side.",
-                all_kinds(tr->rays[ref]), all_kinds(tr->cracks[ref]), all_kinds(tr->cracks[mt]),
-                tr->cracks[mt][CRACK_EDGE] + tr->cracks[mt][CRACK_FAR_EDGE],
-                tr->rays[mt][CRACK_EDGE] + tr->rays[mt][CRACK_FAR_EDGE],
-                tr->cracks[mt][CRACK_VERTEX] + tr->cracks[mt][CRACK_FAR_VERTEX],
-                tr->rays[mt][CRACK_VERTEX] + tr->rays[mt][CRACK_FAR_VERTEX],
-                tr->mtests[ref] > 0 ? tr->mtests[mt] / tr->mtests[ref] : 0, tr->missed_all[mt]);
-        if (mtf >= 0)
-            fprintf(f, " In float, judged on the mesh and ray rounded to float, %ld of %ld rays "
-                       "went through (%ld of the %ld far rays were not judged: rounding to "
-                       "float squashed their mesh or moved the ray off it).",
-                    all_kinds(tr->cracks[mtf]), all_kinds(tr->rays[mtf]),
-                    2 * tr->crack_rays_per_kind - tr->rays[mtf][CRACK_FAR_EDGE]
-                        - tr->rays[mtf][CRACK_FAR_VERTEX],
-                    2 * tr->crack_rays_per_kind);
-        fprintf(f, " The chords were at least %.2f times the entry's t, so the middle of the "
-                   "chord tells a hit where the ray enters from one where it leaves; the entry "
-                   "found by clipping the ray against the faces' planes and the one the rays "
-                   "were built with differ by at most %.1e relative.\n",
-                tr->min_chord, tr->max_entry_gap);
-    }
+    fprintf(f, "\nOf %ld rays aimed at shared edges and vertices, %ld went through the "
+               "reference's meshes and %ld through Moller-Trumbore's in double (%ld of %ld "
+               "at edges, %ld of %ld at vertices), which runs %.2f times as fast as the "
+               "reference. Counting only the rays that hit no triangle at all would hide "
+               "those cracks (Moller-Trumbore: %ld): a ray that slips through where it "
+               "enters still hits the far side.",
+            all_kinds(tr->rays[REF]), all_kinds(tr->cracks[REF]), all_kinds(tr->cracks[MT]),
+            tr->cracks[MT][CRACK_EDGE] + tr->cracks[MT][CRACK_FAR_EDGE],
+            tr->rays[MT][CRACK_EDGE] + tr->rays[MT][CRACK_FAR_EDGE],
+            tr->cracks[MT][CRACK_VERTEX] + tr->cracks[MT][CRACK_FAR_VERTEX],
+            tr->rays[MT][CRACK_VERTEX] + tr->rays[MT][CRACK_FAR_VERTEX],
+            tr->mtests[REF] > 0 ? tr->mtests[MT] / tr->mtests[REF] : 0, tr->missed_all[MT]);
+    fprintf(f, " In float, judged on the mesh and ray rounded to float, %ld of %ld rays "
+               "went through (%ld of the %ld far rays were not judged: rounding to "
+               "float squashed their mesh or moved the ray off it).",
+            all_kinds(tr->cracks[MT_FLOAT]), all_kinds(tr->rays[MT_FLOAT]),
+            2 * tr->crack_rays_per_kind - tr->rays[MT_FLOAT][CRACK_FAR_EDGE]
+                - tr->rays[MT_FLOAT][CRACK_FAR_VERTEX],
+            2 * tr->crack_rays_per_kind);
+    fprintf(f, " The chords were at least %.2f times the entry's t, so the middle of the "
+               "chord tells a hit where the ray enters from one where it leaves; the entry "
+               "found by clipping the ray against the faces' planes and the one the rays "
+               "were built with differ by at most %.1e relative.\n",
+            tr->min_chord, tr->max_entry_gap);
     fprintf(f, "\nThe reference pays for watertightness with a shear of the vertices per test "
                "and, near an edge, exact signs from fma. Woop, Benthin and Wald's test without "
                "exact signs (wbw-plain) computes a shared edge's function from the same two "
