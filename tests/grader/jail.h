@@ -4,34 +4,21 @@
  * report page's render.
  *
  * The strongest of two ways the system allows, found once per process
- * (jail_mode):
+ * (jail_mode); what each gives and lacks is tabled in tests/grader/
+ * README.md ("The jail").  Here, where each promise is kept:
  *
- *   namespaces (Linux, as root; or as a user, where the system lets users
- *   make user namespaces): new mount, PID, network, IPC and UTS namespaces.
- *   The run's root is a tmpfs of its own holding, read-only, only the
- *   system's program folders (/usr, /bin, /lib...), the loader's cache,
- *   /dev/null, /dev/zero and /dev/urandom, and the folders the run may read
- *   (JailPaths.visible); then its working folder (a fresh tmpfs, or the
- *   grader's folder for a compiler's output) and a private /tmp and
- *   /dev/shm, each bounded in size and inodes.  There is no /proc, no
- *   network, and nothing of the kit, of other submissions or of other
- *   runs.  As root the program runs as the grader's spare user id; as a
- *   user, as that user with no capabilities.  A run of student code
- *   (JailPaths.pid_namespace) has a PID namespace of its own too, whose
- *   first process is the test's (harness_init.h): when it ends, the kernel
- *   ends every other, so nothing the code started outlives the run.  The
- *   compiler, which runs none, keeps the system's.
+ *   namespaces: the run's root is a tmpfs holding, read-only, the system's
+ *   program folders and the folders the run may read (JailPaths.visible),
+ *   then its working folder and a private /tmp and /dev/shm.  A run of
+ *   student code (JailPaths.pid_namespace) has a PID namespace of its own,
+ *   whose first process is the test's (harness_init.h): when it ends, the
+ *   kernel ends every other.  The compiler, which runs none, keeps the
+ *   system's.
  *
- *   fallback (namespaces refused: Docker's default seccomp profile, as on
- *   Gradescope and PrairieLearn; macOS; GRADE_JAIL=fallback): as root, the
- *   run gets the spare user id and a fresh working folder of its own, and
- *   after every run every process of that id is killed and every name it
- *   owns in the world-writable places (jail_sweep) and its System V IPC
- *   objects are removed; on Linux no run can make a socket
- *   (jail_deny_calls); the grader checks that the id cannot read the
- *   kit (grade_main.c).  As an ordinary user without user namespaces, only
- *   the limits hold: the code runs as that user and can read what the
- *   user can.
+ *   fallback: as root, the spare user id's processes are killed and the
+ *   names it owns in the world-writable places removed after every run
+ *   (jail_sweep); on Linux no run can make a socket (jail_deny_calls); the
+ *   grader checks that the id cannot read the kit (grade_main.c).
  */
 #ifndef JAIL_H
 #define JAIL_H

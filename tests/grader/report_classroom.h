@@ -19,13 +19,8 @@
  * then the tests' order, named part<P>test<k> (k from 1 within the part),
  * with max_score the test's points and one test whose score is those
  * points or 0; then "hard", max_score 0, holding every hard-case test.
- * The reporter shows a runner's points as (tests passed / tests) x
- * max_score and sends GitHub Classroom the sum of the tests' scores; with
- * one test a runner both are that test's score, so both totals are the sum
- * of the core tests' scores: the kit's core score (handouts/instructor-guide.md,
- * "GitHub Classroom").  A runner of max_score 0 counts in neither total, so the
- * hard cases are shown but never counted, and "hard" never fails the
- * workflow.
+ * Why both of the reporter's totals are then the kit's core score, and the
+ * hard cases count in neither: tests/classroom/README.md.
  *
  * The lines are written with one append; returns 0, or -1 with the reason
  * in err. */

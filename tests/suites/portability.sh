@@ -3,24 +3,9 @@
 # with gcc or clang, GNU make 3.81 (macOS's /usr/bin/make) or newer, and a
 # /bin/sh that is dash (Debian, Ubuntu, WSL) or bash 3.2 (macOS).  This
 # machine has only some of them, so the suite checks what it can run and
-# greps for the rest:
-#
-# 1. the other compiler (clang when cc is gcc, gcc when cc is clang), when
-#    installed: `make all` into out/port/<compiler> with -std=c11 -pedantic
-#    -Werror (incremental, like the main build), then the unit tests it
-#    built, and the same public tests and hidden cases drawn; and the default compiler's -Werror over every C file (syntax
-#    only: the main build compiled them already);
-# 2. every shell script of the kit through `dash -n` and a check for
-#    bashisms (checkbashisms when installed, and always the grep below);
-#    the scripts that need no build run under every POSIX shell installed;
-# 3. the Makefile for features newer than GNU make 3.81;
-# 4. the C sources for calls, headers and feature macros that Linux has and
-#    macOS lacks or hides, and the shell scripts for GNU-only tools and flags.
-#
+# greps for the rest; tests/README.md ("Portability") lists each check.
 # Every grep check is first run on a planted violation, so that a check
-# that could never fail fails here.  MACOS_SDK=dir (a macOS
-# SDK, dir/usr/include) also compiles every C file against Apple's headers
-# with clang.
+# that could never fail fails here.
 set -u
 top=$(pwd)
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtport.XXXXXX") || { echo "no temporary directory"; echo "0 passed, 1 failed"; exit 1; }

@@ -1,17 +1,14 @@
 #!/bin/sh
 # Code that signals every process it may, graded as root beside a
-# classmate's.  As root each submission graded at once runs its code as an
-# unprivileged user of its own (grade --all: ids that no user or group
-# has, held against any other grader running at the same time), so code
-# that calls kill(-1, SIGKILL) reaches only its own processes.  Here it
-# does so for 0.6 s, in the first call of its Part 1 batch (its answers
-# are right: it passes), while the classmate's Part 1 batch sleeps 0.9 s in
-# its own first call: graded two at once, they overlap.  (Given the same
-# user, as they once were, the classmate lost every part: its batches,
-# tests and compiles died.)  At the same time the two are graded again,
-# as two classes of one, by two more runs of grade --all, and alone, by
-# two runs of grade --submission, which as root also take an id of their
-# own (given one id for both, the sleeper graded alone lost every part).
+# classmate's: as root each submission graded at once runs its code as an
+# id of its own (tests/grader/README.md, "Whose code runs as whom"), so
+# kill(-1, SIGKILL) reaches only its own processes.  Here the code does so
+# for 0.6 s, in the first call of its Part 1 batch (its answers are right:
+# it passes), while the classmate's Part 1 batch sleeps 0.9 s in its own
+# first call: graded two at once, they overlap, and the classmate must keep
+# every part.  At the same time the two are graded again, as two classes
+# of one, by two more runs of grade --all, and alone, by two runs of
+# grade --submission, which as root also take an id of their own.
 #
 # So it runs beside the other suites, which grade as ids they hold
 # themselves (or as nobody, where the system gives none).  Where the system gives no spare ids it is skipped, and
