@@ -1,26 +1,9 @@
 /*
  * scene.h - reading a scene file.
  *
- * The format (one item per line, '#' starts a comment, blank lines ignored):
- *
- *     image       nx ny            image size in pixels, 1 .. IMAGE_MAX_SIDE
- *     fov         degrees          vertical field of view, 0 < fov < 180
- *     distance    d                eye to image plane, d > 0    (default 1)
- *     background  r g b            colour in [0, 1]             (default 0 0 0)
- *     sphere      cx cy cz R r g b centre, radius R > 0, colour in [0, 1]
- *     plane       px py pz nx ny nz r g b
- *                                  a point, a normal (not zero), colour
- *     triangle    ax ay az bx by bz cx cy cz r g b
- *                                  three vertices (not on one line), colour
- *     mesh        FILE s tx ty tz r g b
- *                                  the triangles of a Wavefront OBJ file
- *                                  (obj.h), its path relative to the scene
- *                                  file's directory, each vertex moved to
- *                                  s v + t (s > 0), all in one colour
- *
- * image and fov are required; image, fov, distance and background appear at
- * most once.  Numbers are decimal (or C hex floats); NaN and infinity are
- * refused.
+ * The format, its defaults and what is refused: handouts/overview.md, "The
+ * scenes" (the largest side is IMAGE_MAX_SIDE).  Numbers may also be C hex
+ * floats.
  */
 #ifndef KIT_SCENE_H
 #define KIT_SCENE_H
