@@ -5,28 +5,13 @@
  *
  *     sortsubs [--max-mb N] [--max-ratio N] FROM TO
  *
- * FROM is the download: the .zip the platform gave, or the folder it was
- * unpacked into.  Each file is read by its name (lmsname.h): whose
- * submission it is, and the name its student gave it, which it gets back.
- * Where a student's submission has the same file twice (Canvas's
- * "part1_image_plane-1.c", uploaded again, beside "part1_image_plane.c"),
- * the later upload is kept and the run says so; where a download holds a
- * student's earlier attempts too (Blackboard's, with every attempt
- * downloaded), the latest attempt's files are kept, and the run says so.
- * TO must be new (missing,
- * or an empty folder): the sorted folders are written into a temporary
- * folder beside it, renamed to TO when all is written, so a run that fails
- * leaves nothing.  FROM is only read.  TO/sorted.txt lists where each file
- * came from.  A zip that would unpack to more than --max-mb MiB in all
- * (256 by default), or any file of which unpacks to more than
- * --max-ratio times its packed size (100; 1 MiB is always allowed), is
- * refused before it is unpacked: a small download cannot fill the memory
- * or the disk.
- *
- * Files of the system's own (names starting with ".", macOS's __MACOSX)
- * are left out; any other file not named as the platforms name a
- * submission's files is named, and not sorted.  Exit status: 0 when
- * sorted, 1 on an error (nothing written), 2 on a usage error.
+ * What it keeps, leaves out and writes: handouts/instructor-guide.md
+ * ("Grading a class"); the names it reads: lmsname.h.  A zip that would
+ * unpack to more than --max-mb MiB in all (256 by default), or any file of
+ * which unpacks to more than --max-ratio times its packed size (100; 1 MiB
+ * is always allowed), is refused before it is unpacked: a small download
+ * cannot fill the memory or the disk.  Exit status: 0 when sorted, 1 on an
+ * error (nothing written), 2 on a usage error.
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE
