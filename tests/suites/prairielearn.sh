@@ -1,10 +1,6 @@
 #!/bin/sh
-# The PrairieLearn question, tried locally as tests/suites/gradescope.sh
-# tries the Gradescope bundle: make prairielearn, lay the job out as the
-# grading container would see it (/grade/tests: the question's tests
-# folder, /grade/student: the uploads, /grade/results) in a temporary
-# directory, and run the entrypoint there with GRADE_ROOT pointing at it
-# (and GRADE_WORK at a build directory kept between runs, so the grader is
+# The PrairieLearn question, tried locally as tests/prairielearn/README.md
+# says (GRADE_ROOT, and GRADE_WORK kept between runs so that the grader is
 # built once).  Each run must exit 0 and leave results/results.json alone
 # in results/, with what PrairieLearn reads:
 #   - the reference: gradable, score 1, every test at full points;
