@@ -32,6 +32,8 @@ static const BadScene bad_scenes[] = {
     { GOOD_HEAD "Sphere 0 0 -5 1 1 0 0\n", "t.scene:3: ", "unknown keyword" },
     { GOOD_HEAD "0 0 -5 1 1 0 0\n", "t.scene:3: ", "unknown keyword '0'" },
     { "x 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20\n", "t.scene:1: ", "unknown keyword 'x'" },
+    /* a binary file: refused on its first line, the bytes shown as '?' */
+    { "\x89PNG\r\n\x1A\n", "t.scene:1: ", "unknown keyword '?PNG'" },
     /* a byte-order mark anywhere but first is not text (test_defaults_crlf_and_edges) */
     { "image 2 3\n\xEF\xBB\xBF" "fov 60\n", "t.scene:2: ", "unknown keyword" },
     /* not numbers, trailing garbage */
@@ -462,7 +464,8 @@ static void test_mesh_files(void)
 static void test_mesh_errors(void)
 {
     static const struct { const char *obj, *line, *word; } bad[] = {
-        { "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", ":4: ", "f: vertex 4 does not exist (3 vertices so far" },
+        { "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", ":4: ",
+          "f: vertex 4 does not exist (3 vertices so far; indices start at 1)" },
         { "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", ":4: ", "vertex 0 does not exist" },
         { "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n", ":4: ", "vertex -4 does not exist" },
         { "v 0 0 0\nv 1 0 0\nf 1 2\n", ":3: ", "f needs at least 3 vertices, got 2" },
