@@ -1,8 +1,9 @@
 #!/bin/sh
 # The render and compare programs run as a user runs them: every shipped
-# scene renders, every kind of bad scene or command line is refused with a
-# clear message and the right exit status (never a crash), nothing is left
-# half-written, and compare tells equal images from different ones.
+# scene renders, every kind of bad command line and a bad scene of each
+# way render meets one (the kinds: tests/unit/test_scene.c) are refused
+# with a clear message and the right exit status (never a crash), nothing
+# is left half-written, and compare tells equal images from different ones.
 #
 # Usage: sh tests/suites/render_cli.sh     (from the kit's top directory,
 # after make; tests/run.sh does both).  The programs can be replaced with
