@@ -10,7 +10,8 @@
  * test alone.  A failed check prints "file:line: what" and the test goes on.
  * Messages appear only on failure; the last line is "N passed, N failed".
  * An argument runs only the tests whose names contain it.
- * check_temp_dir and check_remove_tree give a test a directory of its own.
+ * check_temp_dir and check_remove_tree give a test a directory of its own,
+ * and check_write_file a file in it.
  * check_xorshift32 is a small deterministic pseudo-random generator for a
  * test's inputs.  CHECK_SANITIZED is 1 in the sanitized build, where each
  * test's child also checks for leaks before it ends.
@@ -167,6 +168,19 @@ static inline int check_remove_tree(const char *path)
         return rmdir(path);
     }
     return unlink(path);
+}
+
+/* Writes data[0 .. n-1] to the file path, made or emptied; 0, or -1 with a
+ * failed check naming it. */
+static inline int check_write_file(const char *path, const void *data, size_t n)
+{
+    FILE *f = fopen(path, "wb");
+    int ok = f && fwrite(data, 1, n, f) == n;
+    if (f && fclose(f) != 0)
+        ok = 0;
+    if (!ok)
+        CHECK_MSG(0, "cannot write %s", path);
+    return ok ? 0 : -1;
 }
 
 /* The number of entries in the directory path but "." and ".." (0 when it

@@ -88,13 +88,8 @@ static void encode_decode(const Archive *a, KitBuf *bytes, Archive *b)
 /* Writes a file of n bytes with the given mode (exactly). */
 static void write_file(const char *path, const void *data, size_t n, mode_t mode)
 {
-    FILE *f = fopen(path, "wb");
-    CHECK(f != NULL);
-    if (!f)
-        return;
-    CHECK_EQ_INT(fwrite(data, 1, n, f), n);
-    fclose(f);
-    CHECK_EQ_INT(chmod(path, mode), 0);
+    if (check_write_file(path, data, n) == 0)
+        CHECK_EQ_INT(chmod(path, mode), 0);
 }
 
 /* Whether the file at path holds exactly data[0 .. n-1] and has mode. */

@@ -16,12 +16,7 @@ static char dir[64];
 static void write_file(const char *name, const char *text, char *path, size_t size)
 {
     snprintf(path, size, "%s/%s", dir, name);
-    FILE *f = fopen(path, "w");
-    CHECK_MSG(f != NULL, "cannot write %s", path);
-    if (!f)
-        return;
-    fputs(text, f);
-    fclose(f);
+    check_write_file(path, text, strlen(text));
 }
 
 /* A good test, with one line replaced: "LINE" in good is where. */

@@ -29,9 +29,7 @@ static void setup(void)
         return;
     char path[128];
     snprintf(path, sizeof path, "%s/raytracer.h", dir);
-    FILE *f = fopen(path, "w");
-    if (f)
-        fclose(f);
+    check_write_file(path, "", 0);
     snprintf(path, sizeof path, "%s/fifo", dir);
     CHECK(mkfifo(path, 0600) == 0);
     snprintf(path, sizeof path, "%s/zero", dir);

@@ -872,12 +872,8 @@ static int read_bytes_as_image(const char *dir, const char *name, const void *by
 {
     char path[600];
     snprintf(path, sizeof path, "%s/%s", dir, name);
-    FILE *f = fopen(path, "wb");
-    CHECK(f != NULL);
-    if (!f)
+    if (check_write_file(path, bytes, n) != 0)
         return -2;
-    fwrite(bytes, 1, n, f);
-    fclose(f);
     return image_read(img, path, err, errlen);
 }
 

@@ -636,8 +636,7 @@ static void test_remove_deep_tree(void)
         return;
     snprintf(top, sizeof top, "%s/tree", dir);
     snprintf(keep, sizeof keep, "%s/kept", dir);
-    int fd = open(keep, O_WRONLY | O_CREAT, 0600);
-    CHECK(fd >= 0 && close(fd) == 0);
+    check_write_file(keep, "", 0);
     CHECK(mkdir(top, 0700) == 0);
     int at = open(top, O_RDONLY | O_DIRECTORY);
     for (int k = 0; k < 20000 && at >= 0; k++) {
@@ -668,11 +667,9 @@ static void test_take_file(void)
         return;
     snprintf(secret, sizeof secret, "%s/secret", dir);
     snprintf(to, sizeof to, "%s/copy", dir);
-    FILE *f = fopen(secret, "w");
-    CHECK(f && fputs("not for the run\n", f) >= 0 && fclose(f) == 0);
+    check_write_file(secret, "not for the run\n", 16);
     snprintf(path, sizeof path, "%s/plain", dir);
-    f = fopen(path, "w");
-    CHECK(f && fputs("object\n", f) >= 0 && fclose(f) == 0);
+    check_write_file(path, "object\n", 7);
     CHECK_EQ_INT(jail_take_file(dir, "plain", to, 100, why, sizeof why), 0);
     size_t n = 0;
     char *copied = kit_load_file(to, 100, &n);

@@ -346,12 +346,7 @@ static int write_file(const char *dir, const char *name, const char *text, size_
 {
     char path[512];
     snprintf(path, sizeof path, "%s/%s", dir, name);
-    FILE *f = fopen(path, "wb");
-    if (!f)
-        return -1;
-    len = len ? len : strlen(text);
-    int ok = fwrite(text, 1, len, f) == len;
-    return (fclose(f) == 0 && ok) ? 0 : -1;
+    return check_write_file(path, text, len ? len : strlen(text));
 }
 
 /* scene_load of a file: a NUL byte is refused with its line; a bad line is
