@@ -84,24 +84,7 @@ scene_size() {
     awk '$1 == "image" { print $2, $3 }' "$1"
 }
 
-# ---- every shipped scene renders, at its own size -------------------------
-for scene in labs/scenes/*.scene; do
-    name=$(basename "$scene" .scene)
-    out="$tmp/$name.png"
-    run "$RENDER" "$scene" -o "$out"
-    want=$(scene_size "$scene")
-    exited "render $scene" 0 || continue
-    if [ "$(png_size "$out")" != "$want" ]; then
-        fail "render $scene: $out is '$(png_size "$out")', want a PNG of $want"
-    elif ! grep -q "^rendered $name.scene $(echo "$want" | tr ' ' x) with [0-9]* threads* in [0-9.]* s: [0-9.]* million rays/s" "$tmp/stdout"; then
-        fail "render $scene: no summary line: $(head -n 1 "$tmp/stdout")"
-    elif ! grep -q "^wrote $out\$" "$tmp/stdout"; then
-        fail "render $scene: no 'wrote' line"
-    else
-        pass
-    fi
-done
-
+# (Every shipped scene rendered at its own size: make compare, below.)
 # The default output is out/<scene name>.png, made in the current directory.
 mkdir "$tmp/home"
 (cd "$tmp/home" && "$RENDER" "$top/labs/scenes/flip.scene" --quiet >"$tmp/stdout" 2>"$tmp/stderr")
@@ -253,7 +236,8 @@ need_selftests "$selftest"
 # a plain formula loses on a small, far sphere, and cracks.scene, which
 # shows the cracks of a triangle test that is not watertight: its Part 5
 # is Moller-Trumbore (tests/selftest/moller-trumbore, the skeleton's
-# formula).
+# formula).  Each render of the submission's is at the scene's own size
+# and says what it did.
 if [ -d "$selftest/independent" ] && [ -d "$selftest/moller-trumbore" ]; then
     # In out/tests, not in $tmp: a folder the suite clears.
     sub=$PWD/out/tests/independent
@@ -262,7 +246,14 @@ if [ -d "$selftest/independent" ] && [ -d "$selftest/moller-trumbore" ]; then
     cp "$selftest"/independent/*.c "$selftest"/moller-trumbore/*.c "$sub/"
     for scene in labs/scenes/*.scene; do
         name=$(basename "$scene" .scene)
+        out=out/compare/$name-submission.png
+        rm -f "$out"
         run ${MAKE:-make} --no-print-directory compare SUBMISSION="$sub" SCENE="$scene"
+        want=$(scene_size "$scene")
+        got=$(png_size "$out")
+        check "render $scene: $out is '$got', want a PNG of $want, with a summary line and a 'wrote' line" \
+            sh -c "[ '$got' = '$want' ] && grep -q '^wrote $out\$' '$tmp/stdout' &&
+                   grep -q '^rendered $name.scene $(echo "$want" | tr ' ' x) with [0-9]* threads* in [0-9.]* s: [0-9.]* million rays/s' '$tmp/stdout'"
         # make turns compare's exit 1 (the images differ) into 2
         case $name in
         far) check "the independent submission renders far.scene like the reference (exit $status): the scene no longer shows the far sphere's rounding" \
