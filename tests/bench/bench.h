@@ -301,11 +301,21 @@ typedef struct {
  * methods ran (0: measure it here). */
 void measure_ceiling(Ceiling *c, bool quick, double mhz_during);
 
+/* Interleaved rounds: every round visits each of n items once, in an
+ * order rotated by one every round, so that a slow spell or a warm cache
+ * favours no item.  In
+ *     for (Rounds it = { .n = n, .rounds = rounds }; rounds_next(&it);)
+ * it.r is the round, it.m the item, it.j its place in the round, it.k - 1
+ * the turns before this one.  Item m's sample of round r goes to
+ * samples[m * rounds + r]. */
+typedef struct { int n, rounds, k, r, j, m; } Rounds;
+bool rounds_next(Rounds *it);
+
 /* Times every method's closest loop over rs, interleaved: rounds rounds,
  * each running every method once (for about sample_s seconds).  Stores
- * pass_seconds[r * bench_nmethods + m], the time of one pass of method m
- * in round r, and round_mhz[r], the clock measured after round r.
- * Returns 0, or -1 if out of memory. */
+ * pass_seconds[m * rounds + r], the time of one pass of method m in round
+ * r, and round_mhz[r], the clock measured after round r.  Returns 0, or -1
+ * if out of memory. */
 int measure_throughput(const BenchScene *sc, const RaySet *rs, int rounds, double sample_s,
                        double *pass_seconds, double *round_mhz);
 

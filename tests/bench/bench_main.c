@@ -150,7 +150,7 @@ static void count_reference_exits(const Scene *scene, const RaySet *rs, BenchRes
         }
 }
 
-/* From R rounds' pass times secs[r * bench_nmethods + m] and clock
+/* From R rounds' pass times secs[m * R + r] and clock
  * readings mhz (tests tests a pass): every method's Mtests/s and the
  * reference / textbook ratio, medians and quartiles, and the clock.  col
  * (R numbers) is room to work in. */
@@ -160,14 +160,14 @@ static void throughput_stats(BenchResults *br, const double *secs, double *mhz, 
     int nm = bench_nmethods;
     for (int m = 0; m < nm; m++) {
         for (int r = 0; r < R; r++)
-            col[r] = tests / secs[r * nm + m] / 1e6;
+            col[r] = tests / secs[m * R + r] / 1e6;
         br->mtests[m] = median(col, R);
         br->mtests_q1[m] = quantile(col, R, 0.25);
         br->mtests_q3[m] = quantile(col, R, 0.75);
     }
     int ref = method_find("reference", PREC_DOUBLE), tb = method_find("textbook", PREC_DOUBLE);
     for (int r = 0; r < R; r++)
-        col[r] = secs[r * nm + ref] / secs[r * nm + tb];
+        col[r] = secs[ref * R + r] / secs[tb * R + r];
     br->ratio_paired = median(col, R);
     br->ratio_q1 = quantile(col, R, 0.25);
     br->ratio_q3 = quantile(col, R, 0.75);

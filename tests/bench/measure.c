@@ -235,6 +235,19 @@ void measure_ceiling(Ceiling *c, bool quick, double mhz_during)
     c->ceiling_f = c->mhz * c->lanes_f / cyc;
 }
 
+/* ---- interleaved rounds ------------------------------------------------------ */
+
+bool rounds_next(Rounds *it)
+{
+    if (it->k >= it->n * it->rounds)
+        return false;
+    it->r = it->k / it->n;
+    it->j = it->k % it->n;
+    it->m = (it->r + it->j) % it->n;
+    it->k++;
+    return true;
+}
+
 /* ---- throughput ------------------------------------------------------------ */
 
 /* How many passes of one seconds make a sample of about sample_s (at least 1). */
@@ -280,13 +293,13 @@ int measure_throughput(const BenchScene *sc, const RaySet *rs, int rounds, doubl
      * one method further on, so that a slow spell or a warm cache favours
      * no method.  A short clock reading per round gives the clock the
      * ceiling uses, taken under the same conditions. */
-    for (int r = 0; r < rounds; r++) {
-        progress("throughput", r, rounds);
-        for (int j = 0; j < nm; j++) {
-            int m = (r + j) % nm;
-            pass_seconds[r * nm + m] = time_passes(&bench_methods[m], sc, rs, passes[m], idx, t);
-        }
-        round_mhz[r] = chain_mhz(200000);
+    for (Rounds it = { .n = nm, .rounds = rounds }; rounds_next(&it);) {
+        int m = it.m;
+        if (it.j == 0)
+            progress("throughput", it.r, rounds);
+        pass_seconds[m * rounds + it.r] = time_passes(&bench_methods[m], sc, rs, passes[m], idx, t);
+        if (it.j == nm - 1)
+            round_mhz[it.r] = chain_mhz(200000);
     }
     progress("throughput", rounds, rounds);
     free(idx);
@@ -372,21 +385,17 @@ int measure_outcomes(const Case *miss, int nmiss, const Case *hit, int nhit, int
         double one = time_pairs(&bench_methods[tb], &ps[o], 1) * (ps[o].n > 0 ? ps[o].n : 1);
         passes[o] = passes_for(sample_s, one);
     }
-    for (int r = 0; r < rounds; r++) {
-        progress("cost by outcome", r, rounds);
-        for (int j = 0; j < nm; j++) {
-            int m = (r + j) % nm;
-            if (!bench_methods[m].scalar_d && !bench_methods[m].scalar_f)
-                continue;
-            for (int o = 0; o < 2; o++)
-                samples[(o * nm + m) * rounds + r] =
-                    time_pairs(&bench_methods[m], &ps[o], passes[o]);
-        }
+    for (Rounds it = { .n = nm, .rounds = rounds }; rounds_next(&it);) {
+        const Method *m = &bench_methods[it.m];
+        if (it.j == 0)
+            progress("cost by outcome", it.r, rounds);
+        for (int o = 0; o < 2; o++)         /* NAN: not a scalar method */
+            samples[(o * nm + it.m) * rounds + it.r] =
+                m->scalar_d || m->scalar_f ? time_pairs(m, &ps[o], passes[o]) : NAN;
     }
     for (int m = 0; m < nm; m++) {
-        bool scalar = bench_methods[m].scalar_d || bench_methods[m].scalar_f;
-        miss_ns[m] = scalar ? 1e9 * median(samples + (0 * nm + m) * rounds, rounds) : NAN;
-        hit_ns[m] = scalar ? 1e9 * median(samples + (1 * nm + m) * rounds, rounds) : NAN;
+        miss_ns[m] = 1e9 * median(samples + m * rounds, rounds);
+        hit_ns[m] = 1e9 * median(samples + (nm + m) * rounds, rounds);
     }
     status = 0;
 done:

@@ -131,19 +131,17 @@ int render_bench(const char *path, int nx, int ny, int reps, RenderResult *res,
     /* The renders, interleaved as in the throughput runs; "method"
      * bench_nmethods only makes the rays. */
     int nr = bench_nmethods + 1;
-    for (int r = 0; r < reps; r++) {
-        for (int q = 0; q < nr; q++) {
-            int m = (r + q) % nr;
-            progress(res->scene, ny + r * nr + q, ny + reps * nr);
-            double t0 = now_seconds();
-            render_once(m < bench_nmethods ? &bench_methods[m] : NULL, &bs, &scene, nx, ny, &row,
-                        trow, idx);
-            samples[m * reps + r] = now_seconds() - t0;
-            if (m == bench_nmethods)
-                bench_sink += idx[0];
-            else
-                res->differ[m] = differ_from_exact(idx, ex, np);  /* the same every repetition */
-        }
+    for (Rounds it = { .n = nr, .rounds = reps }; rounds_next(&it);) {
+        int m = it.m;
+        progress(res->scene, ny + it.k - 1, ny + reps * nr);
+        double t0 = now_seconds();
+        render_once(m < bench_nmethods ? &bench_methods[m] : NULL, &bs, &scene, nx, ny, &row, trow,
+                    idx);
+        samples[m * reps + it.r] = now_seconds() - t0;
+        if (m == bench_nmethods)
+            bench_sink += idx[0];
+        else
+            res->differ[m] = differ_from_exact(idx, ex, np);  /* the same every repetition */
     }
     for (int m = 0; m < bench_nmethods; m++)
         res->seconds[m] = median(samples + m * reps, reps);

@@ -109,20 +109,17 @@ static int step_throughput(const char *scenes, bool quick, TriResults *tr, char 
         trisf[k] = trianglef_from(&scene.triangles[k]);
     tr->tp_rays = nr;
     tr->tp_triangles = n;
-    /* Rounds of every method once, the order rotated each round. */
-    for (int round = 0; round < rounds; round++) {
-        progress("triangles: throughput", round, rounds);
-        for (int q = 0; q < tri_nmethods; q++) {
-            int m = (q + round) % tri_nmethods;
-            double start = now_seconds(), sum = 0;
-            for (int i = 0; i < nr; i++) {
-                double t = tri_closest(&tri_methods[m], scene.triangles, trisf, n, &rs.rays[i],
-                                       &rs.raysf[i]);
-                sum += t < INFINITY ? t : 0;
-            }
-            secs[m * rounds + round] = now_seconds() - start;
-            bench_sink += sum;
+    for (Rounds it = { .n = tri_nmethods, .rounds = rounds }; rounds_next(&it);) {
+        if (it.j == 0)
+            progress("triangles: throughput", it.r, rounds);
+        double start = now_seconds(), sum = 0;
+        for (int i = 0; i < nr; i++) {
+            double t = tri_closest(&tri_methods[it.m], scene.triangles, trisf, n, &rs.rays[i],
+                                   &rs.raysf[i]);
+            sum += t < INFINITY ? t : 0;
         }
+        secs[it.m * rounds + it.r] = now_seconds() - start;
+        bench_sink += sum;
     }
     for (int m = 0; m < tri_nmethods; m++) {
         double med = median(secs + m * rounds, rounds);
