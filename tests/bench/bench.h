@@ -432,6 +432,12 @@ typedef struct {
     int group;              /* 0 double, 1 float, 2 mixed: colour and marker   */
 } PlotPoint;
 
+/* A method's point, its group its precision, labelled "name precision" (as
+ * the report names a method too) in label (METHOD_LABEL bytes, to last until
+ * the plot is written). */
+#define METHOD_LABEL 48
+PlotPoint method_point(char *label, const char *name, Precision p, double x, double y);
+
 typedef struct {
     const PlotPoint *pts;
     int n;

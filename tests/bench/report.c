@@ -37,7 +37,7 @@ static double stage_share(const BenchResults *br, int k)
 /* Numbers as text, from a pool of buffers so one printf can use several. */
 static char *pool(void)
 {
-    static char bufs[32][40];
+    static char bufs[32][METHOD_LABEL];
     static int next;
     next = (next + 1) % 32;
     return bufs[next];
@@ -80,9 +80,7 @@ static const char *P(double fraction)     /* a share as a percentage */
 
 static const char *label(int m)
 {
-    char *b = pool();
-    snprintf(b, 40, "%s %s", bench_methods[m].name, precision_name(bench_methods[m].precision));
-    return b;
+    return method_point(pool(), bench_methods[m].name, bench_methods[m].precision, 0, 0).label;
 }
 
 /* ---- CSV ------------------------------------------------------------------------- */
@@ -159,14 +157,11 @@ static const char *subtitle(const BenchResults *br, const char *fmt, ...)
 static int write_plot(const BenchResults *br, const char *dir, char *err, size_t errlen)
 {
     static PlotPoint raw[BENCH_MAX_METHODS], norm[BENCH_MAX_METHODS];
-    static char labels[BENCH_MAX_METHODS][48];
+    static char labels[BENCH_MAX_METHODS][METHOD_LABEL];
     for (int m = 0; m < bench_nmethods; m++) {
         const Method *me = &bench_methods[m];
-        snprintf(labels[m], sizeof labels[m], "%s %s", me->name, precision_name(me->precision));
-        PlotPoint p = { labels[m], br->all[m].max_rel, br->mtests[m],
-                        me->precision == PREC_DOUBLE ? 0 : me->precision == PREC_FLOAT ? 1 : 2 };
-        raw[m] = p;
-        norm[m] = p;
+        raw[m] = method_point(labels[m], me->name, me->precision, br->all[m].max_rel, br->mtests[m]);
+        norm[m] = raw[m];
         norm[m].x = br->all[m].max_over_kappa;
     }
     PlotPanel panels[2] = {

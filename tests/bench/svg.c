@@ -27,6 +27,13 @@ static void pareto_front(const PlotPoint *pts, int n, bool *on)
     }
 }
 
+PlotPoint method_point(char *label, const char *name, Precision p, double x, double y)
+{
+    PlotPoint pt = { label, x, y, (int)p };
+    snprintf(label, METHOD_LABEL, "%s %s", name, precision_name(p));
+    return pt;
+}
+
 /* ---- geometry ---------------------------------------------------------------- */
 
 enum { WIDTH = 980, HEADER = 96, PANEL_H = 560, LEFT = 90, RIGHT = 30, PANEL_TOP = 40,

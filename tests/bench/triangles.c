@@ -412,15 +412,13 @@ int triangles_write(const TriResults *tr, const char *dir, const char *subtitle,
         return -1;
     /* The plot: speed against cracks, and speed against the error of t. */
     static PlotPoint cracks[TRI_MAX_METHODS], errs[TRI_MAX_METHODS];
-    static char labels[TRI_MAX_METHODS][48];
+    static char labels[TRI_MAX_METHODS][METHOD_LABEL];
     for (int m = 0; m < tri_nmethods; m++) {
-        snprintf(labels[m], sizeof labels[m], "%s %s", tri_methods[m].name,
-                 precision_name(tri_methods[m].precision));
-        int group = tri_methods[m].precision == PREC_DOUBLE ? 0 : 1;
-        PlotPoint c = { labels[m], fmax(tri_cracks_per_million(tr, m), 0.01), tr->mtests[m], group };
-        PlotPoint e = { labels[m], tr->hard[m].max_over_kappa, tr->mtests[m], group };
-        cracks[m] = c;
-        errs[m] = e;
+        const TriMethod *me = &tri_methods[m];
+        cracks[m] = method_point(labels[m], me->name, me->precision,
+                                 fmax(tri_cracks_per_million(tr, m), 0.01), tr->mtests[m]);
+        errs[m] = cracks[m];
+        errs[m].x = tr->hard[m].max_over_kappa;
     }
     PlotPanel panels[2] = {
         { cracks, tri_nmethods, "Rays through closed meshes, aimed at shared edges and vertices",
