@@ -309,80 +309,63 @@ int measure_throughput(const BenchScene *sc, const RaySet *rs, int rounds, doubl
 
 /* ---- cost by outcome ------------------------------------------------------- */
 
+/* The cases rounded to float, as the float methods take them. */
 typedef struct {
-    int n;
-    Sphere *s;
-    Ray *r;
-    Spheref *sf;
-    Rayf *rf;
-} PairSet;
+    Spheref sphere;
+    Rayf ray;
+} CaseF;
 
-static int pairs_make(PairSet *p, const Case *c, int n)
+static CaseF *cases_float(const Case *c, int n)
 {
-    size_t m = n > 0 ? (size_t)n : 1;
-    p->n = n;
-    p->s = malloc(m * sizeof *p->s);
-    p->r = malloc(m * sizeof *p->r);
-    p->sf = malloc(m * sizeof *p->sf);
-    p->rf = malloc(m * sizeof *p->rf);
-    if (!p->s || !p->r || !p->sf || !p->rf)
-        return -1;
-    for (int i = 0; i < n; i++) {
-        p->s[i] = c[i].sphere;
-        p->r[i] = c[i].ray;
-        p->sf[i] = spheref_from(&c[i].sphere);
-        p->rf[i] = rayf_from(&c[i].ray);
+    CaseF *cf = malloc((size_t)(n > 0 ? n : 1) * sizeof *cf);
+    for (int i = 0; cf && i < n; i++) {
+        cf[i].sphere = spheref_from(&c[i].sphere);
+        cf[i].ray = rayf_from(&c[i].ray);
     }
-    return 0;
+    return cf;
 }
 
-static void pairs_free(PairSet *p)
-{
-    free(p->s);
-    free(p->r);
-    free(p->sf);
-    free(p->rf);
-}
-
-/* Seconds per call of m's scalar function over the pairs, passes times. */
-static double time_pairs(const Method *m, const PairSet *p, int passes)
+/* Seconds per call of m's scalar function over the n cases (cf: the same
+ * in float), passes times. */
+static double time_pairs(const Method *m, const Case *c, const CaseF *cf, int n, int passes)
 {
     double sum = 0;
     double t0 = now_seconds();
     for (int k = 0; k < passes; k++) {
         if (m->scalar_d) {
-            for (int i = 0; i < p->n; i++) {
+            for (int i = 0; i < n; i++) {
                 double t = 0;
-                if (m->scalar_d(&p->s[i], &p->r[i], &t))
+                if (m->scalar_d(&c[i].sphere, &c[i].ray, &t))
                     sum += t;
             }
         } else {
-            for (int i = 0; i < p->n; i++) {
+            for (int i = 0; i < n; i++) {
                 float t = 0;
-                if (m->scalar_f(&p->sf[i], &p->rf[i], &t))
+                if (m->scalar_f(&cf[i].sphere, &cf[i].ray, &t))
                     sum += t;
             }
         }
     }
     double dt = now_seconds() - t0;
     bench_sink += sum;
-    return dt / passes / (p->n > 0 ? p->n : 1);
+    return dt / passes / (n > 0 ? n : 1);
 }
 
 int measure_outcomes(const Case *miss, int nmiss, const Case *hit, int nhit, int rounds,
                      double sample_s, double *miss_ns, double *hit_ns)
 {
     int nm = bench_nmethods;
-    PairSet ps[2] = { { 0, NULL, NULL, NULL, NULL }, { 0, NULL, NULL, NULL, NULL } };
+    const Case *c[2] = { miss, hit };
+    int n[2] = { nmiss, nhit }, passes[2];
+    CaseF *cf[2] = { cases_float(miss, nmiss), cases_float(hit, nhit) };
     double *samples = malloc((size_t)(2 * nm * rounds) * sizeof *samples);
-    int passes[2] = { 1, 1 };
     int status = -1;
-    if (!samples || pairs_make(&ps[0], miss, nmiss) != 0 || pairs_make(&ps[1], hit, nhit) != 0)
+    if (!samples || !cf[0] || !cf[1])
         goto done;
     /* calibrate on the textbook, the same passes for every method */
     int tb = method_find("textbook", PREC_DOUBLE);
     for (int o = 0; o < 2; o++) {
-        double one = time_pairs(&bench_methods[tb], &ps[o], 1) * (ps[o].n > 0 ? ps[o].n : 1);
+        double one = time_pairs(&bench_methods[tb], c[o], cf[o], n[o], 1) * (n[o] > 0 ? n[o] : 1);
         passes[o] = passes_for(sample_s, one);
     }
     for (Rounds it = { .n = nm, .rounds = rounds }; rounds_next(&it);) {
@@ -391,7 +374,7 @@ int measure_outcomes(const Case *miss, int nmiss, const Case *hit, int nhit, int
             progress("cost by outcome", it.r, rounds);
         for (int o = 0; o < 2; o++)         /* NAN: not a scalar method */
             samples[(o * nm + it.m) * rounds + it.r] =
-                m->scalar_d || m->scalar_f ? time_pairs(m, &ps[o], passes[o]) : NAN;
+                m->scalar_d || m->scalar_f ? time_pairs(m, c[o], cf[o], n[o], passes[o]) : NAN;
     }
     for (int m = 0; m < nm; m++) {
         miss_ns[m] = 1e9 * median(samples + m * rounds, rounds);
@@ -400,7 +383,7 @@ int measure_outcomes(const Case *miss, int nmiss, const Case *hit, int nhit, int
     status = 0;
 done:
     free(samples);
-    pairs_free(&ps[0]);
-    pairs_free(&ps[1]);
+    free(cf[0]);
+    free(cf[1]);
     return status;
 }
