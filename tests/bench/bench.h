@@ -154,7 +154,9 @@ typedef struct {
 
 extern const Method bench_methods[];
 extern const int bench_nmethods;
-int method_find(const char *name, Precision p);   /* index, or -1 */
+/* The methods by index in bench_methods: name and precision (M: mixed). */
+enum { TEXTBOOK_D, TEXTBOOK_F, UNIT_D, UNIT_F, GEOMETRIC_D, GEOMETRIC_F, RTG_D, RTG_F,
+       REFERENCE_D, REFERENCE_F, FAST_D, FAST_F, FAST_M };
 /* One test: hit and t, computed at the method's precision. */
 bool method_one(const Method *m, const Sphere *sphere, const Ray *ray, double *t);
 /* Nearest hit for rays [0, rs->n): idx[i], t[i] as fast_closest_d. */

@@ -165,7 +165,7 @@ static void throughput_stats(BenchResults *br, const double *secs, double *mhz, 
         br->mtests_q1[m] = quantile(col, R, 0.25);
         br->mtests_q3[m] = quantile(col, R, 0.75);
     }
-    int ref = method_find("reference", PREC_DOUBLE), tb = method_find("textbook", PREC_DOUBLE);
+    int ref = REFERENCE_D, tb = TEXTBOOK_D;
     for (int r = 0; r < R; r++)
         col[r] = secs[ref * R + r] / secs[tb * R + r];
     br->ratio_paired = median(col, R);

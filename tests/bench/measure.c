@@ -363,10 +363,9 @@ int measure_outcomes(const Case *miss, int nmiss, const Case *hit, int nhit, int
     if (!samples || !cf[0] || !cf[1])
         goto done;
     /* calibrate on the textbook, the same passes for every method */
-    int tb = method_find("textbook", PREC_DOUBLE);
     for (int o = 0; o < 2; o++) {
-        double one = time_pairs(&bench_methods[tb], c[o], cf[o], n[o], 1) * (n[o] > 0 ? n[o] : 1);
-        passes[o] = passes_for(sample_s, one);
+        double one = time_pairs(&bench_methods[TEXTBOOK_D], c[o], cf[o], n[o], 1);
+        passes[o] = passes_for(sample_s, one * (n[o] > 0 ? n[o] : 1));
     }
     for (Rounds it = { .n = nm, .rounds = rounds }; rounds_next(&it);) {
         const Method *m = &bench_methods[it.m];

@@ -160,7 +160,8 @@ static int write_plot(const BenchResults *br, const char *dir, char *err, size_t
     static char labels[BENCH_MAX_METHODS][METHOD_LABEL];
     for (int m = 0; m < bench_nmethods; m++) {
         const Method *me = &bench_methods[m];
-        raw[m] = method_point(labels[m], me->name, me->precision, br->all[m].max_rel, br->mtests[m]);
+        raw[m] = method_point(labels[m], me->name, me->precision, br->all[m].max_rel,
+                              br->mtests[m]);
         norm[m] = raw[m];
         norm[m].x = br->all[m].max_over_kappa;
     }
@@ -250,7 +251,7 @@ static void md_render_table(FILE *f, const BenchResults *br)
  * the reference costs what it costs. */
 static void md_ratio(FILE *f, const BenchResults *br)
 {
-    int tb = method_find("textbook", PREC_DOUBLE), rd = method_find("reference", PREC_DOUBLE);
+    int tb = TEXTBOOK_D, rd = REFERENCE_D;
     double h = br->hit_share;
     double mix_t = (1 - h) * br->miss_ns[tb] + h * br->hit_ns[tb];
     double mix_r = (1 - h) * br->miss_ns[rd] + h * br->hit_ns[rd];
@@ -385,11 +386,8 @@ static void md_finding_renders(FILE *f, const BenchResults *br, int tb, int rd, 
 
 static void md_findings(FILE *f, const BenchResults *br)
 {
-    int tb = method_find("textbook", PREC_DOUBLE), tf = method_find("textbook", PREC_FLOAT);
-    int rd = method_find("reference", PREC_DOUBLE), rf = method_find("reference", PREC_FLOAT);
-    int rgd = method_find("rtg", PREC_DOUBLE);
-    int fd = method_find("fast", PREC_DOUBLE), ff = method_find("fast", PREC_FLOAT);
-    int fm = method_find("fast", PREC_MIXED);
+    int tb = TEXTBOOK_D, tf = TEXTBOOK_F, rd = REFERENCE_D, rf = REFERENCE_F, rgd = RTG_D;
+    int fd = FAST_D, ff = FAST_F, fm = FAST_M;
 
     /* 1. scalar speed */
     double lo, hi;
@@ -579,10 +577,8 @@ static void md_ratio_headline(FILE *f, const BenchResults *br)
  * fast path's time goes. */
 static void md_headline(FILE *f, const BenchResults *br)
 {
-    int tb = method_find("textbook", PREC_DOUBLE), tf = method_find("textbook", PREC_FLOAT);
-    int rd = method_find("reference", PREC_DOUBLE);
-    int fd = method_find("fast", PREC_DOUBLE), ff = method_find("fast", PREC_FLOAT);
-    int fm = method_find("fast", PREC_MIXED);
+    int tb = TEXTBOOK_D, tf = TEXTBOOK_F, rd = REFERENCE_D;
+    int fd = FAST_D, ff = FAST_F, fm = FAST_M;
     fprintf(f, "## Headline\n\n");
     md_ratio_headline(f, br);
     fprintf(f, "- **The reference's miss test** sums |f x r|^2 a term at a time and stops at "
