@@ -134,6 +134,11 @@ Case *cases_scene(const Scene *scene, int step, int *n);
 /* ---- suite.c: the methods ---------------------------------------------- */
 typedef enum { PREC_DOUBLE, PREC_FLOAT, PREC_MIXED } Precision;
 const char *precision_name(Precision p);
+/* A method's name and precision, sep between them, into buf (METHOD_LABEL
+ * bytes): "fast double" labels it on the plots and in the text, "fast |
+ * double" and "fast,double" are its cells in markdown and CSV.  Returns buf. */
+#define METHOD_LABEL 48
+char *method_cells(char *buf, const char *name, Precision p, const char *sep);
 
 typedef struct {
     const Sphere *spheres;    /* the scene, double                    */
@@ -434,10 +439,8 @@ typedef struct {
     int group;              /* 0 double, 1 float, 2 mixed: colour and marker   */
 } PlotPoint;
 
-/* A method's point, its group its precision, labelled "name precision" (as
- * the report names a method too) in label (METHOD_LABEL bytes, to last until
- * the plot is written). */
-#define METHOD_LABEL 48
+/* A method's point, its group its precision, labelled by method_cells in
+ * label (METHOD_LABEL bytes, to last until the plot is written). */
 PlotPoint method_point(char *label, const char *name, Precision p, double x, double y);
 
 typedef struct {

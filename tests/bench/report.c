@@ -78,9 +78,10 @@ static const char *P(double fraction)     /* a share as a percentage */
     return b;
 }
 
-static const char *label(int m)
+/* Method m's name and precision, sep between them (method_cells). */
+static const char *cells(int m, const char *sep)
 {
-    return method_point(pool(), bench_methods[m].name, bench_methods[m].precision, 0, 0).label;
+    return method_cells(pool(), bench_methods[m].name, bench_methods[m].precision, sep);
 }
 
 /* ---- CSV ------------------------------------------------------------------------- */
@@ -95,10 +96,10 @@ static void csv_results(FILE *f, const void *data)
                "grader_hard_failed,grader_hard_cases\n");
     for (int m = 0; m < bench_nmethods; m++) {
         const ErrorStats *s = &br->all[m];
-        fprintf(f, "%s,%s,%.2f,%.2f,%.2f,%.4f,%.3e,%.3e,%.2f,%.3e,%ld,%ld,%ld,%ld,",
-                bench_methods[m].name, precision_name(bench_methods[m].precision), br->mtests[m],
-                br->mtests_q1[m], br->mtests_q3[m], share(br, m), s->max_rel, s->median_rel,
-                wrong_per_million(s), s->max_over_kappa, s->tests, s->ambiguous, s->wrong, s->hits);
+        fprintf(f, "%s,%.2f,%.2f,%.2f,%.4f,%.3e,%.3e,%.2f,%.3e,%ld,%ld,%ld,%ld,", cells(m, ","),
+                br->mtests[m], br->mtests_q1[m], br->mtests_q3[m], share(br, m), s->max_rel,
+                s->median_rel, wrong_per_million(s), s->max_over_kappa, s->tests, s->ambiguous,
+                s->wrong, s->hits);
         if (isnan(br->miss_ns[m]))
             fprintf(f, ",,");                   /* not a scalar method */
         else
@@ -115,11 +116,9 @@ static void csv_families(FILE *f, const void *data)
     for (int fam = 0; fam < FAMILY_COUNT; fam++)
         for (int m = 0; m < bench_nmethods; m++) {
             const ErrorStats *s = &br->fam[m][fam];
-            fprintf(f, "%s,%s,%s,%ld,%ld,%ld,%.2f,%ld,%.3e,%.3e,%.3e,%ld\n",
-                    family_names[fam], bench_methods[m].name,
-                    precision_name(bench_methods[m].precision), s->tests, s->ambiguous, s->wrong,
-                    wrong_per_million(s), s->hits, s->max_rel, s->median_rel, s->max_over_kappa,
-                    s->over_tol);
+            fprintf(f, "%s,%s,%ld,%ld,%ld,%.2f,%ld,%.3e,%.3e,%.3e,%ld\n", family_names[fam],
+                    cells(m, ","), s->tests, s->ambiguous, s->wrong, wrong_per_million(s),
+                    s->hits, s->max_rel, s->median_rel, s->max_over_kappa, s->over_tol);
         }
 }
 
@@ -131,9 +130,9 @@ static void csv_renders(FILE *f, const void *data)
     for (int s = 0; s < br->nrenders; s++) {
         const RenderResult *r = &br->renders[s];
         for (int m = 0; m < bench_nmethods; m++)
-            fprintf(f, "%s,%d,%d,%d,%s,%s,%.4f,%.2f,%ld,%.6f,%ld,%.4f\n", r->scene, r->nx, r->ny,
-                    r->nspheres, bench_methods[m].name, precision_name(bench_methods[m].precision),
-                    r->seconds[m], (double)r->pixels / r->seconds[m] / 1e6, r->differ[m],
+            fprintf(f, "%s,%d,%d,%d,%s,%.4f,%.2f,%ld,%.6f,%ld,%.4f\n", r->scene, r->nx, r->ny,
+                    r->nspheres, cells(m, ","), r->seconds[m],
+                    (double)r->pixels / r->seconds[m] / 1e6, r->differ[m],
                     (double)r->differ[m] / (double)r->pixels, r->ambiguous, r->rays_seconds);
     }
 }
@@ -192,10 +191,9 @@ static void md_results_table(FILE *f, const BenchResults *br)
     fprintf(f, "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (int m = 0; m < bench_nmethods; m++) {
         const ErrorStats *s = &br->all[m];
-        fprintf(f, "| %s | %s | %.0f | %.0f-%.0f | %s | %s | %s | %s | %s | %d / %d |\n",
-                bench_methods[m].name, precision_name(bench_methods[m].precision), br->mtests[m],
-                br->mtests_q1[m], br->mtests_q3[m], P(share(br, m)), E(s->max_rel),
-                E(s->median_rel), W(wrong_per_million(s)), E(s->max_over_kappa),
+        fprintf(f, "| %s | %.0f | %.0f-%.0f | %s | %s | %s | %s | %s | %d / %d |\n",
+                cells(m, " | "), br->mtests[m], br->mtests_q1[m], br->mtests_q3[m], P(share(br, m)),
+                E(s->max_rel), E(s->median_rel), W(wrong_per_million(s)), E(s->max_over_kappa),
                 br->grader_failed[m], br->grader_cases);
     }
 }
@@ -207,9 +205,8 @@ static void md_family_table(FILE *f, const BenchResults *br, int fam)
     fprintf(f, "|---|---|---:|---:|---:|---:|---:|\n");
     for (int m = 0; m < bench_nmethods; m++) {
         const ErrorStats *s = &br->fam[m][fam];
-        fprintf(f, "| %s | %s | %s | %s | %s | %s | %ld |\n", bench_methods[m].name,
-                precision_name(bench_methods[m].precision), E(s->max_rel), E(s->median_rel),
-                W(wrong_per_million(s)), E(s->max_over_kappa), s->hits);
+        fprintf(f, "| %s | %s | %s | %s | %s | %ld |\n", cells(m, " | "), E(s->max_rel),
+                E(s->median_rel), W(wrong_per_million(s)), E(s->max_over_kappa), s->hits);
     }
 }
 
@@ -227,8 +224,7 @@ static void md_render_table(FILE *f, const BenchResults *br)
         fprintf(f, "---:|");
     fprintf(f, "\n");
     for (int m = 0; m < bench_nmethods; m++) {
-        fprintf(f, "| %s | %s |", bench_methods[m].name,
-                precision_name(bench_methods[m].precision));
+        fprintf(f, "| %s |", cells(m, " | "));
         for (int s = 0; s < br->nrenders; s++) {
             const RenderResult *r = &br->renders[s];
             fprintf(f, " %.0f / %s |", 1e3 * r->seconds[m],
@@ -288,9 +284,8 @@ static void md_ratio(FILE *f, const BenchResults *br)
                "|---|---|---:|---:|---:|\n");
     for (int m = 0; m < bench_nmethods; m++)
         if (!isnan(br->miss_ns[m]))
-            fprintf(f, "| %s | %s | %.2f | %.2f | %.1f |\n", bench_methods[m].name,
-                    precision_name(bench_methods[m].precision), br->miss_ns[m], br->hit_ns[m],
-                    br->hit_ns[m] / br->miss_ns[m]);
+            fprintf(f, "| %s | %.2f | %.2f | %.1f |\n", cells(m, " | "), br->miss_ns[m],
+                    br->hit_ns[m], br->hit_ns[m] / br->miss_ns[m]);
     double extra_miss = (1 - h) * (br->miss_ns[rd] - br->miss_ns[tb]);
     double extra_hit = h * (br->hit_ns[rd] - br->hit_ns[tb]);
     fprintf(f, "\nOn a miss the reference costs %.2fx the textbook, on a hit %.2fx; weighted by "
@@ -371,7 +366,7 @@ static void md_finding_renders(FILE *f, const BenchResults *br, int tb, int rd, 
         fprintf(f, "the largest difference is %s on %s: %s of the pixels (far.scene is the "
                    "lecture's far small sphere). The reference and the double fast path "
                    "differ from the exact render in %ld pixels over all scenes.",
-                label(wm), br->renders[ws].scene,
+                cells(wm, " "), br->renders[ws].scene,
                 P((double)worst / (double)br->renders[ws].pixels), accurate_wrong);
     const RenderResult *r = &br->renders[sd];
     fprintf(f, " On %s.scene at %dx%d, making the rays (parts 1, 2 and 3b) takes %.0f ms; "
@@ -453,7 +448,7 @@ static void md_findings(FILE *f, const BenchResults *br)
                "close; the fast path spends the rest loading rays, turning comparisons into "
                "masks and solving the packets that may hit.\n",
             br->ceiling.ceiling_d, br->ceiling.ceiling_f, P(share(br, tb)), P(share(br, rd)),
-            label(best), P(share(br, best)));
+            cells(best, " "), P(share(br, best)));
 }
 
 /* Where the double fast path's cycles go, per (packet, sphere) pair: the
@@ -527,8 +522,7 @@ static void md_ceiling(FILE *f, const BenchResults *br)
                "times wider; the kit does not use it, to stay portable.\n");
     fprintf(f, "\n| method | precision | Mtests/s | share of ceiling |\n|---|---|---:|---:|\n");
     for (int m = 0; m < bench_nmethods; m++)
-        fprintf(f, "| %s | %s | %.0f | %s |\n", bench_methods[m].name,
-                precision_name(bench_methods[m].precision), br->mtests[m], P(share(br, m)));
+        fprintf(f, "| %s | %.0f | %s |\n", cells(m, " | "), br->mtests[m], P(share(br, m)));
 }
 
 /* The title, and how and where the bench ran. */

@@ -13,6 +13,7 @@
  * sphere_intersect in another file: nothing is inlined, for any of them.
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "bench.h"
@@ -20,6 +21,12 @@
 const char *precision_name(Precision p)
 {
     return p == PREC_DOUBLE ? "double" : p == PREC_FLOAT ? "float" : "mixed";
+}
+
+char *method_cells(char *buf, const char *name, Precision p, const char *sep)
+{
+    snprintf(buf, METHOD_LABEL, "%s%s%s", name, sep, precision_name(p));
+    return buf;
 }
 
 /* ---- the closest-hit loops ------------------------------------------------ */

@@ -29,8 +29,7 @@ static void pareto_front(const PlotPoint *pts, int n, bool *on)
 
 PlotPoint method_point(char *label, const char *name, Precision p, double x, double y)
 {
-    PlotPoint pt = { label, x, y, (int)p };
-    snprintf(label, METHOD_LABEL, "%s %s", name, precision_name(p));
+    PlotPoint pt = { method_cells(label, name, p, " "), x, y, (int)p };
     return pt;
 }
 
