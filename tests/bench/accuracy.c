@@ -36,38 +36,44 @@ OracleHit *exact_answers(const Case *cases, int n)
     return ex;
 }
 
+void errors_add(ErrorStats *e, bool ambiguous, bool exact_hit, double exact_t, double kappa,
+                bool hit, double t, double *rel)
+{
+    if (ambiguous) {
+        e->ambiguous++;
+        return;
+    }
+    if (hit != exact_hit) {
+        e->wrong++;
+        return;
+    }
+    if (!hit)
+        return;
+    double r = fabs(t - exact_t) / exact_t, ku = r / (ORACLE_U * kappa);
+    rel[e->hits++] = r;
+    if (r > e->max_rel)
+        e->max_rel = r;
+    if (ku > e->max_over_kappa)
+        e->max_over_kappa = ku;
+    if (ku > ORACLE_K_T)
+        e->over_tol++;
+    if (kappa <= 100 && r / ORACLE_U > e->max_u_well)
+        e->max_u_well = r / ORACLE_U;
+}
+
 void accuracy_run(const Method *m, const Case *cases, const OracleHit *exact, int n,
                   ErrorStats *st, double *errs, long *nerrs)
 {
-    long ne = 0;
     *st = (ErrorStats){ .tests = n };
     for (int i = 0; i < n; i++) {
-        if (exact[i].ambiguous) {
-            st->ambiguous++;
-            continue;
-        }
+        const OracleHit *o = &exact[i];
         double t = NAN;
-        bool hit = method_one(m, &cases[i].sphere, &cases[i].ray, &t);
+        bool hit = !o->ambiguous && method_one(m, &cases[i].sphere, &cases[i].ray, &t);
         if (hit && !isfinite(t))
             hit = false;                  /* a hit with no usable t */
-        if (hit != exact[i].hit) {
-            st->wrong++;
-            continue;
-        }
-        if (!hit)
-            continue;
-        double rel = fabs(t - exact[i].t) / exact[i].t;
-        double ku = rel / (ORACLE_U * exact[i].kappa);
-        st->hits++;
-        if (rel > st->max_rel)
-            st->max_rel = rel;
-        if (ku > st->max_over_kappa)
-            st->max_over_kappa = ku;
-        if (ku > ORACLE_K_T)
-            st->over_tol++;
-        errs[ne++] = rel;
+        errors_add(st, o->ambiguous, o->hit, o->t, o->kappa, hit, t, errs);
     }
-    if (ne > 0)
-        st->median_rel = median(errs, (int)ne);
-    *nerrs = ne;
+    if (st->hits > 0)
+        st->median_rel = median(errs, (int)st->hits);
+    *nerrs = st->hits;
 }

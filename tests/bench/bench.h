@@ -183,6 +183,13 @@ typedef struct {
                                   (triangles)                              */
 } ErrorStats;
 
+/* Counts one case in e (tests aside): the method's answer (hit, t) against
+ * the exact one (exact_hit, exact_t, kappa; either is right when
+ * ambiguous); a compared hit's relative error goes to rel[e->hits]
+ * (accuracy.c). */
+void errors_add(ErrorStats *e, bool ambiguous, bool exact_hit, double exact_t, double kappa,
+                bool hit, double t, double *rel);
+
 /* Wrong hit/miss answers per million cases the oracle is sure of. */
 double wrong_per_million(const ErrorStats *s);
 double per_million(long count, long of);       /* 0 if of is 0 */

@@ -28,8 +28,6 @@
 #include "../oracle/hard.h"
 #include "bench.h"
 
-#define U 0x1p-53
-
 /* The formulations compared; the reference is the linked solution. */
 enum { REF, MT, MT_FLOAT, WBW_PLAIN, GEOMETRIC };
 const TriMethod tri_methods[] = {
@@ -164,31 +162,15 @@ static void measure_errors(const TriMethod *m, const HardCase5 *cases, int n, do
 {
     memset(e, 0, sizeof *e);
     e->tests = n;
-    long nrel = 0;
     for (int k = 0; k < n; k++) {
         const OracleFlat *o = &cases[k].expect;
         double t = 0;
         bool hit = tri_one(m, &cases[k].tri, &cases[k].ray, &t);
         e->hard_failed += !hard_check5(&cases[k], hit, t);
-        if (o->ambiguous) {
-            e->ambiguous++;
-            continue;
-        }
-        if (hit != o->hit) {
-            e->wrong++;
-            continue;
-        }
-        if (!hit)
-            continue;
-        double r = fabs(t - o->t) / o->t;
-        rel[nrel++] = r;
-        if (r / (U * o->kappa) > e->max_over_kappa)
-            e->max_over_kappa = r / (U * o->kappa);
-        if (o->kappa <= 100 && r / U > e->max_u_well)
-            e->max_u_well = r / U;
+        errors_add(e, o->ambiguous, o->hit, o->t, o->kappa, hit, t, rel);
     }
+    long nrel = e->hits;
     median(rel, (int)nrel);                 /* sorts rel */
-    e->hits = nrel;
     e->max_rel = nrel ? rel[nrel - 1] : 0;
     e->median_rel = nrel ? rel[nrel / 2] : 0;
 }
