@@ -159,7 +159,7 @@ typedef struct {
 
 extern const Method bench_methods[];
 extern const int bench_nmethods;
-/* The methods by index in bench_methods: name and precision (M: mixed). */
+/* The methods by index, in bench_methods' order: name and precision (M: mixed). */
 enum { TEXTBOOK_D, TEXTBOOK_F, UNIT_D, UNIT_F, GEOMETRIC_D, GEOMETRIC_F, RTG_D, RTG_F,
        REFERENCE_D, REFERENCE_F, FAST_D, FAST_F, FAST_M };
 /* One test: hit and t, computed at the method's precision. */

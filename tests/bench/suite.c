@@ -119,20 +119,23 @@ bool method_one(const Method *m, const Sphere *sphere, const Ray *ray, double *t
 /* ---- the table ---------------------------------------------------------------- */
 
 /* name, precision, assumes |r| = 1, the ray layouts it reads, the scalar
- * function (none: the fast path; mixed: its float filter, double solve) */
+ * function (none: the fast path; mixed: its float filter, double solve);
+ * in the order of their names in bench.h (TEXTBOOK_D ... FAST_M) */
 const Method bench_methods[] = {
-    [TEXTBOOK_D] = { "textbook", PREC_DOUBLE, false, LAYOUT_AOS_D, isect_textbook_d, NULL },
-    [TEXTBOOK_F] = { "textbook", PREC_FLOAT, false, LAYOUT_AOS_F, NULL, isect_textbook_f },
-    [UNIT_D] = { "unit", PREC_DOUBLE, true, LAYOUT_AOS_D, isect_unit_d, NULL },
-    [UNIT_F] = { "unit", PREC_FLOAT, true, LAYOUT_AOS_F, NULL, isect_unit_f },
-    [GEOMETRIC_D] = { "geometric", PREC_DOUBLE, true, LAYOUT_AOS_D, isect_geometric_d, NULL },
-    [GEOMETRIC_F] = { "geometric", PREC_FLOAT, true, LAYOUT_AOS_F, NULL, isect_geometric_f },
-    [RTG_D] = { "rtg", PREC_DOUBLE, false, LAYOUT_AOS_D, isect_rtg_d, NULL },
-    [RTG_F] = { "rtg", PREC_FLOAT, false, LAYOUT_AOS_F, NULL, isect_rtg_f },
-    [REFERENCE_D] = { "reference", PREC_DOUBLE, false, LAYOUT_AOS_D, sphere_intersect, NULL },
-    [REFERENCE_F] = { "reference", PREC_FLOAT, false, LAYOUT_AOS_F, NULL, isect_reference_f },
-    [FAST_D] = { "fast", PREC_DOUBLE, true, LAYOUT_SOA_D, NULL, NULL },
-    [FAST_F] = { "fast", PREC_FLOAT, true, LAYOUT_SOA_F, NULL, NULL },
-    [FAST_M] = { "fast", PREC_MIXED, true, LAYOUT_SOA_D | LAYOUT_SOA_F, NULL, NULL },
+    { "textbook", PREC_DOUBLE, false, LAYOUT_AOS_D, isect_textbook_d, NULL },
+    { "textbook", PREC_FLOAT, false, LAYOUT_AOS_F, NULL, isect_textbook_f },
+    { "unit", PREC_DOUBLE, true, LAYOUT_AOS_D, isect_unit_d, NULL },
+    { "unit", PREC_FLOAT, true, LAYOUT_AOS_F, NULL, isect_unit_f },
+    { "geometric", PREC_DOUBLE, true, LAYOUT_AOS_D, isect_geometric_d, NULL },
+    { "geometric", PREC_FLOAT, true, LAYOUT_AOS_F, NULL, isect_geometric_f },
+    { "rtg", PREC_DOUBLE, false, LAYOUT_AOS_D, isect_rtg_d, NULL },
+    { "rtg", PREC_FLOAT, false, LAYOUT_AOS_F, NULL, isect_rtg_f },
+    { "reference", PREC_DOUBLE, false, LAYOUT_AOS_D, sphere_intersect, NULL },
+    { "reference", PREC_FLOAT, false, LAYOUT_AOS_F, NULL, isect_reference_f },
+    { "fast", PREC_DOUBLE, true, LAYOUT_SOA_D, NULL, NULL },
+    { "fast", PREC_FLOAT, true, LAYOUT_SOA_F, NULL, NULL },
+    { "fast", PREC_MIXED, true, LAYOUT_SOA_D | LAYOUT_SOA_F, NULL, NULL },
 };
 const int bench_nmethods = (int)(sizeof bench_methods / sizeof bench_methods[0]);
+_Static_assert(sizeof bench_methods / sizeof bench_methods[0] == FAST_M + 1,
+               "a name in bench.h for each method");
