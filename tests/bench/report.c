@@ -43,39 +43,27 @@ static char *pool(void)
     return bufs[next];
 }
 
-static const char *E(double v)            /* an error: 0 or two digits */
+/* v as text: "0", or in format large from limit up, else in small. */
+static const char *num(double v, double limit, const char *small, const char *large)
 {
     char *b = pool();
-    if (v == 0)
-        snprintf(b, 40, "0");
-    else
-        snprintf(b, 40, "%.1e", v);
+    snprintf(b, METHOD_LABEL, v == 0 ? "0" : v >= limit ? large : small, v);
     return b;
+}
+
+static const char *E(double v)            /* an error: 0 or two digits */
+{
+    return num(v, -INFINITY, "%.1e", "%.1e");
 }
 
 static const char *W(double v)            /* wrong answers per million */
 {
-    char *b = pool();
-    if (v == 0)
-        snprintf(b, 40, "0");
-    else if (v < 10)
-        snprintf(b, 40, "%.2g", v);
-    else
-        snprintf(b, 40, "%.0f", v);
-    return b;
+    return num(v, 10, "%.2g", "%.0f");
 }
 
 static const char *P(double fraction)     /* a share as a percentage */
 {
-    char *b = pool();
-    double pct = 100 * fraction;
-    if (fraction == 0)
-        snprintf(b, 40, "0");
-    else if (pct >= 10)
-        snprintf(b, 40, "%.0f%%", pct);
-    else
-        snprintf(b, 40, "%.2g%%", pct);
-    return b;
+    return num(100 * fraction, 10, "%.2g%%", "%.0f%%");
 }
 
 /* Method m's name and precision, sep between them (method_cells). */
