@@ -175,12 +175,12 @@ typedef struct {
     long wrong;                /* hit/miss differs, not ambiguous          */
     long hits;                 /* both hit, not ambiguous: t compared      */
     long over_tol;             /* of those, error above ORACLE_K_T u kappa
-                                  (spheres)                                */
+                                  (reported for the spheres)               */
     long hard_failed;          /* the grader's rule, hard_check5 (triangles) */
     double max_rel, median_rel;
     double max_over_kappa;     /* max of error / (u kappa)                 */
     double max_u_well;         /* max error in u where kappa <= 100
-                                  (triangles)                              */
+                                  (reported for the triangles)             */
 } ErrorStats;
 
 /* Counts one case in e (tests aside): the method's answer (hit, t) against
