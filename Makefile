@@ -76,7 +76,7 @@ $(OUT_ROOT)/%.a:
 	$(Q)rm -f $@ && $(KIT_AR) rcs $@ $^
 
 all: $(BUILD)/kit/libkit.a $(BUILD)/bin/compare $(BUILD)/sub/labs/render \
-     $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render) grader unit-tests $(BUILD)/bin/htmlcheck
+     $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render) grader unit-tests
 # The student kit (no solutions/) lists only what runs there.
 help:
 	@echo "make render  [SUBMISSION=dir] [SCENE=file] [SIZE=WxH] [OUT=file]"
@@ -153,13 +153,11 @@ compare: submission-dir $(SUB_BUILD)/render $(BUILD)/bin/compare $(if $(HAVE_SOL
 	    --edges $(REF_EDGES) -o out/compare/$(SCENE_NAME).png
 
 # ---- the plain build's programs: each links what its own line names --------
-PROGRAMS   = compare pack htmlcheck gentests lookalike linkcheck stagecheck bench
+PROGRAMS   = compare pack gentests lookalike linkcheck stagecheck bench
 $(PROGRAMS:%=$(BUILD)/bin/%): | $(BUILD)/bin/.
 	$(Q)$(CC) $(CFLAGS) $^ -o $@ $(LDLIBS)
 $(BUILD)/bin/compare: $(BUILD)/kit/compare_main.o $(BUILD)/kit/libkit.a
 $(BUILD)/bin/pack: $(BUILD)/tools/pack_main.o $(BUILD)/tools/libtools.a $(BUILD)/kit/libkit.a
-# The report page's checker (tests/suites/report.sh).
-$(BUILD)/bin/htmlcheck: $(BUILD)/tools/htmlcheck_main.o $(BUILD)/tools/libtools.a
 # The oracle's program: the public tests' values (commit them).
 $(BUILD)/bin/gentests: $(BUILD)/oracle/gentests_main.o $(BUILD)/oracle/liboracle.a \
                        $(BUILD)/grader/libgrader.a $(BUILD)/kit/libkit.a

@@ -15,7 +15,7 @@
 # name changed.
 # Sourced by tests/suites/grader.sh, which grades the self-test class once
 # and calls check_class_page on it, and by tests/suites/class_page.sh
-# (regrades and small classes), after tests/lib/checks.sh.
+# (regrades and small classes), after tests/lib/checks.sh and pages.sh.
 tab=$(printf '\t')
 
 # ---- what the results files say, read here -----------------------------------
@@ -256,7 +256,7 @@ check_class_page() {
         check "${f##*/} is readable by its owner alone ($(ls -l "$f" | cut -c1-10))" \
             sh -c "ls -l '$f' | grep -q '^-rw-------'"
     done
-    check_output "the page passes htmlcheck (links included: each to a file beside it)" "$check_html" "$page" ||
+    check_output "the page is safe (links included: each to a file beside it)" page_safe "$page" ||
         sed 's/^/    | /' "$log" | head -n 20
     json_causes "$out"/*.json >"$tmp/causes.want"
     check "the self-test class has causes to count ($(wc -l <"$tmp/causes.want" | tr -d ' ') in all)" \

@@ -2,20 +2,23 @@
 # The class page (OUT/index.html) that grade --all writes, over regrades and
 # small classes: with --previous, the scores that changed and the folders
 # new or gone; a class of one; a class where no one lost points; a class
-# the grader could not grade.  Every page passes htmlcheck.  The page of a
+# the grader could not grade, one of its folders named with markup: that
+# page is compared whole with tests/pages/class.html (times and the folder
+# left out), read once by eye and in a browser.  Every page is safe to open
+# (tests/lib/pages.sh).  The page of a
 # whole class (every self-test submission, hostile names among them) is
 # checked against its results files by tests/lib/class_page.sh, which
 # tests/suites/grader.sh runs on the class it grades.
 set -u
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 grade=${GRADE:-out/build/bin/grade}   # make sanitize-grader: the sanitized one
-check_html=out/build/bin/htmlcheck
 . tests/lib/checks.sh
 . tests/lib/class_page.sh
+. tests/lib/pages.sh
 temp_dir rtclass
 chmod 755 "$tmp"
 
-need_built "$grade" "$check_html"
+need_built "$grade"
 LC_ALL=C
 export LC_ALL
 sed -e 's/^parts .*/parts 1/' -e 's/^\(timeout\) .*/\1 0.25/' tests/weights.conf >"$tmp/p1.conf"
@@ -59,7 +62,7 @@ check_output "with --previous: each score that changed, from what to what, as th
     changes_agree "$tmp/before/gradebook.csv" "$tmp/after/gradebook.csv" "$tmp/after/index.html"
 check "with --previous: the folder renamed is counted new, and the one gone named" \
     sh -c "grep -q ' 1 is new\. 1 graded then is not here now: <code>p1-float</code>' '$tmp/after/index.html'"
-check_output "with --previous: the page passes htmlcheck" "$check_html" "$tmp/after/index.html"
+check_output "with --previous: the page is safe" page_safe "$tmp/after/index.html"
 # A regrade into the previous run's own folder compares with its gradebook
 # as it was before the regrade wrote over it.
 cp -R "$tmp/before" "$tmp/inplace"
@@ -73,14 +76,15 @@ check "with a --previous that holds no gradebook, the page says so and compares 
     grep -q 'could not be read as a gradebook' "$tmp/nowhere-prev/index.html"
 
 # ---- a class of one, and a class with no points lost ----------------------------------------------
-mkdir -p "$tmp/one/only" "$tmp/allfull/a" "$tmp/allfull/b"
+hostile=$(printf 'b <i>"q\047&amp;\001x')
+mkdir -p "$tmp/one/only" "$tmp/allfull/a" "$tmp/allfull/$hostile"
 cp "$selftest/p1-degrees-to-tan/part1_image_plane.c" "$tmp/one/only/"
 cp solutions/part1_image_plane.c "$tmp/allfull/a/"
-cp solutions/part1_image_plane.c "$tmp/allfull/b/"
+cp solutions/part1_image_plane.c "$tmp/allfull/$hostile/"
 chmod -R a+rX "$tmp/one" "$tmp/allfull"
 for c in one allfull; do
     $grade --all "$tmp/$c" --out "$tmp/$c-out" --weights "$tmp/p1.conf" --jobs 2 >"$tmp/$c.out" 2>&1
-    check_output "a class '$c': the page passes htmlcheck" "$check_html" "$tmp/$c-out/index.html"
+    check_output "a class '$c': the page is safe" page_safe "$tmp/$c-out/index.html"
     check "a class '$c': no table without a row under its header" \
         awk '/<table/ { rows = 0 } /<tr>|<tr / { rows++ } /<\/table>/ && rows < 2 { bad = 1 } END { exit bad }' \
         "$tmp/$c-out/index.html"
@@ -116,13 +120,15 @@ check "a cause of the hard cases alone has its sentence: on the page, as the mos
            grep -q '^3a,tangent-miss,\"a tangent ray' '$tmp/hardonly-out/causes.csv'"
 
 # A class the grader could not grade at all (no compiler on PATH): each
-# submission needs a person, with the grader's own message, and the page
-# still passes.
+# submission needs a person, with the grader's own message, its name
+# escaped.
 CC=no-such-cc $grade --all "$tmp/allfull" --out "$tmp/nocc-out" --weights "$tmp/p1.conf" --jobs 2 \
     >"$tmp/nocc.out" 2>&1
 check "a class with grader errors: each submission needs a person, with the grader's message" \
     sh -c "[ \$(grep -c 'data-need=\"grader error\"><td>.*no C compiler: no-such-cc is not on PATH' \
                '$tmp/nocc-out/index.html') -eq 2 ]"
-check_output "a class with grader errors: the page passes htmlcheck" "$check_html" "$tmp/nocc-out/index.html"
+check_output "a class with grader errors: the page is safe" page_safe "$tmp/nocc-out/index.html"
+page_normal "$tmp/nocc-out/index.html" "$tmp" >"$tmp/nocc.html"
+check_output "a class with grader errors: the page is tests/pages/class.html" diff tests/pages/class.html "$tmp/nocc.html"
 
 finish

@@ -9,13 +9,13 @@
 set -u
 root=$(pwd)
 grade=${GRADE:-out/build/bin/grade}   # make sanitize-grader: the sanitized one
-check_html=out/build/bin/htmlcheck
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtselftest.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 chmod 755 "$tmp"
 . tests/lib/checks.sh
 . tests/lib/class_page.sh
 . tests/lib/browser.sh
+. tests/lib/pages.sh
 # The self-test submissions, a folder each.
 selftest=$tmp/selftest
 need_selftests "$selftest"
@@ -283,6 +283,9 @@ check "grade --all ran (exit $status)" [ "$status" -le 1 ]
 check "the gradebook has a column per graded part" \
     grep -q "^submission,part1,part2,part3a,part3b,part4,part5,hard,total,status\$" "$tmp/grades/gradebook.csv"
 check_class_page "$tmp/grades" "$classconf" "$tmp/all.out" "$class"
+check_output "every page of the class is safe to open" page_safe "$tmp/grades"/*.html
+check "the folders named with markup: on every page, only escaped" \
+    sh -c "! grep -l -e '<b>\"q' -e '<i>' '$tmp/grades'/*.html"
 page_renders "$tmp/grades/index.html" "the class page" "$tmp"
 
 hard_failed() {   # hard_failed JSON PART: a test of the part tagged hard has failed
