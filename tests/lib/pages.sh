@@ -10,16 +10,22 @@
 #                       address, an id used twice, or a src or href that is
 #                       not a PNG data: URI, a #id of the page or a file
 #                       beside the page (its %XX read as the byte XX, as a
-#                       browser does): never a scheme: or a // address
+#                       browser does): never a scheme: or a // address; nor
+#                       a style sheet that loads something (url(), @import)
 #   page_normal PAGE TMP    PAGE as tests/pages/ holds it: the folder TMP
-#                       written TMP, times T, and a PNG's base64 "..."
-#                       (page_safe checks that it is a PNG's)
+#                       written TMP, times T, a PNG's base64 "..." (page_safe
+#                       checks that it is a PNG's), and no style sheet (the
+#                       grader's constant, the same on every page)
 page_tags() {
     LC_ALL=C awk 'BEGIN { RS = "<" } NR > 1 { gsub(/\n/, " "); sub(/>.*/, ""); print }' "$1"
 }
 page_safe() {
     for _page in "$@"; do
         [ -s "$_page" ] || { echo "$_page: no such page"; return 1; }
+        if sed -n '/<style>/,/<\/style>/p' "$_page" | grep -qiE 'url\(|@import'; then
+            echo "$_page: the style sheet loads something (url() or @import)"
+            return 1
+        fi
         page_tags "$_page" | LC_ALL=C awk -v page="$_page" -v dir="${_page%/*}" '
         function bad(what) { print page ": " what; n++ }
         function unpercent(s,   out, i) {
@@ -70,5 +76,6 @@ page_safe() {
 }
 page_normal() {
     sed -e "s|$2|TMP|g" -e 's/(graded in [0-9.]* s)/(graded in T s)/' -e 's/"num">[0-9.]* s</"num">T s</' \
-        -e 's/: [0-9.]* s a submission/: T s a submission/' -e 's|;base64,[A-Za-z0-9+/=]*|;base64,...|g' "$1"
+        -e 's/: [0-9.]* s a submission/: T s a submission/' -e 's|;base64,[A-Za-z0-9+/=]*|;base64,...|g' \
+        -e '/^<style>$/,/^<\/style>$/{/^</!d;}' "$1"
 }
