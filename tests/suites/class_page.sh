@@ -3,12 +3,12 @@
 # small classes: with --previous, the scores that changed and the folders
 # new or gone; a class of one; a class where no one lost points; a class
 # the grader could not grade, one of its folders named with markup: that
-# page is compared whole with tests/pages/class.html (times and the folder
-# left out), read once by eye and in a browser.  Every page is safe to open
-# (tests/lib/pages.sh).  The page of a
-# whole class (every self-test submission, hostile names among them) is
-# checked against its results files by tests/lib/class_page.sh, which
-# tests/suites/grader.sh runs on the class it grades.
+# page is compared whole with tests/pages/class.html (times, the folder and
+# the style sheet left out), read once by eye and in a browser.  Every page
+# is safe to open (tests/lib/pages.sh).  The page of a whole class (every
+# self-test submission, hostile names among them) is checked against its
+# results files by tests/lib/class_page.sh, which tests/suites/grader.sh
+# runs on the class it grades.
 set -u
 unset MAKEFLAGS MFLAGS MAKELEVEL MAKEOVERRIDES
 grade=${GRADE:-out/build/bin/grade}   # make sanitize-grader: the sanitized one
@@ -129,6 +129,7 @@ check "a class with grader errors: each submission needs a person, with the grad
                '$tmp/nocc-out/index.html') -eq 2 ]"
 check_output "a class with grader errors: the page is safe" page_safe "$tmp/nocc-out/index.html"
 page_normal "$tmp/nocc-out/index.html" "$tmp" >"$tmp/nocc.html"
-check_output "a class with grader errors: the page is tests/pages/class.html" diff tests/pages/class.html "$tmp/nocc.html"
+check_output "a class with grader errors: the page is tests/pages/class.html" \
+    diff tests/pages/class.html "$tmp/nocc.html"
 
 finish

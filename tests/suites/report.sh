@@ -10,8 +10,9 @@
 #     part that did not build listed by name, once;
 #   - clear about a part that did not build or a render that failed.
 # One page, of a failing case whose code prints markup and of a missing
-# file, is compared whole with tests/pages/report.html (times, the folder
-# and the PNGs' bytes left out), which was read once by eye and in a browser.
+# file, is compared whole with tests/pages/report.html (times, the folder,
+# the style sheet and the PNGs' bytes left out), read once by eye and in a
+# browser.
 # Then: `make grade` writes out/report/index.html and ends with its path; a
 # page that cannot be written changes neither the exit status nor the
 # results file; and, when a headless browser (chromium) is installed, the
