@@ -8,6 +8,7 @@
  */
 #include "../oracle/testgen.h"
 #include "../oracle/oracle.h"
+#include "../oracle/draw.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -22,10 +23,16 @@ static Test *hidden_test(TestList *l, int part, Kind kind, const char *name, con
     return t;
 }
 
-/* A random direction of the given length, uniform on the sphere. */
-static void random_direction(TgRandom *g, double len, double r[3])
+/* Log-uniform in [lo, hi]: exp of a uniform draw between log lo and log hi. */
+static double log_uniform(uint64_t *g, double lo, double hi)
 {
-    double z = tg_uniform(g, -1, 1), phi = tg_uniform(g, 0, 2 * M_PI), s = sqrt(1 - z * z);
+    return exp(draw_uni(g, log(lo), log(hi)));
+}
+
+/* A random direction of the given length, uniform on the sphere. */
+static void random_direction(uint64_t *g, double len, double r[3])
+{
+    double z = draw_uni(g, -1, 1), phi = draw_uni(g, 0, 2 * M_PI), s = sqrt(1 - z * z);
     r[0] = len * s * cos(phi), r[1] = len * s * sin(phi), r[2] = len * z;
 }
 
@@ -48,16 +55,16 @@ static double off_line(const double c[3], const double r[3])
  * from its centre (radius 2 at distance 9.6), and the pairs' directions
  * are at least 0.49 radians apart, so a ray through one pair meets no
  * other. */
-static void color_scene(Test *t, TgRandom *g)
+static void color_scene(Test *t, uint64_t *g)
 {
     t->background[0] = 0.25, t->background[1] = 0.5, t->background[2] = 0.75;
     double cn[4][3], Rn[4], Rf[4], cf[4][3], dn[4], fit[4];
     for (int q = 0; q < 4; q++) {
-        double ux = tg_uniform(g, -0.04, 0.04), uy = tg_uniform(g, -0.04, 0.04);
+        double ux = draw_uni(g, -0.04, 0.04), uy = draw_uni(g, -0.04, 0.04);
         double u[3] = { (q % 2 ? 0.3 : -0.3) + ux, (q / 2 ? 0.3 : -0.3) + uy, -1 };
-        double zn = tg_uniform(g, 5, 9), zf = zn + tg_uniform(g, 4, 10);
-        Rn[q] = tg_uniform(g, 0.4, 0.9);
-        Rf[q] = tg_uniform(g, Rn[q], 2);
+        double zn = draw_uni(g, 5, 9), zf = zn + draw_uni(g, 4, 10);
+        Rn[q] = draw_uni(g, 0.4, 0.9);
+        Rf[q] = draw_uni(g, Rn[q], 2);
         for (int k = 0; k < 3; k++)
             cn[q][k] = zn * u[k], cf[q][k] = zf * u[k];
         dn[q] = sqrt(cn[q][0] * cn[q][0] + cn[q][1] * cn[q][1] + cn[q][2] * cn[q][2]);
@@ -77,7 +84,7 @@ static void color_scene(Test *t, TgRandom *g)
                     (cn[q][0] * cn[q][0] + cn[q][1] * cn[q][1] + cn[q][2] * cn[q][2]);
         double w[3] = { u[0] - cu * cn[q][0], u[1] - cu * cn[q][1], u[2] - cu * cn[q][2] };
         double wl = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
-        double a = tg_uniform(g, 0, fit[q]) * dn[q] / (wl > 0 ? wl : 1);
+        double a = draw_uni(g, 0, fit[q]) * dn[q] / (wl > 0 ? wl : 1);
         for (int i = 0; i < 3; i++)
             r[i] = cn[q][i] + a * w[i];
         tg_color(t, V(0, 0, 0), r);
@@ -85,7 +92,7 @@ static void color_scene(Test *t, TgRandom *g)
     for (int k = 0; k < 12; k++) {                          /* between the spheres */
         double r[3] = { 0, 0, 1 };
         for (int tries = 0; tries < 200; tries++) {
-            double cx = tg_uniform(g, -0.6, 0.6), cy = tg_uniform(g, -0.6, 0.6);
+            double cx = draw_uni(g, -0.6, 0.6), cy = draw_uni(g, -0.6, 0.6);
             double cand[3] = { cx, cy, -1 };
             bool clear = true;
             for (int s = 0; s < t->nspheres && clear; s++)
@@ -96,13 +103,13 @@ static void color_scene(Test *t, TgRandom *g)
             }
         }
         if (r[2] > 0) {                                     /* none found: away from them all */
-            r[0] = tg_uniform(g, -0.6, 0.6);
-            r[1] = tg_uniform(g, -0.6, 0.6);
+            r[0] = draw_uni(g, -0.6, 0.6);
+            r[1] = draw_uni(g, -0.6, 0.6);
         }
         tg_color(t, V(0, 0, 0), r);
     }
     for (int k = 0; k < 32; k++) {                          /* anywhere */
-        double rx = tg_uniform(g, -0.3, 0.3), ry = tg_uniform(g, -0.3, 0.3);
+        double rx = draw_uni(g, -0.3, 0.3), ry = draw_uni(g, -0.3, 0.3);
         double r[3] = { rx, ry, -1 };
         tg_color(t, V(0, 0, 0), r);
     }
@@ -110,7 +117,7 @@ static void color_scene(Test *t, TgRandom *g)
 
 void testgen_hidden(TestList *l, uint64_t seed)
 {
-    TgRandom g = { seed };
+    uint64_t g = seed;
     Test *t;
 
     t = hidden_test(l, PART1, KIND_PLANE, "Part 1: hidden: fixed cases",
@@ -121,40 +128,40 @@ void testgen_hidden(TestList *l, uint64_t seed)
     t = hidden_test(l, PART1, KIND_PLANE, "Part 1: hidden: random fields of view, aspects and distances",
                     "alpha from 1 to 179 degrees, aspect from 0.25 to 4, d from 0.1 to 10");
     for (int k = 0; k < 30; k++) {
-        double d = tg_log_uniform(&g, 0.1, 10), aspect = tg_log_uniform(&g, 0.25, 4);
-        tg_plane(t, tg_uniform(&g, 1, 179), aspect, d);
+        double d = log_uniform(&g, 0.1, 10), aspect = log_uniform(&g, 0.25, 4);
+        tg_plane(t, draw_uni(&g, 1, 179), aspect, d);
     }
 
     t = hidden_test(l, PART2, KIND_PIXEL, "Part 2: hidden: random pixels of random images",
                     "images from 1 x 1 to 4000 x 3000, any pixel");
     for (int k = 0; k < 40; k++) {
-        int nx = tg_int(&g, 1, 4000), ny = tg_int(&g, 1, 3000);
-        double h = tg_log_uniform(&g, 0.01, 100);
-        double d = tg_log_uniform(&g, 0.01, 100);
-        int j = tg_int(&g, 0, ny - 1);
-        tg_pixel(t, tg_int(&g, 0, nx - 1), j, nx, ny, h * nx / ny, h, d);
+        int nx = draw_int(&g, 1, 4000), ny = draw_int(&g, 1, 3000);
+        double h = log_uniform(&g, 0.01, 100);
+        double d = log_uniform(&g, 0.01, 100);
+        int j = draw_int(&g, 0, ny - 1);
+        tg_pixel(t, draw_int(&g, 0, nx - 1), j, nx, ny, h * nx / ny, h, d);
     }
 
     t = hidden_test(l, PART3A, KIND_SPHERE, "Part 3a: hidden: random rays at random spheres",
                     "origins outside the sphere; about half the rays hit, some spheres are behind");
     for (int k = 0; k < 120; k++) {
-        double R = tg_log_uniform(&g, 0.1, 10), D = R * tg_uniform(&g, 1.2, 30);
+        double R = log_uniform(&g, 0.1, 10), D = R * draw_uni(&g, 1.2, 30);
         double dir[3], c[3], e[3];
         for (int q = 0; q < 3; q++)
-            e[q] = tg_uniform(&g, -5, 5);
+            e[q] = draw_uni(&g, -5, 5);
         random_direction(&g, D, c);
         for (int q = 0; q < 3; q++)
             c[q] += e[q];
         /* aim at a point near the sphere: a hit about half the time */
         double aim[3];
-        random_direction(&g, R * tg_uniform(&g, 0, 2), aim);
+        random_direction(&g, R * draw_uni(&g, 0, 2), aim);
         for (int q = 0; q < 3; q++)
             dir[q] = (c[q] + aim[q] - e[q]) * (k % 7 == 0 ? -1 : 1);
         /* |r| from 0.01 to 100, but at most (D - R) / 0.01, so that every
          * hit is at t >= 0.01: hits just ahead of the origin are for the
          * test of rays from just outside (below), and a tmin such as
          * 0.001 must not lose this one by the luck of a seed */
-        double L = fmin(tg_log_uniform(&g, 0.01, 100), (D - R) / 0.01);
+        double L = fmin(log_uniform(&g, 0.01, 100), (D - R) / 0.01);
         double len = L / sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
         for (int q = 0; q < 3; q++)
             dir[q] *= len;
@@ -163,11 +170,11 @@ void testgen_hidden(TestList *l, uint64_t seed)
     t = hidden_test(l, PART3A, KIND_SPHERE, "Part 3a: hidden: random rays from inside spheres",
                     "every ray starts inside: the hit is where it leaves");
     for (int k = 0; k < 40; k++) {
-        double R = tg_log_uniform(&g, 0.1, 100), c[3] = { 1, -2, 3 }, off[3], e[3], dir[3];
-        random_direction(&g, R * tg_uniform(&g, 0, 0.95), off);
+        double R = log_uniform(&g, 0.1, 100), c[3] = { 1, -2, 3 }, off[3], e[3], dir[3];
+        random_direction(&g, R * draw_uni(&g, 0, 0.95), off);
         for (int q = 0; q < 3; q++)
             e[q] = c[q] + off[q];
-        random_direction(&g, tg_log_uniform(&g, 0.1, 10), dir);
+        random_direction(&g, log_uniform(&g, 0.1, 10), dir);
         tg_sphere(t, c, R, e, dir);
     }
 
@@ -175,8 +182,8 @@ void testgen_hidden(TestList *l, uint64_t seed)
                     "each ray starts a hair outside the sphere, hits it at t from 1e-9 to 1e-2 "
                     "(tmin = 0), and a plain hit farther on");
     for (int k = 0; k < 12; k++) {
-        double R = tg_log_uniform(&g, 0.5, 5), c[3] = { -1, 2, -6 }, u[3], e[3], dir[3];
-        double gap = tg_log_uniform(&g, 1e-9, 1e-2);
+        double R = log_uniform(&g, 0.5, 5), c[3] = { -1, 2, -6 }, u[3], e[3], dir[3];
+        double gap = log_uniform(&g, 1e-9, 1e-2);
         random_direction(&g, 1, u);
         for (int q = 0; q < 3; q++) {
             e[q] = c[q] + (R + gap) * u[q];        /* on the line through c, gap outside */
@@ -190,8 +197,8 @@ void testgen_hidden(TestList *l, uint64_t seed)
                     "eyes anywhere, pixels anywhere: origin e, unit direction towards the pixel");
     for (int k = 0; k < 20; k++) {
         double e[3], p[3];
-        random_direction(&g, tg_uniform(&g, 0, 5) * (k % 2), e);
-        random_direction(&g, tg_log_uniform(&g, 0.01, 100), p);
+        random_direction(&g, draw_uni(&g, 0, 5) * (k % 2), e);
+        random_direction(&g, log_uniform(&g, 0.01, 100), p);
         for (int q = 0; q < 3; q++)
             p[q] += e[q];
         tg_camera(t, e, p);
@@ -213,21 +220,21 @@ void testgen_hidden(TestList *l, uint64_t seed)
 
 void testgen_hidden_flat_random(TestList *l, uint64_t seed)
 {
-    TgRandom g = { seed };
+    uint64_t g = seed;
     Test *t = hidden_test(l, PART4, KIND_PLANEHIT, "Part 4: hidden: random rays at random planes",
                           "planes and origins anywhere within 10, any lengths of n and r; about half hit");
     for (int k = 0; k < 60; k++) {
         double p[3], n[3], e[3], r[3], on[3], side[3];
-        random_direction(&g, tg_uniform(&g, 0, 10), p);
-        random_direction(&g, tg_log_uniform(&g, 0.1, 10), n);
-        random_direction(&g, tg_uniform(&g, 0, 10), e);
-        random_direction(&g, tg_uniform(&g, 0, 5), side);
+        random_direction(&g, draw_uni(&g, 0, 10), p);
+        random_direction(&g, log_uniform(&g, 0.1, 10), n);
+        random_direction(&g, draw_uni(&g, 0, 10), e);
+        random_direction(&g, draw_uni(&g, 0, 5), side);
         /* aim at a point of the plane: p + side with side's normal part removed */
         double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
         double sn = (side[0] * n[0] + side[1] * n[1] + side[2] * n[2]) / nn;
         for (int q = 0; q < 3; q++)
             on[q] = p[q] + side[q] - sn * n[q];
-        double len = tg_log_uniform(&g, 0.01, 100), d2 = 0;
+        double len = log_uniform(&g, 0.01, 100), d2 = 0;
         for (int q = 0; q < 3; q++) {
             r[q] = on[q] - e[q];
             d2 += r[q] * r[q];
@@ -241,17 +248,17 @@ void testgen_hidden_flat_random(TestList *l, uint64_t seed)
                     "triangles of every shape and size within 10 of the eye; about half the rays hit");
     for (int k = 0; k < 100; k++) {
         double v[3][3], c[3], e[3], w[3], aim[3], r[3];
-        random_direction(&g, tg_uniform(&g, 0, 10), c);
+        random_direction(&g, draw_uni(&g, 0, 10), c);
         /* the third a tiny one, 1e-5 across and aimed inside (k even, and
          * not a multiple of 9: those rays point away), so that every seed
          * has a hit where |det| is below 1e-8 (an epsilon there loses it) */
-        double size = k == 2 ? 1e-5 : tg_log_uniform(&g, 0.01, 5);
+        double size = k == 2 ? 1e-5 : log_uniform(&g, 0.01, 5);
         for (int i = 0; i < 3; i++) {
-            random_direction(&g, size * tg_uniform(&g, 0.2, 1), v[i]);
+            random_direction(&g, size * draw_uni(&g, 0.2, 1), v[i]);
             for (int q = 0; q < 3; q++)
                 v[i][q] += c[q];
         }
-        random_direction(&g, tg_uniform(&g, 0, 3), e);
+        random_direction(&g, draw_uni(&g, 0, 3), e);
         /* aim at a point with random barycentric weights: inside for
          * even k; for odd k outside, beyond each edge in turn (one weight
          * negative, each other one larger than it is negative), so that
@@ -260,9 +267,9 @@ void testgen_hidden_flat_random(TestList *l, uint64_t seed)
          * tells the miss */
         double sum = 0;
         for (int i = 0; i < 3; i++)
-            sum += w[i] = !(k % 2) ? tg_uniform(&g, 0.02, 1)
-                        : i == (k / 2) % 3 ? -tg_uniform(&g, 0.05, 0.45) : tg_uniform(&g, 0.5, 1);
-        double len = tg_log_uniform(&g, 0.1, 10), d2 = 0;
+            sum += w[i] = !(k % 2) ? draw_uni(&g, 0.02, 1)
+                        : i == (k / 2) % 3 ? -draw_uni(&g, 0.05, 0.45) : draw_uni(&g, 0.5, 1);
+        double len = log_uniform(&g, 0.1, 10), d2 = 0;
         for (int q = 0; q < 3; q++) {
             aim[q] = (w[0] * v[0][q] + w[1] * v[1][q] + w[2] * v[2][q]) / sum;
             r[q] = aim[q] - e[q];

@@ -321,21 +321,3 @@ void tg_hard(TestList *l, uint64_t seed, int rounds, bool hidden)
     }
     free(c4);
 }
-
-/* ---- random numbers ----------------------------------------------------------- */
-
-/* The hard cases' generator (hard.c), on the state TgRandom wraps. */
-double tg_uniform(TgRandom *r, double lo, double hi)
-{
-    return lo + (hi - lo) * hard_rng_uniform(&r->s);
-}
-
-double tg_log_uniform(TgRandom *r, double lo, double hi)
-{
-    return exp(tg_uniform(r, log(lo), log(hi)));
-}
-
-int tg_int(TgRandom *r, int lo, int hi)
-{
-    return lo + (int)(hard_rng_next(&r->s) % (uint64_t)(hi - lo + 1));
-}

@@ -76,10 +76,4 @@ void testgen_hidden_flat(TestList *list, uint64_t seed);
 /* Its random tests alone, without the hard cases (tests/unit/test_hidden.c). */
 void testgen_hidden_flat_random(TestList *list, uint64_t seed);
 
-/* A small deterministic random number generator (splitmix64). */
-typedef struct { uint64_t s; } TgRandom;
-double tg_uniform(TgRandom *r, double lo, double hi);
-double tg_log_uniform(TgRandom *r, double lo, double hi);
-int tg_int(TgRandom *r, int lo, int hi);              /* lo .. hi inclusive */
-
 #endif
