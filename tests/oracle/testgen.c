@@ -233,6 +233,26 @@ Test *tg_family_test(TestList *l, int first, int part, Kind kind, const char *fa
     return tg_hard_test(l, part, kind, family, hidden);
 }
 
+#define V(x, y, z) ((const double[3]){ x, y, z })
+
+void tg_add_plain_hits(TestList *l, int first)
+{
+    for (int k = first; k < l->n; k++) {
+        Test *t = &l->tests[k];
+        bool certain_hit = false;
+        for (int c = 0; c < t->ncases; c++)
+            certain_hit = certain_hit || (t->cases[c].want[0] == 1 && !(t->cases[c].flags & CASE_EITHER_HIT));
+        if (certain_hit)
+            continue;
+        if (t->kind == KIND_SPHERE)
+            tg_sphere(t, V(0, 0, -8), 2, V(0, 0, 0), V(0.06, 0.08, -1));
+        else if (t->kind == KIND_PLANEHIT)
+            tg_planehit(t, V(0, -1, 0), V(0, 1, 0), V(0, 0, 0), V(0.25, -0.5, -1));
+        else if (t->kind == KIND_TRIANGLE)
+            tg_triangle(t, V(-1, -1, -4), V(1, -1, -4), V(0, 1, -4), V(0, 0, 0), V(0.1, 0.05, -1));
+    }
+}
+
 /* Parts 1 and 2's cases cost nothing to run: a round holds four of each
  * family, so that no family is passed by the luck of one case (a square
  * image for i and j swapped, a middle row for rows counted from the
@@ -271,17 +291,7 @@ void tg_hard(TestList *l, uint64_t seed, int rounds, bool hidden)
         tg_sphere(tg_family_test(l, first, PART3A, KIND_SPHERE, c3[k].family, hidden), c, sp->radius, e, d);
     }
     free(c3);
-    /* A family of misses (spheres behind, grazing rays) would give the
-     * always-miss skeleton points: add a plain hit to any test without one. */
-    for (int k = first; k < l->n; k++) {
-        Test *t = &l->tests[k];
-        bool certain_hit = false;
-        for (int c = 0; c < t->ncases; c++)
-            certain_hit = certain_hit || (t->cases[c].want[0] == 1 && !(t->cases[c].flags & CASE_EITHER_HIT));
-        if (t->part == PART3A && !certain_hit)
-            tg_sphere(t, (const double[3]){ 0, 0, -8 }, 2, (const double[3]){ 0, 0, 0 },
-                      (const double[3]){ 0.06, 0.08, -1 });
-    }
+    tg_add_plain_hits(l, first);
 
     /* Part 3b: the camera rays in one test; each colour case has its own
      * scene, so its own test.  Two scenes a round, the family's two

@@ -41,6 +41,11 @@ void tg_hard(TestList *list, uint64_t seed, int rounds, bool hidden);
 Test *tg_hard_test(TestList *list, int part, Kind kind, const char *family, bool hidden);
 Test *tg_family_test(TestList *list, int first, int part, Kind kind, const char *family, bool hidden);
 
+/* A family of misses alone (spheres behind, grazing rays) would give the
+ * always-miss skeleton points: adds a plain hit to every hit test from
+ * index first on that has no case whose certain answer is a hit. */
+void tg_add_plain_hits(TestList *list, int first);
+
 /* Adds a known mistake's output as a hint to c (Parts 4 and 5, whose
  * tests name a mistake when it alone explains every answer), unless it is
  * the right answer anyway.  Another hint with the same output is kept

@@ -19,23 +19,6 @@
 
 #define CORE_REL 1e-9
 
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void sub3(const double a[3], const double b[3], double out[3])
-{
-    for (int k = 0; k < 3; k++)
-        out[k] = a[k] - b[k];
-}
-
-static void cross3(const double a[3], const double b[3], double out[3])
-{
-    double x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
-    out[0] = x, out[1] = y, out[2] = z;
-}
-
 static Vec3 v3(const double a[3])
 {
     return vec3(a[0], a[1], a[2]);
@@ -74,14 +57,11 @@ static bool positive(double t)
     return t > 0 && t < INFINITY;
 }
 
-static void plane_hints(Case *c, const double p[3], const double n[3], const double e[3], const double r[3])
+static void plane_hints(Case *c, const Plane *pl, const Ray *ray)
 {
-    double pe[3], ep[3], ne[3];
-    sub3(p, e, pe);
-    sub3(e, p, ep);
-    sub3(n, e, ne);
-    double rn = dot3(r, n), t = dot3(pe, n) / rn;
-    double len_n = sqrt(dot3(n, n)), len_r = sqrt(dot3(r, r));
+    Vec3 p = pl->point, n = pl->normal, e = ray->origin, r = ray->direction;
+    double rn = vec3_dot(r, n), t = vec3_dot(vec3_sub(p, e), n) / rn;
+    double len_n = vec3_length(n), len_r = vec3_length(r);
     bool right = positive(t);
 
     if (rn != 0 && t >= 1e-300 && t < 1e-3)
@@ -113,9 +93,9 @@ static void plane_hints(Case *c, const double p[3], const double n[3], const dou
     if (right && fabs(rn) < 1e-6)
         hint_hit(c, "a hit was missed where r.n is small (short r or n, or a grazing ray): no epsilon on "
                     "r.n (such as 1e-6), compare it with 0", false, 0);
-    double ts = dot3(ep, n) / rn;
+    double ts = vec3_dot(vec3_sub(e, p), n) / rn;
     hint_hit(c, "the sign: t = (p - e).n / (r.n), so that e + t r is on the plane", positive(ts), ts);
-    double tw = dot3(ne, p) / dot3(r, p);
+    double tw = vec3_dot(vec3_sub(n, e), p) / vec3_dot(r, p);
     hint_hit(c, "the point p and the normal n are swapped: t = (p - e).n / (r.n)", positive(tw), tw);
     if (right && len_n != 1)
         hint_hit(c, "t is off by the factor |n|: use the same n above and below the fraction line",
@@ -136,7 +116,7 @@ void tg_planehit(Test *t, const double p[3], const double n[3], const double e[3
     Ray ray = { v3(e), v3(r) };
     OracleFlat o = oracle_plane(&pl, &ray);
     expect(t, c, &o);
-    plane_hints(c, p, n, e, r);
+    plane_hints(c, &pl, &ray);
 }
 
 /* ---- Part 5 ----------------------------------------------------------------- */
@@ -157,18 +137,12 @@ enum {
     MT_STRICT_BEHIND = 1024, /* MT_STRICT where det < 0 alone        */
 };
 
-static bool mt(const double a[3], const double b[3], const double cc[3], const double e[3],
-               const double r[3], unsigned flags, double *t)
+static bool mt(const Triangle *tr, const Ray *ray, unsigned flags, double *t)
 {
-    double e1[3], e2[3], s[3], q[3], sx[3];
-    sub3(b, a, e1);
-    sub3(cc, a, e2);
-    if (flags & MT_S_SIGN)
-        sub3(a, e, s);
-    else
-        sub3(e, a, s);
-    cross3(r, e2, q);
-    double det = dot3(e1, q);
+    Vec3 e1 = vec3_sub(tr->b, tr->a), e2 = vec3_sub(tr->c, tr->a);
+    Vec3 s = flags & MT_S_SIGN ? vec3_sub(tr->a, ray->origin) : vec3_sub(ray->origin, tr->a);
+    Vec3 q = vec3_cross(ray->direction, e2);
+    double det = vec3_dot(e1, q);
     if (!(flags & MT_NO_DET) && det == 0)
         return false;
     if ((flags & MT_CULL) && det < 0)
@@ -176,13 +150,10 @@ static bool mt(const double a[3], const double b[3], const double cc[3], const d
     if ((flags & MT_EPS) && fabs(det) < 1e-8)
         return false;
     double inv = 1 / det;
-    double beta = dot3(s, q) * inv;
-    if (flags & MT_GAMMA_SIGN)
-        cross3(e1, s, sx);
-    else
-        cross3(s, e1, sx);
-    double gamma = dot3(r, sx) * inv;
-    *t = dot3(e2, sx) * inv;
+    double beta = vec3_dot(s, q) * inv;
+    Vec3 sx = flags & MT_GAMMA_SIGN ? vec3_cross(e1, s) : vec3_cross(s, e1);
+    double gamma = vec3_dot(ray->direction, sx) * inv;
+    *t = vec3_dot(e2, sx) * inv;
     if ((flags & MT_STRICT) || ((flags & MT_STRICT_BEHIND) && det < 0)) {
         if (!(beta > 0 && gamma > 0 && beta + gamma < 1))
             return false;
@@ -200,8 +171,7 @@ static bool mt(const double a[3], const double b[3], const double cc[3], const d
     return *t > 0 && *t < INFINITY;
 }
 
-static void triangle_hints(Case *c, const double a[3], const double b[3], const double cc[3],
-                           const double e[3], const double r[3], const OracleFlat *o)
+static void triangle_hints(Case *c, const Triangle *tr, const Ray *ray, const OracleFlat *o)
 {
     static const struct {
         unsigned flags;
@@ -221,13 +191,13 @@ static void triangle_hints(Case *c, const double a[3], const double b[3], const 
     };
     for (size_t k = 0; k < sizeof mistakes / sizeof mistakes[0]; k++) {
         double t = 0;
-        bool hit = mt(a, b, cc, e, r, mistakes[k].flags, &t);
+        bool hit = mt(tr, ray, mistakes[k].flags, &t);
         /* A hint needs a different answer from a clear case: near an edge
          * rounding alone may flip the right formula's answer. */
         if (!o->ambiguous)
             hint_hit(c, mistakes[k].text, hit, t);
     }
-    double len_r = sqrt(dot3(r, r));
+    double len_r = vec3_length(ray->direction);
     if (o->hit && len_r != 1)
         hint_hit(c, "t is the ray parameter, not a distance: do not normalise r (t scales as 1 / |r|)",
                  true, o->t * len_r);
@@ -246,7 +216,7 @@ void tg_triangle(Test *t, const double a[3], const double b[3], const double cc[
     Ray ray = { v3(e), v3(r) };
     OracleFlat o = oracle_triangle(&tr, &ray);
     expect(t, c, &o);
-    triangle_hints(c, a, b, cc, e, r, &o);
+    triangle_hints(c, &tr, &ray, &o);
 }
 
 void tg_mesh_ray(Test *t, const double e[3], const double r[3])
@@ -276,16 +246,6 @@ static void put3(double out[3], Vec3 v)
     out[0] = v.x, out[1] = v.y, out[2] = v.z;
 }
 
-/* Whether test t has a case whose certain answer is a hit: a family of
- * misses alone would give the always-miss skeleton points. */
-static bool has_certain_hit(const Test *t)
-{
-    for (int c = 0; c < t->ncases; c++)
-        if (t->cases[c].want[0] == 1 && !(t->cases[c].flags & CASE_EITHER_HIT))
-            return true;
-    return false;
-}
-
 /* Part 4's test of one family of rounding, made core: the lecture's
  * formula in double meets every one of them (the handout's table), so
  * they are no challenge, but a test of its own care (no epsilon on r.n,
@@ -293,13 +253,12 @@ static bool has_certain_hit(const Test *t)
  * part's core tests: they are not the part's main question. */
 static Test *part4_rounding_test(TestList *l, int first, const char *family, bool hidden)
 {
-    for (int k = first; k < l->n; k++)
-        if (l->tests[k].part == PART4 && strstr(l->tests[k].name, family))
-            return &l->tests[k];
-    char name[128];
-    snprintf(name, sizeof name, "Part 4: %srounding: %s", hidden ? "hidden: " : "", family);
-    Test *t = testlist_add(l, PART4, KIND_PLANEHIT, name);
-    t->hidden = hidden;
+    int made = l->n;
+    Test *t = tg_family_test(l, first, PART4, KIND_PLANEHIT, family, hidden);
+    if (l->n == made)
+        return t;
+    snprintf(t->name, sizeof t->name, "Part 4: %srounding: %s", hidden ? "hidden: " : "", family);
+    t->hard = false;
     t->weight = 2.0 / HARD_PART4_FAMILIES;
     snprintf(t->note, sizeof t->note, "%s",
              "where rounding is large: the lecture's formula in double, with no epsilon, meets it");
@@ -335,18 +294,7 @@ void tg_hard_flat(TestList *l, uint64_t seed, int rounds, bool hidden)
         tg_triangle(tg_family_test(l, first, PART5, KIND_TRIANGLE, c5[k].family, hidden), a, b, cc, e, r);
     }
     free(c5);
-    for (int k = first; k < l->n; k++) {
-        Test *t = &l->tests[k];
-        if (has_certain_hit(t))
-            continue;
-        if (t->part == PART4)
-            tg_planehit(t, (const double[3]){ 0, -1, 0 }, (const double[3]){ 0, 1, 0 },
-                        (const double[3]){ 0, 0, 0 }, (const double[3]){ 0.25, -0.5, -1 });
-        else
-            tg_triangle(t, (const double[3]){ -1, -1, -4 }, (const double[3]){ 1, -1, -4 },
-                        (const double[3]){ 0, 1, -4 }, (const double[3]){ 0, 0, 0 },
-                        (const double[3]){ 0.1, 0.05, -1 });
-    }
+    tg_add_plain_hits(l, first);
 
     /* Closed meshes: one test per mesh family, its mesh's rays as cases
      * (a test holds one mesh, so each round's mesh is a test of its own,
