@@ -371,6 +371,23 @@ double oracle_sphere_t_tolerance(const Sphere *sphere, const Ray *ray, const Ora
     return sphere_tolerance(&S, hit->t);
 }
 
+/* The t values an ambiguous case allows besides the oracle's own, in this
+ * order: either root >= 0, 0 from an origin within rounding of the
+ * surface, the closest point at the silhouette.  Returns how many. */
+static int other_candidates(const SphereSolution *S, double cand[4])
+{
+    int n = 0;
+    if (S->real_roots)
+        for (int k = 0; k < 2; k++)
+            if (S->root[k] >= 0)
+                cand[n++] = S->root[k];
+    if (S->surface)
+        cand[n++] = 0;
+    if (S->silhouette && S->t_closest > 0)
+        cand[n++] = S->t_closest;
+    return n;
+}
+
 static bool near_root(const SphereSolution *S, double root, double t)
 {
     return fabs(t - root) <= sphere_tolerance(S, root);
@@ -390,13 +407,27 @@ bool oracle_sphere_accepts(const Sphere *sphere, const Ray *ray, bool hit, doubl
         return false;
     if (S.overflow)
         return near_root(&S, DBL_MAX, t);
-    if (S.real_roots)
-        for (int k = 0; k < 2; k++)
-            if (S.root[k] >= 0 && near_root(&S, S.root[k], t))
-                return true;
-    if (S.surface && near_root(&S, 0, t))
-        return true;
-    return S.silhouette && S.t_closest > 0 && near_root(&S, S.t_closest, t);
+    double cand[4];
+    int n = other_candidates(&S, cand);
+    for (int k = 0; k < n; k++)
+        if (near_root(&S, cand[k], t))
+            return true;
+    return false;
+}
+
+/* Grows [*lo, *hi] by every window [clo[k], chi[k]] not yet used that
+ * reaches it, until none does, marking those used. */
+static void grow_window(int n, const double clo[], const double chi[], bool used[], double *lo, double *hi)
+{
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (int k = 0; k < n; k++)
+            if (!used[k] && clo[k] <= *hi && chi[k] >= *lo) {
+                *lo = fmin(*lo, clo[k]);
+                *hi = fmax(*hi, chi[k]);
+                used[k] = grew = true;
+            }
+    }
 }
 
 bool oracle_sphere_other_hits(const Sphere *sphere, const Ray *ray, const OracleHit *hit,
@@ -409,17 +440,8 @@ bool oracle_sphere_other_hits(const Sphere *sphere, const Ray *ray, const Oracle
     *hi = -INFINITY;
     if (!S.ambiguous || S.nr == 0 || S.overflow || !isfinite(hit->t))
         return false;
-    double clo[4], chi[4];
-    int n = 0;
-    double cand[4];
-    if (S.real_roots)
-        for (int k = 0; k < 2; k++)
-            if (S.root[k] >= 0)
-                cand[n++] = S.root[k];
-    if (S.surface)
-        cand[n++] = 0;
-    if (S.silhouette && S.t_closest > 0)
-        cand[n++] = S.t_closest;
+    double clo[4] = { 0 }, chi[4] = { 0 }, cand[4];
+    int n = other_candidates(&S, cand);
     for (int k = 0; k < n; k++) {
         double ct = sphere_tolerance(&S, cand[k]);
         clo[k] = cand[k] - ct;
@@ -429,15 +451,7 @@ bool oracle_sphere_other_hits(const Sphere *sphere, const Ray *ray, const Oracle
      * does; what is left apart, the nearest first, gives [lo, hi]. */
     double wlo = hit->t - tol, whi = hit->t + tol;
     bool used[4] = { false };
-    for (bool grew = true; grew;) {
-        grew = false;
-        for (int k = 0; k < n; k++)
-            if (!used[k] && clo[k] <= whi && chi[k] >= wlo) {
-                wlo = fmin(wlo, clo[k]);
-                whi = fmax(whi, chi[k]);
-                used[k] = grew = true;
-            }
-    }
+    grow_window(n, clo, chi, used, &wlo, &whi);
     *near_tol = fmax(hit->t - wlo, whi - hit->t);
     int best = -1;
     for (int k = 0; k < n; k++)
@@ -447,15 +461,7 @@ bool oracle_sphere_other_hits(const Sphere *sphere, const Ray *ray, const Oracle
         return false;
     *lo = clo[best];
     *hi = chi[best];
-    for (bool grew = true; grew;) {       /* and the windows that reach that one */
-        grew = false;
-        for (int k = 0; k < n; k++)
-            if (!used[k] && clo[k] <= *hi && chi[k] >= *lo) {
-                *lo = fmin(*lo, clo[k]);
-                *hi = fmax(*hi, chi[k]);
-                used[k] = grew = true;
-            }
-    }
+    grow_window(n, clo, chi, used, lo, hi);       /* and the windows that reach that one */
     return true;
 }
 
@@ -488,16 +494,8 @@ static void hit_interval(const SphereSolution *S, double *lo, double *hi)
     int n = 0;
     if (S->hit)
         cand[n++] = S->t;
-    if (S->ambiguous) {
-        if (S->real_roots)
-            for (int k = 0; k < 2; k++)
-                if (S->root[k] >= 0)
-                    cand[n++] = S->root[k];
-        if (S->surface)
-            cand[n++] = 0;
-        if (S->silhouette && S->t_closest > 0)
-            cand[n++] = S->t_closest;
-    }
+    if (S->ambiguous)
+        n += other_candidates(S, cand + n);
     for (int k = 0; k < n; k++) {
         double tol = sphere_tolerance(S, cand[k]);
         *lo = fmin(*lo, cand[k] - tol);
