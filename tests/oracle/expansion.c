@@ -1,7 +1,7 @@
 /*
  * expansion.c - the exact arithmetic of expansion.h.
  *
- * Two error-free transformations do all the work: two-sum (Knuth), whose
+ * Two error-free transformations do all the work: two-sum (Knuth, dd.h), whose
  * a + b = x + y holds exactly for any doubles, and two-product with fma,
  * a b = x + y exactly unless x under- or overflows.  A sum of expansions
  * merges their components by size and runs one two-sum over them
@@ -15,14 +15,6 @@
 #include <string.h>
 
 #define EXP_TINY 0x1p-960          /* a product below this may lose its error term */
-
-/* x + y = a + b exactly, x = fl(a + b). */
-static void two_sum(double a, double b, double *x, double *y)
-{
-    double s = a + b, bb = s - a;
-    *x = s;
-    *y = (a - (s - bb)) + (b - bb);
-}
 
 /* x + y = a b exactly, x = fl(a b); false when that may not hold. */
 static bool two_prod(double a, double b, double *x, double *y)
@@ -66,12 +58,11 @@ void exp_from(Expansion *x, double a)
 
 void exp_diff(Expansion *x, double a, double b)
 {
-    double s, err;
-    two_sum(a, -b, &s, &err);
+    dd s = dd_two_diff(a, b);
     x->n = 0;
-    x->lost = !isfinite(s);
-    push(x, err);
-    push(x, s);
+    x->lost = !isfinite(s.hi);
+    push(x, s.lo);
+    push(x, s.hi);
 }
 
 void exp_add(Expansion *h, const Expansion *e, const Expansion *f)
@@ -92,10 +83,9 @@ void exp_add(Expansion *h, const Expansion *e, const Expansion *f)
     if (n > 0) {
         double q = g[0];
         for (int k = 1; k < n; k++) {
-            double s, err;
-            two_sum(q, g[k], &s, &err);
-            out.lost |= !push(&out, err);
-            q = s;
+            dd s = dd_two_sum(q, g[k]);
+            out.lost |= !push(&out, s.lo);
+            q = s.hi;
         }
         out.lost |= !push(&out, q) || !isfinite(q);
     }
@@ -122,12 +112,13 @@ void exp_scale(Expansion *h, const Expansion *e, double b)
         out.lost |= !two_prod(e->e[0], b, &q, &low);
         out.lost |= !push(&out, low);
         for (int k = 1; k < e->n; k++) {
-            double p1, p0, s, err;
+            double p1, p0;
             out.lost |= !two_prod(e->e[k], b, &p1, &p0);
-            two_sum(q, p0, &s, &err);
-            out.lost |= !push(&out, err);
-            two_sum(p1, s, &q, &err);      /* |p1| >= |s|: a fast two-sum would do */
-            out.lost |= !push(&out, err);
+            dd s = dd_two_sum(q, p0);
+            out.lost |= !push(&out, s.lo);
+            s = dd_two_sum(p1, s.hi);      /* |p1| >= |s|: a fast two-sum would do */
+            q = s.hi;
+            out.lost |= !push(&out, s.lo);
         }
         out.lost |= !push(&out, q) || !isfinite(q);
     }
