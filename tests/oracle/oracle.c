@@ -126,47 +126,6 @@ static bool exact_dot(const double *a, const double *b, double *out)
         && exact_add(p[0] + p[1], p[2], out);
 }
 
-static bool tangent_exact_for(const double f[3], double R, const double r[3])
-{
-    double A, B, ff, R2, C, BB, AC, b, br, l[3], ll;
-    if (!exact_dot(r, r, &A) || !exact_dot(f, r, &B) || !exact_dot(f, f, &ff) || !exact_mul(R, R, &R2)
-        || !exact_add(ff, -R2, &C) || !exact_mul(B, B, &BB) || !exact_mul(A, C, &AC) || BB != AC
-        || !exact_div(B, A, &b))
-        return false;
-    for (int k = 0; k < 3; k++)
-        if (!exact_mul(b, r[k], &br) || !exact_add(f[k], -br, &l[k]))
-            return false;
-    return exact_dot(l, l, &ll) && ll == R2;
-}
-
-/* exact_for(f, R, r) holds for f = e - c (itself exact), for the ray's r and
- * for the normalize-first variant's r/|r| (|r| and r/|r| exact too). */
-static bool exact_both_ways(const Sphere *sp, const Ray *ray,
-                            bool (*exact_for)(const double *f, double R, const double *r))
-{
-    double e[3] = { ray->origin.x, ray->origin.y, ray->origin.z };
-    double c[3] = { sp->center.x, sp->center.y, sp->center.z };
-    double r[3] = { ray->direction.x, ray->direction.y, ray->direction.z };
-    double f[3], A, n, unit[3];
-    for (int k = 0; k < 3; k++)
-        if (!exact_add(e[k], -c[k], &f[k]))
-            return false;
-    if (!exact_for(f, sp->radius, r) || !exact_dot(r, r, &A))
-        return false;
-    n = sqrt(A);
-    if (fma(n, n, -A) != 0)
-        return false;
-    for (int k = 0; k < 3; k++)
-        if (!exact_div(r[k], n, &unit[k]))
-            return false;
-    return exact_for(f, sp->radius, unit);
-}
-
-static bool tangent_is_exact(const Sphere *sp, const Ray *ray)
-{
-    return exact_both_ways(sp, ray, tangent_exact_for);
-}
-
 /*
  * An origin exactly on the surface that no usual method can get wrong: f,
  * f.f, R^2 and C = f.f - R^2 = 0 are doubles without rounding, and so are
@@ -178,25 +137,47 @@ static bool tangent_is_exact(const Sphere *sp, const Ray *ray)
  * c = (0, 0, -1), R = 1, r = (0, 0, -1), are of this kind; an origin on the
  * surface where |l| is irrational (sqrt 13) is not, and stays ambiguous.
  */
-static bool surface_exact_for(const double f[3], double R, const double r[3])
+static bool exact_for(const double f[3], double R, const double r[3], bool surface)
 {
-    double A, B, ff, R2, C, BB, d2, b, br, l[3], ll, nl, lo, hi, disc;
+    double A, B, ff, R2, C, BB, AC, d2, b, br, l[3], ll, nl, lo, hi, disc;
     if (!exact_dot(r, r, &A) || !exact_dot(f, r, &B) || !exact_dot(f, f, &ff) || !exact_mul(R, R, &R2)
-        || !exact_add(ff, -R2, &C) || C != 0 || !exact_mul(B, B, &BB) || !exact_add(ff, -BB, &d2)
-        || !exact_div(B, A, &b))
+        || !exact_add(ff, -R2, &C) || !exact_mul(B, B, &BB) || !exact_div(B, A, &b))
+        return false;
+    if (surface ? C != 0 || !exact_add(ff, -BB, &d2) : !exact_mul(A, C, &AC) || BB != AC)
         return false;
     for (int k = 0; k < 3; k++)
         if (!exact_mul(b, r[k], &br) || !exact_add(f[k], -br, &l[k]))
             return false;
     if (!exact_dot(l, l, &ll))
         return false;
+    if (!surface)
+        return ll == R2;
     nl = sqrt(ll);
     return fma(nl, nl, -ll) == 0 && exact_add(R, -nl, &lo) && exact_add(R, nl, &hi) && exact_mul(lo, hi, &disc);
 }
 
-static bool surface_is_exact(const Sphere *sp, const Ray *ray)
+/* An exact tangent (surface false) or an origin exactly on the surface
+ * (true), as above: exact_for holds for f = e - c (itself exact), for the
+ * ray's r and for the normalize-first variant's r/|r| (|r| and r/|r| exact
+ * too). */
+static bool exact_both_ways(const Sphere *sp, const Ray *ray, bool surface)
 {
-    return exact_both_ways(sp, ray, surface_exact_for);
+    double e[3] = { ray->origin.x, ray->origin.y, ray->origin.z };
+    double c[3] = { sp->center.x, sp->center.y, sp->center.z };
+    double r[3] = { ray->direction.x, ray->direction.y, ray->direction.z };
+    double f[3], A, n, unit[3];
+    for (int k = 0; k < 3; k++)
+        if (!exact_add(e[k], -c[k], &f[k]))
+            return false;
+    if (!exact_for(f, sp->radius, r, surface) || !exact_dot(r, r, &A))
+        return false;
+    n = sqrt(A);
+    if (fma(n, n, -A) != 0)
+        return false;
+    for (int k = 0; k < 3; k++)
+        if (!exact_div(r[k], n, &unit[k]))
+            return false;
+    return exact_for(f, sp->radius, unit, surface);
 }
 
 /* Everything oracle_sphere knows about one sphere and ray. */
@@ -287,8 +268,9 @@ static void solve_sphere(const Sphere *sp, const Ray *ray, SphereSolution *S)
     double lnorm = sqrt(ll.hi);
     double gap = lnorm + R > 0 ? -dd_to_double(disc) / (lnorm + R) : 0;
     S->silhouette = fabs(gap) <= ORACLE_K_SILHOUETTE * U * (S->nf + R) && t_closest > 0
-                    && !tangent_is_exact(sp, ray);
-    S->surface = fabs(dd_to_double(C)) <= ORACLE_K_SURFACE * U * (ff.hi + R2.hi) && !surface_is_exact(sp, ray);
+                    && !exact_both_ways(sp, ray, false);
+    S->surface = fabs(dd_to_double(C)) <= ORACLE_K_SURFACE * U * (ff.hi + R2.hi)
+                 && !exact_both_ways(sp, ray, true);
 
     double s = 0;
     dd t_hit = dd_from(0);
