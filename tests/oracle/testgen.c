@@ -1,12 +1,12 @@
 /*
  * testgen.c - the public tests and the building blocks of every test.
  *
- * Expected values come from the oracle (double-double, oracle.c); hints are
- * what a known mistake computes from the same inputs, written here in plain
- * double as a student would write them.  Tolerances: core tests accept any
- * correct double formula (relative 1e-9, or the oracle's conditioning bound
- * for t when that is larger); hard tests accept a few units of roundoff
- * times the problem's condition number (see oracle.h).
+ * Expected values come from the oracle (double-double, oracle.c); the
+ * hints of known mistakes (Parts 4 and 5) are in testgen_flat.c.
+ * Tolerances: core tests accept any correct double formula (relative 1e-9,
+ * or the oracle's conditioning bound for t when that is larger); hard tests
+ * accept a few units of roundoff times the problem's condition number (see
+ * oracle.h).
  */
 #include "testgen.h"
 #include "oracle.h"
@@ -21,32 +21,6 @@
 #define U ORACLE_U
 #define CORE_REL 1e-9           /* core tests: relative tolerance */
 
-/* Adds a known mistake's output, unless it is the right answer anyway
- * (d missing when d = 1, say) or another hint already has it. */
-void tg_add_hint_as(Case *c, const char *text, const double *out, int n, bool unique_output)
-{
-    if (c->nhints == CASE_MAX_HINTS)
-        return;
-    bool same = true;
-    for (int k = 0; k < n; k++)
-        same = same && fabs(out[k] - c->want[k]) <= 1e-6 * fabs(c->want[k]) + c->tol[k];
-    for (int h = 0; h < c->nhints && !same; h++) {
-        bool dup = unique_output || strcmp(c->hints[h].text, text) == 0;
-        for (int k = 0; k < n; k++)
-            dup = dup && out[k] == c->hints[h].out[k];
-        same = dup;
-    }
-    if (same)
-        return;
-    Hint *h = case_add_hint(c);
-    if (strlen(text) >= sizeof h->text) {      /* a hint cut short would mislead */
-        fprintf(stderr, "testgen: a hint longer than %zu bytes: %s\n", sizeof h->text - 1, text);
-        abort();
-    }
-    snprintf(h->text, sizeof h->text, "%s", text);
-    memcpy(h->out, out, (size_t)n * sizeof *out);
-}
-
 /* ---- Part 1 ---------------------------------------------------------------- */
 
 void tg_plane(Test *t, double fov, double aspect, double d)
@@ -57,7 +31,6 @@ void tg_plane(Test *t, double fov, double aspect, double d)
     double rel = t->hard ? HARD_PART1_REL_TOL : CORE_REL;
     c->tol[0] = rel * fabs(c->want[0]);
     c->tol[1] = rel * fabs(c->want[1]);
-
 }
 
 /* ---- Part 2 ---------------------------------------------------------------- */
@@ -77,7 +50,6 @@ void tg_pixel(Test *t, int i, int j, int nx, int ny, double w, double h, double 
      * takes x and y, so that a pixel unprojected through the inverse of a
      * projection matrix (gluUnProject), -d within an ulp, is right. */
     c->tol[2] = t->hard ? 0 : CORE_REL * fabs(d);
-
 }
 
 /* ---- Part 3a ---------------------------------------------------------------- */
@@ -109,7 +81,6 @@ void tg_sphere(Test *t, const double c3[3], double R, const double e[3], const d
         }
         c->tol[1] = fmax(c->tol[1], near_tol);
     }
-
 }
 
 /* ---- Part 3b ---------------------------------------------------------------- */
@@ -124,7 +95,6 @@ void tg_camera(Test *t, const double eye[3], const double pixel[3])
     memcpy(c->want, want, sizeof want);
     for (int k = 3; k < 6; k++)
         c->tol[k] = t->hard ? HARD_PART3B_DIR_TOL_U * U : CORE_REL;
-
 }
 
 static void colour_of(const Test *t, int k, double out[3])

@@ -46,12 +46,6 @@ Test *tg_family_test(TestList *list, int first, int part, Kind kind, const char 
  * index first on that has no case whose certain answer is a hit. */
 void tg_add_plain_hits(TestList *list, int first);
 
-/* Adds a known mistake's output as a hint to c (Parts 4 and 5, whose
- * tests name a mistake when it alone explains every answer), unless it is
- * the right answer anyway.  Another hint with the same output is kept
- * unless unique_output is true: each mistake needs all its outputs. */
-void tg_add_hint_as(Case *c, const char *text, const double *out, int n, bool unique_output);
-
 /* ---- Parts 4 and 5 (testgen_flat.c) ---- */
 
 /* One case of plane_intersect (p, n, e, r), of triangle_intersect

@@ -39,11 +39,30 @@ static void expect(Test *t, Case *c, const OracleFlat *o)
     }
 }
 
-/* A mistake's answer (hit, t) as a hint. */
+/* A mistake's answer (hit, t) as a hint, unless it is the right answer
+ * anyway or a hint with the same text already has it.  Another mistake's
+ * hint with the same output is kept: check.c names a mistake when it alone
+ * explains every answer, so each mistake needs all its outputs. */
 static void hint_hit(Case *c, const char *text, bool hit, double t)
 {
-    double v[2] = { hit ? 1 : 0, hit ? t : 0 };
-    tg_add_hint_as(c, text, v, 2, false);
+    double out[2] = { hit ? 1 : 0, hit ? t : 0 };
+    if (c->nhints == CASE_MAX_HINTS)
+        return;
+    bool same = true;
+    for (int k = 0; k < 2; k++)
+        same = same && fabs(out[k] - c->want[k]) <= 1e-6 * fabs(c->want[k]) + c->tol[k];
+    for (int h = 0; h < c->nhints && !same; h++)
+        same = strcmp(c->hints[h].text, text) == 0 && out[0] == c->hints[h].out[0]
+               && out[1] == c->hints[h].out[1];
+    if (same)
+        return;
+    Hint *h = case_add_hint(c);
+    if (strlen(text) >= sizeof h->text) {      /* a hint cut short would mislead */
+        fprintf(stderr, "testgen: a hint longer than %zu bytes: %s\n", sizeof h->text - 1, text);
+        abort();
+    }
+    snprintf(h->text, sizeof h->text, "%s", text);
+    memcpy(h->out, out, sizeof out);
 }
 
 /* ---- Part 4 ----------------------------------------------------------------- */
