@@ -104,6 +104,19 @@ static inline int dd_max_exponent(const double *v, int n)
     return emax == INT_MIN ? 0 : emax;
 }
 
+/* NaN among v[0..n-1]: 1; else infinity: 2; else 0. */
+static inline int dd_bad_input(const double *v, int n)
+{
+    int bad = 0;
+    for (int k = 0; k < n; k++) {
+        if (isnan(v[k]))
+            return 1;
+        if (isinf(v[k]))
+            bad = 2;
+    }
+    return bad;
+}
+
 /* ---- arithmetic ---------------------------------------------------------- */
 
 static inline dd dd_neg(dd a)

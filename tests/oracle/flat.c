@@ -45,19 +45,6 @@
 
 #define U ORACLE_U
 
-/* NaN anywhere: 1; infinity anywhere: 2; else 0. */
-static int bad_input(const double *v, int n)
-{
-    int bad = 0;
-    for (int k = 0; k < n; k++) {
-        if (isnan(v[k]))
-            return 1;
-        if (isinf(v[k]))
-            bad = 2;
-    }
-    return bad;
-}
-
 /* A small dyadic number: a multiple of 1/16 below 256 in size.  Sums and
  * products of three such numbers, and their differences, are exact. */
 static bool small_dyadic(double x)
@@ -135,12 +122,11 @@ static OracleFlat answer(const Flat *F)
     bool parallel = fabs(F->den) <= band * F->sens_den && !F->exact_den;
     bool surface = fabs(F->num) <= band * F->sens_num && !F->exact_num;
     o.ambiguous = parallel || surface || F->edge_doubt;
+    /* Parallel: a method that does not round d.n to 0 finds t of at least
+     * |num| / (K u S(den)) (half that, to be safe). */
+    double t_min = ldexp(fabs(F->num) / (2 * band * F->sens_den), F->scale);
     if (F->sden == 0) {
-        /* Parallel: a method that does not round d.n to 0 finds t of at
-         * least |num| / (K u S(den)) (half that, to be safe). */
-        o.t_min = ldexp(fabs(F->num) / (2 * band * F->sens_den), F->scale);
-        o.t = 0;
-        o.tol = 0;
+        o.t_min = t_min;
         return o;
     }
     double t = F->t;
@@ -154,10 +140,7 @@ static OracleFlat answer(const Flat *F)
         o.ambiguous = true;                         /* no double holds t */
         o.t = DBL_MAX;
     }
-    if (parallel)
-        o.t_min = ldexp(fabs(F->num) / (2 * band * F->sens_den), F->scale);
-    else
-        o.t_min = INFINITY;
+    o.t_min = parallel ? t_min : INFINITY;
     return o;
 }
 
@@ -170,7 +153,7 @@ OracleFlat oracle_plane(const Plane *plane, const Ray *ray)
     double nrm[3] = { plane->normal.x, plane->normal.y, plane->normal.z };
     double dir[3] = { ray->direction.x, ray->direction.y, ray->direction.z };
     Flat F = { 0 };
-    int bad = bad_input(pos, 6) | bad_input(nrm, 3) | bad_input(dir, 3);
+    int bad = dd_bad_input(pos, 6) | dd_bad_input(nrm, 3) | dd_bad_input(dir, 3);
     F.nan = bad & 1;
     F.inf = bad == 2;
     if (bad)
@@ -247,7 +230,7 @@ OracleFlat oracle_triangle(const Triangle *tri, const Ray *ray)
                        tri->c.x, tri->c.y, tri->c.z, ray->origin.x, ray->origin.y, ray->origin.z };
     double dir[3] = { ray->direction.x, ray->direction.y, ray->direction.z };
     Flat F = { 0 };
-    int bad = bad_input(pos, 12) | bad_input(dir, 3);
+    int bad = dd_bad_input(pos, 12) | dd_bad_input(dir, 3);
     F.nan = bad & 1;
     F.inf = bad == 2;
     if (bad)

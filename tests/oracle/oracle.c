@@ -202,18 +202,10 @@ typedef struct {
  * neither (solve it). */
 static int input_verdict(const double pos[7], const double dir[3])
 {
-    bool nan = false, inf = false;
-    for (int k = 0; k < 7; k++) {
-        nan |= isnan(pos[k]);
-        inf |= isinf(pos[k]);
-    }
-    for (int k = 0; k < 3; k++) {
-        nan |= isnan(dir[k]);
-        inf |= isinf(dir[k]);
-    }
-    if (nan)                            /* NaN input: a miss, no doubt */
+    int bad = dd_bad_input(pos, 7) | dd_bad_input(dir, 3);
+    if (bad & 1)                        /* NaN input: a miss, no doubt */
         return -1;
-    if (inf)                            /* outside the contract: anything goes */
+    if (bad)                            /* infinite: outside the contract, anything goes */
         return 1;
     if (dir[0] == 0 && dir[1] == 0 && dir[2] == 0)
         return -1;                      /* zero direction: a miss */
