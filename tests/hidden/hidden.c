@@ -14,8 +14,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#define V(x, y, z) ((const double[3]){ x, y, z })
-
 static Test *hidden_test(TestList *l, int part, Kind kind, const char *name, const char *note)
 {
     Test *t = tg_test(l, part, kind, 1, name, note);

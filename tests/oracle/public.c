@@ -8,8 +8,6 @@
 
 #include <stdio.h>
 
-#define V(x, y, z) ((const double[3]){ x, y, z })
-
 static void part1(TestList *l)
 {
     Test *t = tg_test(l, PART1, KIND_PLANE, 1, "Part 1: the worked example (alpha = 90, aspect = 2, d = 1)",
@@ -188,8 +186,6 @@ static void part3b(TestList *l)
         snprintf(l->tests[k].note, sizeof l->tests[k].note, "%s",
                  "each pixel centre goes through your camera_ray and ray_color");
 }
-
-#define PUBLIC_HARD_SEED 20261122u
 
 void testgen_public(TestList *list)
 {

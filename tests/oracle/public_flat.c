@@ -10,7 +10,6 @@
 
 #include <math.h>
 
-#define V(x, y, z) ((const double[3]){ x, y, z })
 #define O V(0, 0, 0)
 
 static void part4(TestList *l)
@@ -173,5 +172,5 @@ void testgen_public_flat(TestList *list)
 {
     part4(list);
     part5(list);
-    tg_hard_flat(list, 20261122u, 2, false);
+    tg_hard_flat(list, PUBLIC_HARD_SEED, 2, false);
 }

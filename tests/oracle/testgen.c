@@ -203,8 +203,6 @@ Test *tg_family_test(TestList *l, int first, int part, Kind kind, const char *fa
     return tg_hard_test(l, part, kind, family, hidden);
 }
 
-#define V(x, y, z) ((const double[3]){ x, y, z })
-
 void tg_add_plain_hits(TestList *l, int first)
 {
     for (int k = first; k < l->n; k++) {

@@ -11,8 +11,13 @@
 #include <stdint.h>
 #include "../grader/grader.h"
 
-/* The public tests, core and hard, in a fixed order. */
+/* A point or a vector written out, as the tg_ functions take them. */
+#define V(x, y, z) ((const double[3]){ x, y, z })
+
+/* The public tests, core and hard, in a fixed order; their hard cases are
+ * drawn from this seed. */
 void testgen_public(TestList *list);
+#define PUBLIC_HARD_SEED 20261122u
 
 /* The hidden tests (tests/hidden/hidden.c): fixed cases and cases drawn
  * from seed, so the same seed always gives the same tests. */
