@@ -34,6 +34,14 @@ static void random_direction(uint64_t *g, double len, double r[3])
     r[0] = len * s * cos(phi), r[1] = len * s * sin(phi), r[2] = len * z;
 }
 
+/* r scaled to length |len|, reversed when len < 0. */
+static void scale_to(double r[3], double len)
+{
+    double f = len / sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    for (int q = 0; q < 3; q++)
+        r[q] *= f;
+}
+
 /* The distance from c to the line of the ray from the origin along r. */
 static double off_line(const double c[3], const double r[3])
 {
@@ -159,10 +167,7 @@ void testgen_hidden(TestList *l, uint64_t seed)
          * hit is at t >= 0.01: hits just ahead of the origin are for the
          * test of rays from just outside (below), and a tmin such as
          * 0.001 must not lose this one by the luck of a seed */
-        double L = fmin(log_uniform(&g, 0.01, 100), (D - R) / 0.01);
-        double len = L / sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-        for (int q = 0; q < 3; q++)
-            dir[q] *= len;
+        scale_to(dir, fmin(log_uniform(&g, 0.01, 100), (D - R) / 0.01));
         tg_sphere(t, c, R, e, dir);
     }
     t = hidden_test(l, PART3A, KIND_SPHERE, "Part 3a: hidden: random rays from inside spheres",
@@ -232,20 +237,17 @@ void testgen_hidden_flat_random(TestList *l, uint64_t seed)
         double sn = (side[0] * n[0] + side[1] * n[1] + side[2] * n[2]) / nn;
         for (int q = 0; q < 3; q++)
             on[q] = p[q] + side[q] - sn * n[q];
-        double len = log_uniform(&g, 0.01, 100), d2 = 0;
-        for (int q = 0; q < 3; q++) {
-            r[q] = on[q] - e[q];
-            d2 += r[q] * r[q];
-        }
+        double len = log_uniform(&g, 0.01, 100);
         for (int q = 0; q < 3; q++)
-            r[q] *= (k % 3 == 0 ? -len : len) / sqrt(d2);
+            r[q] = on[q] - e[q];
+        scale_to(r, k % 3 == 0 ? -len : len);
         tg_planehit(t, p, n, e, r);
     }
 
     t = hidden_test(l, PART5, KIND_TRIANGLE, "Part 5: hidden: random rays at random triangles",
                     "triangles of every shape and size within 10 of the eye; about half the rays hit");
     for (int k = 0; k < 100; k++) {
-        double v[3][3], c[3], e[3], w[3], aim[3], r[3];
+        double v[3][3], c[3], e[3], w[3], r[3];
         random_direction(&g, draw_uni(&g, 0, 10), c);
         /* the third a tiny one, 1e-5 across and aimed inside (k even, and
          * not a multiple of 9: those rays point away), so that every seed
@@ -267,14 +269,10 @@ void testgen_hidden_flat_random(TestList *l, uint64_t seed)
         for (int i = 0; i < 3; i++)
             sum += w[i] = !(k % 2) ? draw_uni(&g, 0.02, 1)
                         : i == (k / 2) % 3 ? -draw_uni(&g, 0.05, 0.45) : draw_uni(&g, 0.5, 1);
-        double len = log_uniform(&g, 0.1, 10), d2 = 0;
-        for (int q = 0; q < 3; q++) {
-            aim[q] = (w[0] * v[0][q] + w[1] * v[1][q] + w[2] * v[2][q]) / sum;
-            r[q] = aim[q] - e[q];
-            d2 += r[q] * r[q];
-        }
+        double len = log_uniform(&g, 0.1, 10);
         for (int q = 0; q < 3; q++)
-            r[q] *= (k % 9 == 0 ? -len : len) / sqrt(d2);
+            r[q] = (w[0] * v[0][q] + w[1] * v[1][q] + w[2] * v[2][q]) / sum - e[q];
+        scale_to(r, k % 9 == 0 ? -len : len);
         tg_triangle(t, v[0], v[1], v[2], e, r);
     }
 }
