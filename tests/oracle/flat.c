@@ -85,15 +85,10 @@ static void sub3(const double a[3], const double b[3], double out[3])
         out[k] = a[k] - b[k];
 }
 
-/* num / den in double-double, rounded once; den != 0. */
-static double quotient(const Expansion *num, const Expansion *den)
-{
-    return dd_to_double(dd_div(exp_to_dd(num), exp_to_dd(den)));
-}
-
 /* The answer, once the exact signs and the scales are known. */
 typedef struct {
-    bool nan, inf, lost;       /* NaN or infinite input; inexact arithmetic   */
+    int bad;                   /* NaN input: 1; else infinite input: 2 (dd.h) */
+    bool lost;                 /* inexact arithmetic                          */
     bool exact_den, exact_num; /* d.n and num computed without rounding by every
                                   usual method, even after normalising         */
     bool exact_edges;          /* the same for the edge values and barycentric
@@ -107,12 +102,25 @@ typedef struct {
     bool edge_doubt;           /* ... but within rounding of an edge           */
 } Flat;
 
+/* The exact den and num into F: their signs, their values, and (when
+ * den != 0) t = num / den in double-double, rounded once. */
+static void set_quotient(Flat *F, const Expansion *den, const Expansion *num)
+{
+    F->lost |= !exp_ok(den) || !exp_ok(num);
+    F->sden = exp_sign(den);
+    F->snum = exp_sign(num);
+    F->den = dd_to_double(exp_to_dd(den));
+    F->num = dd_to_double(exp_to_dd(num));
+    if (F->sden != 0)
+        F->t = dd_to_double(dd_div(exp_to_dd(num), exp_to_dd(den)));
+}
+
 static OracleFlat answer(const Flat *F)
 {
     OracleFlat o = { .hit = false, .ambiguous = false, .t = 0, .tol = 0, .t_min = 0, .kappa = 1 };
-    if (F->nan)
-        return o;                                   /* a miss, no doubt */
-    if (F->inf || F->lost) {
+    if (F->bad & 1)
+        return o;                                   /* NaN: a miss, no doubt */
+    if (F->bad || F->lost) {
         o.ambiguous = true;                         /* outside what we can judge */
         o.t_min = 0;
         o.tol = INFINITY;
@@ -152,11 +160,8 @@ OracleFlat oracle_plane(const Plane *plane, const Ray *ray)
                       ray->origin.x, ray->origin.y, ray->origin.z };
     double nrm[3] = { plane->normal.x, plane->normal.y, plane->normal.z };
     double dir[3] = { ray->direction.x, ray->direction.y, ray->direction.z };
-    Flat F = { 0 };
-    int bad = dd_bad_input(pos, 6) | dd_bad_input(nrm, 3) | dd_bad_input(dir, 3);
-    F.nan = bad & 1;
-    F.inf = bad == 2;
-    if (bad)
+    Flat F = { .bad = dd_bad_input(pos, 6) | dd_bad_input(nrm, 3) | dd_bad_input(dir, 3) };
+    if (F.bad)
         return answer(&F);
     /* Small dyadic inputs: every product and sum is exact, and a normalised
      * n or d is exact along an axis; d.n = 0 then stays 0 when d or n lies
@@ -185,11 +190,7 @@ OracleFlat oracle_plane(const Plane *plane, const Ray *ray)
         exp_from(&nv.c[k], d[k]);
     expv_dot_d(&den, n, &nv);                       /* d.n */
     expv_dot_d(&num, n, &po);                       /* (p - o).n */
-    F.lost = !exp_ok(&den) || !exp_ok(&num);
-    F.sden = exp_sign(&den);
-    F.snum = exp_sign(&num);
-    F.den = dd_to_double(exp_to_dd(&den));
-    F.num = dd_to_double(exp_to_dd(&num));
+    set_quotient(&F, &den, &num);
 
     /* S(d.n) = sum |n_k d_k| twice (as d and as n); S(num) from p, o, n. */
     double pmo[3];
@@ -197,8 +198,6 @@ OracleFlat oracle_plane(const Plane *plane, const Ray *ray)
     F.sens_den = 2 * share(n, d);
     F.sens_num = share(n, p) + share(n, o) + share(pmo, n);
     F.inside = true;
-    if (F.sden != 0)
-        F.t = quotient(&num, &den);
     return answer(&F);
 }
 
@@ -229,11 +228,8 @@ OracleFlat oracle_triangle(const Triangle *tri, const Ray *ray)
     double pos[12] = { tri->a.x, tri->a.y, tri->a.z, tri->b.x, tri->b.y, tri->b.z,
                        tri->c.x, tri->c.y, tri->c.z, ray->origin.x, ray->origin.y, ray->origin.z };
     double dir[3] = { ray->direction.x, ray->direction.y, ray->direction.z };
-    Flat F = { 0 };
-    int bad = dd_bad_input(pos, 12) | dd_bad_input(dir, 3);
-    F.nan = bad & 1;
-    F.inf = bad == 2;
-    if (bad)
+    Flat F = { .bad = dd_bad_input(pos, 12) | dd_bad_input(dir, 3) };
+    if (F.bad)
         return answer(&F);
     bool exact = all_small_dyadic(pos, 12) && all_small_dyadic(dir, 3) && along_axis(dir);
 
@@ -255,7 +251,6 @@ OracleFlat oracle_triangle(const Triangle *tri, const Ray *ray)
         expv_diff(&rel[i], v[i], o);
     for (int i = 0; i < 3; i++)
         expv_cross(&cr[i], &rel[(i + 1) % 3], &rel[(i + 2) % 3]);
-    F.lost = false;
     for (int i = 0; i < 3; i++) {
         expv_dot_d(&s[i], d, &cr[i]);
         F.lost |= !exp_ok(&s[i]);
@@ -263,11 +258,7 @@ OracleFlat oracle_triangle(const Triangle *tri, const Ray *ray)
     exp_add(&den, &s[0], &s[1]);
     exp_add(&den, &den, &s[2]);
     expv_dot(&num, &rel[0], &cr[0]);
-    F.lost |= !exp_ok(&den) || !exp_ok(&num);
-    F.sden = exp_sign(&den);
-    F.snum = exp_sign(&num);
-    F.den = dd_to_double(exp_to_dd(&den));
-    F.num = dd_to_double(exp_to_dd(&num));
+    set_quotient(&F, &den, &num);
     /* Barycentric coordinates are the edge values divided by d.n: exact
      * for every method only when d.n is a power of two (or 0). */
     int e2x;
@@ -321,8 +312,6 @@ OracleFlat oracle_triangle(const Triangle *tri, const Ray *ray)
         can_out |= !in;
     }
     F.edge_doubt = can_in && can_out;
-    if (F.sden != 0)
-        F.t = quotient(&num, &den);
     return answer(&F);
 }
 
