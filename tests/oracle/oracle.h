@@ -51,9 +51,8 @@ Vec3 oracle_pixel(int i, int j, int nx, int ny, double w, double h, double d);
  * kappa is derived in oracle.c:
  *     kappa = 1 + R (|f| + R + L) / (L s),   L = t |r|,
  * s the exact half-chord sqrt(R^2 - l.l) (floored at sqrt(u R (|f| + R))
- * within the silhouette band).  It is right for both roots: numerics.md's
- * 1 + R/s + (f.f + R^2) / |f.f - R^2| has the right size for the near root
- * but overstates the far root's by up to R / h near the surface. */
+ * within the silhouette band), right for both roots (oracle.c says why
+ * numerics.md's criterion is not). */
 typedef struct {
     bool hit;          /* a root t > 0 exists (tangent counts)                 */
     double t;          /* on a hit: the smallest root t > 0, rounded to double */

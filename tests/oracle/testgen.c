@@ -19,7 +19,6 @@
 #include <string.h>
 
 #define U ORACLE_U
-#define CORE_REL 1e-9           /* core tests: relative tolerance */
 
 /* ---- Part 1 ---------------------------------------------------------------- */
 
@@ -28,7 +27,7 @@ void tg_plane(Test *t, double fov, double aspect, double d)
     Case *c = test_add_case(t);
     c->in[0] = fov, c->in[1] = aspect, c->in[2] = d;
     oracle_image_plane(fov, aspect, d, &c->want[0], &c->want[1]);
-    double rel = t->hard ? HARD_PART1_REL_TOL : CORE_REL;
+    double rel = t->hard ? HARD_PART1_REL_TOL : TG_CORE_REL;
     c->tol[0] = rel * fabs(c->want[0]);
     c->tol[1] = rel * fabs(c->want[1]);
 }
@@ -44,12 +43,12 @@ void tg_pixel(Test *t, int i, int j, int nx, int ny, double w, double h, double 
     c->want[0] = p.x, c->want[1] = p.y, c->want[2] = p.z;
     /* Hard: relative to the coordinate itself (hard.h), the centre column
      * and row exact; core: to the plane's size. */
-    c->tol[0] = t->hard ? HARD_PART2_TOL_U * U * fabs(p.x) : CORE_REL * fabs(w);
-    c->tol[1] = t->hard ? HARD_PART2_TOL_U * U * fabs(p.y) : CORE_REL * fabs(h);
+    c->tol[0] = t->hard ? HARD_PART2_TOL_U * U * fabs(p.x) : TG_CORE_REL * fabs(w);
+    c->tol[1] = t->hard ? HARD_PART2_TOL_U * U * fabs(p.y) : TG_CORE_REL * fabs(h);
     /* z = -d exactly is a hard case's demand; a core test takes z as it
      * takes x and y, so that a pixel unprojected through the inverse of a
      * projection matrix (gluUnProject), -d within an ulp, is right. */
-    c->tol[2] = t->hard ? 0 : CORE_REL * fabs(d);
+    c->tol[2] = t->hard ? 0 : TG_CORE_REL * fabs(d);
 }
 
 /* ---- Part 3a ---------------------------------------------------------------- */
@@ -70,7 +69,7 @@ void tg_sphere(Test *t, const double c3[3], double R, const double e[3], const d
         c->flags |= CASE_EITHER_HIT;
     if (o.hit) {
         double tol = oracle_sphere_t_tolerance(&s, &ray, &o);
-        c->tol[1] = t->hard ? tol : fmax(tol, CORE_REL * o.t);
+        c->tol[1] = t->hard ? tol : fmax(tol, TG_CORE_REL * o.t);
         /* In doubt, every hit the oracle accepts: those near o.t widen the
          * tolerance, another apart (the far root from an origin on the
          * surface) goes to alt as an interval. */
@@ -94,7 +93,7 @@ void tg_camera(Test *t, const double eye[3], const double pixel[3])
     double want[6] = { eye[0], eye[1], eye[2], u.x, u.y, u.z };
     memcpy(c->want, want, sizeof want);
     for (int k = 3; k < 6; k++)
-        c->tol[k] = t->hard ? HARD_PART3B_DIR_TOL_U * U : CORE_REL;
+        c->tol[k] = t->hard ? HARD_PART3B_DIR_TOL_U * U : TG_CORE_REL;
 }
 
 static void colour_of(const Test *t, int k, double out[3])

@@ -11,6 +11,9 @@
 #include <stdint.h>
 #include "../grader/grader.h"
 
+/* The relative tolerance of the core tests (hard tests: the oracle's). */
+#define TG_CORE_REL 1e-9
+
 /* A point or a vector written out, as the tg_ functions take them. */
 #define V(x, y, z) ((const double[3]){ x, y, z })
 

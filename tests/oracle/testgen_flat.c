@@ -17,8 +17,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define CORE_REL 1e-9
-
 static Vec3 v3(const double a[3])
 {
     return vec3(a[0], a[1], a[2]);
@@ -32,7 +30,7 @@ static void expect(Test *t, Case *c, const OracleFlat *o)
     c->want[1] = o->hit || o->ambiguous ? o->t : 0;
     c->tol[1] = o->hit || o->ambiguous ? o->tol : 0;
     if (o->hit && !t->hard)
-        c->tol[1] = fmax(c->tol[1], CORE_REL * o->t);
+        c->tol[1] = fmax(c->tol[1], TG_CORE_REL * o->t);
     if (o->ambiguous) {
         c->flags |= CASE_EITHER_HIT;
         c->alt[1] = o->t_min;
