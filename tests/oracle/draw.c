@@ -6,7 +6,8 @@
  * clang first first), so the same seed gives the same numbers on every
  * IEEE-754 machine and compiler (built with -ffp-contract=off).  The
  * callers keep that rule too (hard.c, hard_flat.c, hidden.c), drawing in
- * the order gcc did when the public tests were written.
+ * the order gcc did when the public tests were written.  What each draw
+ * gives is said in draw.h.
  */
 #include <stdio.h>
 #include "draw.h"
@@ -26,7 +27,6 @@ double hard_rng_uniform(uint64_t *state)
     return (double)(hard_rng_next(state) >> 11) * 0x1p-53;
 }
 
-/* The stream of case k of part `part`. */
 uint64_t draw_stream(uint64_t seed, uint64_t part, int k)
 {
     uint64_t s = seed ^ (part * 0xD1B54A32D192ED03u);
@@ -35,13 +35,11 @@ uint64_t draw_stream(uint64_t seed, uint64_t part, int k)
     return mixed;
 }
 
-/* Uniform in [a, b). */
 double draw_uni(uint64_t *s, double a, double b)
 {
     return a + (b - a) * hard_rng_uniform(s);
 }
 
-/* Uniform integer in [a, b]. */
 int draw_int(uint64_t *s, int a, int b)
 {
     return a + (int)(hard_rng_next(s) % (uint64_t)(b - a + 1));
@@ -74,7 +72,6 @@ Vec3 draw_unit(uint64_t *s)
     }
 }
 
-/* A random unit vector (nearly) perpendicular to a. */
 Vec3 draw_perp(uint64_t *s, Vec3 a)
 {
     for (;;) {
@@ -85,15 +82,12 @@ Vec3 draw_perp(uint64_t *s, Vec3 a)
     }
 }
 
-/* A point with coordinates uniform in [-size, size]. */
 Vec3 draw_point(uint64_t *s, double size)
 {
     double z = draw_uni(s, -size, size), y = draw_uni(s, -size, size), x = draw_uni(s, -size, size);
     return vec3(x, y, z);
 }
 
-/* A direction from e that passes the centre c at rho R (rho < 1 hits),
- * of length len. */
 Vec3 draw_aim(uint64_t *s, Vec3 e, Vec3 c, double R, double rho, double len)
 {
     Vec3 n = draw_perp(s, vec3_sub(c, e));
@@ -101,7 +95,6 @@ Vec3 draw_aim(uint64_t *s, Vec3 e, Vec3 c, double R, double rho, double len)
     return vec3_scale(r, len / vec3_length(r));
 }
 
-/* A random length of about 1 (1/16 .. 16) that is not a power of two. */
 double draw_len(uint64_t *s)
 {
     int binade = draw_int(s, -4, 3);
