@@ -159,14 +159,9 @@ Test *tg_image(TestList *list, const char *name, const char *scene_path, int nx,
     }
     Test *t = testlist_add(list, PART3B, KIND_IMAGE, name);
     t->image_nx = nx;
-    double bg[3] = { file.background.x, file.background.y, file.background.z };
-    memcpy(t->background, bg, sizeof bg);
-    for (int k = 0; k < file.nspheres; k++) {
-        const Sphere *s = &file.spheres[k];
-        double cc[3] = { s->center.x, s->center.y, s->center.z };
-        double col[3] = { s->color.x, s->color.y, s->color.z };
-        test_add_sphere(t, cc, s->radius, col);
-    }
+    memcpy(t->background, V3(file.background), sizeof t->background);
+    for (int k = 0; k < file.nspheres; k++)
+        test_add_sphere(t, V3(file.spheres[k].center), file.spheres[k].radius, V3(file.spheres[k].color));
     double w, h;
     oracle_image_plane(file.fov_degrees, (double)nx / ny, file.d, &w, &h);
     for (int j = 0; j < ny; j++)
@@ -249,14 +244,10 @@ void tg_hard(TestList *l, uint64_t seed, int rounds, bool hidden)
     int n3 = 2 * rounds * HARD_PART3A_FAMILIES;
     HardCase3a *c3 = calloc((size_t)n3, sizeof *c3);
     hard_part3a(seed, c3, n3);
-    for (int k = 0; k < n3; k++) {
-        const Sphere *sp = &c3[k].sphere;
-        const Ray *r = &c3[k].ray;
-        double c[3] = { sp->center.x, sp->center.y, sp->center.z };
-        double e[3] = { r->origin.x, r->origin.y, r->origin.z };
-        double d[3] = { r->direction.x, r->direction.y, r->direction.z };
-        tg_sphere(tg_family_test(l, first, PART3A, KIND_SPHERE, c3[k].family, hidden), c, sp->radius, e, d);
-    }
+    for (int k = 0; k < n3; k++)
+        tg_sphere(tg_family_test(l, first, PART3A, KIND_SPHERE, c3[k].family, hidden),
+                  V3(c3[k].sphere.center), c3[k].sphere.radius,
+                  V3(c3[k].ray.origin), V3(c3[k].ray.direction));
     free(c3);
     tg_add_plain_hits(l, first);
 
@@ -272,25 +263,18 @@ void tg_hard(TestList *l, uint64_t seed, int rounds, bool hidden)
     tg_hard_test(l, PART3B, KIND_CAMERA, "camera rays through pixels of huge images", hidden);
     for (int k = 0; k < n4; k++) {
         double e[3] = { c4[k].eye.x, c4[k].eye.y, c4[k].eye.z };
-        double p[3] = { c4[k].pixel.x, c4[k].pixel.y, c4[k].pixel.z };
-        tg_camera(&l->tests[cam], e, p);
+        tg_camera(&l->tests[cam], e, V3(c4[k].pixel));
         /* Numbered, so that no two tests share a name. */
         char family[sizeof c4[k].family + 32];
         int scene = k / HARD_PART3B_FAMILIES;
         snprintf(family, sizeof family, "%s (scene %d of %d)", c4[k].family, scene + 1, scenes);
         Test *t = tg_hard_test(l, PART3B, KIND_COLOR, family, hidden);
         t->weight = 1.0 / scenes;
-        t->background[0] = c4[k].background.x;
-        t->background[1] = c4[k].background.y;
-        t->background[2] = c4[k].background.z;
-        for (int s = 0; s < c4[k].nspheres; s++) {
-            const Sphere *sp = &c4[k].spheres[s];
-            double cc[3] = { sp->center.x, sp->center.y, sp->center.z };
-            double col[3] = { sp->color.x, sp->color.y, sp->color.z };
-            test_add_sphere(t, cc, sp->radius, col);
-        }
-        double d[3] = { c4[k].ray.direction.x, c4[k].ray.direction.y, c4[k].ray.direction.z };
-        tg_color(t, e, d);
+        memcpy(t->background, V3(c4[k].background), sizeof t->background);
+        for (int s = 0; s < c4[k].nspheres; s++)
+            test_add_sphere(t, V3(c4[k].spheres[s].center), c4[k].spheres[s].radius,
+                            V3(c4[k].spheres[s].color));
+        tg_color(t, e, V3(c4[k].ray.direction));
         /* and a ray at the last sphere's centre, so the background alone never passes */
         const Sphere *last = &c4[k].spheres[c4[k].nspheres - 1];
         double at[3] = { last->center.x - e[0], last->center.y - e[1], last->center.z - e[2] };

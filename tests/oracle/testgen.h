@@ -14,8 +14,10 @@
 /* The relative tolerance of the core tests (hard tests: the oracle's). */
 #define TG_CORE_REL 1e-9
 
-/* A point or a vector written out, as the tg_ functions take them. */
+/* A point or a vector written out, as the tg_ functions take them; V3, a
+ * Vec3's. */
 #define V(x, y, z) ((const double[3]){ x, y, z })
+#define V3(v) V((v).x, (v).y, (v).z)
 
 /* The public tests, core and hard, in a fixed order; their hard cases are
  * drawn from this seed. */

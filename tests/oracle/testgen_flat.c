@@ -258,11 +258,6 @@ void tg_mesh_ray(Test *t, const double e[3], const double r[3])
 
 /* ---- the hard cases as tests ------------------------------------------------ */
 
-static void put3(double out[3], Vec3 v)
-{
-    out[0] = v.x, out[1] = v.y, out[2] = v.z;
-}
-
 /* Part 4's test of one family of rounding, made core: the lecture's
  * formula in double meets every one of them (the handout's table), so
  * they are no challenge, but a test of its own care (no epsilon on r.n,
@@ -288,28 +283,17 @@ void tg_hard_flat(TestList *l, uint64_t seed, int rounds, bool hidden)
     int n4 = 2 * rounds * HARD_PART4_FAMILIES;
     HardCase4 *c4 = calloc((size_t)n4, sizeof *c4);
     hard_part4(seed, c4, n4);
-    for (int k = 0; k < n4; k++) {
-        double p[3], n[3], e[3], r[3];
-        put3(p, c4[k].plane.point);
-        put3(n, c4[k].plane.normal);
-        put3(e, c4[k].ray.origin);
-        put3(r, c4[k].ray.direction);
-        tg_planehit(part4_rounding_test(l, first, c4[k].family, hidden), p, n, e, r);
-    }
+    for (int k = 0; k < n4; k++)
+        tg_planehit(part4_rounding_test(l, first, c4[k].family, hidden), V3(c4[k].plane.point),
+                    V3(c4[k].plane.normal), V3(c4[k].ray.origin), V3(c4[k].ray.direction));
     free(c4);
 
     int n5 = 2 * rounds * HARD_PART5_FAMILIES;
     HardCase5 *c5 = calloc((size_t)n5, sizeof *c5);
     hard_part5(seed, c5, n5);
-    for (int k = 0; k < n5; k++) {
-        double a[3], b[3], cc[3], e[3], r[3];
-        put3(a, c5[k].tri.a);
-        put3(b, c5[k].tri.b);
-        put3(cc, c5[k].tri.c);
-        put3(e, c5[k].ray.origin);
-        put3(r, c5[k].ray.direction);
-        tg_triangle(tg_family_test(l, first, PART5, KIND_TRIANGLE, c5[k].family, hidden), a, b, cc, e, r);
-    }
+    for (int k = 0; k < n5; k++)
+        tg_triangle(tg_family_test(l, first, PART5, KIND_TRIANGLE, c5[k].family, hidden), V3(c5[k].tri.a),
+                    V3(c5[k].tri.b), V3(c5[k].tri.c), V3(c5[k].ray.origin), V3(c5[k].ray.direction));
     free(c5);
     tg_add_plain_hits(l, first);
 
@@ -328,18 +312,12 @@ void tg_hard_flat(TestList *l, uint64_t seed, int rounds, bool hidden)
         snprintf(t->note, sizeof t->note, "%s",
                  "a hard case: rays into a closed mesh through the edges and vertices its triangles share");
         for (int i = 0; i < m[k].ntris; i++) {
-            double v[9];
-            put3(v, m[k].tris[i].a);
-            put3(v + 3, m[k].tris[i].b);
-            put3(v + 6, m[k].tris[i].c);
-            test_add_triangle(t, v);
+            const Triangle *tr = &m[k].tris[i];
+            test_add_triangle(t, (const double[9]){ tr->a.x, tr->a.y, tr->a.z, tr->b.x, tr->b.y, tr->b.z,
+                                                    tr->c.x, tr->c.y, tr->c.z });
         }
-        for (int r = 0; r < HARD_MESH_RAYS; r++) {
-            double e[3], d[3];
-            put3(e, m[k].rays[r].origin);
-            put3(d, m[k].rays[r].direction);
-            tg_mesh_ray(t, e, d);
-        }
+        for (int r = 0; r < HARD_MESH_RAYS; r++)
+            tg_mesh_ray(t, V3(m[k].rays[r].origin), V3(m[k].rays[r].direction));
     }
     free(m);
 }
