@@ -58,12 +58,11 @@ void tg_add_plain_hits(TestList *list, int first);
 
 /* ---- Parts 4 and 5 (testgen_flat.c) ---- */
 
-/* One case of plane_intersect (p, n, e, r), of triangle_intersect
- * (a, b, c, e, r), or a ray at the closed mesh of t's triangles. */
+/* One case of plane_intersect (p, n, e, r) or of triangle_intersect
+ * (a, b, c, e, r). */
 void tg_planehit(Test *t, const double p[3], const double n[3], const double e[3], const double r[3]);
 void tg_triangle(Test *t, const double a[3], const double b[3], const double c[3],
                  const double e[3], const double r[3]);
-void tg_mesh_ray(Test *t, const double e[3], const double r[3]);
 
 /* The hard cases of Part 5 (hard_flat.c) as tests tagged hard, as tg_hard
  * does for the others; Part 4's families as core tests, which the

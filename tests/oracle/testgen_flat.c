@@ -236,18 +236,18 @@ void tg_triangle(Test *t, const double a[3], const double b[3], const double cc[
     triangle_hints(c, &tr, &ray, &o);
 }
 
-void tg_mesh_ray(Test *t, const double e[3], const double r[3])
+/* One case of a ray at the closed mesh of t's triangles. */
+static void mesh_ray(Test *t, const Ray *ray)
 {
     Case *c = test_add_case(t);
-    memcpy(c->in, e, 3 * sizeof *e);
-    memcpy(c->in + 3, r, 3 * sizeof *r);
+    memcpy(c->in, V3(ray->origin), 3 * sizeof c->in[0]);
+    memcpy(c->in + 3, V3(ray->direction), 3 * sizeof c->in[0]);
     Triangle *tris = calloc((size_t)t->ntriangles + 1, sizeof *tris);
     for (int k = 0; k < t->ntriangles; k++) {
         const double *v = t->triangles[k].v;
         tris[k] = (Triangle){ v3(v), v3(v + 3), v3(v + 6), vec3(1, 1, 1) };
     }
-    Ray ray = { v3(e), v3(r) };
-    OracleFlat o = oracle_mesh(tris, t->ntriangles, &ray);
+    OracleFlat o = oracle_mesh(tris, t->ntriangles, ray);
     free(tris);
     expect(t, c, &o);
     /* A miss, or a first hit beyond the crossing (the far side of the
@@ -317,7 +317,7 @@ void tg_hard_flat(TestList *l, uint64_t seed, int rounds, bool hidden)
                                                     tr->c.x, tr->c.y, tr->c.z });
         }
         for (int r = 0; r < HARD_MESH_RAYS; r++)
-            tg_mesh_ray(t, V3(m[k].rays[r].origin), V3(m[k].rays[r].direction));
+            mesh_ray(t, &m[k].rays[r]);
     }
     free(m);
 }
