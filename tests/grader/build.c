@@ -126,25 +126,6 @@ static int copy_fd(int in, const char *src, const char *dst, size_t max, char *e
     return status == 0 ? chmod(dst, 0644) : status;
 }
 
-/* Appends text to b->messages (nothing if out of memory). */
-static void say(Build *b, const char *text)
-{
-    size_t old = b->messages ? strlen(b->messages) : 0, n = strlen(text);
-    char *m = realloc(b->messages, old + n + 1);
-    if (m) {
-        memcpy(m + old, text, n + 1);
-        b->messages = m;
-    }
-}
-
-/* Appends the line "what name" to b->messages. */
-static void build_say(Build *b, const char *what, const char *name)
-{
-    say(b, what);
-    say(b, name);
-    say(b, "\n");
-}
-
 /* The submission's stage file of part p, read; NULL when it has none (or
  * it cannot be read). */
 static char *read_stage(const char *submission, int p)
@@ -176,27 +157,22 @@ void build_explain_undefined(Build *b, const char *submission, int part)
         for (int p = 0; p < NPARTS && in < 0; p++)
             if (p != part && texts[p] && linkmsg_defines(texts[p], names[k]))
                 in = p;
-        char line[1024];
         if (own && in >= 0) {
-            snprintf(line, sizeof line, "`%s' is defined in your %s.c, but it belongs in %s.c "
-                     "(labs/raytracer.h), and each part is graded with the reference's other parts, "
-                     "not with your other files: move it to %s.c\n", names[k], stage_names[in],
-                     stage_names[part], stage_names[part]);
-            say(b, line);
+            appendf(&b->messages, "`%s' is defined in your %s.c, but it belongs in %s.c "
+                    "(labs/raytracer.h), and each part is graded with the reference's other parts, "
+                    "not with your other files: move it to %s.c\n", names[k], stage_names[in],
+                    stage_names[part], stage_names[part]);
         } else if (own && texts[part] && !linkmsg_defines(texts[part], names[k])) {
             char defined[8 * LINKMSG_NAME_MAX + 64];
             linkmsg_definitions_list(texts[part], defined, sizeof defined);
-            snprintf(line, sizeof line, "your %s.c defines no function %s, which the tests call "
-                     "by the name labs/raytracer.h declares. The functions it defines: ", stage_names[part], names[k]);
-            say(b, line);
-            say(b, defined);
-            say(b, ".\n");
+            appendf(&b->messages, "your %s.c defines no function %s, which the tests call by the name "
+                    "labs/raytracer.h declares. The functions it defines: %s.\n", stage_names[part],
+                    names[k], defined);
         } else if (!stage && in >= 0) {
-            snprintf(line, sizeof line, "`%s' is defined in your %s.c, but each part is graded with "
-                     "the reference's other parts, not with your other files: define %s in %s.c too "
-                     "(static, so that the two do not clash in make render)\n", names[k],
-                     stage_names[in], names[k], stage_names[part]);
-            say(b, line);
+            appendf(&b->messages, "`%s' is defined in your %s.c, but each part is graded with the "
+                    "reference's other parts, not with your other files: define %s in %s.c too "
+                    "(static, so that the two do not clash in make render)\n", names[k],
+                    stage_names[in], names[k], stage_names[part]);
         }
     }
     for (int p = 0; p < NPARTS; p++)
@@ -221,15 +197,11 @@ void build_explain_headers(const BuildConfig *cfg, Build *b, int part)
 {
     static const char *names[] = { "raytracer.h", "vec3.h" };
     for (int k = 0; k < 2; k++)
-        if (build_header_changed(cfg->root, names[k])) {
-            char line[600];
-            snprintf(line, sizeof line,
-                     "labs/%s is not the one the kit came with: %s.c was built with the kit's own, as "
-                     "your instructor's grader builds it. If it uses something you added to labs/%s "
-                     "(a macro, a prototype), move that into %s.c.\n",
-                     names[k], stage_names[part], names[k], stage_names[part]);
-            say(b, line);
-        }
+        if (build_header_changed(cfg->root, names[k]))
+            appendf(&b->messages, "labs/%s is not the one the kit came with: %s.c was built with the "
+                    "kit's own, as your instructor's grader builds it. If it uses something you added "
+                    "to labs/%s (a macro, a prototype), move that into %s.c.\n",
+                    names[k], stage_names[part], names[k], stage_names[part]);
 }
 
 /* After a stage file did not compile: the characters in it that look like
@@ -239,8 +211,7 @@ static void explain_lookalikes(Build *b, const char *text, size_t n, const char 
     char lines[1200];
     if (lookalike_explain(text, n, cfile, lines, sizeof lines) == 0)
         return;
-    say(b, LOOKALIKE_INTRO "\n");
-    say(b, lines);
+    appendf(&b->messages, "%s\n%s", LOOKALIKE_INTRO, lines);
 }
 
 /* After a failed compile: the headers the file includes from its own
@@ -251,13 +222,13 @@ static void explain_own_headers(Build *b, const char *text, size_t n, const char
     char lines[1400];
     const char *dirs[] = { submission };
     if (own_headers_explain(text, n, dirs, 1, cfile, lines, sizeof lines) > 0)
-        say(b, lines);
+        appendf(&b->messages, "%s", lines);
 }
 
 /* The file was not handed to the compiler: says why, and returns 0. */
 static int not_compiled(Build *b, const char *what, const char *name)
 {
-    build_say(b, what, name);
+    appendf(&b->messages, "%s%s\n", what, name);
     b->refused = true;
     return 0;
 }
@@ -380,7 +351,7 @@ static int run_cc(const BuildConfig *cfg, Build *b, char **argv, const char *con
         sandbox_result_free(&res);
         return -1;
     }
-    say(b, res.output);
+    appendf(&b->messages, "%s", res.output);
     char why[200] = "";
     if (res.timed_out)
         snprintf(why, sizeof why, "the compiler took more than %d s, and was stopped\n", CC_SECONDS);
@@ -394,7 +365,7 @@ static int run_cc(const BuildConfig *cfg, Build *b, char **argv, const char *con
         snprintf(why, sizeof why, "the compiler was killed (signal 9): most likely the system ran out of memory\n");
     else if (res.signal)
         snprintf(why, sizeof why, "the compiler was killed by signal %d\n", res.signal);
-    say(b, why);
+    appendf(&b->messages, "%s", why);
     int ok = res.exit_code == 0;
     sandbox_result_free(&res);
     return ok ? 0 : 1;
@@ -437,13 +408,11 @@ static const char *judge_kit_file(const char *name, void *ctx)
  * or a system file (include_scan.h); 1 with a message, or 0. */
 static int scan_includes(const BuildConfig *cfg, Build *b, const char *text, size_t n, const char *dir)
 {
-    char why[400], line[460];
+    char why[400];
     KitJudge kit = { cfg, b };
     int refused = include_scan_judged(text, n, dir, judge_kit_file, &kit, why, sizeof why);
-    if (refused) {
-        snprintf(line, sizeof line, "refused: %s\n", why);
-        say(b, line);
-    }
+    if (refused)
+        appendf(&b->messages, "refused: %s\n", why);
     return refused;
 }
 
@@ -460,7 +429,7 @@ static int check_dependencies(const BuildConfig *cfg, Build *b, const char *depf
         if (strchr(word, ':') || strcmp(word, "\\") == 0)
             continue;
         if (inside_kit(cfg, b, word)) {
-            build_say(b, "refused: the file includes a file of the grader: ", word);
+            appendf(&b->messages, "refused: the file includes a file of the grader: %s\n", word);
             status = 1;
         }
     }
@@ -509,7 +478,7 @@ int build_link_verdict(Build *b, const SandboxResult *res)
         char *nl = strchr(res->answer, '\n');
         if (nl)
             *nl = '\0';
-        build_say(b, "the linker: ", res->answer + 11);
+        appendf(&b->messages, "the linker: %s\n", res->answer + 11);
         b->ok = false;
         b->unchecked = false;
         return 1;
@@ -644,7 +613,7 @@ static int link_apart(const BuildConfig *cfg, Build *b, const char *submission, 
     rc = run_cc(cfg, b, link, keep, &b->cpu_link, err, errlen);
     if (rc == 0) {
         b->messages[before] = '\0';                    /* the first link's words */
-        say(b, said);
+        appendf(&b->messages, "%s", said);
     } else if (rc > 0) {
         b->messages[failed] = '\0';                    /* the first link's stand */
     }

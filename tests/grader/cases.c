@@ -25,6 +25,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -71,6 +72,22 @@ PointsText points_text(double points)
     if (strcmp(p.s, "-0") == 0)
         snprintf(p.s, sizeof p.s, "0");
     return p;
+}
+
+void appendf(char **s, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    size_t old = *s ? strlen(*s) : 0;
+    char *t = n >= 0 ? realloc(*s, old + (size_t)n + 1) : NULL;
+    if (!t)
+        return;
+    va_start(ap, fmt);
+    vsnprintf(t + old, (size_t)n + 1, fmt, ap);
+    va_end(ap);
+    *s = t;
 }
 
 int part_from_label(const char *label)

@@ -11,37 +11,9 @@
 #include "kit/scene.h"                  /* the guard sphere's colour */
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-typedef struct {
-    char *s;
-    size_t len, cap;
-} Text;
-
-static void say(Text *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static void say(Text *t, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    int n = vsnprintf(NULL, 0, fmt, ap);
-    va_end(ap);
-    if (n < 0)
-        return;
-    if (t->len + (size_t)n + 1 > t->cap) {
-        t->cap = (t->len + (size_t)n + 1) * 2;
-        char *ns = realloc(t->s, t->cap);
-        if (!ns)
-            return;
-        t->s = ns;
-    }
-    va_start(ap, fmt);
-    vsnprintf(t->s + t->len, (size_t)n + 1, fmt, ap);
-    va_end(ap);
-    t->len += (size_t)n;
-}
 
 static const char *in_names[NKINDS][CASE_MAX_IN] = {
     [KIND_PLANE] = { "fov_degrees", "aspect", "d" },
@@ -148,78 +120,78 @@ static bool case_ok(Kind kind, const Case *c, const double *want, const double *
     return true;
 }
 
-static void describe_numbers(Text *t, const char *const *names, const double *v, int n)
+static void describe_numbers(char **t, const char *const *names, const double *v, int n)
 {
     char b[40];
     for (int k = 0; k < n; k++)
-        say(t, "%s%s = %s", k ? ", " : "", names[k], kit_shortest_double(b, sizeof b, v[k]));
+        appendf(t, "%s%s = %s", k ? ", " : "", names[k], kit_shortest_double(b, sizeof b, v[k]));
 }
 
-static void describe_case(Text *t, const Test *test, int index, const Case *c, const double *got, bool have)
+static void describe_case(char **t, const Test *test, int index, const Case *c, const double *got, bool have)
 {
     Kind kind = test->kind;
     int nin = kind_nin(kind), nout = kind_nout(kind);
     char b0[40], b1[40];
-    say(t, "  case %d of %d", index + 1, test->ncases);
+    appendf(t, "  case %d of %d", index + 1, test->ncases);
     if (kind == KIND_IMAGE && test->image_nx > 0)
-        say(t, " (pixel i = %d, j = %d)", index % test->image_nx, index / test->image_nx);
-    say(t, "\n    input:     ");
+        appendf(t, " (pixel i = %d, j = %d)", index % test->image_nx, index / test->image_nx);
+    appendf(t, "\n    input:     ");
     describe_numbers(t, in_names[kind], c->in, nin);
     if (kind == KIND_COLOR || kind == KIND_IMAGE)
-        say(t, "  (scene: %d spheres; background %.3g %.3g %.3g)", test->nspheres,
+        appendf(t, "  (scene: %d spheres; background %.3g %.3g %.3g)", test->nspheres,
             test->background[0], test->background[1], test->background[2]);
     if (kind == KIND_MESH)
-        say(t, "  (a closed mesh of %d triangles: the first hit over all of them)", test->ntriangles);
-    say(t, "\n    expected:  ");
+        appendf(t, "  (a closed mesh of %d triangles: the first hit over all of them)", test->ntriangles);
+    appendf(t, "\n    expected:  ");
     if (kind_is_hit(kind)) {
         if (c->want[0] != 0)
-            say(t, "hit at t = %s (within %.3g)", kit_shortest_double(b0, sizeof b0, c->want[1]),
+            appendf(t, "hit at t = %s (within %.3g)", kit_shortest_double(b0, sizeof b0, c->want[1]),
                 c->tol[1]);
         else
-            say(t, "miss");
+            appendf(t, "miss");
         if ((c->flags & CASE_EITHER_HIT) && kind == KIND_SPHERE && c->alt[0] < c->alt[1] && c->alt[0] <= 0)
-            say(t, " -- or a hit at a t > 0 up to %s: the ray starts within rounding of "
+            appendf(t, " -- or a hit at a t > 0 up to %s: the ray starts within rounding of "
                    "the surface, so a miss, a hit just ahead and the far side are all accepted "
                    "(t = 0, the origin itself, is not ahead)",
                 kit_shortest_double(b1, sizeof b1, c->alt[1]));
         else if ((c->flags & CASE_EITHER_HIT) && kind == KIND_SPHERE && c->alt[0] < c->alt[1])
-            say(t, " -- or a hit at t from %s to %s: the ray starts within rounding of "
+            appendf(t, " -- or a hit at t from %s to %s: the ray starts within rounding of "
                    "the surface, so a miss, a hit just ahead and the far side are all accepted",
                 kit_shortest_double(b0, sizeof b0, c->alt[0]),
                 kit_shortest_double(b1, sizeof b1, c->alt[1]));
         else if ((c->flags & CASE_EITHER_HIT) && kind == KIND_SPHERE)
-            say(t, " -- the ray grazes the sphere within rounding: hit or miss both accepted");
+            appendf(t, " -- the ray grazes the sphere within rounding: hit or miss both accepted");
         else if (c->flags & CASE_EITHER_HIT)
-            say(t, " -- within rounding of an edge, of parallel or of the origin: a miss is "
+            appendf(t, " -- within rounding of an edge, of parallel or of the origin: a miss is "
                    "accepted too");
     } else {
         describe_numbers(t, out_names[kind], c->want, nout);
         if (kind == KIND_COLOR || kind == KIND_IMAGE) {
             if (c->flags & CASE_EITHER_HIT)
-                say(t, "  (or %.3g %.3g %.3g: the ray grazes a silhouette)", c->alt[0], c->alt[1], c->alt[2]);
+                appendf(t, "  (or %.3g %.3g %.3g: the ray grazes a silhouette)", c->alt[0], c->alt[1], c->alt[2]);
         } else {
-            say(t, "  (each within ");
+            appendf(t, "  (each within ");
             for (int k = 0; k < nout; k++)
-                say(t, "%s%.3g", k ? ", " : "", c->tol[k]);
-            say(t, ")");
+                appendf(t, "%s%.3g", k ? ", " : "", c->tol[k]);
+            appendf(t, ")");
         }
     }
-    say(t, "\n    got:       ");
+    appendf(t, "\n    got:       ");
     if (!have) {
-        say(t, "no answer\n");
+        appendf(t, "no answer\n");
         return;
     }
     if (kind_is_hit(kind)) {
         if (got[0] == 1)
-            say(t, "hit at t = %s", kit_shortest_double(b0, sizeof b0, got[1]));
+            appendf(t, "hit at t = %s", kit_shortest_double(b0, sizeof b0, got[1]));
         else if (got[0] == 0)
-            say(t, "miss");
+            appendf(t, "miss");
         else
-            say(t, "a return value that is neither true nor false");
+            appendf(t, "a return value that is neither true nor false");
     } else {
         describe_numbers(t, out_names[kind], got, nout);
     }
-    say(t, "\n");
+    appendf(t, "\n");
 }
 
 /* Whether a case's input holds a NaN. */
@@ -404,17 +376,17 @@ static const char *flat_diagnosis(const Test *test, const double (*got)[CASE_MAX
 /* A hit at t <= 0, or at a t that is not a number, where the input is not
  * NaN (that case has a hint of its own): the answer alone shows it, and
  * this says so.  Whether it did. */
-static bool hit_not_ahead(Text *t, const double *got)
+static bool hit_not_ahead(char **t, const double *got)
 {
     double tg = got[1];
     if (got[0] != 1 || tg > 0)
         return false;
     if (isnan(tg))
-        say(t, "    hint:      a hit at t = NaN: a hit needs t > 0, and a test written as \"t < 0: "
+        appendf(t, "    hint:      a hit at t = NaN: a hit needs t > 0, and a test written as \"t < 0: "
                "miss\" lets NaN through (every comparison with NaN is false); write it as "
                "!(t > 0)\n");
     else
-        say(t, "    hint:      a hit at t = %.3g is %s the ray's origin: only t > 0 is a hit\n", tg,
+        appendf(t, "    hint:      a hit at t = %.3g is %s the ray's origin: only t > 0 is a hit\n", tg,
             tg == 0 ? "at" : "behind");
     return true;
 }
@@ -423,7 +395,7 @@ static bool hit_not_ahead(Text *t, const double *got)
  * test: a hit at t <= 0, at NaN or at infinity, t rounded to float, t a
  * whole number, a ray through a closed mesh that the test gets right
  * elsewhere.  Each is stated only when the answers prove it. */
-static void flat_evidence(Text *t, const Test *test, const Case *c, const double *got, int failed)
+static void flat_evidence(char **t, const Test *test, const Case *c, const double *got, int failed)
 {
     double want = c->want[1], tg = got[1];
     /* A crack: a miss or a later hit (farther by more than a t a few
@@ -431,7 +403,7 @@ static void flat_evidence(Text *t, const Test *test, const Case *c, const double
      * least three quarters of them) the same test gets right. */
     if (test->kind == KIND_MESH && c->want[0] == 1 && (got[0] == 0 || tg > want * (1 + 1e-6) + c->tol[1])
         && 4 * failed <= test->ncases) {
-        say(t, "    hint:      the ray entered this closed mesh through an edge or vertex that "
+        appendf(t, "    hint:      the ray entered this closed mesh through an edge or vertex that "
                "triangles share, and %s: your test is not watertight there (the hard-case "
                "challenge)\n", got[0] == 0 ? "hit nothing" : "its first hit was farther on");
         return;
@@ -440,7 +412,7 @@ static void flat_evidence(Text *t, const Test *test, const Case *c, const double
         return;
     /* A hit at t = +inf: a quotient whose divisor was 0. */
     if (got[0] == 1 && tg == INFINITY) {
-        say(t, "    hint:      a hit at t = inf is no point of the ray: t must be finite. A division by "
+        appendf(t, "    hint:      a hit at t = inf is no point of the ray: t must be finite. A division by "
                "%s = 0 (a ray parallel to the %s) gives it: that is a miss\n",
             test->kind == KIND_PLANEHIT ? "r.n" : "det", test->kind == KIND_PLANEHIT ? "plane" : "triangle");
         return;
@@ -449,9 +421,9 @@ static void flat_evidence(Text *t, const Test *test, const Case *c, const double
         return;
     bool near_want = fabs(tg - want) <= 1e-5 * want;
     if (near_want && (double)(float)tg == tg && (double)(float)want != want)
-        say(t, "    hint:      t = %.9g is a float (24 bits): compute in double\n", tg);
+        appendf(t, "    hint:      t = %.9g is a float (24 bits): compute in double\n", tg);
     else if (tg == floor(tg) && want != floor(want) && fabs(tg - want) < 1)
-        say(t, "    hint:      t = %.17g is a whole number: is t, or a value it comes from, an int?\n", tg);
+        appendf(t, "    hint:      t = %.17g is a whole number: is t, or a value it comes from, an int?\n", tg);
 }
 
 /* Parts 4 and 5: true when the test's answers missed some hits, and every
@@ -526,7 +498,7 @@ static bool is_flat(const Test *test)
  * the other tests of its part; sets a->named.  Returns the message. */
 static char *verdict(const Test *test, Answers *a, const PartSoFar *part)
 {
-    Text t = { 0 };
+    char *t = NULL;
     if (a->first_bad >= 0)
         describe_case(&t, test, a->first_bad, &test->cases[a->first_bad], a->got[a->first_bad], true);
     /* The guard sphere's colour, which only a read past the scene's last
@@ -534,7 +506,7 @@ static char *verdict(const Test *test, Answers *a, const PartSoFar *part)
     if ((test->kind == KIND_COLOR || test->kind == KIND_IMAGE) && a->first_bad >= 0 &&
         a->got[a->first_bad][0] == SCENE_GUARD_RED && a->got[a->first_bad][1] == SCENE_GUARD_GREEN &&
         a->got[a->first_bad][2] == SCENE_GUARD_BLUE)
-        say(&t, "    hint:      this magenta is the grader's marker sphere, kept just past the last "
+        appendf(&t, "    hint:      this magenta is the grader's marker sphere, kept just past the last "
                 "sphere, around everything: ray_color read scene->spheres[scene->nspheres], one sphere "
                 "too many. Loop while k < scene->nspheres\n");
     a->named = NULL;
@@ -549,17 +521,17 @@ static char *verdict(const Test *test, Answers *a, const PartSoFar *part)
             /* The mistake's words up to its fix ("...: compare it with 0"). */
             const char *fix = strstr(ruled, ": ");
             int n = fix ? (int)(fix - ruled) : (int)strlen(ruled);
-            say(&t, "    hint:      the hits missed here fit one known mistake alone (%.*s), but your code "
+            appendf(&t, "    hint:      the hits missed here fit one known mistake alone (%.*s), but your code "
                     "passed \"%s\", which code with that mistake fails: they have another cause%s\n", n,
                 ruled, ruled_out_by(ruled, part)->name,
                 test->hard ? ", such as rounding where this hard case makes it large (the handout's "
                              "hard-case challenge)" : "");
         }
         else if (nan_in && a->got[a->first_bad][0] == 1)
-            say(&t, "    hint:      NaN input must be a miss: a test written as \"t < 0: miss\" lets "
+            appendf(&t, "    hint:      NaN input must be a miss: a test written as \"t < 0: miss\" lets "
                     "NaN through (every comparison with NaN is false); write it as !(t > 0)\n");
         else if (why) {
-            say(&t, "    hint:      %s\n", why);
+            appendf(&t, "    hint:      %s\n", why);
             if (a->named && !strstr(a->named, "t > 0"))  /* what the case shown proves besides */
                 hit_not_ahead(&t, a->got[a->first_bad]);
         }
@@ -567,7 +539,7 @@ static char *verdict(const Test *test, Answers *a, const PartSoFar *part)
             /* A fact of the test's missed hits; the case shown may be wrong
              * for a reason of its own (a float t), which is said first. */
             flat_evidence(&t, test, bad, a->got[a->first_bad], a->failed);
-            say(&t, "    hint:      every hit this test missed (the farthest at t = %.3g) is a thousand "
+            appendf(&t, "    hint:      every hit this test missed (the farthest at t = %.3g) is a thousand "
                     "times nearer the ray's origin, or more, than every hit it found (the nearest at "
                     "t = %.3g): are hits below some small t ignored? This lab's rule is tmin = 0: every "
                     "hit with t > 0 counts\n", missed, found);
@@ -575,17 +547,17 @@ static char *verdict(const Test *test, Answers *a, const PartSoFar *part)
             flat_evidence(&t, test, bad, a->got[a->first_bad], a->failed);
     }
     if (!a->complete) {
-        say(&t, "  the answers stopped after case %d of %d", a->answered, test->ncases);
+        appendf(&t, "  the answers stopped after case %d of %d", a->answered, test->ncases);
         if (a->answered < test->ncases) {
-            say(&t, ": this case did not finish\n");
+            appendf(&t, ": this case did not finish\n");
             describe_case(&t, test, a->answered, &test->cases[a->answered], NULL, false);
         } else {
-            say(&t, ": the program did not finish normally\n");
+            appendf(&t, ": the program did not finish normally\n");
         }
     }
     if (a->failed > 1)
-        say(&t, "  %d of %d cases were wrong; the first is shown.\n", a->failed, test->ncases);
-    return t.s ? t.s : calloc(1, 1);
+        appendf(&t, "  %d of %d cases were wrong; the first is shown.\n", a->failed, test->ncases);
+    return t ? t : calloc(1, 1);
 }
 
 bool check_name_again(const Test *test, Answers *a, const PartSoFar *part, char **out)

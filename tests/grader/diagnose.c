@@ -37,17 +37,6 @@ typedef struct {
     int ncauses;
 } Found;
 
-static void append(char **s, size_t *len, const char *add)
-{
-    size_t n = strlen(add);
-    char *ns = realloc(*s, *len + n + 1);
-    if (!ns)
-        return;
-    memcpy(ns + *len, add, n + 1);
-    *s = ns;
-    *len += n;
-}
-
 /* Names a cause the probes confirmed: its key, the model (tag) that says
  * which failing cases it explains, and its explanation. */
 static void name_cause(Found *f, const char *key, int tag, const char *fmt, ...)
@@ -177,20 +166,16 @@ typedef bool (*Explains)(const void *ctx, int tag, const Test *t, const Case *c,
 
 /* The line that ends one group's causes: how many of its failing cases
  * (core or hard, group) the causes explain. */
-static void summary_line(char **text, size_t *len, int group, int named, bool after_core, int failing,
-                         int explained)
+static void summary_line(char **text, int group, int named, bool after_core, int failing, int explained)
 {
     static const char *const kind[2] = { "core", "hard" };
     const char *these = after_core ? "With the causes above, this explains"
                       : named > 1 ? "Together these explain" : "This explains";
-    char line[240];
     if (explained == failing)
-        snprintf(line, sizeof line, "%s every failing %s case of this part (%d).\n", these, kind[group],
-                 failing);
+        appendf(text, "%s every failing %s case of this part (%d).\n", these, kind[group], failing);
     else
-        snprintf(line, sizeof line, "%s %d of the %d failing %s cases of this part; the others have a "
-                 "cause the probes did not find.\n", these, explained, failing, kind[group]);
-    append(text, len, line);
+        appendf(text, "%s %d of the %d failing %s cases of this part; the others have a cause the "
+                "probes did not find.\n", these, explained, failing, kind[group]);
 }
 
 static void write_diagnosis(Found *f, int part, const TestList *tests, const TestResult *results,
@@ -217,7 +202,6 @@ static void write_diagnosis(Found *f, int part, const TestList *tests, const Tes
         }
     }
     char **out[2] = { text, hard_text };
-    size_t len[2] = { 0, 0 }, klen = 0;
     int named[2] = { 0, 0 };
     /* The core failures' causes first, then the hard cases' alone: the keys
      * in the order of the two texts' lines. */
@@ -228,18 +212,14 @@ static void write_diagnosis(Found *f, int part, const TestList *tests, const Tes
         int group = c->explained[0] == 0 && c->explained[1] > 0;      /* the hard cases' alone */
         if (group != q / f->ncauses)
             continue;
-        if (klen)
-            append(keys, &klen, " ");
-        append(keys, &klen, c->key);
-        append(out[group], &len[group], "- ");
-        append(out[group], &len[group], c->text);
-        append(out[group], &len[group], "\n");
+        appendf(keys, "%s%s", *keys ? " " : "", c->key);
+        appendf(out[group], "- %s\n", c->text);
         named[group]++;
     }
     for (int group = 0; group < 2; group++)
         if (named[group] > 0 && failing[group] > 0)
-            summary_line(out[group], &len[group], group, named[group], group == 1 && named[0] > 0,
-                         failing[group], explained[group]);
+            summary_line(out[group], group, named[group], group == 1 && named[0] > 0, failing[group],
+                         explained[group]);
 }
 
 /* ==== Part 1 ================================================================ */
@@ -1545,13 +1525,10 @@ static void flat_unwritten(int part, const TestList *tests, const TestResult *re
     }
     if (answered == 0 || hits == 0)
         return;
-    size_t len = 0, klen = 0;
-    char line[200];
-    snprintf(line, sizeof line, "- every answer is a miss, the skeleton's answer, whatever the input (%d "
-             "cases, %d of them hits): the function is not written yet, or returns before its work "
-             "is done.\n", answered, hits);
-    append(text, &len, line);
-    append(keys, &klen, "unwritten");
+    appendf(text, "- every answer is a miss, the skeleton's answer, whatever the input (%d cases, %d of "
+            "them hits): the function is not written yet, or returns before its work is done.\n",
+            answered, hits);
+    appendf(keys, "unwritten");
 }
 
 /* ==== every part ============================================================= */
@@ -1575,28 +1552,19 @@ void diagnose_part(int part, const TestList *tests, const TestResult *results, c
     P2Found p2 = { -1, -1, -1 };
     P3aFound p3 = { { false }, 0, false, 1e-9, false };
     P3bFound pb = { -1, -1 };
-    switch (part) {
-    case PART1:
+    if (part == PART1)
         diagnose_part1(&ps, &f, &p1);
-        write_diagnosis(&f, part, tests, results, p1_explains, &p1, text, hard_text, keys);
-        break;
-    case PART2:
+    else if (part == PART2)
         diagnose_part2(&ps, &f, &p2);
-        write_diagnosis(&f, part, tests, results, p2_explains, &p2, text, hard_text, keys);
-        break;
-    case PART3A:
+    else if (part == PART3A)
         diagnose_part3a(&ps, &f, &p3);
-        write_diagnosis(&f, part, tests, results, p3_explains, &p3, text, hard_text, keys);
-        break;
-    default:
+    else
         diagnose_part3b(&ps, &f, &pb);
-        write_diagnosis(&f, part, tests, results, p3b_explains, &pb, text, hard_text, keys);
-        if (probes->own_part3a && probes->part3a_failed) {
-            size_t len = *text ? strlen(*text) : 0;
-            append(text, &len, "Part 3b calls your own sphere_intersect here, and Part 3a lost points: "
-                   "put Part 3a right first, then look at Part 3b again.\n");
-        }
-        break;
-    }
+    Explains explains[] = { p1_explains, p2_explains, p3_explains, p3b_explains };
+    const void *ctx[] = { &p1, &p2, &p3, &pb };
+    write_diagnosis(&f, part, tests, results, explains[part], ctx[part], text, hard_text, keys);
+    if (part == PART3B && probes->own_part3a && probes->part3a_failed)
+        appendf(text, "Part 3b calls your own sphere_intersect here, and Part 3a lost points: put Part "
+                "3a right first, then look at Part 3b again.\n");
     testlist_free(&ps.list);
 }

@@ -12,7 +12,6 @@
 #include "hexfloat.h"
 
 #include <signal.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,22 +22,6 @@
 
 static const char *kind_word[NKINDS] = { "plane", "pixel", "sphere", "camera", "color", "image",
                                          "planehit", "triangle", "mesh" };
-
-static char *xasprintf(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
-static char *xasprintf(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    int n = vsnprintf(NULL, 0, fmt, ap);
-    va_end(ap);
-    char *s = malloc((size_t)(n > 0 ? n : 0) + 1);
-    if (!s)
-        return NULL;
-    va_start(ap, fmt);
-    vsnprintf(s, (size_t)n + 1, fmt, ap);
-    va_end(ap);
-    return s;
-}
 
 /* The first n bytes of s (up to a NUL) with pad before each line, so that
  * what a student's code printed sits under its heading, not beside it. */
@@ -165,7 +148,7 @@ static void run_test(const GradeOptions *opt, const Build *b, const Test *t, con
     SandboxResult res;
     char err[256];
     if (run_child(opt, b, t, &res, err, sizeof err) != 0) {
-        r->output = xasprintf("the grader could not run this test: %s", err);
+        appendf(&r->output, "the grader could not run this test: %s", err);
         return;
     }
     r->seconds = res.seconds;
@@ -196,19 +179,15 @@ static void run_test(const GradeOptions *opt, const Build *b, const Test *t, con
 
     size_t ns = res.output_len < OUTPUT_SHOWN ? res.output_len : OUTPUT_SHOWN;
     char *shown = ns && !ok ? indented(res.output, ns, "    ") : NULL;
-    char *head = xasprintf("%s%s%s%s", ok ? "" : t->note[0] ? "  about: " : "", ok ? "" : t->note,
-                           ok || !t->note[0] ? "" : "\n", ok ? "" : why);
-    r->output = xasprintf("%s%s%s%s", head ? head : "", ok ? "" : verdict,
-                          ns && !ok ? "  your code printed:\n" : "", shown ? shown : "");
-    r->verdict_at = head ? strlen(head) : 0;
-    r->verdict_len = ok || !head ? 0 : strlen(verdict);
-    free(head);
+    appendf(&r->output, "%s%s%s%s", ok ? "" : t->note[0] ? "  about: " : "", ok ? "" : t->note,
+            ok || !t->note[0] ? "" : "\n", ok ? "" : why);
+    r->verdict_at = r->output ? strlen(r->output) : 0;
+    r->verdict_len = ok || !r->output ? 0 : strlen(verdict);
+    appendf(&r->output, "%s%s%s", ok ? "" : verdict, ns && !ok ? "  your code printed:\n" : "",
+            shown ? shown : "");
     free(shown);
-    if (ns && !ok && (res.output_truncated || res.output_len > OUTPUT_SHOWN)) {
-        char *more = xasprintf("%s\n  [... more output cut]\n", r->output);
-        free(r->output);
-        r->output = more;
-    }
+    if (ns && !ok && (res.output_truncated || res.output_len > OUTPUT_SHOWN))
+        appendf(&r->output, "\n  [... more output cut]\n");
     free(verdict);
     sandbox_result_free(&res);
 }
@@ -272,7 +251,7 @@ static int take_passes(const TestList *tests, int part, const char *const *from,
         r->ran = r->passed = true;
         r->score = r->max_score;
         r->seconds = seconds;
-        r->output = xasprintf("%s", "");
+        appendf(&r->output, "%s", "");
         done[k] = true;
         passed++;
     }
@@ -399,15 +378,14 @@ static int run_rest_alone(const GradeOptions *opt, const Build *b, Grade *g, int
         if (!b->ok) {
             char why[200];
             grade_unbuilt_why(g, p, false, why, sizeof why);
-            r->output = xasprintf(first ? "  %s, so this part scores 0:\n%s"
-                                        : "  %s (see the first test of this part)%s",
-                                  why, first ? g->build_messages[p] : "");
+            appendf(&r->output, first ? "  %s, so this part scores 0:\n%s"
+                                      : "  %s (see the first test of this part)%s",
+                    why, first ? g->build_messages[p] : "");
         } else if (timeouts >= 2) {
-            r->output = xasprintf("  not run: two earlier tests of this part did not finish in time");
+            appendf(&r->output, "  not run: two earlier tests of this part did not finish in time");
         } else if (*spent + cfg->timeout > cfg->part_time) {
-            r->output = xasprintf("  not run: this part's tests took %g s in all, the most a part may "
-                                  "take (its tests each took long: does the code sleep or loop?)",
-                                  cfg->part_time);
+            appendf(&r->output, "  not run: this part's tests took %g s in all, the most a part may "
+                    "take (its tests each took long: does the code sleep or loop?)", cfg->part_time);
         } else {
             if (opt->verbose)
                 fprintf(stderr, "  %s\n", t->name);

@@ -114,6 +114,9 @@ int part_from_label(const char *label);  /* -1 if unknown                */
  * the numbers as they are.  Use the .s of the value returned. */
 typedef struct { char s[32]; } PointsText;
 PointsText points_text(double points);
+/* Appends printf-style text to a malloc'd string (left as it was if memory
+ * runs out). */
+void appendf(char **s, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 Test *testlist_add(TestList *list, int part, Kind kind, const char *name);
 Case *test_add_case(Test *test);

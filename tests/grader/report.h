@@ -24,10 +24,6 @@ void report_table(FILE *f, const Grade *g, const GradeConfig *cfg, const char *s
 /* Writes results.json through a temporary file and rename; 0 or -1. */
 int report_json(const char *path, const Grade *g, char *err, size_t errlen);
 
-/* Appends printf-style text to a malloc'd string (left as it was if memory
- * runs out). */
-void appendf(char **s, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-
 /* A results.json for a submission the grader could not grade at all. */
 int report_json_error(const char *path, const char *message, char *err, size_t errlen);
 /* Its end, which PrairieLearn's shares: the message as the output, no

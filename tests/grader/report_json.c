@@ -10,28 +10,11 @@
 #include "jail.h"
 #include "../tools/json.h"
 
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define SUMMARY_MAX 16383
-
-void appendf(char **s, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    int n = vsnprintf(NULL, 0, fmt, ap);
-    va_end(ap);
-    size_t old = *s ? strlen(*s) : 0;
-    char *t = n >= 0 ? realloc(*s, old + (size_t)n + 1) : NULL;
-    if (!t)
-        return;
-    va_start(ap, fmt);
-    vsnprintf(t + old, (size_t)n + 1, fmt, ap);
-    va_end(ap);
-    *s = t;
-}
 
 static void test_entry(JsonWriter *j, const Test *t, const TestResult *r)
 {
