@@ -37,6 +37,7 @@ static const int kind_out[NKINDS] = { 2, 3, 2, 6, 3, 3, 2, 2, 2 };
 
 int kind_nin(Kind kind) { return kind_in[kind]; }
 int kind_nout(Kind kind) { return kind_out[kind]; }
+const char *kind_name(Kind kind) { return kind_names[kind]; }
 
 bool kind_is_hit(Kind kind)
 {

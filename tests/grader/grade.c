@@ -20,9 +20,6 @@
 #define TEST_MEMORY_MB 64     /* a test program needs 3 to 4 MiB of address space */
 #define MAX_BATCH 4096        /* tests of one part run together, at most     */
 
-static const char *kind_word[NKINDS] = { "plane", "pixel", "sphere", "camera", "color", "image",
-                                         "planehit", "triangle", "mesh" };
-
 /* The first n bytes of s (up to a NUL) with pad before each line, so that
  * what a student's code printed sits under its heading, not beside it. */
 static char *indented(const char *s, size_t n, const char *pad)
@@ -55,7 +52,7 @@ static char *test_input(const Test *t, bool alone, size_t *len)
     char *s = malloc(cap);
     if (!s)
         return NULL;
-    size_t n = (size_t)snprintf(s, cap, "%s%s %d\n", alone ? "alone\n" : "", kind_word[t->kind], t->ncases);
+    size_t n = (size_t)snprintf(s, cap, "%s%s %d\n", alone ? "alone\n" : "", kind_name(t->kind), t->ncases);
     if (t->kind == KIND_COLOR || t->kind == KIND_IMAGE) {
         n += (size_t)snprintf(s + n, cap - n, "background %a %a %a\nspheres %d\n",
                               t->background[0], t->background[1], t->background[2], t->nspheres);

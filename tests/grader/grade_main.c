@@ -407,18 +407,6 @@ static int job_users(int jobs, char ids[][16])
     return found;
 }
 
-/* Appends text to the string in buf (size bytes), as much as fits. */
-static void append_text(char *buf, size_t size, const char *text)
-{
-    size_t used = strlen(buf), k = strlen(text);
-    if (used + 1 >= size)
-        return;
-    if (k > size - used - 1)
-        k = size - used - 1;
-    memcpy(buf + used, text, k);
-    buf[used + k] = '\0';
-}
-
 /* The folder of submissions, read: the submissions, and what was left out. */
 typedef struct {
     char **names;       /* the submissions' folders, in order */
@@ -511,7 +499,7 @@ static int read_submissions(const char *dir, Submissions *s)
         qsort(dots, (size_t)s->ndots, sizeof *dots, by_name);
     for (int k = 0; k < s->ndots; k++) {
         if (k > 0 && k <= 8)
-            append_text(s->hidden, sizeof s->hidden, k < 8 ? ", " : ", ...");
+            term_append(s->hidden, sizeof s->hidden, k < 8 ? ", " : ", ...");
         if (k < 8)
             term_append(s->hidden, sizeof s->hidden, dots[k]);
         free(dots[k]);
@@ -534,24 +522,17 @@ static int read_submissions(const char *dir, Submissions *s)
  * is written.  Says what it holds instead; returns fail's status. */
 static int no_submissions(const char *dir, const Submissions *s)
 {
-    char err[1024];
-    snprintf(err, sizeof err, "%s holds no submissions: each submission is a folder of stage files in it%s%s",
-             dir, s->ndots ? " (folders of the system's own, a name starting with \".\" or __MACOSX, are left "
-                             "out: " : "", s->hidden);
-    if (s->ndots)
-        append_text(err, sizeof err, ")");
-    if (s->lms) {        /* a platform's download: the sorter reads its names */
-        char more[700];
+    char err[1024], more[700] = "";
+    if (s->lms)          /* a platform's download: the sorter reads its names */
         snprintf(more, sizeof more, "; %d of its files or folders are named as a Canvas, Moodle or "
                  "Blackboard download names a class's files: make sort-submissions FROM=%s "
                  "TO=new-folder sorts them into a folder per submission", s->lms, dir);
-        append_text(err, sizeof err, more);
-    } else if (s->loose) {      /* one folder of every student's files, as some downloads give */
-        char more[160];
+    else if (s->loose)          /* one folder of every student's files, as some downloads give */
         snprintf(more, sizeof more, "; it holds %d stage file%s of its own: put each submission's files "
                  "in a folder of its own, named after it", s->loose, s->loose == 1 ? "" : "s");
-        append_text(err, sizeof err, more);
-    }
+    snprintf(err, sizeof err, "%s holds no submissions: each submission is a folder of stage files in it%s%s%s%s",
+             dir, s->ndots ? " (folders of the system's own, a name starting with \".\" or __MACOSX, are left "
+                             "out: " : "", s->hidden, s->ndots ? ")" : "", more);
     return fail(NULL, "%s", err);
 }
 
@@ -702,7 +683,7 @@ static void gradebook_row(FILE *f, const GradeConfig *cfg, const AllRun *run, co
         fprintf(f, ",%g,%g,%s\n", v[NPARTS], v[NPARTS + 1],
                 st == 0 ? "full marks" : none ? "no stage file" : "points lost");
         if (none && gb->nempty++ < 4) {
-            append_text(gb->empty, sizeof gb->empty, gb->nempty > 1 ? ", " : "");
+            term_append(gb->empty, sizeof gb->empty, gb->nempty > 1 ? ", " : "");
             term_append(gb->empty, sizeof gb->empty, j->name);
         }
     } else {

@@ -105,6 +105,7 @@ typedef struct {
 /* Number of numbers in and out for a kind. */
 int kind_nin(Kind kind);
 int kind_nout(Kind kind);
+const char *kind_name(Kind kind);        /* "plane", "pixel", ... as the test files say */
 const char *part_label(int part);        /* "1", "2", "3a", "3b", "4", "5" */
 const char *part_title(int part);        /* "Part 1: image plane size"   */
 int part_from_label(const char *label);  /* -1 if unknown                */

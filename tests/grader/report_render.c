@@ -28,19 +28,15 @@
  * that the child reads exactly the scene's numbers).  malloc'd, or NULL. */
 static char *scene_input(const Scene *s, size_t *len)
 {
-    size_t cap = 256 + (size_t)s->nspheres * 7 * 28;
-    char *t = malloc(cap);
-    if (!t)
-        return NULL;
-    size_t n = (size_t)snprintf(t, cap, "render %d %d\nfov %a d %a\nbackground %a %a %a\nspheres %d\n",
-                                s->nx, s->ny, s->fov_degrees, s->d, s->background.x,
-                                s->background.y, s->background.z, s->nspheres);
+    char *t = NULL;
+    appendf(&t, "render %d %d\nfov %a d %a\nbackground %a %a %a\nspheres %d\n", s->nx, s->ny,
+            s->fov_degrees, s->d, s->background.x, s->background.y, s->background.z, s->nspheres);
     for (int k = 0; k < s->nspheres; k++) {
         const Sphere *sp = &s->spheres[k];
-        n += (size_t)snprintf(t + n, cap - n, "%a %a %a %a %a %a %a\n", sp->center.x, sp->center.y,
-                              sp->center.z, sp->radius, sp->color.x, sp->color.y, sp->color.z);
+        appendf(&t, "%a %a %a %a %a %a %a\n", sp->center.x, sp->center.y, sp->center.z, sp->radius,
+                sp->color.x, sp->color.y, sp->color.z);
     }
-    *len = n;
+    *len = t ? strlen(t) : 0;
     return t;
 }
 
