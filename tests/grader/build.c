@@ -73,12 +73,12 @@ int build_tempdir(char *dir, size_t len, char *err, size_t errlen)
     return 0;
 }
 
-void build_rmtree(const char *path)
-{
-    jail_remove_tree(path);
-}
-
-int build_open_stage(const char *path)
+/* Opens a submission's stage file to read: a regular file, not through a
+ * symbolic link (as root, a link could point the grader at the reference
+ * or at a file only root may read), and never waiting on a pipe.  The
+ * descriptor, or -1 with errno ENOENT (none), ELOOP (a link) or EINVAL
+ * (not a regular file). */
+static int build_open_stage(const char *path)
 {
     int fd = open(path, O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) {
@@ -845,7 +845,7 @@ void build_keep_objects(const Build *b, const char *dir)
 void build_remove(Build *b)
 {
     if (b->dir[0])
-        build_rmtree(b->dir);
+        jail_remove_tree(b->dir);
     free(b->messages);
     b->messages = NULL;
     b->dir[0] = '\0';

@@ -110,13 +110,4 @@ void build_keep_objects(const Build *b, const char *dir);
 /* Makes a private temporary directory; 0 on success. */
 int build_tempdir(char *dir, size_t len, char *err, size_t errlen);
 
-/* Opens a submission's stage file to read: a regular file, not through a
- * symbolic link (as root, a link could point the grader at the reference
- * or at a file only root may read), and never waiting on a pipe.  The
- * descriptor, or -1 with errno ENOENT (none), ELOOP (a link) or EINVAL
- * (not a regular file). */
-int build_open_stage(const char *path);
-/* rm -rf path (no symlinks followed; any depth: jail_remove_tree). */
-void build_rmtree(const char *path);
-
 #endif

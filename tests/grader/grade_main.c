@@ -326,7 +326,7 @@ static int grade_one(const char *submission, const char *part, const char *resul
         grade_free(&g);                 /* what it had made before it stopped */
         testlist_free(&tests);
         if (kept[0])
-            build_rmtree(kept);
+            jail_remove_tree(kept);
         return fail(results, "%s", err);
     }
     if (!quiet)
@@ -348,7 +348,7 @@ static int grade_one(const char *submission, const char *part, const char *resul
     if (class_record && class_record_write(class_record, &g, cfg.timeout, err, sizeof err) != 0)
         fprintf(stderr, "grade: %s\n", err);          /* the class page lacks it; nothing else */
     if (kept[0])
-        build_rmtree(kept);
+        jail_remove_tree(kept);
     if (summary)
         print_summary(&g, status);
     fflush(stdout);

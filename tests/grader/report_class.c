@@ -7,6 +7,7 @@
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "class_model.h"
 #include "build.h"
+#include "jail.h"
 #include "csv.h"
 #include "sandbox.h"
 #include "kit/savefile.h"
@@ -394,7 +395,7 @@ int class_finish(ClassRun *run, const GradeConfig *cfg, ClassLoadTests load_test
         class_sub_free(&run->subs[s]);
     free(run->subs);
     free(run->previous_csv);
-    build_rmtree(run->records);
+    jail_remove_tree(run->records);
     free(run);
     return status;
 }

@@ -24,6 +24,7 @@
 #include <unistd.h>
 
 #include "build.h"
+#include "jail.h"
 #include "lmsname.h"
 #include "terminal.h"
 #include "../tools/archive.h"
@@ -369,7 +370,7 @@ static int write_beside(const Archive *out, const char *to, bool exists, char *w
         status = -1;
     }
     if (status != 0)
-        build_rmtree(tmp);
+        jail_remove_tree(tmp);
     return status;
 }
 
