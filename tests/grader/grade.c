@@ -10,6 +10,7 @@
 #include "sandbox.h"
 #include "diagnose.h"
 #include "hexfloat.h"
+#include "kit/zlib.h"
 
 #include <signal.h>
 #include <stdio.h>
@@ -194,32 +195,24 @@ static void run_test(const GradeOptions *opt, const Build *b, const Test *t, con
  * *answer_max bytes.  NULL out of memory (or with no test). */
 static char *batch_input(const TestList *tests, int part, size_t *len, size_t *answer_max, int *ntests)
 {
-    size_t cap = 0;
-    char *input = NULL;
+    KitBuf input = { 0 };
     for (int k = 0; k < tests->n; k++) {
         const Test *t = &tests->tests[k];
         if (t->part != part)
             continue;
         size_t n = 0;
         char *one = test_input(t, false, &n);
-        if (!one || *len + n + 1 > cap) {
-            size_t ncap = 2 * (*len + n + 1) + 4096;
-            char *grown = one ? realloc(input, ncap) : NULL;
-            if (!grown) {
-                free(one);
-                free(input);
-                return NULL;
-            }
-            input = grown;
-            cap = ncap;
+        if (!one || kit_buf_append(&input, one, n) != 0) {
+            free(one);
+            kit_buf_free(&input);
+            return NULL;
         }
-        memcpy(input + *len, one, n);
-        *len += n;
         free(one);
         *answer_max += 512 + (size_t)t->ncases * 160;
         (*ntests)++;
     }
-    return input;
+    *len = input.len;
+    return (char *)input.data;
 }
 
 /* Of Part part's tests run together, whose answers are from[j] (size[j]
