@@ -93,7 +93,6 @@ typedef struct {
 
 typedef struct {
     int sub;                   /* index in the run                       */
-    bool before_known;         /* the previous run had its score         */
     double before[NPARTS + 2], after[NPARTS + 2];  /* parts, hard, total  */
 } ClassChange;
 
