@@ -168,7 +168,8 @@ static void describe_case(char **t, const Test *test, int index, const Case *c, 
         describe_numbers(t, out_names[kind], c->want, nout);
         if (kind == KIND_COLOR || kind == KIND_IMAGE) {
             if (c->flags & CASE_EITHER_HIT)
-                appendf(t, "  (or %.3g %.3g %.3g: the ray grazes a silhouette)", c->alt[0], c->alt[1], c->alt[2]);
+                appendf(t, "  (or %.3g %.3g %.3g: the ray grazes a silhouette)", c->alt[0], c->alt[1],
+                        c->alt[2]);
         } else {
             appendf(t, "  (each within ");
             for (int k = 0; k < nout; k++)
@@ -423,7 +424,8 @@ static void flat_evidence(char **t, const Test *test, const Case *c, const doubl
     if (near_want && (double)(float)tg == tg && (double)(float)want != want)
         appendf(t, "    hint:      t = %.9g is a float (24 bits): compute in double\n", tg);
     else if (tg == floor(tg) && want != floor(want) && fabs(tg - want) < 1)
-        appendf(t, "    hint:      t = %.17g is a whole number: is t, or a value it comes from, an int?\n", tg);
+        appendf(t, "    hint:      t = %.17g is a whole number: is t, or a value it comes from, an "
+                "int?\n", tg);
 }
 
 /* Parts 4 and 5: true when the test's answers missed some hits, and every
@@ -521,11 +523,11 @@ static char *verdict(const Test *test, Answers *a, const PartSoFar *part)
             /* The mistake's words up to its fix ("...: compare it with 0"). */
             const char *fix = strstr(ruled, ": ");
             int n = fix ? (int)(fix - ruled) : (int)strlen(ruled);
-            appendf(&t, "    hint:      the hits missed here fit one known mistake alone (%.*s), but your code "
-                    "passed \"%s\", which code with that mistake fails: they have another cause%s\n", n,
-                ruled, ruled_out_by(ruled, part)->name,
-                test->hard ? ", such as rounding where this hard case makes it large (the handout's "
-                             "hard-case challenge)" : "");
+            appendf(&t, "    hint:      the hits missed here fit one known mistake alone (%.*s), but your "
+                    "code passed \"%s\", which code with that mistake fails: they have another cause%s\n",
+                    n, ruled, ruled_out_by(ruled, part)->name,
+                    test->hard ? ", such as rounding where this hard case makes it large (the handout's "
+                                 "hard-case challenge)" : "");
         }
         else if (nan_in && a->got[a->first_bad][0] == 1)
             appendf(&t, "    hint:      NaN input must be a miss: a test written as \"t < 0: miss\" lets "

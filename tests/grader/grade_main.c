@@ -530,9 +530,10 @@ static int no_submissions(const char *dir, const Submissions *s)
     else if (s->loose)          /* one folder of every student's files, as some downloads give */
         snprintf(more, sizeof more, "; it holds %d stage file%s of its own: put each submission's files "
                  "in a folder of its own, named after it", s->loose, s->loose == 1 ? "" : "s");
-    snprintf(err, sizeof err, "%s holds no submissions: each submission is a folder of stage files in it%s%s%s%s",
-             dir, s->ndots ? " (folders of the system's own, a name starting with \".\" or __MACOSX, are left "
-                             "out: " : "", s->hidden, s->ndots ? ")" : "", more);
+    snprintf(err, sizeof err, "%s holds no submissions: each submission is a folder of stage files in "
+             "it%s%s%s%s", dir, s->ndots ? " (folders of the system's own, a name starting with \".\" or "
+                                          "__MACOSX, are left out: " : "",
+             s->hidden, s->ndots ? ")" : "", more);
     return fail(NULL, "%s", err);
 }
 
