@@ -1,6 +1,6 @@
 /*
  * gentests - writes the public tests, with their expected values and hints,
- * as tests/public/part1.tests ... part3b.tests (`make public-tests`).
+ * as tests/public/part1.tests ... part5.tests (`make public-tests`).
  * The files are committed and shipped in the student kit, whose grader has
  * no oracle; `make test` checks that they match what this program writes.
  *
