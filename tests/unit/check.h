@@ -12,8 +12,9 @@
  * An argument runs only the tests whose names contain it.
  * check_temp_dir and check_remove_tree give a test a directory of its own,
  * and check_write_file a file in it.
- * check_xorshift32 is a small deterministic pseudo-random generator for a
- * test's inputs.  CHECK_SANITIZED is 1 in the sanitized build, where each
+ * check_file_is reads a file back.  check_xorshift32 and check_xorshift64
+ * are small deterministic pseudo-random generators for a test's inputs,
+ * check_random_bytes fills a buffer from the first.  CHECK_SANITIZED is 1 in the sanitized build, where each
  * test's child also checks for leaks before it ends.
  * Include it before any other header: it sets _POSIX_C_SOURCE.
  */
@@ -132,6 +133,23 @@ static inline uint32_t check_xorshift32(uint32_t *state)
     return *state = x;
 }
 
+/* The same, xorshift64 (shifts 13, 7, 17) of the 64-bit state *state. */
+static inline uint64_t check_xorshift64(uint64_t *state)
+{
+    uint64_t x = *state;
+    x ^= x << 13;
+    x ^= x >> 7;
+    x ^= x << 17;
+    return *state = x;
+}
+
+/* p[0 .. n-1] made the top bytes of n numbers of check_xorshift32(state). */
+static inline void check_random_bytes(uint32_t *state, void *p, size_t n)
+{
+    for (size_t k = 0; k < n; k++)
+        ((unsigned char *)p)[k] = (unsigned char)(check_xorshift32(state) >> 24);
+}
+
 /* A fresh empty directory under $TMPDIR or /tmp, named after name, in
  * path[]; 0, or -1 with a failed check. */
 static inline int check_temp_dir(char *path, size_t size, const char *name)
@@ -181,6 +199,29 @@ static inline int check_write_file(const char *path, const void *data, size_t n)
     if (!ok)
         CHECK_MSG(0, "cannot write %s", path);
     return ok ? 0 : -1;
+}
+
+/* Whether path is a plain file holding exactly data[0 .. n-1] whose
+ * permissions are mode, or with mode -1 those a new file is given (0666
+ * less the umask: not mkstemp's 0600). */
+static inline int check_file_is(const char *path, const void *data, size_t n, int mode)
+{
+    struct stat st;
+    if (mode < 0) {
+        mode_t mask = umask(022);
+        umask(mask);
+        mode = (int)(0666 & ~mask);
+    }
+    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode) || (size_t)st.st_size != n ||
+        (int)(st.st_mode & 0777) != mode)
+        return 0;
+    FILE *f = fopen(path, "rb");
+    unsigned char *buf = malloc(n + 1);
+    int same = f && buf && fread(buf, 1, n + 1, f) == n && (n == 0 || memcmp(buf, data, n) == 0);
+    free(buf);
+    if (f)
+        fclose(f);
+    return same;
 }
 
 /* The number of entries in the directory path but "." and ".." (0 when it

@@ -47,8 +47,9 @@ static void add_standard_entries(Archive *a, Fixture *f)
     char err[300] = "";
     f->big_size = 300000;
     f->big = malloc(f->big_size);
-    for (size_t k = 0; k < f->big_size; k++)
-        f->big[k] = k < f->big_size / 2 ? (unsigned char)(rng_next() >> 24) : (unsigned char)("abcab\n"[k % 6]);
+    check_random_bytes(&rng_state, f->big, f->big_size / 2);
+    for (size_t k = f->big_size / 2; k < f->big_size; k++)
+        f->big[k] = (unsigned char)("abcab\n"[k % 6]);
     long_path(f->long_name, 150);
     CHECK_EQ_INT(archive_add_dir(a, "docs", 0755, err, sizeof err), 0);
     CHECK_EQ_INT(archive_add_file(a, "docs/empty.txt", "", 0, 0644, err, sizeof err), 0);
@@ -83,30 +84,6 @@ static void encode_decode(const Archive *a, KitBuf *bytes, Archive *b)
     CHECK_MSG(archive_encode(a, bytes, err, sizeof err) == 0, "encode: %s", err);
     int rc = archive_decode(b, bytes->data, bytes->len, err, sizeof err);
     CHECK_MSG(rc == 0, "decode: %s", err);
-}
-
-/* Writes a file of n bytes with the given mode (exactly). */
-static void write_file(const char *path, const void *data, size_t n, mode_t mode)
-{
-    if (check_write_file(path, data, n) == 0)
-        CHECK_EQ_INT(chmod(path, mode), 0);
-}
-
-/* Whether the file at path holds exactly data[0 .. n-1] and has mode. */
-static int file_is(const char *path, const void *data, size_t n, mode_t mode)
-{
-    struct stat st;
-    if (stat(path, &st) != 0 || !S_ISREG(st.st_mode) || (size_t)st.st_size != n ||
-        (st.st_mode & 0777) != mode)
-        return 0;
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return 0;
-    unsigned char *buf = malloc(n + 1);
-    int same = fread(buf, 1, n + 1, f) == n && (n == 0 || memcmp(buf, data, n) == 0);
-    free(buf);
-    fclose(f);
-    return same;
 }
 
 /* ---- round trips ------------------------------------------------------------------------ */
@@ -205,8 +182,7 @@ static void test_zip_layout(void)
     Archive r;
     archive_init(&r);
     unsigned char noise[5000];
-    for (size_t k = 0; k < sizeof noise; k++)
-        noise[k] = (unsigned char)(rng_next() >> 24);
+    check_random_bytes(&rng_state, noise, sizeof noise);
     archive_add_file(&r, "noise", noise, sizeof noise, 0644, err, sizeof err);
     KitBuf rz = {0};
     archive_encode(&r, &rz, err, sizeof err);
@@ -325,45 +301,43 @@ static void test_changed_data(void)
 
 /* ---- on disk: add_tree, save, load, extract ---------------------------------------------- */
 
-/* Makes dir/src: run_autograder (0755), lib/a.c, lib/b.h (0600), an empty
- * directory, an empty file. */
+/* The tree below dir/src that add_tree reads: each path, what its file
+ * holds (NULL: a directory) and its mode. */
+static const struct { const char *path, *text; int mode; } tree[] = {
+    { "run_autograder", "#!/bin/sh\necho ok\n", 0755 }, { "lib", NULL, 0750 },
+    { "lib/b.h", "int b;\n", 0600 }, { "lib/a.c", "int a;\n", 0644 },
+    { "empty", NULL, 0755 }, { "Zero.txt", "", 0644 },
+};
+
+/* Makes dir/src holding tree, each mode exactly. */
 static void make_source_tree(const char *dir, char *src, size_t size)
 {
     char p[1024];
     snprintf(src, size, "%s/src", dir);
     CHECK_EQ_INT(mkdir(src, 0755), 0);
-    snprintf(p, sizeof p, "%s/run_autograder", src);
-    write_file(p, "#!/bin/sh\necho ok\n", 18, 0755);
-    snprintf(p, sizeof p, "%s/lib", src);
-    CHECK_EQ_INT(mkdir(p, 0750), 0);
-    chmod(p, 0750);
-    snprintf(p, sizeof p, "%s/lib/b.h", src);
-    write_file(p, "int b;\n", 7, 0600);
-    snprintf(p, sizeof p, "%s/lib/a.c", src);
-    write_file(p, "int a;\n", 7, 0644);
-    snprintf(p, sizeof p, "%s/empty", src);
-    CHECK_EQ_INT(mkdir(p, 0755), 0);
-    snprintf(p, sizeof p, "%s/Zero.txt", src);
-    write_file(p, "", 0, 0644);
+    for (int k = 0; k < CHECK_COUNT(tree); k++) {
+        snprintf(p, sizeof p, "%s/%s", src, tree[k].path);
+        if (tree[k].text)
+            check_write_file(p, tree[k].text, strlen(tree[k].text));
+        else
+            CHECK_EQ_INT(mkdir(p, 0700), 0);
+        CHECK_EQ_INT(chmod(p, (mode_t)tree[k].mode), 0);
+    }
 }
 
-/* Checks the tree made by make_source_tree below root. */
+/* Checks that the tree below root is tree. */
 static void check_source_tree(const char *root)
 {
     char p[1024];
     struct stat st;
-    snprintf(p, sizeof p, "%s/run_autograder", root);
-    CHECK_MSG(file_is(p, "#!/bin/sh\necho ok\n", 18, 0755), "%s", p);
-    snprintf(p, sizeof p, "%s/lib/a.c", root);
-    CHECK_MSG(file_is(p, "int a;\n", 7, 0644), "%s", p);
-    snprintf(p, sizeof p, "%s/lib/b.h", root);
-    CHECK_MSG(file_is(p, "int b;\n", 7, 0600), "%s", p);
-    snprintf(p, sizeof p, "%s/Zero.txt", root);
-    CHECK_MSG(file_is(p, "", 0, 0644), "%s", p);
-    snprintf(p, sizeof p, "%s/empty", root);
-    CHECK(stat(p, &st) == 0 && S_ISDIR(st.st_mode));
-    snprintf(p, sizeof p, "%s/lib", root);
-    CHECK(stat(p, &st) == 0 && S_ISDIR(st.st_mode) && (st.st_mode & 0777) == 0750);
+    for (int k = 0; k < CHECK_COUNT(tree); k++) {
+        snprintf(p, sizeof p, "%s/%s", root, tree[k].path);
+        if (tree[k].text)
+            CHECK_MSG(check_file_is(p, tree[k].text, strlen(tree[k].text), tree[k].mode), "%s", p);
+        else
+            CHECK_MSG(stat(p, &st) == 0 && S_ISDIR(st.st_mode) && (int)(st.st_mode & 0777) == tree[k].mode,
+                      "%s", p);
+    }
 }
 
 static void test_tree_save_load_extract(void)
@@ -400,7 +374,7 @@ static void test_add_tree_refuses_links(void)
     char dir[512], p[700], q[700], err[1500] = "";
     check_temp_dir(dir, sizeof dir, "archive");
     snprintf(p, sizeof p, "%s/file", dir);
-    write_file(p, "x", 1, 0644);
+    check_write_file(p, "x", 1);
     snprintf(q, sizeof q, "%s/link", dir);
     CHECK_EQ_INT(symlink("file", q), 0);
     Archive a;
