@@ -52,8 +52,7 @@ static void test_random_round_trips(void)
     int wrong = 0, unlike_printf = 0;
     char first[200] = "";
     for (long i = 0; i < 400000; i++) {
-        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
-        uint64_t bits = s;
+        uint64_t bits = check_xorshift64(&s);
         if (i % 4 == 1)
             bits &= ~(UINT64_C(0x7ff) << 52);                        /* subnormal or zero */
         else if (i % 4 == 2)
@@ -125,7 +124,7 @@ static void test_hexfloat_read(void)
     int wrong = 0;
     char first[300] = "";
     for (long i = 0; i < 200000; i++) {
-        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+        check_xorshift64(&s);
         uint64_t bits = i % 3 == 1 ? s & ~(UINT64_C(0x7ff) << 52) : s;
         double x;
         memcpy(&x, &bits, sizeof x);
@@ -168,7 +167,7 @@ static void test_decimal_read(void)
     int wrong = 0;
     char first[300] = "";
     for (long i = 0; i < 200000; i++) {
-        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+        check_xorshift64(&s);
         double x;
         if (i % 2) {                    /* any finite double */
             uint64_t bits = s;
@@ -213,7 +212,7 @@ static void test_shortest(void)
     int wrong = 0, longer = 0;
     char first[600] = "";
     for (long i = 0; i < 200000; i++) {
-        s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+        check_xorshift64(&s);
         double x;
         if (i % 2) {                                   /* a decimal of 1 to 12 digits */
             snprintf(b, sizeof b, "%.*e", (int)(s % 12), ldexp((double)(s >> 11), -53) * 10);
