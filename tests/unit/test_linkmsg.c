@@ -9,11 +9,14 @@
 #include "../grader/linkmsg.h"
 #include "kit/savefile.h"
 
-static const struct {
+/* A linker's message and the names read from it. */
+typedef struct {
     const char *linker, *text;
     int n;
-    const char *names[3];
-} cases[] = {
+    const char *names[2];
+} Message;
+
+static const Message cases[] = {
     { "GNU ld",
       "/usr/bin/ld: part3b_ray_color.o: in function `ray_color':\n"
       "part3b_ray_color.c:(.text+0x1cc): undefined reference to `my_helper'\n"
@@ -52,11 +55,7 @@ static const struct {
 /* The same for a function defined twice (GNU ld with and without
  * link-time optimisation, gold and lld as run here; Apple's ld in its
  * current and its older words, written from their known forms). */
-static const struct {
-    const char *linker, *text;
-    int n;
-    const char *names[2];
-} duplicates[] = {
+static const Message duplicates[] = {
     { "GNU ld",
       "/usr/bin/ld: /tmp/ccKyolGa.o: in function `dot':\n"
       "b.c:(.text+0x0): multiple definition of `dot'; /tmp/cchz7paw.o:a.c:(.text+0x0): first defined here\n"
@@ -91,17 +90,29 @@ static const struct {
     { "an undefined function is not a duplicate", "undefined reference to `dot'\n", 0, { NULL } },
 };
 
+/* read (linkmsg_undefined or linkmsg_duplicate) gives each of the count
+ * messages' names, at most 2. */
+static void check_messages(const Message *m, int count,
+                           int (*read)(const char *, char[][LINKMSG_NAME_MAX], int))
+{
+    for (int k = 0; k < count; k++) {
+        char names[2][LINKMSG_NAME_MAX];
+        int n = read(m[k].text, names, 2);
+        CHECK_MSG(n == m[k].n, "%s: %d names, want %d", m[k].linker, n, m[k].n);
+        for (int q = 0; q < n && q < m[k].n; q++)
+            CHECK_MSG(strcmp(names[q], m[k].names[q]) == 0, "%s: name %d is %s, want %s", m[k].linker, q,
+                      names[q], m[k].names[q]);
+    }
+}
+
+static void test_each_linker(void)
+{
+    check_messages(cases, CHECK_COUNT(cases), linkmsg_undefined);
+}
+
 static void test_duplicates(void)
 {
-    for (size_t k = 0; k < sizeof duplicates / sizeof duplicates[0]; k++) {
-        char names[2][LINKMSG_NAME_MAX];
-        int n = linkmsg_duplicate(duplicates[k].text, names, 2);
-        CHECK_MSG(n == duplicates[k].n, "%s: %d names, want %d", duplicates[k].linker, n,
-                  duplicates[k].n);
-        for (int q = 0; q < n && q < duplicates[k].n; q++)
-            CHECK_MSG(strcmp(names[q], duplicates[k].names[q]) == 0, "%s: name %d is %s, want %s",
-                      duplicates[k].linker, q, names[q], duplicates[k].names[q]);
-    }
+    check_messages(duplicates, CHECK_COUNT(duplicates), linkmsg_duplicate);
     char names[1][LINKMSG_NAME_MAX];
     CHECK_MSG(linkmsg_undefined(duplicates[0].text, names, 1) == 0,
               "GNU ld's duplicate read as an undefined function");
@@ -216,18 +227,6 @@ static void test_stage_of(void)
     CHECK(linkmsg_stage_of("hit_sphere") == NULL);
     CHECK(linkmsg_stage_of("sphere_intersects") == NULL);
     CHECK(linkmsg_stage_of("") == NULL);
-}
-
-static void test_each_linker(void)
-{
-    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
-        char names[2][LINKMSG_NAME_MAX];
-        int n = linkmsg_undefined(cases[k].text, names, 2);
-        CHECK_MSG(n == cases[k].n, "%s: %d names, want %d", cases[k].linker, n, cases[k].n);
-        for (int q = 0; q < n && q < cases[k].n; q++)
-            CHECK_MSG(strcmp(names[q], cases[k].names[q]) == 0, "%s: name %d is %s, want %s",
-                      cases[k].linker, q, names[q], cases[k].names[q]);
-    }
 }
 
 static const CheckTest tests[] = {
