@@ -9,21 +9,10 @@
 
 static char dir[64];
 
-static void setup(void)
-{
-    check_temp_dir(dir, sizeof dir, "savefile");
-}
-
-static void cleanup(void)
-{
-    if (check_remove_tree(dir) != 0)
-        printf("    (could not remove %s)\n", dir);
-}
-
 /* Bytes of every value, a NUL among them, written and read back exactly. */
 static void test_round_trip(void)
 {
-    setup();
+    check_temp_dir(dir, sizeof dir, "savefile");
     unsigned char bytes[300];
     for (int k = 0; k < 300; k++)
         bytes[k] = (unsigned char)(k * 7);
@@ -44,13 +33,13 @@ static void test_round_trip(void)
     got = kit_load_file(path, 1 << 20, &n);
     CHECK(got != NULL && n == 0);
     free(got);
-    cleanup();
+    CHECK(check_remove_tree(dir) == 0);
 }
 
 /* More than max bytes, a directory, a missing file: NULL. */
 static void test_refused(void)
 {
-    setup();
+    check_temp_dir(dir, sizeof dir, "savefile");
     char path[128], err[200];
     snprintf(path, sizeof path, "%s/big", dir);
     CHECK_EQ_INT(kit_save_file(path, "0123456789", 10, err, sizeof err), 0);
@@ -63,13 +52,13 @@ static void test_refused(void)
     CHECK(kit_load_file(dir, 1 << 20, &n) == NULL);
     snprintf(path, sizeof path, "%s/missing", dir);
     CHECK(kit_load_file(path, 1 << 20, &n) == NULL);
-    cleanup();
+    CHECK(check_remove_tree(dir) == 0);
 }
 
 /* A save that cannot be made says why and leaves nothing beside it. */
 static void test_save_fails_cleanly(void)
 {
-    setup();
+    check_temp_dir(dir, sizeof dir, "savefile");
     char path[128], err[200] = "";
     snprintf(path, sizeof path, "%s/no/such/dir/file", dir);
     CHECK(kit_save_file(path, "x", 1, err, sizeof err) != 0);
@@ -77,7 +66,7 @@ static void test_save_fails_cleanly(void)
     char cmd[200];
     snprintf(cmd, sizeof cmd, "[ -z \"$(ls -A %s)\" ]", dir);
     CHECK(system(cmd) == 0);
-    cleanup();
+    CHECK(check_remove_tree(dir) == 0);
 }
 
 static const CheckTest tests[] = {
