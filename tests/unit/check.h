@@ -136,11 +136,9 @@ static inline uint32_t check_xorshift32(uint32_t *state)
 /* The same, xorshift64 (shifts 13, 7, 17) of the 64-bit state *state. */
 static inline uint64_t check_xorshift64(uint64_t *state)
 {
-    uint64_t x = *state;
-    x ^= x << 13;
-    x ^= x >> 7;
-    x ^= x << 17;
-    return *state = x;
+    *state ^= *state << 13;
+    *state ^= *state >> 7;
+    return *state ^= *state << 17;
 }
 
 /* p[0 .. n-1] made the top bytes of n numbers of check_xorshift32(state). */
