@@ -35,29 +35,21 @@ top=$(pwd)
 . tests/lib/checks.sh
 . tests/lib/pages.sh
 temp_dir student_kit
-trap '[ -n "${KEEP:-}" ] && echo "kept $tmp" || rm -rf "$tmp"' EXIT
-trap 'exit 1' HUP INT TERM
 # The self-test submissions, a folder each.
 selftest=$tmp/selftest
 need_selftests "$selftest"
 
 # fail WHAT: counts a failure; shows the start of the last output, if any.
 fail() { fail_showing "$tmp/out" 15 '    | ' "$@"; }
-# check WHAT COMMAND...: passes when the command succeeds.
-check() {
-    what=$1
-    shift
-    if "$@"; then pass; else failed=$((failed + 1)); echo "FAIL: $what"; fi
-}
 
-# mk DIR ARGS...: runs make ARGS in DIR, output in $tmp/out.  Sets status
-# (make's own) and ran (the status of the recipe that failed, from make's
-# "Error N" line; 0 when make succeeded; 2 when make failed with no such
-# line, e.g. a recipe killed by a signal).
-mk() {
+# run_in DIR COMMAND...: runs COMMAND in DIR, output in $tmp/out.  Sets
+# status (its own) and ran (when it is a make, the status of the recipe
+# that failed, from make's "Error N" line; 0 when it succeeded; 2 when it
+# failed with no such line, e.g. a recipe killed by a signal).
+run_in() {
     dir=$1
     shift
-    (cd "$dir" && make "$@") >"$tmp/out" 2>&1 </dev/null
+    (cd "$dir" && "$@") >"$tmp/out" 2>&1 </dev/null
     status=$?
     ran=$status
     if [ "$status" -ne 0 ]; then
@@ -79,14 +71,8 @@ squeeze() {
     awk '{ gsub(/[ \t]+/, " "); sub(/^ /, ""); sub(/ $/, ""); print }'
 }
 
-if [ ! -d solutions ]; then
-    echo "FAIL: no solutions/ here: run this from the instructor's kit"
-    echo "0 passed, 1 failed"
-    exit 1
-fi
-
 # ---- make student-kit, unpacked with tar ----------------------------------
-mk "$top" student-kit
+run_in "$top" make student-kit
 if [ "$status" -ne 0 ] || [ ! -f out/student-kit.tar.gz ]; then
     fail "make student-kit: exit $status"
     finish
@@ -220,7 +206,7 @@ done <"$tmp/leaking"
 if [ "$leaks" -eq 0 ]; then pass; else failed=$((failed + leaks)); fi
 
 # ---- it builds, warning-free ----------------------------------------------
-mk "$kit"
+run_in "$kit" make
 if [ "$status" -ne 0 ]; then
     fail "make in the kit: exit $status"
     finish
@@ -232,7 +218,7 @@ else
 fi
 
 # make help lists what runs here, and no target of the instructor's kit.
-mk "$kit" help
+run_in "$kit" make help
 check "the kit's make help lists render, compare, grade, test and clean, and nothing of the instructor's" \
     sh -c "[ $status -eq 0 ] && grep -q '^make render' '$tmp/out' && grep -q '^make compare' '$tmp/out' &&
            grep -q '^make grade ' '$tmp/out' && grep -q 'make test | clean' '$tmp/out' &&
@@ -240,7 +226,7 @@ check "the kit's make help lists render, compare, grade, test and clean, and not
                      -e sanitize-grader -e handouts -e selftests '$tmp/out'"
 
 # ---- the untouched skeleton: 0 on every part, status 1 --------------------
-mk "$kit" grade
+run_in "$kit" make grade
 if crashed; then
     fail "make grade on the skeleton crashed"
 elif [ "$ran" -ne 1 ]; then
@@ -272,7 +258,7 @@ check "make grade in the kit writes out/report/index.html" test -s "$page"
 check_output "the kit's report page is safe to open and self-contained (tests/lib/pages.sh)" page_safe "$page"
 check "the kit's report page shows the stored reference render" \
     grep -q 'alt="the scene drawn by the reference solution"' "$page"
-mk "$kit" grade PART=1 RESULTS=out/results.json
+run_in "$kit" make grade PART=1 RESULTS=out/results.json
 check "the results file names no report page (Gradescope has none)" \
     sh -c "[ -s '$kit/out/results.json' ] && ! grep -q -e 'html' -e 'out/report' '$kit/out/results.json'"
 
@@ -294,13 +280,7 @@ while IFS= read -r command; do
         "make grade"*|"make compare"*) allowed="0 or 1" ;;
         *) allowed="0" ;;
     esac
-    (cd "$kit" && sh -c "$command") >"$tmp/out" 2>&1 </dev/null
-    status=$?
-    ran=$status
-    if [ "$status" -ne 0 ]; then
-        n=$(sed -n 's/^.*make\(\[[0-9]*\]\)\{0,1\}: \*\*\* \[.*\] Error \([0-9][0-9]*\)$/\2/p' "$tmp/out" | tail -n 1)
-        ran=${n:-2}
-    fi
+    run_in "$kit" sh -c "$command"
     if crashed; then
         fail "'$command' (in $where) crashed"
     elif [ "$ran" -ne 0 ] && { [ "$ran" -ne 1 ] || [ "$allowed" = 0 ]; }; then
@@ -319,7 +299,7 @@ done <"$tmp/unique"
 changed=$tmp/changed
 cp -R -p "$kit" "$changed"
 printf '#define EPSILON 1e-9\n' >>"$changed/labs/raytracer.h"
-(cd "$changed" && out/build/bin/grade --submission labs --part 1 --quiet) >"$tmp/out" 2>&1 </dev/null
+run_in "$changed" out/build/bin/grade --submission labs --part 1 --quiet
 check "a changed labs/raytracer.h: make grade warns that the instructor grades with the kit's own" \
     sh -c "grep -q 'grade: labs/raytracer.h is not the one the kit came with' '$tmp/out' &&
            grep -q 'tests/grader/shipped/raytracer.h' '$tmp/out' && cmp -s labs/raytracer.h '$kit/tests/grader/shipped/raytracer.h'"
@@ -329,13 +309,11 @@ check "a changed labs/raytracer.h: make grade warns that the instructor grades w
 # below the compiler's message.
 sed 's/\*h = 2 \* d \* tan_half;/*h = 2 * d * tan_half * (1 + EPSILON);/' solutions/part1_image_plane.c \
     >"$changed/labs/part1_image_plane.c"
-(cd "$changed" && out/build/bin/grade --submission labs --part 1) >"$tmp/out" 2>&1 </dev/null
-status=$?
+run_in "$changed" out/build/bin/grade --submission labs --part 1
 check "a stage file that uses a macro added to labs/raytracer.h does not build in make grade either (exit $status)" \
     sh -c "[ $status -eq 1 ] && grep -q 'EPSILON' '$tmp/out' && grep -q '^Part 1: .*  0 / 20' '$tmp/out' &&
            grep -q 'labs/raytracer.h is not the one the kit came with: part1_image_plane.c was built with the kit.s own' '$tmp/out'"
-(cd "$changed" && ${MAKE:-make} --no-print-directory render OUT="$tmp/changed.png") >"$tmp/out" 2>&1 </dev/null
-status=$?
+run_in "$changed" ${MAKE:-make} --no-print-directory render OUT="$tmp/changed.png"
 check "... while make render, which builds with labs/raytracer.h, draws and notes that it is not the kit's (exit $status)" \
     sh -c "[ $status -eq 0 ] && [ -s '$tmp/changed.png' ] &&
            grep -q '^note: labs/raytracer.h is not the one the kit came with. make render used yours' '$tmp/out' &&
@@ -343,19 +321,17 @@ check "... while make render, which builds with labs/raytracer.h, draws and note
 # The header as shipped, with its time: make render below builds Part 1
 # again (the stage file is newer) and nothing the header alone changed.
 cp -p "$kit/labs/raytracer.h" "$changed/labs/raytracer.h"
-(cd "$changed" && out/build/bin/grade --submission labs --part 1) >"$tmp/out" 2>&1 </dev/null
-status=$?
+run_in "$changed" out/build/bin/grade --submission labs --part 1
 check "... and, with the header as shipped, neither it nor the warning is there (exit $status)" \
     sh -c "[ $status -eq 1 ] && grep -q 'EPSILON' '$tmp/out' && ! grep -q 'is not the one the kit came with' '$tmp/out'"
 cp "$kit/labs/part1_image_plane.c" "$changed/labs/part1_image_plane.c"
-(cd "$changed" && ${MAKE:-make} --no-print-directory render OUT="$tmp/changed.png") >"$tmp/out" 2>&1 </dev/null
-status=$?
+run_in "$changed" ${MAKE:-make} --no-print-directory render OUT="$tmp/changed.png"
 check "make render says nothing of the header once it is as shipped (exit $status)" \
     sh -c "[ $status -eq 0 ] && ! grep -q 'is not the one the kit came with' '$tmp/out'"
 
 # ---- the reference stage files in labs/: full marks, identical renders ----
 cp solutions/*.c "$kit/labs/"
-mk "$kit" grade
+run_in "$kit" make grade
 if crashed; then
     fail "make grade with the reference crashed"
 elif [ "$status" -ne 0 ]; then
@@ -379,12 +355,9 @@ check "the report page with the reference: its picture is exactly the stored ref
     grep -q 'Your picture is exactly the reference' "$kit/out/report/index.html"
 for s in "$kit"/labs/scenes/*.scene; do
     name=$(basename "$s")
-    mk "$kit" compare SUBMISSION=labs SCENE="labs/scenes/$name"
-    if [ "$status" -ne 0 ] || ! grep -q '^identical$' "$tmp/out"; then
-        fail "make compare SUBMISSION=labs SCENE=labs/scenes/$name with the reference: exit $status, not identical"
-    else
-        pass
-    fi
+    run_in "$kit" make compare SUBMISSION=labs SCENE="labs/scenes/$name"
+    check "make compare SUBMISSION=labs SCENE=labs/scenes/$name with the reference: exit $status, not identical" \
+        sh -c "[ $status -eq 0 ] && grep -q '^identical$' '$tmp/out'"
 done
 
 # The lecture's Part 2 and the textbook's Part 4 (tests/selftest/textbook-
@@ -395,7 +368,7 @@ if [ -d "$selftest/textbook-ground" ]; then
     cp solutions/*.c "$tmp/textbook/"
     cp "$selftest"/textbook-ground/*.c "$tmp/textbook/"
     for name in ground cracks; do
-        mk "$kit" compare SUBMISSION="$tmp/textbook" SCENE="labs/scenes/$name.scene"
+        run_in "$kit" make compare SUBMISSION="$tmp/textbook" SCENE="labs/scenes/$name.scene"
         check "make compare in the kit: the textbook's $name.scene is identical to the stored reference (exit $status)" \
             sh -c "[ $status -eq 0 ] && grep -q 'on an edge' '$tmp/out' && grep -q '^identical$' '$tmp/out'"
     done
@@ -420,13 +393,13 @@ else
 fi
 
 cp "$selftest"/textbook/part3a_sphere_intersect.c "$kit/labs/"
-mk "$kit" grade PART=3a
+run_in "$kit" make grade PART=3a
 check "make grade with the textbook's Part 3a: full core points, and why make says Error 1 (exit $status, grader $ran)" \
     sh -c "[ $ran -eq 1 ] && grep -q '^Score: 30 / 30 ' '$tmp/out' &&
            grep -q '^All the core points. Some hard cases failed, which count only as extra credit:' '$tmp/out' &&
            grep -q '^that is why the grader exits with status 1 (make says Error 1)' '$tmp/out'"
 cp solutions/part3a_sphere_intersect.c "$kit/labs/"
-mk "$kit" grade PART=3a
+run_in "$kit" make grade PART=3a
 check "... and with the reference's, not a word of it (exit $status)" \
     sh -c "[ $status -eq 0 ] && ! grep -q 'All the core points' '$tmp/out'"
 
@@ -436,12 +409,12 @@ check "... and with the reference's, not a word of it (exit $status)" \
 # file's dot its own, as the instructor's grader does (with the
 # reference's Part 3a), and says what make render says: write static.
 cp "$selftest"/link-shared-helper/part*.c "$kit/labs/"
-mk "$kit" grade PART=3b
+run_in "$kit" make grade PART=3b
 check "a non-static helper in Parts 3a and 3b: Part 3b keeps its 30 points, and is told to write static (exit $status, grader $ran)" \
     sh -c "grep -q '^Part 3b: .*  30 / 30' '$tmp/out' && ! grep -q 'did not build' '$tmp/out' &&
            grep -q 'dot is defined in part3b_ray_color.c and part3a_sphere_intersect.c' '$tmp/out' &&
            grep -q 'Write static in front of each definition of dot' '$tmp/out'"
-mk "$kit" render
+run_in "$kit" make render
 check "... which make render stops at, saying the same (exit $status)" \
     sh -c "[ $status -ne 0 ] && grep -q 'write static in front of each' '$tmp/out'"
 cp solutions/part3a_sphere_intersect.c solutions/part3b_ray_color.c "$kit/labs/"
