@@ -10,8 +10,7 @@
 # - a make target's usage names the settings make help names.
 set -u
 . tests/lib/checks.sh
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtconsistency.XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
+temp_dir rtconsistency
 
 # Everything but the bodies: drop the lines from a "{" at the start of a
 # line to the matching "}" at the start of a line, and #include lines.

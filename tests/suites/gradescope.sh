@@ -4,10 +4,9 @@
 # correct submission tucked in a folder, on an empty one, and with a grader
 # that cannot run.  Each must leave a valid results.json.
 set -u
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtgradescope.XXXXXX")
-trap '[ -n "${KEEP:-}" ] || rm -rf "$tmp"' EXIT
-chmod 755 "$tmp"
 . tests/lib/checks.sh
+temp_dir rtgradescope
+chmod 755 "$tmp"
 
 make -s gradescope >"$tmp/make.log" 2>&1
 check "make gradescope" [ -f out/gradescope/autograder.zip ]
@@ -87,7 +86,6 @@ echo 'not a stage file' >"$fake/part1_image_plane.c"
 AUTOGRADER_ROOT="$ag" "$ag/run_autograder" >"$tmp/run-newline.log" 2>&1
 check "a folder named with a newline cannot make the kit's reference the student's Part 1" \
     sh -c "grep -q '^found: none of the stage files' '$tmp/run-newline.log' && grep -q '\"score\": 0' '$ag/results/results.json'"
-rm -rf "$ag/submission"/*
 
 # Files under another name, as a browser names a second download and as
 # editors capitalise: 0 for those parts, and the message names the files.

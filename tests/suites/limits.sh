@@ -9,10 +9,9 @@
 # tests/selftest/hostile-include-dev-zero is graded by tests/suites/grader.sh.
 set -u
 grade=${GRADE:-out/build/bin/grade}   # make sanitize-grader: the sanitized one
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtlimits.XXXXXX") || { echo "no temporary directory"; echo "0 passed, 1 failed"; exit 1; }
-trap 'rm -rf "$tmp"' EXIT
-chmod 755 "$tmp"
 . tests/lib/checks.sh
+temp_dir rtlimits
+chmod 755 "$tmp"
 
 # submission NAME PART-FILE LINE...: the reference with one stage file
 # replaced by the lines given.

@@ -17,10 +17,9 @@
 # too.)
 set -u
 grade=${GRADE:-out/build/bin/grade}   # make sanitize-grader: the sanitized one
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/rtsignals.XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
-chmod 755 "$tmp"
 . tests/lib/checks.sh
+temp_dir rtsignals
+chmod 755 "$tmp"
 
 # As root, the code runs only where grade --all gives each submission an
 # id of its own and holds it against the other suites' gradings: two empty
