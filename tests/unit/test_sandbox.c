@@ -78,6 +78,26 @@ static int run_sh(const char *script, SandboxSpec spec, SandboxResult *res)
     return run_init("-c", script, spec, res);
 }
 
+/* Of a run's flags (timed out, memory, output, output truncated): either
+ * way (the default), set, or not set. */
+enum { ANY, YES, NO };
+
+/* One run of a shell script and what it must come to: on each line only
+ * what is given is checked.  exit is the exit status wanted as text, "!0"
+ * for any but 0; signal (or or_signal) the signal wanted; with or_exit a
+ * nonzero exit will do instead of the signal, or of the memory flag. */
+typedef struct {
+    const char *name, *script;
+    SandboxSpec spec;
+    bool needs_watch;               /* skipped where sandbox_watches_memory() is false */
+    int timed_out, memory, output, truncated;
+    const char *exit;
+    int signal, or_signal;
+    bool or_exit;
+    double within;                  /* seconds it must stop within, or 0 */
+    const char *answer, *not_answer, *output_has;
+} Run;
+
 /* A shell that doubles a string up to 128 MiB (about three times that in
  * use while it copies), then sleeps: a hog with a ceiling, so that a broken
  * limit fails the test without taking the machine's memory.  The hogs'
@@ -85,54 +105,107 @@ static int run_sh(const char *script, SandboxSpec spec, SandboxResult *res)
  * (1.5 and 3 MiB here), and low enough that the hog reaches it in a few
  * doublings: each test with a hog burns CPU until it is stopped. */
 #define HOG_MB 16
-static const char *const hog =
-    "x=0123456789abcdef; while [ ${#x} -lt 134217728 ]; do x=$x$x; done; sleep 10";
+#define HOG "x=0123456789abcdef; while [ ${#x} -lt 134217728 ]; do x=$x$x; done; sleep 10"
+#define SPAM "while :; do echo spam spam spam spam spam spam spam; done"
 
-/* Over memory_mb, the parent's watch stops it even with the address space
- * left wide open (as macOS leaves it), within a second or two. */
-static void test_memory_watch(void)
+/* cpu_seconds bounds CPU time apart from the wall clock: the child's limit
+ * is the spec's, soft and hard (so that it cannot lift it), and a child
+ * that spins is stopped by it, reported as stopped by a signal and not as
+ * out of time.  The system counts that limit in whole seconds, so the spin
+ * costs a CPU-second; the sanitized build, whose sandbox code runs the same
+ * either way, has its child send itself the limit's signal instead
+ * (CHECK_SANITIZED).  This is the kit's one check that the system's limit
+ * stops a spinning child. */
+#if CHECK_SANITIZED
+#define SPIN CHECK_SAY_CPU_LIMIT "kill -XCPU $$"
+#else
+#define SPIN CHECK_SAY_CPU_LIMIT "while :; do :; done"
+#endif
+
+static const Run runs[] = {
+    /* Over memory_mb, the parent's watch stops it even with the address
+     * space left wide open (as macOS leaves it), within a second or two. */
+    { "the memory watch", HOG, { .memory_mb = HOG_MB, .address_mb = 2048 }, .needs_watch = true,
+      .memory = YES, .timed_out = NO, .within = 5, .exit = "-1" },
+    /* With the address space limited too, the hog is stopped one way or
+     * the other (its allocation fails, or the watch kills it), never left
+     * to run. */
+    { "the hog", HOG, { .memory_mb = HOG_MB }, .timed_out = NO, .memory = YES, .or_exit = true, .within = 5 },
+    /* A program under its memory limit runs to the end and is not flagged. */
+    { "a small program", "x=abc; echo \"$x$x\" >&3", { .memory_mb = 48 }, .exit = "0", .memory = NO,
+      .answer = "abcabc" },
+    /* A child killed from outside (as by the out-of-memory killer) is
+     * reported as killed by its signal, not as a timeout or a memory
+     * overrun. */
+    { "killed", "echo started >&3; kill -9 $$", { .memory_mb = 48 }, .signal = SIGKILL, .exit = "-1",
+      .timed_out = NO, .memory = NO, .answer = "started" },
+    { "the CPU limit", SPIN, { .memory_mb = 48, .cpu_seconds = 1, .timeout = 20 },
+      .answer = "limit 1\nhard 1\n", .signal = SIGXCPU, .or_signal = SIGKILL, .timed_out = NO, .within = 10 },
+    /* The wall clock stops a child that uses no CPU at all. */
+    { "the wall clock", "sleep 5", { .memory_mb = 48, .max_procs = -1, .timeout = 0.2 }, .timed_out = YES,
+      .within = 2 },
+    /* No file output: writing one is stopped by SIGXFSZ. */
+    { "no file output", "echo x >out.txt; echo after >&3", { .memory_mb = 48 }, .signal = SIGXFSZ,
+      .or_exit = true },
+    /* max_procs 0: the child itself runs (RLIMIT_NPROC is checked at fork,
+     * and on Linux at exec only after a setuid that found the user over
+     * it, which the limit, set after the setuid, cannot cause), but it
+     * cannot fork: the shell says so.  -1, the compiler's: it must fork. */
+    { "no processes", "echo ran >&3; /bin/echo forked >&3", { .memory_mb = 48 }, .answer = "ran",
+      .not_answer = "forked", .exit = "!0" },
+    { "processes", "/bin/echo forked >&3", { .memory_mb = 48, .max_procs = -1 }, .answer = "forked" },
+    /* output_stop: a child that prints without end is stopped once the
+     * parent has read that much, long before its time is up, and says so;
+     * output_max of it is kept.  Without output_stop the same child runs
+     * out of time (spent printing: kept short); a little output is fine
+     * (5 s: a loaded machine may take 0.2 s). */
+    { "output stop", SPAM, { .memory_mb = 48, .output_stop = 256 << 10, .timeout = 5 }, .output = YES,
+      .timed_out = NO, .within = 2, .exit = "-1", .truncated = YES, .output_has = "spam" },
+    { "no output stop", SPAM, { .memory_mb = 48, .timeout = 0.2 }, .output = NO, .timed_out = YES },
+    { "a little output", "echo hello; echo done >&3", { .memory_mb = 48, .output_stop = 256 << 10, .timeout = 5 },
+      .output = NO, .exit = "0", .answer = "done" },
+};
+
+/* Whether flag is as want (ANY, YES or NO) says. */
+static bool flag_is(bool flag, int want)
 {
-    if (!sandbox_watches_memory()) {
-        printf("    skipped: this system does not let the grader see a child's memory\n");
-        return;
+    return want == ANY || flag == (want == YES);
+}
+
+/* Whether r came to what c wants of its flags, its end and its time. */
+static bool ended_as_wanted(const Run *c, const SandboxResult *r)
+{
+    char code[16];
+    snprintf(code, sizeof code, "%d", r->exit_code);
+    bool by_exit = c->or_exit && r->exit_code != 0;
+    return flag_is(r->timed_out, c->timed_out) && flag_is(r->output_exceeded, c->output) &&
+           flag_is(r->output_truncated, c->truncated) && (flag_is(r->memory_exceeded, c->memory) || by_exit) &&
+           (!c->signal || r->signal == c->signal || (c->or_signal && r->signal == c->or_signal) || by_exit) &&
+           (!c->exit || strcmp(code, c->exit) == 0 || (strcmp(c->exit, "!0") == 0 && r->exit_code != 0)) &&
+           (!c->within || r->seconds < c->within);
+}
+
+/* Each run of the table, and what it came to. */
+static void test_runs(void)
+{
+    for (int k = 0; k < CHECK_COUNT(runs); k++) {
+        const Run *c = &runs[k];
+        SandboxResult r;
+        if (c->needs_watch && !sandbox_watches_memory()) {
+            printf("    %s skipped: this system does not let the grader see a child's memory\n", c->name);
+            continue;
+        }
+        if (run_sh(c->script, c->spec, &r) != 0)
+            continue;
+        CHECK_MSG(ended_as_wanted(c, &r),
+                  "%s: exit %d, signal %d, timed out %d, memory %d, output %d (truncated %d), after %.2f s",
+                  c->name, r.exit_code, r.signal, r.timed_out, r.memory_exceeded, r.output_exceeded,
+                  r.output_truncated, r.seconds);
+        CHECK_MSG(!c->answer || strstr(r.answer, c->answer), "%s: answered \"%s\"", c->name, r.answer);
+        CHECK_MSG(!c->not_answer || !strstr(r.answer, c->not_answer), "%s: answered \"%s\"", c->name, r.answer);
+        CHECK_MSG(!c->output_has || strstr(r.output, c->output_has), "%s: printed \"%s\"", c->name, r.output);
+        sandbox_result_free(&r);
     }
-    SandboxResult res;
-    SandboxSpec spec = { .memory_mb = HOG_MB, .address_mb = 2048, .max_procs = 0 };
-    if (run_sh(hog, spec, &res) != 0)
-        return;
-    CHECK_MSG(res.memory_exceeded, "not stopped for memory: exit %d, signal %d, timed out %d, %.2f s",
-              res.exit_code, res.signal, res.timed_out, res.seconds);
-    CHECK(!res.timed_out);
-    CHECK_MSG(res.seconds < 5, "stopped after %.2f s", res.seconds);
-    CHECK_EQ_INT(res.exit_code, -1);
-    sandbox_result_free(&res);
-}
-
-/* With the address space limited too, the hog is stopped one way or the
- * other (its allocation fails, or the watch kills it), never left to run. */
-static void test_memory_stops_hog(void)
-{
-    SandboxResult res;
-    SandboxSpec spec = { .memory_mb = HOG_MB, .max_procs = 0 };
-    if (run_sh(hog, spec, &res) != 0)
-        return;
-    CHECK_MSG(!res.timed_out && (res.memory_exceeded || res.exit_code != 0),
-              "the hog was not stopped: exit %d, timed out %d", res.exit_code, res.timed_out);
-    CHECK_MSG(res.seconds < 5, "stopped after %.2f s", res.seconds);
-    sandbox_result_free(&res);
-}
-
-/* A program under its memory limit runs to the end and is not flagged. */
-static void test_small_program_runs(void)
-{
-    SandboxResult res;
-    SandboxSpec spec = { .memory_mb = 48, .max_procs = 0 };
-    if (run_sh("x=abc; echo \"$x$x\" >&3", spec, &res) != 0)
-        return;
-    CHECK_EQ_INT(res.exit_code, 0);
-    CHECK(!res.memory_exceeded);
-    CHECK_STR_CONTAINS(res.answer, "abcabc");
-    sandbox_result_free(&res);
 }
 
 /* The process of a run whose command line ends in word, seen from here
@@ -223,69 +296,6 @@ static void test_oom_score_adj(void)
     }
     while (pid > 0 && waitpid(pid, NULL, 0) < 0 && errno == EINTR)
         continue;
-}
-
-/* A child killed from outside (as by the out-of-memory killer) is reported
- * as killed by its signal, not as a timeout or a memory overrun. */
-static void test_killed_reported(void)
-{
-    SandboxResult res;
-    SandboxSpec spec = { .memory_mb = 48, .max_procs = 0 };
-    if (run_sh("echo started >&3; kill -9 $$", spec, &res) != 0)
-        return;
-    CHECK_EQ_INT(res.signal, SIGKILL);
-    CHECK_EQ_INT(res.exit_code, -1);
-    CHECK(!res.timed_out);
-    CHECK(!res.memory_exceeded);
-    CHECK_STR_CONTAINS(res.answer, "started");
-    sandbox_result_free(&res);
-}
-
-/* cpu_seconds bounds CPU time apart from the wall clock: the child's limit
- * is the spec's, soft and hard (so that it cannot lift it), and a child
- * that spins is stopped by it, reported as stopped by a signal and not as
- * out of time.  The system counts that limit in whole seconds, so the spin
- * costs a CPU-second; the sanitized build, whose sandbox code runs the same
- * either way, has its child send itself the limit's signal instead
- * (CHECK_SANITIZED).  This is the kit's one check that the system's limit
- * stops a spinning child. */
-static void test_cpu_limit(void)
-{
-    SandboxResult res;
-    SandboxSpec spec = { .memory_mb = 48, .max_procs = 0, .cpu_seconds = 1, .timeout = 20 };
-    const char *script = CHECK_SANITIZED ? CHECK_SAY_CPU_LIMIT "kill -XCPU $$"
-                                         : CHECK_SAY_CPU_LIMIT "while :; do :; done";
-    if (run_sh(script, spec, &res) != 0)
-        return;
-    CHECK_STR_CONTAINS(res.answer, "limit 1\nhard 1\n");
-    CHECK_MSG(res.signal == SIGXCPU || res.signal == SIGKILL, "signal %d, exit %d, %.2f s", res.signal,
-              res.exit_code, res.seconds);
-    CHECK(!res.timed_out);
-    CHECK_MSG(res.seconds < 10, "stopped after %.2f s", res.seconds);
-    sandbox_result_free(&res);
-}
-
-/* The wall clock stops a child that uses no CPU at all. */
-static void test_wall_clock(void)
-{
-    SandboxResult res;
-    SandboxSpec spec = { .memory_mb = 48, .max_procs = -1, .timeout = 0.2 };
-    if (run_sh("sleep 5", spec, &res) != 0)
-        return;
-    CHECK(res.timed_out);
-    CHECK_MSG(res.seconds < 2, "stopped after %.2f s", res.seconds);
-    sandbox_result_free(&res);
-}
-
-/* No file output: writing one is stopped by SIGXFSZ. */
-static void test_no_file_output(void)
-{
-    SandboxResult res;
-    SandboxSpec spec = { .memory_mb = 48, .max_procs = 0 };
-    if (run_sh("echo x >out.txt; echo after >&3", spec, &res) != 0)
-        return;
-    CHECK_MSG(res.signal == SIGXFSZ || res.exit_code != 0, "signal %d, exit %d", res.signal, res.exit_code);
-    sandbox_result_free(&res);
 }
 
 /* The ids another process is given while this one holds its own: in
@@ -392,26 +402,6 @@ static void test_spare_users(void)
         sandbox_result_free(&res);
     }
     sandbox_set_user(held_uid, true);
-}
-
-/* max_procs 0: the child itself runs (RLIMIT_NPROC is checked at fork, and
- * on Linux at exec only after a setuid that found the user over it, which
- * the limit, set after the setuid, cannot cause), but it cannot fork. */
-static void test_no_processes(void)
-{
-    SandboxResult res;
-    SandboxSpec spec = { .memory_mb = 48, .max_procs = 0 };
-    if (run_sh("echo ran >&3; /bin/echo forked >&3", spec, &res) != 0)
-        return;
-    CHECK_STR_CONTAINS(res.answer, "ran");
-    CHECK_MSG(!strstr(res.answer, "forked"), "the child could fork: %s", res.answer);
-    CHECK(res.exit_code != 0);                     /* the shell says it cannot fork */
-    sandbox_result_free(&res);
-    spec.max_procs = -1;                           /* the compiler's: it must fork */
-    if (run_sh("/bin/echo forked >&3", spec, &res) != 0)
-        return;
-    CHECK_STR_CONTAINS(res.answer, "forked");
-    sandbox_result_free(&res);
 }
 
 /* The child gets stdin, stdout and stderr and the answers on fd 3, and
@@ -593,39 +583,6 @@ static void test_no_network(void)
     check_filtered("--socket", NULL, "inet refused, unix refused", "a run made a socket");
 }
 
-/* output_stop: a child that prints without end is stopped once the parent
- * has read that much, long before its time is up, and says so; output_max
- * of it is kept.  Without output_stop the same child runs out of time. */
-static void test_output_stop(void)
-{
-    SandboxResult res;
-    SandboxSpec spec = { .memory_mb = 48, .max_procs = 0, .output_stop = 256 << 10, .timeout = 5 };
-    if (run_sh("while :; do echo spam spam spam spam spam spam spam; done", spec, &res) != 0)
-        return;
-    CHECK(res.output_exceeded);
-    CHECK(!res.timed_out);
-    CHECK_MSG(res.seconds < 2, "stopped after %.2f s", res.seconds);
-    CHECK_EQ_INT(res.exit_code, -1);
-    CHECK(res.output_truncated);
-    CHECK_STR_CONTAINS(res.output, "spam");
-    sandbox_result_free(&res);
-    spec.output_stop = 0;
-    spec.timeout = 0.2;                            /* spent printing: kept short */
-    if (run_sh("while :; do echo spam spam spam spam spam spam spam; done", spec, &res) != 0)
-        return;
-    CHECK(!res.output_exceeded);
-    CHECK(res.timed_out);
-    sandbox_result_free(&res);
-    spec.output_stop = 256 << 10;                  /* a little output is fine */
-    spec.timeout = 5;                              /* (a loaded machine may take 0.2 s) */
-    if (run_sh("echo hello; echo done >&3", spec, &res) != 0)
-        return;
-    CHECK(!res.output_exceeded);
-    CHECK_EQ_INT(res.exit_code, 0);
-    CHECK_STR_CONTAINS(res.answer, "done");
-    sandbox_result_free(&res);
-}
-
 /* jail_remove_tree removes a folder 20,000 deep (deeper than a path may
  * be long), with links in it that it does not follow, and a folder made
  * unreadable; without recursion, so it cannot run out of stack. */
@@ -767,10 +724,8 @@ static void test_cannot_start(void)
 static const CheckTest tests[] = {
     CHECK_TEST(test_sweep_places),     CHECK_TEST(test_cannot_start),
     CHECK_TEST(test_remove_deep_tree), CHECK_TEST(test_take_file),
-    CHECK_TEST(test_memory_watch),     CHECK_TEST(test_memory_stops_hog), CHECK_TEST(test_small_program_runs),
-    CHECK_TEST(test_oom_score_adj),    CHECK_TEST(test_killed_reported),  CHECK_TEST(test_cpu_limit),
-    CHECK_TEST(test_wall_clock),       CHECK_TEST(test_no_file_output),   CHECK_TEST(test_no_processes),
-    CHECK_TEST(test_descriptors_closed), CHECK_TEST(test_output_stop), CHECK_TEST(test_spare_users),
+    CHECK_TEST(test_runs),             CHECK_TEST(test_oom_score_adj),    CHECK_TEST(test_descriptors_closed),
+    CHECK_TEST(test_spare_users),
     CHECK_TEST(test_no_terminal),      CHECK_TEST(test_run_ends_with_grader),
     CHECK_TEST(test_no_keys),          CHECK_TEST(test_no_network),
 };
