@@ -333,6 +333,7 @@ $(UNIT_LINKED:%=$(1)/tests/%): $(1)/tests/%: tests/unit/%.c tests/unit/check.h $
                                               $(call unit_libs,$(1)) | $(1)/tests/.
 	$$(Q)$$(CC) $$($(3)) $$(THREADS) -Ilabs $$(filter-out %.h,$$^) -o $$@ $$(LDLIBS)
 $(1)/tests/test_hexfloat: tests/grader/hexfloat.h tests/grader/decimal.h
+$(1)/tests/test_render $(1)/tests/test_bvh: tests/unit/render_check.h
 # test_bvh's own sphere_intersect and triangle_intersect call the reference's
 # (compiled under other names) or deliberately wrong ones.
 $(1)/tests/obj/renamed_%.o: $(REF_DIR)/%.c $(KIT_HDR) | $(1)/tests/obj/.

@@ -13,8 +13,7 @@
 #include <stdatomic.h>
 #include "../../labs/kit/bvh.h"
 #include "../../labs/kit/closest.h"
-#include "../../labs/kit/render.h"
-#include "../../labs/kit/scene.h"
+#include "render_check.h"
 
 bool reference_sphere_intersect(const Sphere *sphere, const Ray *ray, double *t);
 bool reference_triangle_intersect(const Triangle *tri, const Ray *ray, double *t);
@@ -226,26 +225,6 @@ static void free_random(Scene *s)
     free(s->planes);
 }
 
-/* Renders scene with the hierarchy as asked, on threads threads, into a
- * fresh img.  Returns 0, or -1 after a failed check. */
-static int render_as(const Scene *scene, RenderHierarchy hierarchy, int threads, Image *img,
-                     RenderStats *stats)
-{
-    char err[256] = "";
-    if (image_alloc(img, scene->nx, scene->ny, err, sizeof err) < 0) {
-        CHECK_MSG(0, "image_alloc: %s", err);
-        return -1;
-    }
-    RenderOptions opt = { threads, false, hierarchy, { 0, 0 } };
-    int status = render_scene(scene, img, &opt, stats, err, sizeof err);
-    CHECK_MSG(status == 0, "render_scene: %s", err);
-    if (status != 0) {
-        image_free(img);
-        return -1;
-    }
-    return 0;
-}
-
 /* Renders scene with and without the hierarchy and checks the two images
  * are the same, byte for byte, and that the hierarchy was built where
  * closest.h draws the scene (not for spheres alone, which Part 3b draws);
@@ -274,15 +253,6 @@ static void check_same(const Scene *scene, const char *what, bool *stray)
         image_free(&without);
     }
     image_free(&with);
-}
-
-/* Loads the scene at path into scene.  Returns 0, or -1 after a failed check. */
-static int load(const char *path, Scene *scene)
-{
-    char err[512];
-    int status = scene_load(scene, path, err, sizeof err);
-    CHECK_MSG(status == 0, "%s", err);
-    return status == 0 ? 0 : -1;
 }
 
 /* ---- the box test ------------------------------------------------------ */
@@ -485,7 +455,7 @@ static void test_shipped_scenes_reference(void)
         char path[128];
         snprintf(path, sizeof path, "labs/scenes/%s.scene", names[k]);
         Scene scene;
-        if (load(path, &scene) < 0)
+        if (load_scene(&scene, path, 0, 0) < 0)
             continue;
         if (strcmp(names[k], "cracks") != 0 || CHECK_SANITIZED) {
             bool big = strcmp(names[k], "knot") == 0 || CHECK_SANITIZED;  /* 10,000 triangles a ray */
@@ -508,7 +478,7 @@ static void test_shipped_scenes_reference(void)
 static void test_cracks_watertight(void)
 {
     Scene scene;
-    if (load("labs/scenes/cracks.scene", &scene) < 0)
+    if (load_scene(&scene, "labs/scenes/cracks.scene", 0, 0) < 0)
         return;
     Image img;
     RenderStats stats;
@@ -595,7 +565,7 @@ static void test_prunes(void)
 {
     Scene scene;
     char err[128];
-    if (load("labs/scenes/knot.scene", &scene) < 0)
+    if (load_scene(&scene, "labs/scenes/knot.scene", 0, 0) < 0)
         return;
     Bvh bvh;
     CHECK(bvh_build(&bvh, &scene, err, sizeof err) == 0);

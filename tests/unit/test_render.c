@@ -2,8 +2,7 @@
  * files (this test is linked with solutions/), on scenes whose pixels are
  * known by construction. */
 #include "check.h"            /* first: it sets the POSIX feature level */
-#include "../../labs/kit/render.h"
-#include "../../labs/kit/scene.h"
+#include "render_check.h"
 #include "../../labs/kit/compare.h"
 
 /* A scene of nx x ny pixels with the given spheres, eye at the origin. */
@@ -12,26 +11,6 @@ static Scene make_scene(int nx, int ny, double fov, Vec3 background, Sphere *sph
     Scene scene = { .nx = nx, .ny = ny, .fov_degrees = fov, .d = 1, .eye = { 0, 0, 0 },
                     .background = background, .spheres = spheres, .nspheres = n };
     return scene;
-}
-
-/* Renders scene into a fresh img with the given number of threads.
- * Returns 0, or -1 after a failed check (img is then empty). */
-static int render_with(const Scene *scene, int threads, Image *img, RenderStats *stats)
-{
-    char err[256] = "";
-    RenderStats unused;
-    if (image_alloc(img, scene->nx, scene->ny, err, sizeof err) < 0) {
-        CHECK_MSG(0, "image_alloc: %s", err);
-        return -1;
-    }
-    RenderOptions opt = { threads, false, RENDER_HIERARCHY_AUTO, { 0, 0 } };
-    int status = render_scene(scene, img, &opt, stats ? stats : &unused, err, sizeof err);
-    CHECK_MSG(status == 0, "render_scene returned %d: %s", status, err);
-    if (status != 0) {
-        image_free(img);
-        return -1;
-    }
-    return 0;
 }
 
 /* True when pixel (i, j) of img holds colour c as the kit stores it. */
@@ -69,7 +48,7 @@ static void test_sphere_straight_ahead(void)
     Sphere sphere = { { 0, 0, -5 }, 1, RED };
     Scene scene = make_scene(33, 25, 60, BACKGROUND, &sphere, 1);
     Image img;
-    if (render_with(&scene, 2, &img, NULL) < 0)
+    if (render_as(&scene, RENDER_HIERARCHY_AUTO, 2, &img, NULL) < 0)
         return;
     CHECK_PIXEL(&img, 16, 12, RED, "the sphere at the centre");
     CHECK_PIXEL(&img, 0, 0, BACKGROUND, "the background at the top left");
@@ -91,7 +70,7 @@ static void test_asymmetric_quadrant(void)
     Sphere sphere = { { -1, 1, -5 }, 0.8, GREEN };
     Scene scene = make_scene(64, 48, 60, BACKGROUND, &sphere, 1);
     Image img;
-    if (render_with(&scene, 3, &img, NULL) < 0)
+    if (render_as(&scene, RENDER_HIERARCHY_AUTO, 3, &img, NULL) < 0)
         return;
     /* the pixel on the line of sight through the centre: x = y = 0.2 on the plane */
     double h = 2 * tan(30 * M_PI / 180), w = h * 64 / 48;
@@ -144,7 +123,7 @@ static void test_one_colour_rectangles(void)
         scene.triangles = cases[k].tri;
         scene.ntriangles = cases[k].tri != NULL;
         Image img;
-        if (render_with(&scene, cases[k].threads, &img, NULL) < 0)
+        if (render_as(&scene, RENDER_HIERARCHY_AUTO, cases[k].threads, &img, NULL) < 0)
             return;
         int area = (cases[k].i1 - cases[k].i0) * (cases[k].j1 - cases[k].j0);
         int in = count_color(&img, cases[k].i0, cases[k].i1, cases[k].j0, cases[k].j1, cases[k].c);
@@ -169,7 +148,7 @@ static void test_tiny_images(void)
     for (int k = 0; k < CHECK_COUNT(sizes); k++) {
         Scene scene = make_scene(sizes[k].nx, sizes[k].ny, 60, BACKGROUND, &sphere, 1);
         Image img;
-        if (render_with(&scene, sizes[k].threads, &img, NULL) < 0)
+        if (render_as(&scene, RENDER_HIERARCHY_AUTO, sizes[k].threads, &img, NULL) < 0)
             return;
         CHECK_PIXEL(&img, sizes[k].nx / 2, sizes[k].ny / 2, RED, "the sphere");
         if (sizes[k].end_i >= 0)
@@ -178,32 +157,18 @@ static void test_tiny_images(void)
     }
 }
 
-/* Loads a shipped scene and sets its image size to nx x ny.  Returns 0, or
- * -1 after a failed check. */
-static int load_at_size(Scene *scene, const char *path, int nx, int ny)
-{
-    char err[512];
-    int status = scene_load(scene, path, err, sizeof err);
-    CHECK_MSG(status == 0, "%s", err);
-    if (status != 0)
-        return -1;
-    scene->nx = nx;
-    scene->ny = ny;
-    return 0;
-}
-
 /* Renders a shipped scene at nx x ny with 1 and with nthreads threads and
  * checks the two images are byte for byte the same. */
 static void check_threads_agree(const char *path, int nx, int ny, int nthreads)
 {
     Scene scene;
-    if (load_at_size(&scene, path, nx, ny) < 0)
+    if (load_scene(&scene, path, nx, ny) < 0)
         return;
     Image one, many;
     RenderStats stats;
-    if (render_with(&scene, 1, &one, &stats) == 0) {
+    if (render_as(&scene, RENDER_HIERARCHY_AUTO, 1, &one, &stats) == 0) {
         CHECK_EQ_INT(stats.threads, 1);
-        if (render_with(&scene, nthreads, &many, &stats) == 0) {
+        if (render_as(&scene, RENDER_HIERARCHY_AUTO, nthreads, &many, &stats) == 0) {
             CHECK_MSG(memcmp(one.rgb, many.rgb, (size_t)3 * nx * ny) == 0,
                       "%s at %dx%d: 1 and %d threads give different images", path, nx, ny, nthreads);
             CHECK(stats.threads >= 1 && (nthreads == 0 || stats.threads <= nthreads));
@@ -253,10 +218,10 @@ static Vec3 expected_color(const Scene *scene, const Ray *ray)
 static void check_plain_loop(const char *path, int nx, int ny)
 {
     Scene scene;
-    if (load_at_size(&scene, path, nx, ny) < 0)
+    if (load_scene(&scene, path, nx, ny) < 0)
         return;
     Image img;
-    if (render_with(&scene, 2, &img, NULL) == 0) {
+    if (render_as(&scene, RENDER_HIERARCHY_AUTO, 2, &img, NULL) == 0) {
         double w, h;
         image_plane_size(scene.fov_degrees, (double)nx / ny, scene.d, &w, &h);
         int wrong = 0, first_i = -1, first_j = -1;
@@ -314,7 +279,7 @@ static void test_closest_across_kinds(void)
     scene.triangles = &tri;
     scene.ntriangles = 1;
     Image img;
-    if (render_with(&scene, 2, &img, NULL) < 0)
+    if (render_as(&scene, RENDER_HIERARCHY_AUTO, 2, &img, NULL) < 0)
         return;
     CHECK_PIXEL(&img, 20, 15, GREEN, "the sphere, in front of the triangle and the wall");
     CHECK_PIXEL(&img, 2, 15, RED, "the wall, left of the sphere");
@@ -322,7 +287,7 @@ static void test_closest_across_kinds(void)
     CHECK_EQ_INT(count_color(&img, 0, 41, 0, 31, BACKGROUND), 0);
     image_free(&img);
     sphere.center.z = -30;                        /* behind the wall now */
-    if (render_with(&scene, 1, &img, NULL) < 0)
+    if (render_as(&scene, RENDER_HIERARCHY_AUTO, 1, &img, NULL) < 0)
         return;
     CHECK_EQ_INT(count_color(&img, 0, 41, 0, 31, GREEN), 0);
     CHECK_PIXEL(&img, 20, 15, RED, "the wall, where the sphere was");
@@ -373,7 +338,7 @@ static void test_stats(void)
     Scene scene = make_scene(200, 150, 60, BACKGROUND, &sphere, 1);
     Image img;
     RenderStats stats = { -1, -1, -1, -1, -1, -1, true };
-    if (render_with(&scene, 4, &img, &stats) < 0)
+    if (render_as(&scene, RENDER_HIERARCHY_AUTO, 4, &img, &stats) < 0)
         return;
     CHECK(stats.seconds > 0);
     CHECK(stats.rays_per_second > 0);
@@ -382,7 +347,7 @@ static void test_stats(void)
     image_free(&img);
 
     stats.threads = -1;               /* 0 threads: one per core */
-    if (render_with(&scene, 0, &img, &stats) < 0)
+    if (render_as(&scene, RENDER_HIERARCHY_AUTO, 0, &img, &stats) < 0)
         return;
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
     CHECK(stats.threads >= 1);
