@@ -11,7 +11,7 @@
  * Messages appear only on failure; the last line is "N passed, N failed".
  * An argument runs only the tests whose names contain it.
  * check_temp_dir and check_remove_tree give a test a directory of its own,
- * and check_write_file a file in it.
+ * and check_write_file and check_write_in a file in it.
  * check_file_is reads a file back.  check_xorshift32 and check_xorshift64
  * are small deterministic pseudo-random generators for a test's inputs,
  * check_random_bytes fills a buffer from the first.  CHECK_SANITIZED is 1 in the sanitized build, where each
@@ -197,6 +197,15 @@ static inline int check_write_file(const char *path, const void *data, size_t n)
     if (!ok)
         CHECK_MSG(0, "cannot write %s", path);
     return ok ? 0 : -1;
+}
+
+/* check_write_file of dir/name, its path left in path[0 .. size-1]: text's
+ * first n bytes, or with n 0 all of it up to its NUL. */
+static inline int check_write_in(char *path, size_t size, const char *dir, const char *name,
+                                 const char *text, size_t n)
+{
+    snprintf(path, size, "%s/%s", dir, name);
+    return check_write_file(path, text, n ? n : strlen(text));
 }
 
 /* Whether path is a plain file holding exactly data[0 .. n-1] whose

@@ -860,12 +860,11 @@ static void test_image_write_read(void)
 }
 
 /* Writes bytes to dir/name and returns image_read's result. */
-static int read_bytes_as_image(const char *dir, const char *name, const void *bytes, size_t n,
+static int read_bytes_as_image(const char *dir, const char *name, const char *bytes, size_t n,
                                Image *img, char *err, size_t errlen)
 {
     char path[600];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    if (check_write_file(path, bytes, n) != 0)
+    if (check_write_in(path, sizeof path, dir, name, bytes, n) != 0)
         return -2;
     return image_read(img, path, err, errlen);
 }

@@ -341,14 +341,6 @@ static void test_load_errors(void)
     CHECK_STR_CONTAINS(err, strerror(EISDIR));
 }
 
-/* Writes len bytes of text (all of it when len is 0) to dir/name; 0 or -1. */
-static int write_file(const char *dir, const char *name, const char *text, size_t len)
-{
-    char path[512];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    return check_write_file(path, text, len ? len : strlen(text));
-}
-
 /* scene_load of a file: a NUL byte is refused with its line; a bad line is
  * reported with the file's path.  (That it reads a good file's values:
  * test_default_scene_values.) */
@@ -357,15 +349,15 @@ static void test_load_files(void)
     char dir[64], path[512], err[512], want[600];
     if (check_temp_dir(dir, sizeof dir, "load") < 0)
         return;
-    snprintf(path, sizeof path, "%s/t.scene", dir);
     Scene scene;
     const char nul[] = "image 8 4\nfov 45\nsph\0ere 1 2 -3 0.5 0 0.5 1\n";
-    CHECK(write_file(dir, "t.scene", nul, sizeof nul - 1) == 0);
+    CHECK(check_write_in(path, sizeof path, dir, "t.scene", nul, sizeof nul - 1) == 0);
     CHECK_EQ_INT(scene_load(&scene, path, err, sizeof err), -1);
     snprintf(want, sizeof want, "%s:3: contains a NUL byte", path);
     CHECK_STR_CONTAINS(err, want);
 
-    CHECK(write_file(dir, "t.scene", "image 8 4\n\n\nfov 45\nsphere 1 2 -3 0.5 0 0.5\n", 0) == 0);
+    CHECK(check_write_in(path, sizeof path, dir, "t.scene",
+                         "image 8 4\n\n\nfov 45\nsphere 1 2 -3 0.5 0 0.5\n", 0) == 0);
     CHECK_EQ_INT(scene_load(&scene, path, err, sizeof err), -1);
     snprintf(want, sizeof want, "%s:5: sphere needs 7 numbers", path);
     CHECK_STR_CONTAINS(err, want);
@@ -410,18 +402,17 @@ static void test_mesh_files(void)
     check_temp_dir(dir, sizeof dir, "mesh");
     snprintf(path, sizeof path, "%s/meshes", dir);
     CHECK(mkdir(path, 0700) == 0);
-    CHECK(write_file(dir, "meshes/quad.obj",
-                     "# a unit square split in a fan, and a triangle\n"
-                     "o square\nmtllib none.mtl\nusemtl red\ns off\ng one\n"
-                     "v 0 0 0\nv 1 0 0\nv 1 1 0 1\nv 0 1 0\n"
-                     "vt 0 0\nvn 0 0 1\nvp 0.5\n"
-                     "f 1 2/1 3//1 4/1/1\n"
-                     "v 0.1 0.3 0.7\n"
-                     "f -1 -3 -5\n"
-                     "l 1 2\n", 0) == 0);
-    CHECK(write_file(dir, "box.scene",
-                     "image 8 8\nfov 60\nmesh meshes/quad.obj 0.1 1 2 -3 0.5 0.5 0.5\n", 0) == 0);
-    snprintf(path, sizeof path, "%s/box.scene", dir);
+    CHECK(check_write_in(path, sizeof path, dir, "meshes/quad.obj",
+                         "# a unit square split in a fan, and a triangle\n"
+                         "o square\nmtllib none.mtl\nusemtl red\ns off\ng one\n"
+                         "v 0 0 0\nv 1 0 0\nv 1 1 0 1\nv 0 1 0\n"
+                         "vt 0 0\nvn 0 0 1\nvp 0.5\n"
+                         "f 1 2/1 3//1 4/1/1\n"
+                         "v 0.1 0.3 0.7\n"
+                         "f -1 -3 -5\n"
+                         "l 1 2\n", 0) == 0);
+    CHECK(check_write_in(path, sizeof path, dir, "box.scene",
+                         "image 8 8\nfov 60\nmesh meshes/quad.obj 0.1 1 2 -3 0.5 0.5 0.5\n", 0) == 0);
     Scene scene;
     int status = scene_load(&scene, path, err, sizeof err);
     CHECK_MSG(status == 0, "%s", err);
@@ -473,10 +464,10 @@ static void test_mesh_errors(void)
     };
     char dir[64], path[512], err[512], want[600];
     check_temp_dir(dir, sizeof dir, "mesh");
-    snprintf(path, sizeof path, "%s/bad.obj", dir);
     for (int k = 0; k < CHECK_COUNT(bad); k++) {
         /* a text that holds a NUL: write it too */
-        CHECK(write_file(dir, "bad.obj", bad[k].obj, strstr(bad[k].word, "NUL") ? 14 : 0) == 0);
+        CHECK(check_write_in(path, sizeof path, dir, "bad.obj", bad[k].obj,
+                             strstr(bad[k].word, "NUL") ? 14 : 0) == 0);
         Scene scene;
         char scene_text[700];
         snprintf(scene_text, sizeof scene_text, "image 8 8\nfov 60\n\nmesh %s 1 0 0 0 1 1 1\n", path);
