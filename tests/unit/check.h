@@ -14,7 +14,8 @@
  * and check_write_file and check_write_in a file in it.
  * check_file_is reads a file back.  check_xorshift32 and check_xorshift64
  * are small deterministic pseudo-random generators for a test's inputs,
- * check_random_bytes fills a buffer from the first.  CHECK_SANITIZED is 1 in the sanitized build, where each
+ * check_random_bytes fills a buffer from the first, check_damaged changes
+ * some bytes of a copy.  CHECK_SANITIZED is 1 in the sanitized build, where each
  * test's child also checks for leaks before it ends.
  * Include it before any other header: it sets _POSIX_C_SOURCE.
  */
@@ -146,6 +147,21 @@ static inline void check_random_bytes(uint32_t *state, void *p, size_t n)
 {
     for (size_t k = 0; k < n; k++)
         ((unsigned char *)p)[k] = (unsigned char)(check_xorshift32(state) >> 24);
+}
+
+/* A malloc'd copy of data[0 .. n-1] (n > 0) with flips of its bytes
+ * changed, each at a place and by a nonzero xor drawn from
+ * check_xorshift32(state): random damage, for a reader to survive. */
+static inline unsigned char *check_damaged(uint32_t *state, const void *data, size_t n, int flips)
+{
+    unsigned char *p = malloc(n);
+    if (p)
+        memcpy(p, data, n);
+    for (int f = 0; p && f < flips; f++) {
+        size_t at = check_xorshift32(state) % n;
+        p[at] ^= (unsigned char)(1 + check_xorshift32(state) % 255);
+    }
+    return p;
 }
 
 /* A fresh empty directory under $TMPDIR or /tmp, named after name, in
