@@ -95,12 +95,13 @@ static int scene_once(const TextLine *ln, int *first, char *err, size_t errlen)
     return 0;
 }
 
-/* Makes room for one more item in the array *items of *count items
- * (capacity *capacity, elements of size bytes), at most max in all.
- * Returns 0, or -1 with a message naming what when the limit is reached
- * or memory runs out (the array then still belongs to the scene). */
-static int scene_grow(void **items, int *count, int *capacity, size_t size, int max,
-                      const char *what, const TextLine *ln, char *err, size_t errlen)
+/* Appends the item (size bytes) to the array *items of *count items
+ * (capacity *capacity), at most max in all; the one function serves
+ * spheres, planes and triangles.  Returns 0, or -1 with a message naming
+ * what when the limit is reached or memory runs out (the array then still
+ * belongs to the scene). */
+static int scene_add(void **items, int *count, int *capacity, const void *item, size_t size,
+                     int max, const char *what, const TextLine *ln, char *err, size_t errlen)
 {
     if (*count == max) {
         text_error(err, errlen, ln->name, ln->line, "too many %s: at most %d", what, max);
@@ -118,44 +119,9 @@ static int scene_grow(void **items, int *count, int *capacity, size_t size, int 
         *items = more;
         *capacity = grown;
     }
+    memcpy((char *)*items + (size_t)*count * size, item, size);
+    ++*count;
     return 0;
-}
-
-/* Appends a sphere to scene->spheres.  Returns 0, or -1 with a message. */
-static int scene_add_sphere(Scene *scene, SceneBuild *b, const Sphere *sphere,
-                            const TextLine *ln, char *err, size_t errlen)
-{
-    void *items = scene->spheres;
-    int status = scene_grow(&items, &scene->nspheres, &b->spheres, sizeof *scene->spheres,
-                            SCENE_MAX_SPHERES, "spheres", ln, err, errlen);
-    scene->spheres = items;
-    if (status == 0)
-        scene->spheres[scene->nspheres++] = *sphere;
-    return status;
-}
-
-static int scene_add_plane(Scene *scene, SceneBuild *b, const Plane *plane,
-                           const TextLine *ln, char *err, size_t errlen)
-{
-    void *items = scene->planes;
-    int status = scene_grow(&items, &scene->nplanes, &b->planes, sizeof *scene->planes,
-                            SCENE_MAX_PLANES, "planes", ln, err, errlen);
-    scene->planes = items;
-    if (status == 0)
-        scene->planes[scene->nplanes++] = *plane;
-    return status;
-}
-
-static int scene_add_triangle(Scene *scene, SceneBuild *b, const Triangle *tri,
-                              const TextLine *ln, char *err, size_t errlen)
-{
-    void *items = scene->triangles;
-    int status = scene_grow(&items, &scene->ntriangles, &b->triangles, sizeof *scene->triangles,
-                            SCENE_MAX_TRIANGLES, "triangles", ln, err, errlen);
-    scene->triangles = items;
-    if (status == 0)
-        scene->triangles[scene->ntriangles++] = *tri;
-    return status;
 }
 
 /* "mesh FILE s tx ty tz r g b": the OBJ file's triangles, read relative to
@@ -255,8 +221,11 @@ static int scene_line(Scene *scene, SceneSeen *seen, SceneBuild *b, const TextLi
         if (scene_check_color(ln, 5, v + 4, err, errlen) < 0)
             return -1;
         Sphere sphere = { vec3(v[0], v[1], v[2]), v[3], vec3(v[4], v[5], v[6]) };
-        if (scene_add_sphere(scene, b, &sphere, ln, err, errlen) < 0)
-            return -1;
+        void *items = scene->spheres;
+        int status = scene_add(&items, &scene->nspheres, &b->spheres, &sphere, sizeof sphere,
+                               SCENE_MAX_SPHERES, "spheres", ln, err, errlen);
+        scene->spheres = items;
+        return status;
     } else if (strcmp(key, "plane") == 0) {
         if (scene_numbers(ln, 9, "px py pz nx ny nz r g b", v, err, errlen) < 0
             || scene_check_color(ln, 7, v + 6, err, errlen) < 0)
@@ -266,8 +235,11 @@ static int scene_line(Scene *scene, SceneSeen *seen, SceneBuild *b, const TextLi
             return -1;
         }
         Plane plane = { vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]), vec3(v[6], v[7], v[8]) };
-        if (scene_add_plane(scene, b, &plane, ln, err, errlen) < 0)
-            return -1;
+        void *items = scene->planes;
+        int status = scene_add(&items, &scene->nplanes, &b->planes, &plane, sizeof plane,
+                               SCENE_MAX_PLANES, "planes", ln, err, errlen);
+        scene->planes = items;
+        return status;
     } else if (strcmp(key, "triangle") == 0) {
         if (scene_numbers(ln, 12, "ax ay az bx by bz cx cy cz r g b", v, err, errlen) < 0
             || scene_check_color(ln, 10, v + 9, err, errlen) < 0)
@@ -280,11 +252,13 @@ static int scene_line(Scene *scene, SceneSeen *seen, SceneBuild *b, const TextLi
                        "triangle has no area (two vertices are equal, or all three on a line)");
             return -1;
         }
-        if (scene_add_triangle(scene, b, &tri, ln, err, errlen) < 0)
-            return -1;
+        void *items = scene->triangles;
+        int status = scene_add(&items, &scene->ntriangles, &b->triangles, &tri, sizeof tri,
+                               SCENE_MAX_TRIANGLES, "triangles", ln, err, errlen);
+        scene->triangles = items;
+        return status;
     } else if (strcmp(key, "mesh") == 0) {
-        if (scene_mesh(scene, b, ln, err, errlen) < 0)
-            return -1;
+        return scene_mesh(scene, b, ln, err, errlen);
     } else {
         text_error(err, errlen, ln->name, ln->line,
                    "unknown keyword '%s' (expected image, fov, distance, background, sphere, "
