@@ -13,10 +13,9 @@
 #include <sys/types.h>
 #include <unistd.h>
 
-/* Writes all n bytes to fd, retrying after interruptions and short writes.
- * Returns 0, or -1 with errno set. */
-static int save_write_all(int fd, const unsigned char *p, size_t n)
+int kit_write_all(int fd, const void *data, size_t n)
 {
+    const unsigned char *p = data;
     while (n > 0) {
         ssize_t w = write(fd, p, n);
         if (w < 0) {
@@ -58,7 +57,7 @@ int kit_save_file(const char *path, const void *data, size_t n, char *err, size_
     mode_t mask = umask(022);
     umask(mask);
     const char *what = "cannot write";
-    int failed = fchmod(fd, 0666 & ~mask) != 0 || save_write_all(fd, data, n) != 0;
+    int failed = fchmod(fd, 0666 & ~mask) != 0 || kit_write_all(fd, data, n) != 0;
     int saved = errno;
     if (close(fd) != 0 && !failed) {
         failed = 1;

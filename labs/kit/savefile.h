@@ -14,6 +14,10 @@
  * left behind. */
 int kit_save_file(const char *path, const void *data, size_t n, char *err, size_t errlen);
 
+/* Writes all n bytes of data to fd, retrying after interruptions and short
+ * writes.  Returns 0, or -1 with errno set. */
+int kit_write_all(int fd, const void *data, size_t n);
+
 /* Reads the whole regular file at path, any bytes, into a fresh buffer with
  * a NUL after them, and sets *len to their number.  NULL when it cannot be
  * opened, is not a regular file, holds more than max bytes, changed while

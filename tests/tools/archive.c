@@ -123,23 +123,6 @@ static int arc_read_file(const char *path, KitBuf *out, char *err, size_t errlen
     return 0;
 }
 
-/* Writes all n bytes to fd, retrying after interruptions and short
- * writes.  Returns 0, or -1 with errno set. */
-static int arc_write_all(int fd, const unsigned char *p, size_t n)
-{
-    while (n > 0) {
-        ssize_t got = write(fd, p, n);
-        if (got < 0) {
-            if (errno == EINTR)
-                continue;
-            return -1;
-        }
-        p += got;
-        n -= (size_t)got;
-    }
-    return 0;
-}
-
 /* ---- entries -------------------------------------------------------------------- */
 
 /* Starts an empty archive. */
@@ -719,7 +702,7 @@ static int arc_extract_file(const ArchiveEntry *e, const char *full, char *err, 
     int fd = open(full, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW, 0600);
     if (fd < 0)
         return arc_fail(err, errlen, "%s: cannot create: %s", full, strerror(errno));
-    int failed = arc_write_all(fd, e->data, e->size) != 0 || fchmod(fd, e->mode) != 0;
+    int failed = kit_write_all(fd, e->data, e->size) != 0 || fchmod(fd, e->mode) != 0;
     int saved = errno;
     if (close(fd) != 0 && !failed) {
         failed = 1;
