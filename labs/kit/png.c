@@ -51,21 +51,6 @@ static unsigned char png_predict(int type, const unsigned char *row, const unsig
     }
 }
 
-/* Stores a 4-byte big-endian number. */
-static void png_put_be32(unsigned char *p, uint32_t v)
-{
-    p[0] = (unsigned char)(v >> 24);
-    p[1] = (unsigned char)(v >> 16);
-    p[2] = (unsigned char)(v >> 8);
-    p[3] = (unsigned char)v;
-}
-
-/* Reads a 4-byte big-endian number. */
-static uint32_t png_get_be32(const unsigned char *p)
-{
-    return ((uint32_t)p[0] << 24) | ((uint32_t)p[1] << 16) | ((uint32_t)p[2] << 8) | p[3];
-}
-
 /* ---- encoder -------------------------------------------------------------------- */
 
 /* Appends one chunk: length, type, data, CRC of type and data.
@@ -73,10 +58,10 @@ static uint32_t png_get_be32(const unsigned char *p)
 static int png_put_chunk(KitBuf *out, const char *type, const unsigned char *data, size_t n)
 {
     unsigned char head[8], tail[4];
-    png_put_be32(head, (uint32_t)n);
+    kit_put_be32(head, (uint32_t)n);
     memcpy(head + 4, type, 4);
     uint32_t crc = kit_crc32(kit_crc32(0, head + 4, 4), data, n);
-    png_put_be32(tail, crc);
+    kit_put_be32(tail, crc);
     if (kit_buf_append(out, head, 8) != 0 || kit_buf_append(out, data, n) != 0 ||
         kit_buf_append(out, tail, 4) != 0)
         return -1;
@@ -230,8 +215,8 @@ int png_encode(int width, int height, const unsigned char *rgb, KitBuf *out, cha
     size_t old_len = out->len;
     KitBuf raw = {0}, z = {0};
     unsigned char ihdr[13];
-    png_put_be32(ihdr, (uint32_t)width);
-    png_put_be32(ihdr + 4, (uint32_t)height);
+    kit_put_be32(ihdr, (uint32_t)width);
+    kit_put_be32(ihdr + 4, (uint32_t)height);
     ihdr[8] = 8;            /* bit depth */
     ihdr[9] = 2;            /* colour type: RGB */
     ihdr[10] = 0;           /* compression: deflate */
@@ -270,7 +255,7 @@ static int png_read_ihdr(const unsigned char *d, size_t n, PngHeader *h, char *e
         snprintf(err, errlen, "PNG IHDR chunk has length %zu, not 13", n);
         return -1;
     }
-    uint32_t w = png_get_be32(d), ht = png_get_be32(d + 4);
+    uint32_t w = kit_get_be32(d), ht = kit_get_be32(d + 4);
     unsigned depth = d[8], type = d[9];
     if (w < 1 || ht < 1 || w > PNG_MAX_SIDE || ht > PNG_MAX_SIDE) {
         snprintf(err, errlen, "PNG image is %lu x %lu pixels: each side must be 1 to %d",
@@ -327,7 +312,7 @@ static int png_read_chunks(const unsigned char *p, size_t n, PngHeader *h, KitBu
             snprintf(err, errlen, "PNG data is truncated (no IEND chunk)");
             return -1;
         }
-        uint32_t len = png_get_be32(p + at);
+        uint32_t len = kit_get_be32(p + at);
         const unsigned char *type = p + at + 4, *data = p + at + 8;
         if (len > PNG_CHUNK_MAX || !png_valid_type(type)) {
             snprintf(err, errlen, "PNG data is corrupt (bad chunk header at byte %zu)", at);
@@ -337,7 +322,7 @@ static int png_read_chunks(const unsigned char *p, size_t n, PngHeader *h, KitBu
             snprintf(err, errlen, "PNG data is truncated (in a %.4s chunk)", (const char *)type);
             return -1;
         }
-        if (kit_crc32(0, type, 4 + (size_t)len) != png_get_be32(data + len)) {
+        if (kit_crc32(0, type, 4 + (size_t)len) != kit_get_be32(data + len)) {
             snprintf(err, errlen, "PNG data is corrupt (CRC mismatch in a %.4s chunk)",
                      (const char *)type);
             return -1;

@@ -67,6 +67,21 @@ int kit_buf_push(KitBuf *b, unsigned char byte)
     return 0;
 }
 
+/* ---- big-endian numbers (zlib's trailer, PNG's lengths and CRCs) ---------- */
+
+void kit_put_be32(unsigned char *p, uint32_t v)
+{
+    p[0] = (unsigned char)(v >> 24);
+    p[1] = (unsigned char)(v >> 16);
+    p[2] = (unsigned char)(v >> 8);
+    p[3] = (unsigned char)v;
+}
+
+uint32_t kit_get_be32(const unsigned char *p)
+{
+    return ((uint32_t)p[0] << 24) | ((uint32_t)p[1] << 16) | ((uint32_t)p[2] << 8) | p[3];
+}
+
 /* ---- checksums --------------------------------------------------------------- */
 
 #define CRC32_POLY 0xEDB88320u
@@ -717,26 +732,29 @@ int kit_inflate(const void *in, size_t n, size_t max_out, KitBuf *out,
 
 /* ---- zlib wrapper (RFC 1950) ---------------------------------------------------- */
 
-/* Writes a 4-byte big-endian number. */
-static int zl_put_be32(KitBuf *out, uint32_t v)
-{
-    unsigned char b[4] = {(unsigned char)(v >> 24), (unsigned char)(v >> 16),
-                          (unsigned char)(v >> 8), (unsigned char)v};
-    return kit_buf_append(out, b, 4);
-}
-
 /* Header 0x78 0x01 (deflate, 32 KiB window, no dictionary), the stream, and
  * the Adler-32 of the data.  Returns 0, or -1 if memory runs out. */
 int kit_zlib_compress(const void *in, size_t n, KitBuf *out)
 {
     size_t old_len = out->len;
     static const unsigned char header[2] = {0x78, 0x01};
+    unsigned char trailer[4];
+    kit_put_be32(trailer, kit_adler32(1, in, n));
     if (kit_buf_append(out, header, 2) != 0 || kit_deflate(in, n, out) != 0 ||
-        zl_put_be32(out, kit_adler32(1, in, n)) != 0) {
+        kit_buf_append(out, trailer, 4) != 0) {
         out->len = old_len;
         return -1;
     }
     return 0;
+}
+
+/* Puts why in err and gives out back its old length.  Returns -1 for the
+ * caller to pass on. */
+static int zl_fail(KitBuf *out, size_t old_len, char *err, size_t errlen, const char *why)
+{
+    out->len = old_len;
+    snprintf(err, errlen, "%s", why);
+    return -1;
 }
 
 /* Checks the header, inflates, checks the Adler-32 and that nothing follows.
@@ -746,45 +764,29 @@ int kit_zlib_uncompress(const void *in, size_t n, size_t max_out, KitBuf *out,
 {
     const unsigned char *p = in;
     size_t old_len = out->len, used = 0;
-    if (n < 6) {
-        snprintf(err, errlen, "zlib data is truncated");
-        return -1;
-    }
+    if (n < 6)
+        return zl_fail(out, old_len, err, errlen, "zlib data is truncated");
     unsigned cmf = p[0], flg = p[1];
-    if ((cmf & 0x0Fu) != 8 || (cmf >> 4) > 7) {
-        snprintf(err, errlen, "zlib header: not deflate with a window of at most 32 KiB");
-        return -1;
-    }
-    if ((cmf * 256 + flg) % 31 != 0) {
-        snprintf(err, errlen, "zlib header check failed");
-        return -1;
-    }
-    if (flg & 0x20u) {
-        snprintf(err, errlen, "zlib data needs a preset dictionary (not supported)");
-        return -1;
-    }
+    if ((cmf & 0x0Fu) != 8 || (cmf >> 4) > 7)
+        return zl_fail(out, old_len, err, errlen,
+                       "zlib header: not deflate with a window of at most 32 KiB");
+    if ((cmf * 256 + flg) % 31 != 0)
+        return zl_fail(out, old_len, err, errlen, "zlib header check failed");
+    if (flg & 0x20u)
+        return zl_fail(out, old_len, err, errlen,
+                       "zlib data needs a preset dictionary (not supported)");
     if (kit_inflate(p + 2, n - 2, max_out, out, &used, err, errlen) != 0)
         return -1;
     const unsigned char *t = p + 2 + used;
     size_t rest = n - 2 - used;
-    if (rest < 4) {
-        out->len = old_len;
-        snprintf(err, errlen, "zlib data is truncated (no Adler-32 trailer)");
-        return -1;
-    }
-    uint32_t want = ((uint32_t)t[0] << 24) | ((uint32_t)t[1] << 16) |
-                    ((uint32_t)t[2] << 8) | t[3];
+    if (rest < 4)
+        return zl_fail(out, old_len, err, errlen, "zlib data is truncated (no Adler-32 trailer)");
     size_t got_len = out->len - old_len;
     uint32_t got = kit_adler32(1, got_len ? out->data + old_len : NULL, got_len);
-    if (got != want) {
-        out->len = old_len;
-        snprintf(err, errlen, "zlib data is corrupt (Adler-32 mismatch)");
-        return -1;
-    }
-    if (rest > 4) {
-        out->len = old_len;
-        snprintf(err, errlen, "unexpected bytes after the end of the zlib data");
-        return -1;
-    }
+    if (got != kit_get_be32(t))
+        return zl_fail(out, old_len, err, errlen, "zlib data is corrupt (Adler-32 mismatch)");
+    if (rest > 4)
+        return zl_fail(out, old_len, err, errlen,
+                       "unexpected bytes after the end of the zlib data");
     return 0;
 }

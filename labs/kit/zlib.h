@@ -3,6 +3,7 @@
  *
  *     kit_crc32, kit_adler32     the checksums of gzip/ZIP/PNG and of zlib
  *     KitBuf                     a byte buffer that grows as it is appended to
+ *     kit_put_be32, kit_get_be32 4-byte big-endian numbers
  *     kit_deflate, kit_inflate   raw DEFLATE streams (RFC 1951)
  *     kit_zlib_compress,         the same inside the zlib wrapper (RFC 1950):
  *     kit_zlib_uncompress        a 2-byte header and an Adler-32 trailer
@@ -36,6 +37,11 @@ int kit_buf_reserve(KitBuf *b, size_t extra);
 int kit_buf_append(KitBuf *b, const void *data, size_t n);
 /* Appends one byte.  Returns 0 or -1 as above. */
 int kit_buf_push(KitBuf *b, unsigned char byte);
+
+/* Stores v at p[0 .. 3], and reads it back, most significant byte first
+ * (the order of zlib's trailer and of PNG's numbers). */
+void kit_put_be32(unsigned char *p, uint32_t v);
+uint32_t kit_get_be32(const unsigned char *p);
 
 /* CRC-32 (ISO-HDLC: reflected polynomial 0xEDB88320, as in gzip, ZIP and
  * PNG).  Start with crc = 0; pass the previous result to continue. */
