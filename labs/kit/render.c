@@ -17,9 +17,9 @@
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "render.h"
 #include "closest.h"
+#include "textfile.h"
 
 #include <pthread.h>
-#include <stdarg.h>
 #include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -68,20 +68,6 @@ int render_crash_rows(int *j0, int *j1)
     *j0 = crash_j0;
     *j1 = crash_j1;
     return 1;
-}
-
-/* Writes a one-line reason, formatted as by printf, into err (if any).
- * Never fails. */
-static void render_error(char *err, size_t errlen, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-static void render_error(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (!err || errlen == 0)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
 }
 
 double render_now(void)
@@ -262,7 +248,7 @@ static int render_pass(RenderJob *job, int nthreads, bool show, double start,
     }
     pthread_mutex_unlock(&job->lock);
     if (started == 0) {
-        render_error(err, errlen, "render: cannot start a thread: %s", strerror(status));
+        kit_fail(err, errlen, "render: cannot start a thread: %s", strerror(status));
         return 0;
     }
     render_wait(job, show, isatty(STDERR_FILENO), start);
@@ -315,8 +301,8 @@ int render_scene(const Scene *scene, Image *img, const RenderOptions *opt,
 {
     const int nx = scene->nx, ny = scene->ny;
     if (nx < 1 || ny < 1 || !img->rgb || img->width != nx || img->height != ny) {
-        render_error(err, errlen, "render: the image is %dx%d but the scene is %dx%d",
-                     img->width, img->height, nx, ny);
+        kit_fail(err, errlen, "render: the image is %dx%d but the scene is %dx%d",
+                 img->width, img->height, nx, ny);
         return -1;
     }
     RenderStats unused;
@@ -353,13 +339,13 @@ int render_scene(const Scene *scene, Image *img, const RenderOptions *opt,
 
     if (pthread_mutex_init(&job.lock, NULL) != 0) {
         bvh_free(&bvh);
-        render_error(err, errlen, "render: cannot create a mutex");
+        kit_fail(err, errlen, "render: cannot create a mutex");
         return -1;
     }
     if (pthread_cond_init(&job.finished, NULL) != 0) {
         pthread_mutex_destroy(&job.lock);
         bvh_free(&bvh);
-        render_error(err, errlen, "render: cannot create a condition variable");
+        kit_fail(err, errlen, "render: cannot create a condition variable");
         return -1;
     }
     bool show = opt && opt->progress;

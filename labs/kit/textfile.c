@@ -27,6 +27,17 @@ void text_error(char *err, size_t errlen, const char *name, int line, const char
     va_end(ap);
 }
 
+int kit_fail(char *err, size_t errlen, const char *fmt, ...)
+{
+    if (err && errlen > 0) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(err, errlen, fmt, ap);
+        va_end(ap);
+    }
+    return -1;
+}
+
 const char *text_quote(const char *word, char *buf)
 {
     size_t n = 0;

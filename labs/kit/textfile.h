@@ -2,7 +2,7 @@
  * textfile.h - the line-by-line reading shared by the scene reader
  * (scene.c) and the OBJ reader (obj.c): a whole file into memory, a line
  * split into words, a word read as a finite number, and messages that name
- * the file and the line.
+ * the file and the line (or, kit_fail, nothing but the reason).
  */
 #ifndef KIT_TEXTFILE_H
 #define KIT_TEXTFILE_H
@@ -31,6 +31,11 @@ size_t text_bom_length(const char *s, size_t n);
  * Never fails; a NULL err or errlen 0 writes nothing. */
 void text_error(char *err, size_t errlen, const char *name, int line, const char *fmt, ...)
     __attribute__((format(printf, 5, 6)));
+
+/* Writes the message alone into err, for the kit's other modules (no file
+ * and line to name).  Returns -1 for the caller to pass on; a NULL err or
+ * errlen 0 writes nothing. */
+int kit_fail(char *err, size_t errlen, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 
 /* Copies word into buf (TEXT_QUOTE_SIZE bytes) for a message: at most 40
  * characters, "..." after a cut, '?' for a byte that is not printable

@@ -7,12 +7,12 @@
 
 #include "archive.h"
 #include "../../labs/kit/savefile.h"
+#include "../../labs/kit/textfile.h"
 
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
-#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -41,20 +41,6 @@
 #define UNIX_TYPE_LINK   0120000u
 
 /* ---- small helpers ------------------------------------------------------------ */
-
-/* Formats a reason into err.  Returns -1 for the caller to pass on. */
-static int arc_fail(char *err, size_t errlen, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-static int arc_fail(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (err && errlen > 0) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(err, errlen, fmt, ap);
-        va_end(ap);
-    }
-    return -1;
-}
 
 /* Little-endian numbers, as ZIP stores them. */
 static void arc_put16(unsigned char *p, unsigned v)
@@ -100,17 +86,17 @@ static int arc_read_file(const char *path, KitBuf *out, char *err, size_t errlen
 {
     FILE *f = fopen(path, "rb");
     if (!f)
-        return arc_fail(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+        return kit_fail(err, errlen, "%s: cannot open: %s", path, strerror(errno));
     for (;;) {
         if (kit_buf_reserve(out, (size_t)1 << 16) != 0) {
             fclose(f);
-            return arc_fail(err, errlen, "%s: out of memory", path);
+            return kit_fail(err, errlen, "%s: out of memory", path);
         }
         size_t got = fread(out->data + out->len, 1, out->cap - out->len, f);
         out->len += got;
         if (out->len > ARCHIVE_MAX_SIZE) {
             fclose(f);
-            return arc_fail(err, errlen, "%s: larger than %zu bytes", path, ARCHIVE_MAX_SIZE);
+            return kit_fail(err, errlen, "%s: larger than %zu bytes", path, ARCHIVE_MAX_SIZE);
         }
         if (got == 0)
             break;
@@ -119,7 +105,7 @@ static int arc_read_file(const char *path, KitBuf *out, char *err, size_t errlen
     int saved = errno;
     fclose(f);
     if (bad)
-        return arc_fail(err, errlen, "%s: cannot read: %s", path, strerror(saved));
+        return kit_fail(err, errlen, "%s: cannot read: %s", path, strerror(saved));
     return 0;
 }
 
@@ -167,18 +153,18 @@ static int arc_add(Archive *a, const char *path, bool is_dir, const void *data, 
                    unsigned mode, char *err, size_t errlen)
 {
     if (!archive_path_ok(path))
-        return arc_fail(err, errlen, "unsafe or invalid path in an archive: \"%s\" (paths must be "
+        return kit_fail(err, errlen, "unsafe or invalid path in an archive: \"%s\" (paths must be "
                         "relative, without empty, . or .. parts)", path ? path : "(null)");
     if (size > ARCHIVE_MAX_SIZE)
-        return arc_fail(err, errlen, "%s: larger than %zu bytes", path, ARCHIVE_MAX_SIZE);
+        return kit_fail(err, errlen, "%s: larger than %zu bytes", path, ARCHIVE_MAX_SIZE);
     for (size_t k = 0; k < a->count; k++)
         if (strcmp(a->entries[k].path, path) == 0)
-            return arc_fail(err, errlen, "%s: appears twice in the archive", path);
+            return kit_fail(err, errlen, "%s: appears twice in the archive", path);
     if (a->count == a->cap) {
         size_t cap = a->cap ? 2 * a->cap : 16;
         ArchiveEntry *e = realloc(a->entries, cap * sizeof *e);
         if (!e)
-            return arc_fail(err, errlen, "out of memory");
+            return kit_fail(err, errlen, "out of memory");
         a->entries = e;
         a->cap = cap;
     }
@@ -188,7 +174,7 @@ static int arc_add(Archive *a, const char *path, bool is_dir, const void *data, 
     if (!e.path || (size > 0 && !e.data)) {
         free(e.path);
         free(e.data);
-        return arc_fail(err, errlen, "out of memory");
+        return kit_fail(err, errlen, "out of memory");
     }
     if (size > 0)
         memcpy(e.data, data, size);
@@ -223,7 +209,7 @@ static int arc_list_dir(const char *disk, char ***names, size_t *count, char *er
     *names = NULL;
     *count = 0;
     if (!d)
-        return arc_fail(err, errlen, "%s: cannot open directory: %s", disk, strerror(errno));
+        return kit_fail(err, errlen, "%s: cannot open directory: %s", disk, strerror(errno));
     size_t cap = 0;
     int rc = 0;
     struct dirent *e;
@@ -235,19 +221,19 @@ static int arc_list_dir(const char *disk, char ***names, size_t *count, char *er
             cap = cap ? 2 * cap : 16;
             char **grown = realloc(*names, cap * sizeof *grown);
             if (!grown) {
-                rc = arc_fail(err, errlen, "out of memory");
+                rc = kit_fail(err, errlen, "out of memory");
                 break;
             }
             *names = grown;
         }
         if (((*names)[*count] = strdup(e->d_name)) == NULL)
-            rc = arc_fail(err, errlen, "out of memory");
+            rc = kit_fail(err, errlen, "out of memory");
         else
             (*count)++;
         errno = 0;
     }
     if (rc == 0 && errno != 0)
-        rc = arc_fail(err, errlen, "%s: cannot read directory: %s", disk, strerror(errno));
+        rc = kit_fail(err, errlen, "%s: cannot read directory: %s", disk, strerror(errno));
     closedir(d);
     if (*count > 1)
         qsort(*names, *count, sizeof **names, arc_cmp_names);
@@ -266,9 +252,9 @@ static int arc_walk(Archive *a, const char *disk, const char *inside, char *err,
         struct stat st;
         KitBuf data = {0};
         if (!full || !path)
-            rc = arc_fail(err, errlen, "out of memory");
+            rc = kit_fail(err, errlen, "out of memory");
         else if (lstat(full, &st) != 0)
-            rc = arc_fail(err, errlen, "%s: %s", full, strerror(errno));
+            rc = kit_fail(err, errlen, "%s: %s", full, strerror(errno));
         else if (S_ISDIR(st.st_mode))
             rc = archive_add_dir(a, path, (unsigned)st.st_mode, err, errlen) == 0 &&
                  arc_walk(a, full, path, err, errlen) == 0 ? 0 : -1;
@@ -277,7 +263,7 @@ static int arc_walk(Archive *a, const char *disk, const char *inside, char *err,
                  archive_add_file(a, path, data.data, data.len, (unsigned)st.st_mode,
                                   err, errlen) == 0 ? 0 : -1;
         else
-            rc = arc_fail(err, errlen, "%s: not a regular file or directory (links and special "
+            rc = kit_fail(err, errlen, "%s: not a regular file or directory (links and special "
                           "files are not archived)", full);
         kit_buf_free(&data);
         free(full);
@@ -294,9 +280,9 @@ int archive_add_tree(Archive *a, const char *dir, char *err, size_t errlen)
 {
     struct stat st;
     if (stat(dir, &st) != 0)
-        return arc_fail(err, errlen, "%s: %s", dir, strerror(errno));
+        return kit_fail(err, errlen, "%s: %s", dir, strerror(errno));
     if (!S_ISDIR(st.st_mode))
-        return arc_fail(err, errlen, "%s: not a directory", dir);
+        return kit_fail(err, errlen, "%s: not a directory", dir);
     return arc_walk(a, dir, "", err, errlen);
 }
 
@@ -332,7 +318,7 @@ static int zip_put_entry(const ArchiveEntry *e, KitBuf *body, KitBuf *central,
     char *name = zip_name(e);
     KitBuf packed = {0};
     if (!name)
-        return arc_fail(err, errlen, "out of memory");
+        return kit_fail(err, errlen, "out of memory");
     size_t nlen = strlen(name);
     const unsigned char *payload = e->data;
     size_t psize = e->size;
@@ -340,7 +326,7 @@ static int zip_put_entry(const ArchiveEntry *e, KitBuf *body, KitBuf *central,
     int rc = 0;
     if (e->size > 0 && e->size < ZIP_MAX32) {     /* a larger one is refused below */
         if (kit_deflate(e->data, e->size, &packed) != 0)
-            rc = arc_fail(err, errlen, "out of memory");
+            rc = kit_fail(err, errlen, "out of memory");
         else if (packed.len < e->size) {
             payload = packed.data;
             psize = packed.len;
@@ -349,7 +335,7 @@ static int zip_put_entry(const ArchiveEntry *e, KitBuf *body, KitBuf *central,
     }
     if (rc == 0 && (nlen > 0xFFFFu || psize >= ZIP_MAX32 || e->size >= ZIP_MAX32 ||
                     body->len >= ZIP_MAX32))
-        rc = arc_fail(err, errlen, "%s: too large for a ZIP archive without ZIP64", e->path);
+        rc = kit_fail(err, errlen, "%s: too large for a ZIP archive without ZIP64", e->path);
     if (rc == 0) {
         unsigned char lh[ZIP_LOCAL_SIZE], ch[ZIP_CENTRAL_SIZE];
         unsigned version = method == 8 || e->is_dir ? 20 : 10;
@@ -379,7 +365,7 @@ static int zip_put_entry(const ArchiveEntry *e, KitBuf *body, KitBuf *central,
         if (kit_buf_append(body, lh, sizeof lh) != 0 || kit_buf_append(body, name, nlen) != 0 ||
             kit_buf_append(body, payload, psize) != 0 ||
             kit_buf_append(central, ch, sizeof ch) != 0 || kit_buf_append(central, name, nlen) != 0)
-            rc = arc_fail(err, errlen, "out of memory");
+            rc = kit_fail(err, errlen, "out of memory");
     }
     kit_buf_free(&packed);
     free(name);
@@ -394,13 +380,13 @@ static int zip_encode(const Archive *a, KitBuf *out, char *err, size_t errlen)
     size_t start = out->len;
     int rc = 0;
     if (a->count >= 0xFFFFu)
-        return arc_fail(err, errlen, "too many entries for a ZIP archive without ZIP64");
+        return kit_fail(err, errlen, "too many entries for a ZIP archive without ZIP64");
     /* offsets count from the start of the archive: build it in its own buffer */
     KitBuf body = {0};
     for (size_t k = 0; k < a->count && rc == 0; k++)
         rc = zip_put_entry(&a->entries[k], &body, &central, err, errlen);
     if (rc == 0 && (body.len >= ZIP_MAX32 || central.len >= ZIP_MAX32))
-        rc = arc_fail(err, errlen, "too large for a ZIP archive without ZIP64");
+        rc = kit_fail(err, errlen, "too large for a ZIP archive without ZIP64");
     if (rc == 0) {
         unsigned char end[ZIP_END_SIZE];
         arc_put32(end, ZIP_END_SIG);
@@ -415,7 +401,7 @@ static int zip_encode(const Archive *a, KitBuf *out, char *err, size_t errlen)
             kit_buf_append(out, central.data, central.len) != 0 ||
             kit_buf_append(out, end, sizeof end) != 0) {
             out->len = start;
-            rc = arc_fail(err, errlen, "out of memory");
+            rc = kit_fail(err, errlen, "out of memory");
         }
     }
     kit_buf_free(&body);
@@ -464,18 +450,18 @@ static long long zip_read_entry(Archive *a, const unsigned char *p, size_t cd, s
 {
     const unsigned char *c = p + cd;
     if (arc_get32(c) != ZIP_CENTRAL_SIG)
-        return arc_fail(err, errlen, "ZIP central directory is corrupt");
+        return kit_fail(err, errlen, "ZIP central directory is corrupt");
     unsigned made_by = arc_get16(c + 4), flags = arc_get16(c + 8), method = arc_get16(c + 10);
     uint32_t crc = arc_get32(c + 16), csize = arc_get32(c + 20), usize = arc_get32(c + 24);
     size_t nlen = arc_get16(c + 28), rest = nlen + arc_get16(c + 30) + arc_get16(c + 32);
     uint32_t external = arc_get32(c + 38), local = arc_get32(c + 42);
     if (rest > cd_end - cd - ZIP_CENTRAL_SIZE)
-        return arc_fail(err, errlen, "ZIP central directory is truncated");
+        return kit_fail(err, errlen, "ZIP central directory is truncated");
     if (nlen == 0 || memchr(c + ZIP_CENTRAL_SIZE, 0, nlen))
-        return arc_fail(err, errlen, "ZIP entry with an empty or invalid name");
+        return kit_fail(err, errlen, "ZIP entry with an empty or invalid name");
     char *name = malloc(nlen + 1);
     if (!name)
-        return arc_fail(err, errlen, "out of memory");
+        return kit_fail(err, errlen, "out of memory");
     memcpy(name, c + ZIP_CENTRAL_SIZE, nlen);
     name[nlen] = '\0';
     bool is_dir = name[nlen - 1] == '/';
@@ -486,42 +472,42 @@ static long long zip_read_entry(Archive *a, const unsigned char *p, size_t cd, s
     size_t at = 0;
     int rc = 0;
     if (zip_entry_mode(made_by, external, &is_dir, &mode) != 0)
-        rc = arc_fail(err, errlen, "%s: a link or special file (not supported)", name);
+        rc = kit_fail(err, errlen, "%s: a link or special file (not supported)", name);
     else if (flags & 1u)
-        rc = arc_fail(err, errlen, "%s: encrypted (not supported)", name);
+        rc = kit_fail(err, errlen, "%s: encrypted (not supported)", name);
     else if (csize == ZIP_MAX32 || usize == ZIP_MAX32 || local == ZIP_MAX32)
-        rc = arc_fail(err, errlen, "%s: ZIP64 entries are not supported", name);
+        rc = kit_fail(err, errlen, "%s: ZIP64 entries are not supported", name);
     else if (usize > lim->max_unpacked - *total)
-        rc = arc_fail(err, errlen, "%s: the archive unpacks to more than %zu MiB", name,
+        rc = kit_fail(err, errlen, "%s: the archive unpacks to more than %zu MiB", name,
                       lim->max_unpacked >> 20);
     else if (usize > ARCHIVE_RATIO_FREE && usize / lim->max_ratio > csize)
-        rc = arc_fail(err, errlen, "%s: unpacks to %lu bytes from %lu, more than %u times as many "
+        rc = kit_fail(err, errlen, "%s: unpacks to %lu bytes from %lu, more than %u times as many "
                       "(a zip bomb?)", name, (unsigned long)usize, (unsigned long)csize, lim->max_ratio);
     else if (local > data_end || data_end - local < ZIP_LOCAL_SIZE ||
              arc_get32(p + local) != ZIP_LOCAL_SIG)
-        rc = arc_fail(err, errlen, "%s: ZIP local header missing or corrupt", name);
+        rc = kit_fail(err, errlen, "%s: ZIP local header missing or corrupt", name);
     else {
         at = local + ZIP_LOCAL_SIZE + arc_get16(p + local + 26) + arc_get16(p + local + 28);
         if (at > data_end || csize > data_end - at)
-            rc = arc_fail(err, errlen, "%s: ZIP data is truncated", name);
+            rc = kit_fail(err, errlen, "%s: ZIP data is truncated", name);
     }
     if (rc == 0 && is_dir && usize != 0)
-        rc = arc_fail(err, errlen, "%s: a directory entry with data", name);
+        rc = kit_fail(err, errlen, "%s: a directory entry with data", name);
     if (rc == 0 && method == 0) {
         if (csize != usize || kit_buf_append(&data, p + at, csize) != 0)
-            rc = arc_fail(err, errlen, "%s: stored entry is corrupt", name);
+            rc = kit_fail(err, errlen, "%s: stored entry is corrupt", name);
     } else if (rc == 0 && method == 8) {
         char why[200];
         if (kit_inflate(p + at, csize, usize, &data, NULL, why, sizeof why) != 0)
-            rc = arc_fail(err, errlen, "%s: %s", name, why);
+            rc = kit_fail(err, errlen, "%s: %s", name, why);
         else if (data.len != usize)
-            rc = arc_fail(err, errlen, "%s: unpacks to %zu bytes, not %lu", name, data.len,
+            rc = kit_fail(err, errlen, "%s: unpacks to %zu bytes, not %lu", name, data.len,
                           (unsigned long)usize);
     } else if (rc == 0) {
-        rc = arc_fail(err, errlen, "%s: compression method %u is not supported", name, method);
+        rc = kit_fail(err, errlen, "%s: compression method %u is not supported", name, method);
     }
     if (rc == 0 && kit_crc32(0, data.data, data.len) != crc)
-        rc = arc_fail(err, errlen, "%s: CRC-32 mismatch (the archive is corrupt)", name);
+        rc = kit_fail(err, errlen, "%s: CRC-32 mismatch (the archive is corrupt)", name);
     if (rc == 0)
         rc = arc_add(a, name, is_dir, data.data, data.len, mode, err, errlen);
     if (rc == 0)
@@ -538,20 +524,20 @@ static int zip_decode(Archive *a, const unsigned char *p, size_t n, const Archiv
 {
     long long end = zip_find_end(p, n);
     if (end < 0)
-        return arc_fail(err, errlen, "not a ZIP archive (no end of central directory record)");
+        return kit_fail(err, errlen, "not a ZIP archive (no end of central directory record)");
     const unsigned char *e = p + end;
     unsigned count = arc_get16(e + 10);
     uint32_t cd_size = arc_get32(e + 12), cd_off = arc_get32(e + 16);
     if (arc_get16(e + 4) != 0 || arc_get16(e + 6) != 0 || arc_get16(e + 8) != count)
-        return arc_fail(err, errlen, "multi-disk ZIP archives are not supported");
+        return kit_fail(err, errlen, "multi-disk ZIP archives are not supported");
     if (count == 0xFFFFu || cd_size == ZIP_MAX32 || cd_off == ZIP_MAX32)
-        return arc_fail(err, errlen, "ZIP64 archives are not supported");
+        return kit_fail(err, errlen, "ZIP64 archives are not supported");
     if (cd_off > (size_t)end || cd_size > (size_t)end - cd_off)
-        return arc_fail(err, errlen, "ZIP central directory is out of bounds");
+        return kit_fail(err, errlen, "ZIP central directory is out of bounds");
     size_t at = cd_off, cd_end = (size_t)cd_off + cd_size, total = 0;
     for (unsigned k = 0; k < count; k++) {
         if (cd_end - at < ZIP_CENTRAL_SIZE)
-            return arc_fail(err, errlen, "ZIP central directory is truncated");
+            return kit_fail(err, errlen, "ZIP central directory is truncated");
         long long len = zip_read_entry(a, p, at, cd_end, cd_off, &total, lim, err, errlen);
         if (len < 0)
             return -1;
@@ -581,7 +567,7 @@ int archive_save(const Archive *a, const char *path, char *err, size_t errlen)
     char why[512];
     if (archive_encode(a, &bytes, why, sizeof why) != 0) {
         kit_buf_free(&bytes);
-        return arc_fail(err, errlen, "%s: %s", path, why);
+        return kit_fail(err, errlen, "%s: %s", path, why);
     }
     int status = kit_save_file(path, bytes.data, bytes.len, err, errlen);
     kit_buf_free(&bytes);
@@ -607,7 +593,7 @@ int archive_decode_within(Archive *a, const void *data, size_t n, const ArchiveL
         rc = zip_decode(a, p, n, &within, err, errlen);
     } else {
         archive_init(a);
-        rc = arc_fail(err, errlen, "not a ZIP archive");
+        rc = kit_fail(err, errlen, "not a ZIP archive");
     }
     if (rc != 0)
         archive_free(a);
@@ -636,7 +622,7 @@ int archive_load_within(Archive *a, const char *path, const ArchiveLimits *lim, 
     }
     int rc = archive_decode_within(a, bytes.data, bytes.len, lim, why, sizeof why);
     if (rc != 0)
-        arc_fail(err, errlen, "%s: %s", path, why);
+        kit_fail(err, errlen, "%s: %s", path, why);
     kit_buf_free(&bytes);
     return rc;
 }
@@ -651,13 +637,13 @@ static int arc_ensure_dir(const char *path, char *err, size_t errlen)
     struct stat st;
     if (lstat(path, &st) == 0) {
         if (S_ISLNK(st.st_mode))
-            return arc_fail(err, errlen, "%s: refusing to extract through a symbolic link", path);
+            return kit_fail(err, errlen, "%s: refusing to extract through a symbolic link", path);
         if (!S_ISDIR(st.st_mode))
-            return arc_fail(err, errlen, "%s: exists and is not a directory", path);
+            return kit_fail(err, errlen, "%s: exists and is not a directory", path);
         return 0;
     }
     if (errno != ENOENT || mkdir(path, 0755) != 0)
-        return arc_fail(err, errlen, "%s: cannot create directory: %s", path, strerror(errno));
+        return kit_fail(err, errlen, "%s: cannot create directory: %s", path, strerror(errno));
     return 0;
 }
 
@@ -667,7 +653,7 @@ static int arc_make_dest(const char *destdir, char *err, size_t errlen)
 {
     char *copy = strdup(destdir);
     if (!copy)
-        return arc_fail(err, errlen, "out of memory");
+        return kit_fail(err, errlen, "out of memory");
     int rc = 0;
     for (char *p = copy + 1; rc == 0; p++) {
         if (*p != '/' && *p != '\0')
@@ -676,9 +662,9 @@ static int arc_make_dest(const char *destdir, char *err, size_t errlen)
         *p = '\0';
         struct stat st;
         if (stat(copy, &st) != 0 && (errno != ENOENT || mkdir(copy, 0755) != 0))
-            rc = arc_fail(err, errlen, "%s: cannot create directory: %s", copy, strerror(errno));
+            rc = kit_fail(err, errlen, "%s: cannot create directory: %s", copy, strerror(errno));
         else if (stat(copy, &st) == 0 && !S_ISDIR(st.st_mode))
-            rc = arc_fail(err, errlen, "%s: not a directory", copy);
+            rc = kit_fail(err, errlen, "%s: not a directory", copy);
         *p = saved;
         if (saved == '\0')
             break;
@@ -695,13 +681,13 @@ static int arc_extract_file(const ArchiveEntry *e, const char *full, char *err, 
     struct stat st;
     if (lstat(full, &st) == 0) {
         if (S_ISDIR(st.st_mode))
-            return arc_fail(err, errlen, "%s: is a directory", full);
+            return kit_fail(err, errlen, "%s: is a directory", full);
         if (unlink(full) != 0)
-            return arc_fail(err, errlen, "%s: cannot replace: %s", full, strerror(errno));
+            return kit_fail(err, errlen, "%s: cannot replace: %s", full, strerror(errno));
     }
     int fd = open(full, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW, 0600);
     if (fd < 0)
-        return arc_fail(err, errlen, "%s: cannot create: %s", full, strerror(errno));
+        return kit_fail(err, errlen, "%s: cannot create: %s", full, strerror(errno));
     int failed = kit_write_all(fd, e->data, e->size) != 0 || fchmod(fd, e->mode) != 0;
     int saved = errno;
     if (close(fd) != 0 && !failed) {
@@ -709,7 +695,7 @@ static int arc_extract_file(const ArchiveEntry *e, const char *full, char *err, 
         saved = errno;
     }
     if (failed)
-        return arc_fail(err, errlen, "%s: cannot write: %s", full, strerror(saved));
+        return kit_fail(err, errlen, "%s: cannot write: %s", full, strerror(saved));
     return 0;
 }
 
@@ -719,7 +705,7 @@ static int arc_extract_entry(const ArchiveEntry *e, const char *destdir, char *e
 {
     char *full = arc_join(destdir, e->path);
     if (!full)
-        return arc_fail(err, errlen, "out of memory");
+        return kit_fail(err, errlen, "out of memory");
     int rc = 0;
     size_t base = strlen(destdir) + 1;
     for (char *p = full + base; rc == 0 && (p = strchr(p, '/')) != NULL; p++) {
@@ -740,7 +726,7 @@ int archive_extract(const Archive *a, const char *destdir, char *err, size_t err
 {
     for (size_t k = 0; k < a->count; k++)
         if (!archive_path_ok(a->entries[k].path))
-            return arc_fail(err, errlen, "unsafe path in the archive: \"%s\"", a->entries[k].path);
+            return kit_fail(err, errlen, "unsafe path in the archive: \"%s\"", a->entries[k].path);
     if (destdir[0] == '\0')
         destdir = ".";
     if (arc_make_dest(destdir, err, errlen) != 0)
@@ -753,10 +739,10 @@ int archive_extract(const Archive *a, const char *destdir, char *err, size_t err
             continue;
         char *full = arc_join(destdir, a->entries[k].path);
         if (!full)
-            return arc_fail(err, errlen, "out of memory");
+            return kit_fail(err, errlen, "out of memory");
         int bad = chmod(full, a->entries[k].mode) != 0;
         if (bad)
-            arc_fail(err, errlen, "%s: cannot set its mode: %s", full, strerror(errno));
+            kit_fail(err, errlen, "%s: cannot set its mode: %s", full, strerror(errno));
         free(full);
         if (bad)
             return -1;
