@@ -372,9 +372,9 @@ static int zip_put_entry(const ArchiveEntry *e, KitBuf *body, KitBuf *central,
     return rc;
 }
 
-/* Local headers with data, then the central directory and its end record.
- * Returns 0, or -1 with a reason. */
-static int zip_encode(const Archive *a, KitBuf *out, char *err, size_t errlen)
+/* Local headers with data, then the central directory and its end record,
+ * all appended at once.  Returns 0, or -1 with a reason (out as it was). */
+int archive_encode(const Archive *a, KitBuf *out, char *err, size_t errlen)
 {
     KitBuf central = {0};
     size_t start = out->len;
@@ -548,16 +548,6 @@ static int zip_decode(Archive *a, const unsigned char *p, size_t n, const Archiv
 
 /* ---- whole archives -------------------------------------------------------------------- */
 
-/* Encodes as a ZIP.  Returns 0, or -1 with a reason. */
-int archive_encode(const Archive *a, KitBuf *out, char *err, size_t errlen)
-{
-    size_t old_len = out->len;
-    int rc = zip_encode(a, out, err, errlen);
-    if (rc != 0)
-        out->len = old_len;
-    return rc;
-}
-
 /* Encodes, then writes a temporary file beside path (given the mode a new
  * file would get) and renames it over path.  Returns 0, or -1 with
  * "path: reason". */
@@ -574,7 +564,8 @@ int archive_save(const Archive *a, const char *path, char *err, size_t errlen)
     return status;
 }
 
-const ArchiveLimits archive_no_limits = { ARCHIVE_MAX_SIZE, ARCHIVE_MAX_SIZE };
+/* ARCHIVE_MAX_SIZE, and any ratio. */
+static const ArchiveLimits archive_no_limits = { ARCHIVE_MAX_SIZE, ARCHIVE_MAX_SIZE };
 
 /* Decodes a ZIP, told by its first bytes.  Returns 0, or -1 with
  * a reason (a left empty). */
@@ -587,14 +578,12 @@ int archive_decode_within(Archive *a, const void *data, size_t n, const ArchiveL
         within.max_unpacked = ARCHIVE_MAX_SIZE;
     if (within.max_ratio < 1)
         within.max_ratio = 1;
+    archive_init(a);
     int rc;
-    if (n >= 4 && p[0] == 'P' && p[1] == 'K' && ((p[2] == 3 && p[3] == 4) || (p[2] == 5 && p[3] == 6))) {
-        archive_init(a);
+    if (n >= 4 && p[0] == 'P' && p[1] == 'K' && ((p[2] == 3 && p[3] == 4) || (p[2] == 5 && p[3] == 6)))
         rc = zip_decode(a, p, n, &within, err, errlen);
-    } else {
-        archive_init(a);
+    else
         rc = kit_fail(err, errlen, "not a ZIP archive");
-    }
     if (rc != 0)
         archive_free(a);
     return rc;

@@ -42,7 +42,6 @@ typedef struct {
     size_t max_unpacked;
     unsigned max_ratio;
 } ArchiveLimits;
-extern const ArchiveLimits archive_no_limits;   /* ARCHIVE_MAX_SIZE, any ratio */
 
 typedef struct {
     char *path;              /* relative, '/'-separated, no trailing '/'   */

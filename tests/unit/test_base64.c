@@ -1,5 +1,5 @@
-/* Base64 (tests/tools/base64.h): RFC 4648's own test vectors, round trips,
- * and the text the strict decoder must refuse. */
+/* Base64 (tests/tools/base64.h): RFC 4648's own test vectors, and every
+ * length checked against the encoding worked out a bit at a time. */
 #include "check.h"            /* first: it sets the POSIX feature level */
 
 #include "../tools/base64.h"
@@ -18,22 +18,26 @@ static void test_rfc4648_vectors(void)
         CHECK_EQ_INT(base64_encoded_length(strlen(plain)), strlen(coded));
         CHECK_EQ_INT(base64_encode(plain, strlen(plain), out), strlen(coded));
         CHECK_MSG(strcmp(out, coded) == 0, "encode(\"%s\") is \"%s\", want \"%s\"", plain, out, coded);
-        char err[128];
-        size_t len = 99;
-        unsigned char *back = base64_decode(coded, strlen(coded), &len, err, sizeof err);
-        CHECK_MSG(back != NULL, "decode(\"%s\"): %s", coded, err);
-        if (back) {
-            CHECK_EQ_INT(len, strlen(plain));
-            CHECK(memcmp(back, plain, len) == 0);
-            CHECK_EQ_INT(back[len], 0);
-        }
-        free(back);
     }
 }
 
+/* Character k of the encoding of data[0 .. n-1] as RFC 4648 section 4
+ * defines it, bit by bit: the bits 6k .. 6k + 5 of the data, most
+ * significant first and zero past its end; '=' once the data is used up. */
+static char spec_char(const unsigned char *data, size_t n, size_t k)
+{
+    static const char abc[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    if (6 * k >= 8 * n)
+        return '=';
+    int v = 0;
+    for (size_t bit = 6 * k; bit < 6 * k + 6; bit++)
+        v = 2 * v + (bit < 8 * n && (data[bit / 8] >> (7 - bit % 8)) & 1);
+    return abc[v];
+}
+
 /* Every byte value, and every length from 0 to 300 of pseudo-random bytes,
- * comes back unchanged. */
-static void test_round_trips(void)
+ * encoded as spec_char says. */
+static void test_every_length(void)
 {
     unsigned char data[300];
     unsigned long state = 12345;
@@ -45,14 +49,14 @@ static void test_round_trips(void)
         char coded[404];
         size_t clen = base64_encode(data, n, coded);
         CHECK_EQ_INT(clen, base64_encoded_length(n));
+        /* whole groups of four, the fewest that hold 8n bits */
+        CHECK(clen % 4 == 0 && 6 * clen >= 8 * n && (clen == 0 || 6 * (clen - 4) < 8 * n));
         CHECK_EQ_INT(strlen(coded), clen);
-        for (size_t k = 0; k < clen; k++)
-            CHECK(strchr("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/=", coded[k]));
-        char err[128];
-        size_t len = 0;
-        unsigned char *back = base64_decode(coded, clen, &len, err, sizeof err);
-        CHECK_MSG(back && len == n && memcmp(back, data, n) == 0, "round trip of %zu bytes", n);
-        free(back);
+        size_t k = 0;
+        while (k < clen && coded[k] == spec_char(data, n, k))
+            k++;
+        CHECK_MSG(k == clen, "%zu bytes: character %zu is '%c', want '%c'", n, k, coded[k],
+                  spec_char(data, n, k));
     }
 }
 
@@ -71,36 +75,10 @@ static void test_bit_order(void)
     CHECK(strcmp(out, "++8=") == 0);
 }
 
-static void test_refuses_what_is_not_canonical(void)
-{
-    static const char *const bad[] = {
-        "Zg=",          /* not a multiple of 4 */
-        "Zg",           /* no padding */
-        "Zh==",         /* bits set past the data (h = 100001) */
-        "Zm9=",         /* bits set past the data (9 = 111101) */
-        "Z===",         /* three padding characters */
-        "=Zg=",         /* padding first */
-        "Zg==Zg==",     /* padding before the end */
-        "Zm 9",         /* a space */
-        "Zm-9",         /* the URL alphabet's "-" */
-        "Zm_9",         /* and its "_" */
-        "Zm9v\n",       /* a line break */
-    };
-    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
-        char err[128] = "";
-        size_t len = 0;
-        unsigned char *back = base64_decode(bad[k], strlen(bad[k]), &len, err, sizeof err);
-        CHECK_MSG(back == NULL, "decode(\"%s\") was accepted", bad[k]);
-        CHECK_MSG(err[0] != '\0', "decode(\"%s\") gave no reason", bad[k]);
-        free(back);
-    }
-}
-
 static const CheckTest tests[] = {
     CHECK_TEST(test_rfc4648_vectors),
-    CHECK_TEST(test_round_trips),
+    CHECK_TEST(test_every_length),
     CHECK_TEST(test_bit_order),
-    CHECK_TEST(test_refuses_what_is_not_canonical),
 };
 
 int main(int argc, char **argv)
