@@ -230,20 +230,16 @@ static void crash_put(char *buf, size_t size, size_t *len, const char *text)
         buf[(*len)++] = *text++;
 }
 
-static void crash_put_int(char *buf, size_t size, size_t *len, int n)
+/* Appends the row number n (never negative) in decimal. */
+static void crash_put_row(char *buf, size_t size, size_t *len, int n)
 {
-    char digits[16];
-    int k = 0;
-    unsigned u = n < 0 ? 0u - (unsigned)n : (unsigned)n;
+    char digits[12];
+    char *p = digits + sizeof digits - 1;
+    *p = '\0';
     do
-        digits[k++] = (char)('0' + u % 10);
-    while ((u /= 10) && k < 15);
-    if (n < 0)
-        crash_put(buf, size, len, "-");
-    while (k > 0) {
-        char one[2] = { digits[--k], '\0' };
-        crash_put(buf, size, len, one);
-    }
+        *--p = (char)('0' + n % 10);
+    while ((n /= 10) > 0);
+    crash_put(buf, size, len, p);
 }
 
 /* Says what crashed and where, then lets the signal end the program as it
@@ -279,10 +275,10 @@ static void render_main_crashed(int sig)
     } else if (at > 0) {
         crash_put(msg, sizeof msg, &len, " while drawing row");
         crash_put(msg, sizeof msg, &len, j1 - j0 > 1 ? "s " : " ");
-        crash_put_int(msg, sizeof msg, &len, j0);
+        crash_put_row(msg, sizeof msg, &len, j0);
         if (j1 - j0 > 1) {
             crash_put(msg, sizeof msg, &len, " to ");
-            crash_put_int(msg, sizeof msg, &len, j1 - 1);
+            crash_put_row(msg, sizeof msg, &len, j1 - 1);
         }
     }
     crash_put(msg, sizeof msg, &len, ": ");
