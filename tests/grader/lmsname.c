@@ -67,7 +67,6 @@ static bool canvas_fill(LmsName *out, const char *w, size_t n, const char *file,
         return false;
     out->lms = LMS_CANVAS;
     out->late = late;
-    out->again = 0;
     canvas_again(out, stages, nstages);
     return true;
 }
@@ -141,8 +140,6 @@ static bool moodle(const char *path, LmsName *out)
     if (!copy(out->who, path, (size_t)(m - path)) || !copy(out->name, file, strlen(file)))
         return false;
     out->lms = LMS_MOODLE;
-    out->late = false;
-    out->again = 0;
     return true;
 }
 
@@ -176,13 +173,13 @@ static bool blackboard(const char *path, LmsName *out)
         out->attempt[e - date] = '\0';
         out->user_at = (size_t)(user - base);
         out->lms = LMS_BLACKBOARD;
-        out->late = false;
-        out->again = 0;
         return true;
     }
     return false;
 }
 
+/* Each reader sets only the fields its platform has: late, again, attempt
+ * and user_at stay 0 or empty otherwise. */
 bool lms_name(const char *path, const char *const *stages, int nstages, LmsName *out)
 {
     memset(out, 0, sizeof *out);
