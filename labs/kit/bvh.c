@@ -18,6 +18,7 @@
  * (scene.h): under BVH_MAX_DEPTH, the walk's stack.
  */
 #include "bvh.h"
+#include "textfile.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -265,10 +266,8 @@ int bvh_build(Bvh *bvh, const Scene *scene, char *err, size_t errlen)
 {
     memset(bvh, 0, sizeof *bvh);
     int n = scene->nspheres + scene->ntriangles;
-    if (n < 1) {
-        snprintf(err, errlen, "bvh: the scene has no sphere or triangle");
-        return -1;
-    }
+    if (n < 1)
+        return kit_fail(err, errlen, "bvh: the scene has no sphere or triangle");
     BvhBuild b;
     b.objs = malloc((size_t)n * sizeof *b.objs);
     /* a binary tree of n leaves has 2 n - 1 nodes: the pages past the
@@ -280,8 +279,7 @@ int bvh_build(Bvh *bvh, const Scene *scene, char *err, size_t errlen)
         free(b.nodes);
         free(bvh->items);
         bvh->items = NULL;
-        snprintf(err, errlen, "bvh: out of memory for %d objects", n);
-        return -1;
+        return kit_fail(err, errlen, "bvh: out of memory for %d objects", n);
     }
     for (int k = 0; k < n; k++) {
         double lo[3], hi[3];

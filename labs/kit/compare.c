@@ -2,6 +2,7 @@
  * compare.c - see compare.h.
  */
 #include "compare.h"
+#include "textfile.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -143,19 +144,19 @@ static void compare_label(Image *img, int x0, int width, const char *text)
 int compare_side_by_side(const Image *a, const Image *b, Image *out, char *err, size_t errlen)
 {
     int width = a->width, height = a->height;
-    if (width > (IMAGE_MAX_SIDE - 2 * COMPARE_GAP) / 3) {
-        snprintf(err, errlen, "the images are too wide to put side by side (at most %d pixels)",
-                 (IMAGE_MAX_SIDE - 2 * COMPARE_GAP) / 3);
-        return -1;
-    }
+    if (width > (IMAGE_MAX_SIDE - 2 * COMPARE_GAP) / 3)
+        return kit_fail(err, errlen,
+                        "the images are too wide to put side by side (at most %d pixels)",
+                        (IMAGE_MAX_SIDE - 2 * COMPARE_GAP) / 3);
     Image heat;
     if (compare_heat_map(a, b, &heat, err, errlen) < 0)
         return -1;
     int band = compare_label_band(width);
     if (height > IMAGE_MAX_SIDE - band) {
         image_free(&heat);
-        snprintf(err, errlen, "the images are too tall to label (at most %d pixels)", IMAGE_MAX_SIDE - band);
-        return -1;
+        return kit_fail(err, errlen,
+                        "the images are too tall to label (at most %d pixels)",
+                        IMAGE_MAX_SIDE - band);
     }
     if (image_alloc(out, 3 * width + 2 * COMPARE_GAP, height + band, err, errlen) < 0) {
         image_free(&heat);

@@ -61,8 +61,7 @@ int edges_find(Edges *edges, const Image *img, const Image nudged[4], char *err,
                 edges_add_other(&pixel, img->rgb + at, nudged[k].rgb + at);
             if (pixel.nother > 0 && !edges_push(edges, &capacity, &pixel)) {
                 edges_free(edges);
-                snprintf(err, errlen, "out of memory for the pixels on an edge");
-                return -1;
+                return kit_fail(err, errlen, "out of memory for the pixels on an edge");
             }
         }
     return 0;
@@ -73,10 +72,8 @@ int edges_write(const Edges *edges, const char *path, char *err, size_t errlen)
     /* "i j" and four colours: at most 11 + 4 * 13 + 1 characters a line */
     size_t size = 256 + 80 * edges->count, len = 0;
     char *text = malloc(size);
-    if (!text) {
-        snprintf(err, errlen, "%s: out of memory", path);
-        return -1;
-    }
+    if (!text)
+        return kit_fail(err, errlen, "%s: out of memory", path);
     len += (size_t)snprintf(text, size,
                             "# The pixels on an edge (labs/kit/edges.h): drawn with their centre\n"
                             "# moved by 2^-30 of the image plane, they take another colour.\n"

@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include "png.h"
+#include "textfile.h"
 #include "zlib.h"
 
 _Static_assert(IMAGE_MAX_SIDE == PNG_MAX_SIDE, "every Image can be written as PNG, every PNG read");
@@ -35,11 +36,10 @@ int image_alloc(Image *img, int width, int height, char *err, size_t errlen)
     img->width = 0;
     img->height = 0;
     img->rgb = NULL;
-    if (width < 1 || height < 1 || width > IMAGE_MAX_SIDE || height > IMAGE_MAX_SIDE) {
-        snprintf(err, errlen, "image size %d x %d is out of range: each side must be 1 to %d",
-                 width, height, IMAGE_MAX_SIDE);
-        return -1;
-    }
+    if (width < 1 || height < 1 || width > IMAGE_MAX_SIDE || height > IMAGE_MAX_SIDE)
+        return kit_fail(err, errlen,
+                        "image size %d x %d is out of range: each side must be 1 to %d",
+                        width, height, IMAGE_MAX_SIDE);
     /* The pages are touched here, so that a render's timing counts rays
      * and not the first touch of fresh memory.  memset is called through a
      * volatile pointer: a compiler may otherwise turn malloc and memset
@@ -48,10 +48,8 @@ int image_alloc(Image *img, int width, int height, char *err, size_t errlen)
     img->rgb = malloc(3 * (size_t)width * (size_t)height);
     if (img->rgb)
         touch(img->rgb, 0, 3 * (size_t)width * (size_t)height);
-    if (!img->rgb) {
-        snprintf(err, errlen, "out of memory for a %d x %d image", width, height);
-        return -1;
-    }
+    if (!img->rgb)
+        return kit_fail(err, errlen, "out of memory for a %d x %d image", width, height);
     img->width = width;
     img->height = height;
     return 0;
@@ -106,15 +104,13 @@ static int image_encode_ppm(const Image *img, KitBuf *out)
 int image_write(const Image *img, const char *path, char *err, size_t errlen)
 {
     ImageFormat format = image_format_of(path);
-    if (format == IMAGE_UNKNOWN) {
-        snprintf(err, errlen, "%s: unknown image type: the name must end in .png or .ppm", path);
-        return -1;
-    }
+    if (format == IMAGE_UNKNOWN)
+        return kit_fail(err, errlen,
+                        "%s: unknown image type: the name must end in .png or .ppm", path);
     if (!img->rgb || img->width < 1 || img->height < 1 ||
         img->width > IMAGE_MAX_SIDE || img->height > IMAGE_MAX_SIDE) {
-        snprintf(err, errlen, "%s: cannot write an image of %d x %d pixels", path,
-                 img->width, img->height);
-        return -1;
+        return kit_fail(err, errlen, "%s: cannot write an image of %d x %d pixels", path,
+                        img->width, img->height);
     }
     KitBuf bytes = {0};
     char why[200];
@@ -140,10 +136,8 @@ int image_write(const Image *img, const char *path, char *err, size_t errlen)
 static int image_load_bytes(const char *path, KitBuf *out, char *err, size_t errlen)
 {
     FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
-        return -1;
-    }
+    if (!f)
+        return kit_fail(err, errlen, "%s: cannot open: %s", path, strerror(errno));
     for (;;) {
         if (kit_buf_reserve(out, (size_t)1 << 16) != 0) {
             snprintf(err, errlen, "%s: out of memory", path);
@@ -218,30 +212,23 @@ static int image_decode_ppm(const unsigned char *p, size_t n, Image *img, char *
     long v[3] = {0, 0, 0};
     size_t at = 2;
     for (int k = 0; k < 3; k++) {
-        if (image_ppm_skip(p, n, &at) == 0 || (v[k] = image_ppm_number(p, n, &at)) < 0) {
-            snprintf(err, errlen, "PPM header is malformed (expected a number after whitespace)");
-            return -1;
-        }
+        if (image_ppm_skip(p, n, &at) == 0 || (v[k] = image_ppm_number(p, n, &at)) < 0)
+            return kit_fail(err, errlen,
+                            "PPM header is malformed (expected a number after whitespace)");
     }
-    if (at >= n || !image_ppm_space(p[at])) {
-        snprintf(err, errlen, "PPM header is malformed (no whitespace after the maximum value)");
-        return -1;
-    }
+    if (at >= n || !image_ppm_space(p[at]))
+        return kit_fail(err, errlen,
+                        "PPM header is malformed (no whitespace after the maximum value)");
     at++;
-    if (v[0] < 1 || v[1] < 1 || v[0] > IMAGE_MAX_SIDE || v[1] > IMAGE_MAX_SIDE) {
-        snprintf(err, errlen, "PPM image is %ld x %ld pixels: each side must be 1 to %d",
-                 v[0], v[1], IMAGE_MAX_SIDE);
-        return -1;
-    }
-    if (v[2] != 255) {
-        snprintf(err, errlen, "PPM maximum value %ld is not supported (only 255)", v[2]);
-        return -1;
-    }
+    if (v[0] < 1 || v[1] < 1 || v[0] > IMAGE_MAX_SIDE || v[1] > IMAGE_MAX_SIDE)
+        return kit_fail(err, errlen, "PPM image is %ld x %ld pixels: each side must be 1 to %d",
+                        v[0], v[1], IMAGE_MAX_SIDE);
+    if (v[2] != 255)
+        return kit_fail(err, errlen, "PPM maximum value %ld is not supported (only 255)", v[2]);
     size_t need = 3 * (size_t)v[0] * (size_t)v[1];
-    if (n - at < need) {
-        snprintf(err, errlen, "PPM data is truncated (%zu of %zu pixel bytes)", n - at, need);
-        return -1;
-    }
+    if (n - at < need)
+        return kit_fail(err, errlen,
+                        "PPM data is truncated (%zu of %zu pixel bytes)", n - at, need);
     if (image_alloc(img, (int)v[0], (int)v[1], err, errlen) != 0)
         return -1;
     memcpy(img->rgb, p + at, need);

@@ -3,6 +3,7 @@
  * See png.h.
  */
 #include "png.h"
+#include "textfile.h"
 
 #include <stdint.h>
 #include <stdio.h>
@@ -208,10 +209,9 @@ static int png_filter_image(int width, int height, const unsigned char *rgb, Kit
 int png_encode(int width, int height, const unsigned char *rgb, KitBuf *out, char *err,
                size_t errlen)
 {
-    if (!rgb || width < 1 || height < 1 || width > PNG_MAX_SIDE || height > PNG_MAX_SIDE) {
-        snprintf(err, errlen, "cannot encode an image of %d x %d pixels as PNG", width, height);
-        return -1;
-    }
+    if (!rgb || width < 1 || height < 1 || width > PNG_MAX_SIDE || height > PNG_MAX_SIDE)
+        return kit_fail(err, errlen,
+                        "cannot encode an image of %d x %d pixels as PNG", width, height);
     size_t old_len = out->len;
     KitBuf raw = {0}, z = {0};
     unsigned char ihdr[13];
@@ -251,38 +251,26 @@ typedef struct {
 /* Checks the 13 bytes of IHDR and fills h.  Returns 0, or -1 with a reason. */
 static int png_read_ihdr(const unsigned char *d, size_t n, PngHeader *h, char *err, size_t errlen)
 {
-    if (n != 13) {
-        snprintf(err, errlen, "PNG IHDR chunk has length %zu, not 13", n);
-        return -1;
-    }
+    if (n != 13)
+        return kit_fail(err, errlen, "PNG IHDR chunk has length %zu, not 13", n);
     uint32_t w = kit_get_be32(d), ht = kit_get_be32(d + 4);
     unsigned depth = d[8], type = d[9];
-    if (w < 1 || ht < 1 || w > PNG_MAX_SIDE || ht > PNG_MAX_SIDE) {
-        snprintf(err, errlen, "PNG image is %lu x %lu pixels: each side must be 1 to %d",
-                 (unsigned long)w, (unsigned long)ht, PNG_MAX_SIDE);
-        return -1;
-    }
-    if (type != 0 && type != 2 && type != 4 && type != 6) {
-        snprintf(err, errlen, "PNG colour type %u is not supported (%s)", type,
-                 type == 3 ? "palette images are not; save as RGB" : "invalid");
-        return -1;
-    }
-    if (depth != 8) {
-        snprintf(err, errlen, "PNG bit depth %u is not supported (only 8 bits per channel)", depth);
-        return -1;
-    }
-    if (d[10] != 0 || d[11] != 0) {
-        snprintf(err, errlen, "PNG uses an unknown compression or filter method");
-        return -1;
-    }
-    if (d[12] == 1) {
-        snprintf(err, errlen, "interlaced PNG images are not supported: save it without interlacing");
-        return -1;
-    }
-    if (d[12] != 0) {
-        snprintf(err, errlen, "PNG interlace method %u is invalid", (unsigned)d[12]);
-        return -1;
-    }
+    if (w < 1 || ht < 1 || w > PNG_MAX_SIDE || ht > PNG_MAX_SIDE)
+        return kit_fail(err, errlen, "PNG image is %lu x %lu pixels: each side must be 1 to %d",
+                        (unsigned long)w, (unsigned long)ht, PNG_MAX_SIDE);
+    if (type != 0 && type != 2 && type != 4 && type != 6)
+        return kit_fail(err, errlen, "PNG colour type %u is not supported (%s)", type,
+                        type == 3 ? "palette images are not; save as RGB" : "invalid");
+    if (depth != 8)
+        return kit_fail(err, errlen,
+                        "PNG bit depth %u is not supported (only 8 bits per channel)", depth);
+    if (d[10] != 0 || d[11] != 0)
+        return kit_fail(err, errlen, "PNG uses an unknown compression or filter method");
+    if (d[12] == 1)
+        return kit_fail(err, errlen,
+                        "interlaced PNG images are not supported: save it without interlacing");
+    if (d[12] != 0)
+        return kit_fail(err, errlen, "PNG interlace method %u is invalid", (unsigned)d[12]);
     static const int channels[7] = {1, 0, 3, 0, 2, 0, 4};
     h->width = (int)w;
     h->height = (int)ht;
@@ -308,48 +296,35 @@ static int png_read_chunks(const unsigned char *p, size_t n, PngHeader *h, KitBu
     size_t at = PNG_SIGNATURE_SIZE;
     int seen_ihdr = 0;
     for (;;) {
-        if (n - at < 12) {
-            snprintf(err, errlen, "PNG data is truncated (no IEND chunk)");
-            return -1;
-        }
+        if (n - at < 12)
+            return kit_fail(err, errlen, "PNG data is truncated (no IEND chunk)");
         uint32_t len = kit_get_be32(p + at);
         const unsigned char *type = p + at + 4, *data = p + at + 8;
-        if (len > PNG_CHUNK_MAX || !png_valid_type(type)) {
-            snprintf(err, errlen, "PNG data is corrupt (bad chunk header at byte %zu)", at);
-            return -1;
-        }
-        if (len > n - at - 12) {
-            snprintf(err, errlen, "PNG data is truncated (in a %.4s chunk)", (const char *)type);
-            return -1;
-        }
-        if (kit_crc32(0, type, 4 + (size_t)len) != kit_get_be32(data + len)) {
-            snprintf(err, errlen, "PNG data is corrupt (CRC mismatch in a %.4s chunk)",
-                     (const char *)type);
-            return -1;
-        }
+        if (len > PNG_CHUNK_MAX || !png_valid_type(type))
+            return kit_fail(err, errlen, "PNG data is corrupt (bad chunk header at byte %zu)", at);
+        if (len > n - at - 12)
+            return kit_fail(err, errlen,
+                            "PNG data is truncated (in a %.4s chunk)", (const char *)type);
+        if (kit_crc32(0, type, 4 + (size_t)len) != kit_get_be32(data + len))
+            return kit_fail(err, errlen, "PNG data is corrupt (CRC mismatch in a %.4s chunk)",
+                            (const char *)type);
         at += 12 + (size_t)len;
         if (!seen_ihdr) {
-            if (memcmp(type, "IHDR", 4) != 0) {
-                snprintf(err, errlen, "PNG data is corrupt (the first chunk is not IHDR)");
-                return -1;
-            }
+            if (memcmp(type, "IHDR", 4) != 0)
+                return kit_fail(err, errlen, "PNG data is corrupt (the first chunk is not IHDR)");
             if (png_read_ihdr(data, len, h, err, errlen) != 0)
                 return -1;
             seen_ihdr = 1;
         } else if (memcmp(type, "IDAT", 4) == 0) {
-            if (kit_buf_append(idat, data, len) != 0) {
-                snprintf(err, errlen, "out of memory while reading a PNG");
-                return -1;
-            }
+            if (kit_buf_append(idat, data, len) != 0)
+                return kit_fail(err, errlen, "out of memory while reading a PNG");
         } else if (memcmp(type, "IEND", 4) == 0) {
             return 0;
         } else if (memcmp(type, "IHDR", 4) == 0) {
-            snprintf(err, errlen, "PNG data is corrupt (a second IHDR chunk)");
-            return -1;
+            return kit_fail(err, errlen, "PNG data is corrupt (a second IHDR chunk)");
         } else if (!(type[0] & 0x20) && memcmp(type, "PLTE", 4) != 0) {
-            snprintf(err, errlen, "PNG has a critical %.4s chunk this reader does not know",
-                     (const char *)type);
-            return -1;
+            return kit_fail(err, errlen, "PNG has a critical %.4s chunk this reader does not know",
+                            (const char *)type);
         }
         /* other chunks (ancillary ones, and a suggested palette) are skipped */
     }
@@ -395,10 +370,8 @@ static int png_unfilter(unsigned char *raw, size_t rows, size_t stride, size_t b
                         char *err, size_t errlen)
 {
     unsigned char *zero = calloc(stride, 1);
-    if (!zero) {
-        snprintf(err, errlen, "out of memory while reading a PNG");
-        return -1;
-    }
+    if (!zero)
+        return kit_fail(err, errlen, "out of memory while reading a PNG");
     for (size_t j = 0; j < rows; j++) {
         unsigned char *line = raw + j * (stride + 1);
         unsigned char *row = line + 1;
@@ -406,8 +379,8 @@ static int png_unfilter(unsigned char *raw, size_t rows, size_t stride, size_t b
         int type = line[0];
         if (type > 4) {
             free(zero);
-            snprintf(err, errlen, "PNG data is corrupt (filter type %d in row %zu)", type, j);
-            return -1;
+            return kit_fail(err, errlen,
+                            "PNG data is corrupt (filter type %d in row %zu)", type, j);
         }
         png_unfilter_row(type, row, prev, stride, bpp);
     }
@@ -425,18 +398,15 @@ int png_decode(const void *data, size_t n, int *width, int *height, unsigned cha
     KitBuf idat = {0}, raw = {0};
     *width = *height = 0;
     *rgb = NULL;
-    if (!png_has_signature(p, n)) {
-        snprintf(err, errlen, "not a PNG file (bad signature)");
-        return -1;
-    }
+    if (!png_has_signature(p, n))
+        return kit_fail(err, errlen, "not a PNG file (bad signature)");
     if (png_read_chunks(p, n, &h, &idat, err, errlen) != 0) {
         kit_buf_free(&idat);
         return -1;
     }
     if (idat.len == 0) {
         kit_buf_free(&idat);
-        snprintf(err, errlen, "PNG data has no IDAT chunk");
-        return -1;
+        return kit_fail(err, errlen, "PNG data has no IDAT chunk");
     }
     size_t stride = (size_t)h.width * (size_t)h.channels;
     size_t rows = (size_t)h.height, want = rows * (stride + 1);

@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
 #include "savefile.h"
+#include "textfile.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -39,10 +40,8 @@ int kit_save_file(const char *path, const void *data, size_t n, char *err, size_
     size_t dirlen = slash ? (size_t)(slash - path) + 1 : 0;
     static const char pattern[] = ".save-XXXXXX";
     char *tmp = malloc(dirlen + sizeof pattern);
-    if (!tmp) {
-        snprintf(err, errlen, "%s: out of memory", path);
-        return -1;
-    }
+    if (!tmp)
+        return kit_fail(err, errlen, "%s: out of memory", path);
     memcpy(tmp, path, dirlen);
     memcpy(tmp + dirlen, pattern, sizeof pattern);
     int fd = mkstemp(tmp);

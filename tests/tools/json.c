@@ -8,6 +8,7 @@
 #include "utf8.h"
 #include "../../labs/kit/numtext.h"
 #include "../../labs/kit/savefile.h"
+#include "../../labs/kit/textfile.h"
 
 #include <errno.h>
 #include <math.h>
@@ -307,16 +308,12 @@ int json_write_file(JsonWriter *w, const char *path, char *err, size_t errlen)
 {
     size_t len;
     const char *text = json_text(w, &len);
-    if (!text) {
-        snprintf(err, errlen, "%s: cannot write JSON: %s", path,
-                 w->error ? w->error : "the document is not finished");
-        return -1;
-    }
+    if (!text)
+        return kit_fail(err, errlen, "%s: cannot write JSON: %s", path,
+                        w->error ? w->error : "the document is not finished");
     char *copy = malloc(len + 1);
-    if (!copy) {
-        snprintf(err, errlen, "%s: out of memory", path);
-        return -1;
-    }
+    if (!copy)
+        return kit_fail(err, errlen, "%s: out of memory", path);
     memcpy(copy, text, len);
     copy[len] = '\n';
     int status = kit_save_file(path, copy, len + 1, err, errlen);
