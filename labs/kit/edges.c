@@ -100,11 +100,10 @@ static int edges_int(const TextLine *ln, int k, long lo, long hi, const char *wh
     char *end, quoted[TEXT_QUOTE_SIZE];
     errno = 0;
     long n = strtol(ln->words[k], &end, 10);
-    if (*end != '\0' || end == ln->words[k] || errno != 0 || n < lo || n > hi) {
-        text_error(err, errlen, ln->name, ln->line, "%s: '%s' is not a whole number from %ld to %ld",
-                   what, text_quote(ln->words[k], quoted), lo, hi);
-        return -1;
-    }
+    if (*end != '\0' || end == ln->words[k] || errno != 0 || n < lo || n > hi)
+        return text_error(err, errlen, ln->name, ln->line,
+                          "%s: '%s' is not a whole number from %ld to %ld",
+                          what, text_quote(ln->words[k], quoted), lo, hi);
     *value = (int)n;
     return 0;
 }
@@ -115,21 +114,17 @@ static int edges_read_pixel(const Edges *edges, const TextLine *ln, const EdgePi
                             EdgePixel *pixel, char *err, size_t errlen)
 {
     int n = ln->nwords;
-    if (n < 5 || n > 2 + 3 * EDGES_MAX_OTHER || (n - 2) % 3 != 0) {
-        text_error(err, errlen, ln->name, ln->line,
-                   "a pixel on an edge is 'i j' and 1 to %d colours 'r g b' (%d words here)",
-                   EDGES_MAX_OTHER, n);
-        return -1;
-    }
+    if (n < 5 || n > 2 + 3 * EDGES_MAX_OTHER || (n - 2) % 3 != 0)
+        return text_error(err, errlen, ln->name, ln->line,
+                          "a pixel on an edge is 'i j' and 1 to %d colours 'r g b' (%d words here)",
+                          EDGES_MAX_OTHER, n);
     if (edges_int(ln, 0, 0, edges->width - 1, "the column i", &pixel->i, err, errlen) < 0
         || edges_int(ln, 1, 0, edges->height - 1, "the row j", &pixel->j, err, errlen) < 0)
         return -1;
-    if (prev && (pixel->j < prev->j || (pixel->j == prev->j && pixel->i <= prev->i))) {
-        text_error(err, errlen, ln->name, ln->line,
-                   "pixel (%d, %d) comes after (%d, %d): pixels go in row order, each once",
-                   pixel->i, pixel->j, prev->i, prev->j);
-        return -1;
-    }
+    if (prev && (pixel->j < prev->j || (pixel->j == prev->j && pixel->i <= prev->i)))
+        return text_error(err, errlen, ln->name, ln->line,
+                          "pixel (%d, %d) comes after (%d, %d): pixels go in row order, each once",
+                          pixel->i, pixel->j, prev->i, prev->j);
     pixel->nother = (n - 2) / 3;
     for (int k = 0; k < 3 * pixel->nother; k++) {
         int byte;
@@ -153,10 +148,9 @@ static int edges_parse(Edges *edges, const char *path, const char *text, char *e
         if (ln.nwords == 0)
             continue;
         if (!sized) {
-            if (ln.nwords != 3 || strcmp(ln.words[0], "size") != 0) {
-                text_error(err, errlen, path, ln.line, "the first line must be 'size WIDTH HEIGHT'");
-                return -1;
-            }
+            if (ln.nwords != 3 || strcmp(ln.words[0], "size") != 0)
+                return text_error(err, errlen, path, ln.line,
+                                  "the first line must be 'size WIDTH HEIGHT'");
             if (edges_int(&ln, 1, 1, IMAGE_MAX_SIDE, "size", &edges->width, err, errlen) < 0
                 || edges_int(&ln, 2, 1, IMAGE_MAX_SIDE, "size", &edges->height, err, errlen) < 0)
                 return -1;
@@ -167,15 +161,11 @@ static int edges_parse(Edges *edges, const char *path, const char *text, char *e
         const EdgePixel *prev = edges->count ? &edges->pixels[edges->count - 1] : NULL;
         if (edges_read_pixel(edges, &ln, prev, &pixel, err, errlen) < 0)
             return -1;
-        if (!edges_push(edges, &capacity, &pixel)) {
-            text_error(err, errlen, path, ln.line, "out of memory");
-            return -1;
-        }
+        if (!edges_push(edges, &capacity, &pixel))
+            return text_error(err, errlen, path, ln.line, "out of memory");
     }
-    if (status == 0 && !sized) {
-        text_error(err, errlen, path, 0, "no 'size WIDTH HEIGHT' line: not a file of edges");
-        return -1;
-    }
+    if (status == 0 && !sized)
+        return text_error(err, errlen, path, 0, "no 'size WIDTH HEIGHT' line: not a file of edges");
     return status;
 }
 

@@ -37,17 +37,14 @@ static int obj_index(const TextLine *ln, int k, int nverts, int *index, char *er
     char quoted[TEXT_QUOTE_SIZE], *end;
     errno = 0;
     long v = strtol(word, &end, 10);
-    if (end == word || (*end != '\0' && *end != '/') || errno == ERANGE) {
-        text_error(err, errlen, ln->name, ln->line, "f: '%s' is not a vertex index",
-                   text_quote(word, quoted));
-        return -1;
-    }
+    if (end == word || (*end != '\0' && *end != '/') || errno == ERANGE)
+        return text_error(err, errlen, ln->name, ln->line, "f: '%s' is not a vertex index",
+                          text_quote(word, quoted));
     long i = v > 0 ? v - 1 : v + nverts;          /* negative: counted back from the last */
-    if (v == 0 || i < 0 || i >= nverts) {
-        text_error(err, errlen, ln->name, ln->line,
-                   "f: vertex %ld does not exist (%d vertices so far; indices start at 1)", v, nverts);
-        return -1;
-    }
+    if (v == 0 || i < 0 || i >= nverts)
+        return text_error(err, errlen, ln->name, ln->line,
+                          "f: vertex %ld does not exist (%d vertices so far; indices start at 1)",
+                          v, nverts);
     *index = (int)i;
     return 0;
 }
@@ -56,19 +53,16 @@ static int obj_index(const TextLine *ln, int k, int nverts, int *index, char *er
 static int obj_push(const TextLine *ln, Triangle tri, Triangle **tris, int *ntris, int *cap, int max,
                     char *err, size_t errlen)
 {
-    if (*ntris >= max) {
-        text_error(err, errlen, ln->name, ln->line, "too many triangles: at most %d in a scene", max);
-        return -1;
-    }
+    if (*ntris >= max)
+        return text_error(err, errlen, ln->name, ln->line,
+                          "too many triangles: at most %d in a scene", max);
     if (*ntris == *cap) {
         int grown = *cap ? 2 * *cap : 64;
         if (grown > max)
             grown = max;
         Triangle *more = realloc(*tris, (size_t)grown * sizeof *more);
-        if (!more) {
-            text_error(err, errlen, ln->name, ln->line, "out of memory");
-            return -1;
-        }
+        if (!more)
+            return text_error(err, errlen, ln->name, ln->line, "out of memory");
         *tris = more;
         *cap = grown;
     }
@@ -85,40 +79,32 @@ static int obj_line(const TextLine *ln, double s, Vec3 t, Vec3 color, Vec3 **ver
     if (strcmp(key, "v") == 0) {
         int got = ln->nwords - 1;
         double v[4];
-        if (got != 3 && got != 4) {
-            text_error(err, errlen, ln->name, ln->line, "v needs 3 numbers: x y z, got %d", got);
-            return -1;
-        }
+        if (got != 3 && got != 4)
+            return text_error(err, errlen, ln->name, ln->line,
+                              "v needs 3 numbers: x y z, got %d", got);
         for (int k = 0; k < got; k++)
             if (text_number(ln, k + 1, &v[k], err, errlen) < 0)
                 return -1;
-        if (*nverts == OBJ_MAX_VERTICES) {
-            text_error(err, errlen, ln->name, ln->line, "too many vertices: at most %d", OBJ_MAX_VERTICES);
-            return -1;
-        }
+        if (*nverts == OBJ_MAX_VERTICES)
+            return text_error(err, errlen, ln->name, ln->line,
+                              "too many vertices: at most %d", OBJ_MAX_VERTICES);
         if (*nverts == *vcap) {
             int grown = *vcap ? 2 * *vcap : 64;
             Vec3 *more = realloc(*verts, (size_t)grown * sizeof *more);
-            if (!more) {
-                text_error(err, errlen, ln->name, ln->line, "out of memory");
-                return -1;
-            }
+            if (!more)
+                return text_error(err, errlen, ln->name, ln->line, "out of memory");
             *verts = more;
             *vcap = grown;
         }
         /* once, here: every triangle that uses this vertex gets these bits */
         (*verts)[(*nverts)++] = vec3_add(vec3_scale(vec3(v[0], v[1], v[2]), s), t);
     } else if (strcmp(key, "f") == 0) {
-        if (ln->nwords - 1 < 3) {
-            text_error(err, errlen, ln->name, ln->line, "f needs at least 3 vertices, got %d",
-                       ln->nwords - 1);
-            return -1;
-        }
-        if (ln->nwords > TEXT_MAX_WORDS) {
-            text_error(err, errlen, ln->name, ln->line, "f has %d vertices: at most %d",
-                       ln->nwords - 1, TEXT_MAX_WORDS - 1);
-            return -1;
-        }
+        if (ln->nwords - 1 < 3)
+            return text_error(err, errlen, ln->name, ln->line,
+                              "f needs at least 3 vertices, got %d", ln->nwords - 1);
+        if (ln->nwords > TEXT_MAX_WORDS)
+            return text_error(err, errlen, ln->name, ln->line, "f has %d vertices: at most %d",
+                              ln->nwords - 1, TEXT_MAX_WORDS - 1);
         int first, prev, next;
         if (obj_index(ln, 1, *nverts, &first, err, errlen) < 0
             || obj_index(ln, 2, *nverts, &prev, err, errlen) < 0)
@@ -132,10 +118,9 @@ static int obj_line(const TextLine *ln, double s, Vec3 t, Vec3 color, Vec3 **ver
             prev = next;
         }
     } else if (!obj_ignored(key)) {
-        text_error(err, errlen, ln->name, ln->line,
-                   "unknown statement '%s' (this kit reads v and f, and ignores vt, vn, vp, o, g, s, "
-                   "usemtl, mtllib and l)", text_quote(key, quoted));
-        return -1;
+        return text_error(err, errlen, ln->name, ln->line,
+                          "unknown statement '%s' (this kit reads v and f, and ignores vt, vn, vp, "
+                          "o, g, s, usemtl, mtllib and l)", text_quote(key, quoted));
     }
     return 0;
 }

@@ -38,11 +38,9 @@ static int scene_numbers(const TextLine *ln, int n, const char *usage, double *v
                          char *err, size_t errlen)
 {
     int got = ln->nwords - 1;
-    if (got != n) {
-        text_error(err, errlen, ln->name, ln->line, "%s needs %d number%s: %s, got %d",
-                   ln->words[0], n, n == 1 ? "" : "s", usage, got);
-        return -1;
-    }
+    if (got != n)
+        return text_error(err, errlen, ln->name, ln->line, "%s needs %d number%s: %s, got %d",
+                          ln->words[0], n, n == 1 ? "" : "s", usage, got);
     for (int k = 0; k < n; k++)
         if (text_number(ln, k + 1, &values[k], err, errlen) < 0)
             return -1;
@@ -56,13 +54,11 @@ static int scene_check_color(const TextLine *ln, int first, const double *c,
                              char *err, size_t errlen)
 {
     static const char *const names[3] = { "r", "g", "b" };
-    for (int k = 0; k < 3; k++) {
-        if (!(c[k] >= 0 && c[k] <= 1)) {
-            text_error(err, errlen, ln->name, ln->line, "%s colour %s must be in [0, 1], got %.40s",
-                       ln->words[0], names[k], ln->words[first + k]);
-            return -1;
-        }
-    }
+    for (int k = 0; k < 3; k++)
+        if (!(c[k] >= 0 && c[k] <= 1))
+            return text_error(err, errlen, ln->name, ln->line,
+                              "%s colour %s must be in [0, 1], got %.40s",
+                              ln->words[0], names[k], ln->words[first + k]);
     return 0;
 }
 
@@ -72,12 +68,10 @@ static int scene_check_color(const TextLine *ln, int first, const double *c,
 static int scene_check_side(const TextLine *ln, int k, double value, const char *what,
                             int *side, char *err, size_t errlen)
 {
-    if (!(value >= 1 && value <= IMAGE_MAX_SIDE && value == floor(value))) {
-        text_error(err, errlen, ln->name, ln->line,
-                   "image %s must be a whole number from 1 to %d, got %.40s",
-                   what, IMAGE_MAX_SIDE, ln->words[k]);
-        return -1;
-    }
+    if (!(value >= 1 && value <= IMAGE_MAX_SIDE && value == floor(value)))
+        return text_error(err, errlen, ln->name, ln->line,
+                          "image %s must be a whole number from 1 to %d, got %.40s",
+                          what, IMAGE_MAX_SIDE, ln->words[k]);
     *side = (int)value;
     return 0;
 }
@@ -86,11 +80,9 @@ static int scene_check_side(const TextLine *ln, int k, double value, const char 
  * Returns 0, or -1 with a message when it was already given. */
 static int scene_once(const TextLine *ln, int *first, char *err, size_t errlen)
 {
-    if (*first) {
-        text_error(err, errlen, ln->name, ln->line, "%s given twice (first on line %d)",
-                   ln->words[0], *first);
-        return -1;
-    }
+    if (*first)
+        return text_error(err, errlen, ln->name, ln->line, "%s given twice (first on line %d)",
+                          ln->words[0], *first);
     *first = ln->line;
     return 0;
 }
@@ -103,19 +95,15 @@ static int scene_once(const TextLine *ln, int *first, char *err, size_t errlen)
 static int scene_add(void **items, int *count, int *capacity, const void *item, size_t size,
                      int max, const char *what, const TextLine *ln, char *err, size_t errlen)
 {
-    if (*count == max) {
-        text_error(err, errlen, ln->name, ln->line, "too many %s: at most %d", what, max);
-        return -1;
-    }
+    if (*count == max)
+        return text_error(err, errlen, ln->name, ln->line, "too many %s: at most %d", what, max);
     if (*count == *capacity) {
         int grown = *capacity ? 2 * *capacity : 16;
         if (grown > max)
             grown = max;
         void *more = realloc(*items, (size_t)grown * size);
-        if (!more) {
-            text_error(err, errlen, ln->name, ln->line, "out of memory");
-            return -1;
-        }
+        if (!more)
+            return text_error(err, errlen, ln->name, ln->line, "out of memory");
         *items = more;
         *capacity = grown;
     }
@@ -131,29 +119,24 @@ static int scene_mesh(Scene *scene, SceneBuild *b, const TextLine *ln, char *err
 {
     double v[7];
     int got = ln->nwords - 1;
-    if (got != 8) {
-        text_error(err, errlen, ln->name, ln->line,
-                   "mesh needs a file and 7 numbers: FILE s tx ty tz r g b, got %d word%s", got,
-                   got == 1 ? "" : "s");
-        return -1;
-    }
+    if (got != 8)
+        return text_error(err, errlen, ln->name, ln->line,
+                          "mesh needs a file and 7 numbers: FILE s tx ty tz r g b, got %d word%s",
+                          got, got == 1 ? "" : "s");
     for (int k = 0; k < 7; k++)
         if (text_number(ln, k + 2, &v[k], err, errlen) < 0)
             return -1;
-    if (!(v[0] > 0)) {
-        text_error(err, errlen, ln->name, ln->line, "mesh scale s must be greater than 0, got %.40s",
-                   ln->words[2]);
-        return -1;
-    }
+    if (!(v[0] > 0))
+        return text_error(err, errlen, ln->name, ln->line,
+                          "mesh scale s must be greater than 0, got %.40s",
+                          ln->words[2]);
     if (scene_check_color(ln, 6, v + 4, err, errlen) < 0)
         return -1;
     const char *file = ln->words[1];
     size_t len = strlen(b->dir) + strlen(file) + 2;
     char *path = malloc(len);
-    if (!path) {
-        text_error(err, errlen, ln->name, ln->line, "out of memory");
-        return -1;
-    }
+    if (!path)
+        return text_error(err, errlen, ln->name, ln->line, "out of memory");
     if (file[0] == '/' || !b->dir[0])
         snprintf(path, len, "%s", file);
     else
@@ -187,22 +170,18 @@ static int scene_line(Scene *scene, SceneSeen *seen, SceneBuild *b, const TextLi
         if (scene_once(ln, &seen->fov, err, errlen) < 0
             || scene_numbers(ln, 1, "degrees", v, err, errlen) < 0)
             return -1;
-        if (!(v[0] > 0 && v[0] < 180)) {
-            text_error(err, errlen, ln->name, ln->line,
-                       "fov must be between 0 and 180 degrees (both excluded), got %.40s",
-                       ln->words[1]);
-            return -1;
-        }
+        if (!(v[0] > 0 && v[0] < 180))
+            return text_error(err, errlen, ln->name, ln->line,
+                              "fov must be between 0 and 180 degrees (both excluded), got %.40s",
+                              ln->words[1]);
         scene->fov_degrees = v[0];
     } else if (strcmp(key, "distance") == 0) {
         if (scene_once(ln, &seen->distance, err, errlen) < 0
             || scene_numbers(ln, 1, "d", v, err, errlen) < 0)
             return -1;
-        if (!(v[0] > 0)) {
-            text_error(err, errlen, ln->name, ln->line,
-                       "distance d must be greater than 0, got %.40s", ln->words[1]);
-            return -1;
-        }
+        if (!(v[0] > 0))
+            return text_error(err, errlen, ln->name, ln->line,
+                              "distance d must be greater than 0, got %.40s", ln->words[1]);
         scene->d = v[0];
     } else if (strcmp(key, "background") == 0) {
         if (scene_once(ln, &seen->background, err, errlen) < 0
@@ -213,11 +192,9 @@ static int scene_line(Scene *scene, SceneSeen *seen, SceneBuild *b, const TextLi
     } else if (strcmp(key, "sphere") == 0) {
         if (scene_numbers(ln, 7, "cx cy cz R r g b", v, err, errlen) < 0)
             return -1;
-        if (!(v[3] > 0)) {
-            text_error(err, errlen, ln->name, ln->line,
-                       "sphere radius R must be greater than 0, got %.40s", ln->words[4]);
-            return -1;
-        }
+        if (!(v[3] > 0))
+            return text_error(err, errlen, ln->name, ln->line,
+                              "sphere radius R must be greater than 0, got %.40s", ln->words[4]);
         if (scene_check_color(ln, 5, v + 4, err, errlen) < 0)
             return -1;
         Sphere sphere = { vec3(v[0], v[1], v[2]), v[3], vec3(v[4], v[5], v[6]) };
@@ -230,10 +207,8 @@ static int scene_line(Scene *scene, SceneSeen *seen, SceneBuild *b, const TextLi
         if (scene_numbers(ln, 9, "px py pz nx ny nz r g b", v, err, errlen) < 0
             || scene_check_color(ln, 7, v + 6, err, errlen) < 0)
             return -1;
-        if (v[3] == 0 && v[4] == 0 && v[5] == 0) {
-            text_error(err, errlen, ln->name, ln->line, "plane normal must not be zero");
-            return -1;
-        }
+        if (v[3] == 0 && v[4] == 0 && v[5] == 0)
+            return text_error(err, errlen, ln->name, ln->line, "plane normal must not be zero");
         Plane plane = { vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]), vec3(v[6], v[7], v[8]) };
         void *items = scene->planes;
         int status = scene_add(&items, &scene->nplanes, &b->planes, &plane, sizeof plane,
@@ -247,11 +222,10 @@ static int scene_line(Scene *scene, SceneSeen *seen, SceneBuild *b, const TextLi
         Triangle tri = { vec3(v[0], v[1], v[2]), vec3(v[3], v[4], v[5]), vec3(v[6], v[7], v[8]),
                          vec3(v[9], v[10], v[11]) };
         Vec3 n = vec3_cross(vec3_sub(tri.b, tri.a), vec3_sub(tri.c, tri.a));
-        if (n.x == 0 && n.y == 0 && n.z == 0) {
-            text_error(err, errlen, ln->name, ln->line,
-                       "triangle has no area (two vertices are equal, or all three on a line)");
-            return -1;
-        }
+        if (n.x == 0 && n.y == 0 && n.z == 0)
+            return text_error(err, errlen, ln->name, ln->line,
+                              "triangle has no area (two vertices are equal, or all three on a "
+                              "line)");
         void *items = scene->triangles;
         int status = scene_add(&items, &scene->ntriangles, &b->triangles, &tri, sizeof tri,
                                SCENE_MAX_TRIANGLES, "triangles", ln, err, errlen);
@@ -260,10 +234,9 @@ static int scene_line(Scene *scene, SceneSeen *seen, SceneBuild *b, const TextLi
     } else if (strcmp(key, "mesh") == 0) {
         return scene_mesh(scene, b, ln, err, errlen);
     } else {
-        text_error(err, errlen, ln->name, ln->line,
-                   "unknown keyword '%s' (expected image, fov, distance, background, sphere, "
-                   "plane, triangle or mesh)", text_quote(key, quoted));
-        return -1;
+        return text_error(err, errlen, ln->name, ln->line,
+                          "unknown keyword '%s' (expected image, fov, distance, background, "
+                          "sphere, plane, triangle or mesh)", text_quote(key, quoted));
     }
     return 0;
 }
@@ -300,10 +273,8 @@ int scene_parse(Scene *scene, const char *text, const char *name, char *err, siz
     SceneSeen seen = { 0, 0, 0, 0 };
     SceneBuild b = { 0, 0, 0, NULL };
     char *dir = scene_dir(name);
-    if (!dir) {
-        text_error(err, errlen, name, 0, "out of memory");
-        return -1;
-    }
+    if (!dir)
+        return text_error(err, errlen, name, 0, "out of memory");
     b.dir = dir;
     char buf[TEXT_MAX_LINE + 1];
     TextLine ln;

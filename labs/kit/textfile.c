@@ -13,18 +13,19 @@
 #include <string.h>
 #include <sys/stat.h>
 
-void text_error(char *err, size_t errlen, const char *name, int line, const char *fmt, ...)
+int text_error(char *err, size_t errlen, const char *name, int line, const char *fmt, ...)
 {
     if (!err || errlen == 0)
-        return;
+        return -1;
     int used = line > 0 ? snprintf(err, errlen, "%s:%d: ", name, line)
                         : snprintf(err, errlen, "%s: ", name);
     if (used < 0 || (size_t)used >= errlen)
-        return;
+        return -1;
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(err + used, errlen - (size_t)used, fmt, ap);
     va_end(ap);
+    return -1;
 }
 
 int kit_fail(char *err, size_t errlen, const char *fmt, ...)
@@ -81,22 +82,18 @@ int text_number(const TextLine *ln, int k, double *value, char *err, size_t errl
     char quoted[TEXT_QUOTE_SIZE], *end;
     errno = 0;
     double v = strtod(word, &end);
-    if (end == word || *end != '\0') {
-        text_error(err, errlen, ln->name, ln->line, "%s: '%s' is not a number",
-                   ln->words[0], text_quote(word, quoted));
-        return -1;
-    }
-    if (isnan(v)) {
-        text_error(err, errlen, ln->name, ln->line, "%s: '%s' is not a number (NaN is refused)",
-                   ln->words[0], text_quote(word, quoted));
-        return -1;
-    }
-    if (isinf(v)) {
-        text_error(err, errlen, ln->name, ln->line, "%s: '%s' is %s (numbers must be finite)",
-                   ln->words[0], text_quote(word, quoted),
-                   errno == ERANGE ? "out of range" : "infinite");
-        return -1;
-    }
+    if (end == word || *end != '\0')
+        return text_error(err, errlen, ln->name, ln->line, "%s: '%s' is not a number",
+                          ln->words[0], text_quote(word, quoted));
+    if (isnan(v))
+        return text_error(err, errlen, ln->name, ln->line,
+                          "%s: '%s' is not a number (NaN is refused)",
+                          ln->words[0], text_quote(word, quoted));
+    if (isinf(v))
+        return text_error(err, errlen, ln->name, ln->line,
+                          "%s: '%s' is %s (numbers must be finite)",
+                          ln->words[0], text_quote(word, quoted),
+                          errno == ERANGE ? "out of range" : "infinite");
     *value = v;
     return 0;
 }
@@ -109,10 +106,8 @@ static int text_read_all(FILE *f, const char *path, char **text, char *err, size
     size_t size = 0, capacity = 4096;
     char *buf = malloc(capacity);
     *text = NULL;
-    if (!buf) {
-        text_error(err, errlen, path, 0, "out of memory");
-        return -1;
-    }
+    if (!buf)
+        return text_error(err, errlen, path, 0, "out of memory");
     for (;;) {
         if (size + 1 == capacity) {
             if (capacity >= (size_t)TEXT_MAX_BYTES) {
@@ -158,10 +153,8 @@ int text_read_file(const char *path, char **text, char *err, size_t errlen)
 {
     *text = NULL;
     FILE *f = fopen(path, "rb");
-    if (!f) {
-        text_error(err, errlen, path, 0, "%s", strerror(errno));
-        return -1;
-    }
+    if (!f)
+        return text_error(err, errlen, path, 0, "%s", strerror(errno));
     struct stat st;
     if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
         text_error(err, errlen, path, 0, "%s", strerror(EISDIR));
@@ -188,10 +181,9 @@ int text_next_line(const char **pos, char *buf, TextLine *ln, char *err, size_t 
     if (ln->line == 1)
         p += text_bom_length(p, strnlen(p, 3));   /* not text */
     size_t len = strcspn(p, "\n");
-    if (len > TEXT_MAX_LINE) {
-        text_error(err, errlen, ln->name, ln->line, "line is longer than %d characters", TEXT_MAX_LINE);
-        return -1;
-    }
+    if (len > TEXT_MAX_LINE)
+        return text_error(err, errlen, ln->name, ln->line,
+                          "line is longer than %d characters", TEXT_MAX_LINE);
     memcpy(buf, p, len);
     buf[len] = '\0';
     p += len;

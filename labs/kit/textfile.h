@@ -28,8 +28,9 @@ typedef struct {
 size_t text_bom_length(const char *s, size_t n);
 
 /* Writes "name:line: message" (or "name: message" when line is 0) into err.
- * Never fails; a NULL err or errlen 0 writes nothing. */
-void text_error(char *err, size_t errlen, const char *name, int line, const char *fmt, ...)
+ * Returns -1 for the caller to pass on; a NULL err or errlen 0 writes
+ * nothing. */
+int text_error(char *err, size_t errlen, const char *name, int line, const char *fmt, ...)
     __attribute__((format(printf, 5, 6)));
 
 /* Writes the message alone into err, for the kit's other modules (no file
