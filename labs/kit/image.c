@@ -131,38 +131,6 @@ int image_write(const Image *img, const char *path, char *err, size_t errlen)
 
 /* ---- reading ---------------------------------------------------------------------- */
 
-/* Reads the whole file at path into out, refusing files over
- * IMAGE_READ_MAX bytes.  Returns 0, or -1 with "path: reason" in err. */
-static int image_load_bytes(const char *path, KitBuf *out, char *err, size_t errlen)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return kit_fail(err, errlen, "%s: cannot open: %s", path, strerror(errno));
-    for (;;) {
-        if (kit_buf_reserve(out, (size_t)1 << 16) != 0) {
-            snprintf(err, errlen, "%s: out of memory", path);
-            break;
-        }
-        size_t got = fread(out->data + out->len, 1, out->cap - out->len, f);
-        out->len += got;
-        if (out->len > IMAGE_READ_MAX) {
-            snprintf(err, errlen, "%s: file is too large to be an image of at most %d x %d",
-                     path, IMAGE_MAX_SIDE, IMAGE_MAX_SIDE);
-            break;
-        }
-        if (got == 0) {
-            if (ferror(f)) {
-                snprintf(err, errlen, "%s: cannot read: %s", path, strerror(errno));
-                break;
-            }
-            fclose(f);
-            return 0;
-        }
-    }
-    fclose(f);
-    return -1;
-}
-
 /* Whether c is whitespace in a PPM header. */
 static int image_ppm_space(unsigned char c)
 {
@@ -245,7 +213,9 @@ int image_read(Image *img, const char *path, char *err, size_t errlen)
     img->width = 0;
     img->height = 0;
     img->rgb = NULL;
-    if (image_load_bytes(path, &bytes, err, errlen) != 0) {
+    snprintf(why, sizeof why, "file is too large to be an image of at most %d x %d",
+             IMAGE_MAX_SIDE, IMAGE_MAX_SIDE);
+    if (kit_read_file(path, IMAGE_READ_MAX, why, &bytes, err, errlen) != 0) {
         kit_buf_free(&bytes);
         return -1;
     }

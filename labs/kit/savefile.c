@@ -75,6 +75,34 @@ int kit_save_file(const char *path, const void *data, size_t n, char *err, size_
     return failed ? -1 : 0;
 }
 
+int kit_read_file(const char *path, size_t max, const char *too_large, KitBuf *out,
+                  char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return kit_fail(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+    for (;;) {
+        if (kit_buf_reserve(out, (size_t)1 << 16) != 0) {
+            fclose(f);
+            return kit_fail(err, errlen, "%s: out of memory", path);
+        }
+        size_t got = fread(out->data + out->len, 1, out->cap - out->len, f);
+        out->len += got;
+        if (out->len > max) {
+            fclose(f);
+            return kit_fail(err, errlen, "%s: %s", path, too_large);
+        }
+        if (got == 0)
+            break;
+    }
+    int bad = ferror(f);
+    int saved = errno;
+    fclose(f);
+    if (bad)
+        return kit_fail(err, errlen, "%s: cannot read: %s", path, strerror(saved));
+    return 0;
+}
+
 char *kit_load_file(const char *path, size_t max, size_t *len)
 {
     FILE *f = fopen(path, "rb");

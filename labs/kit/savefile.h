@@ -8,6 +8,8 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "zlib.h"
+
 /* Writes n bytes of data to a temporary file beside path, gives it the mode
  * a new file would get (0666 less the umask), closes it and renames it over
  * path.  Returns 0, or -1 with "path: reason" in err and no temporary file
@@ -17,6 +19,12 @@ int kit_save_file(const char *path, const void *data, size_t n, char *err, size_
 /* Writes all n bytes of data to fd, retrying after interruptions and short
  * writes.  Returns 0, or -1 with errno set. */
 int kit_write_all(int fd, const void *data, size_t n);
+
+/* Appends the whole file at path to out, at most max bytes.  Returns 0, or
+ * -1 with "path: reason" in err; a file larger than max has the reason
+ * too_large. */
+int kit_read_file(const char *path, size_t max, const char *too_large, KitBuf *out,
+                  char *err, size_t errlen);
 
 /* Reads the whole regular file at path, any bytes, into a fresh buffer with
  * a NUL after them, and sets *len to their number.  NULL when it cannot be

@@ -80,33 +80,12 @@ static char *arc_join(const char *a, const char *b)
     return s;
 }
 
-/* Reads the whole file at path into out (at most ARCHIVE_MAX_SIZE bytes).
- * Returns 0, or -1 with "path: reason" in err. */
+/* kit_read_file, at most ARCHIVE_MAX_SIZE bytes. */
 static int arc_read_file(const char *path, KitBuf *out, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return kit_fail(err, errlen, "%s: cannot open: %s", path, strerror(errno));
-    for (;;) {
-        if (kit_buf_reserve(out, (size_t)1 << 16) != 0) {
-            fclose(f);
-            return kit_fail(err, errlen, "%s: out of memory", path);
-        }
-        size_t got = fread(out->data + out->len, 1, out->cap - out->len, f);
-        out->len += got;
-        if (out->len > ARCHIVE_MAX_SIZE) {
-            fclose(f);
-            return kit_fail(err, errlen, "%s: larger than %zu bytes", path, ARCHIVE_MAX_SIZE);
-        }
-        if (got == 0)
-            break;
-    }
-    int bad = ferror(f);
-    int saved = errno;
-    fclose(f);
-    if (bad)
-        return kit_fail(err, errlen, "%s: cannot read: %s", path, strerror(saved));
-    return 0;
+    char too_large[64];
+    snprintf(too_large, sizeof too_large, "larger than %zu bytes", ARCHIVE_MAX_SIZE);
+    return kit_read_file(path, ARCHIVE_MAX_SIZE, too_large, out, err, errlen);
 }
 
 /* ---- entries -------------------------------------------------------------------- */
