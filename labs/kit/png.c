@@ -419,9 +419,8 @@ int png_decode(const void *data, size_t n, int *width, int *height, unsigned cha
     if (rc != 0 || raw.len != want) {
         if (rc == 0)
             snprintf(why, sizeof why, "%zu bytes of image data, not %zu", raw.len, want);
-        snprintf(err, errlen, "PNG image data is corrupt: %s", why);
         kit_buf_free(&raw);
-        return -1;
+        return kit_fail(err, errlen, "PNG image data is corrupt: %s", why);
     }
     if (png_unfilter(raw.data, rows, stride, (size_t)h.channels, err, errlen) != 0) {
         kit_buf_free(&raw);
@@ -439,9 +438,8 @@ int png_decode(const void *data, size_t n, int *width, int *height, unsigned cha
     }
     unsigned char *out = malloc(3 * (size_t)h.width * rows);
     if (!out) {
-        snprintf(err, errlen, "out of memory for a %d x %d image", h.width, h.height);
         kit_buf_free(&raw);
-        return -1;
+        return kit_fail(err, errlen, "out of memory for a %d x %d image", h.width, h.height);
     }
     for (size_t j = 0; j < rows; j++) {
         const unsigned char *src = raw.data + j * (stride + 1) + 1;

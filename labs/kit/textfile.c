@@ -111,16 +111,15 @@ static int text_read_all(FILE *f, const char *path, char **text, char *err, size
     for (;;) {
         if (size + 1 == capacity) {
             if (capacity >= (size_t)TEXT_MAX_BYTES) {
-                text_error(err, errlen, path, 0, "larger than %ld MiB: too large for this kit",
-                           TEXT_MAX_BYTES / (1024 * 1024));
                 free(buf);
-                return -1;
+                return text_error(err, errlen, path, 0,
+                                  "larger than %ld MiB: too large for this kit",
+                                  TEXT_MAX_BYTES / (1024 * 1024));
             }
             char *more = realloc(buf, 2 * capacity);
             if (!more) {
-                text_error(err, errlen, path, 0, "out of memory");
                 free(buf);
-                return -1;
+                return text_error(err, errlen, path, 0, "out of memory");
             }
             buf = more;
             capacity *= 2;
@@ -141,9 +140,8 @@ static int text_read_all(FILE *f, const char *path, char **text, char *err, size
         int line = 1;
         for (const char *q = buf; q < nul; q++)
             line += *q == '\n';
-        text_error(err, errlen, path, line, "contains a NUL byte: not a text file");
         free(buf);
-        return -1;
+        return text_error(err, errlen, path, line, "contains a NUL byte: not a text file");
     }
     *text = buf;
     return 0;
