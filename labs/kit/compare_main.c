@@ -21,6 +21,7 @@
 #include "compare.h"
 #include "edges.h"
 #include "image.h"
+#include "textfile.h"
 
 /* Prints the usage to f. */
 static void compare_usage(FILE *f)
@@ -43,10 +44,8 @@ static int compare_write_side_by_side(const Image *sub, const Image *ref, const 
 {
     Image out;
     char why[400];
-    if (compare_side_by_side(sub, ref, &out, why, sizeof why) < 0) {
-        snprintf(err, errlen, "%s: %s", path, why);
-        return -1;
-    }
+    if (compare_side_by_side(sub, ref, &out, why, sizeof why) < 0)
+        return kit_fail(err, errlen, "%s: %s", path, why);
     int status = image_write(&out, path, err, errlen);
     image_free(&out);
     return status;

@@ -26,6 +26,7 @@
 #include "image.h"
 #include "render.h"
 #include "scene.h"
+#include "textfile.h"
 
 #define RENDER_MAIN_MAX_THREADS 1024
 
@@ -198,14 +199,10 @@ static int render_main_default_out(const char *scene_path, char *buf, size_t len
     const char *dot = strrchr(name, '.');
     int stem = dot && dot != name ? (int)(dot - name) : (int)strlen(name);
     int n = snprintf(buf, len, "out/%.*s.png", stem, name);
-    if (n < 0 || (size_t)n >= len) {
-        snprintf(err, errlen, "render: the scene's name is too long for an output name");
-        return -1;
-    }
-    if (mkdir("out", 0777) != 0 && errno != EEXIST) {
-        snprintf(err, errlen, "render: cannot make the directory out: %s", strerror(errno));
-        return -1;
-    }
+    if (n < 0 || (size_t)n >= len)
+        return kit_fail(err, errlen, "render: the scene's name is too long for an output name");
+    if (mkdir("out", 0777) != 0 && errno != EEXIST)
+        return kit_fail(err, errlen, "render: cannot make the directory out: %s", strerror(errno));
     return 0;
 }
 

@@ -28,6 +28,7 @@
 #include "lmsname.h"
 #include "terminal.h"
 #include "../tools/archive.h"
+#include "../../labs/kit/textfile.h"
 
 #define ERR_MAX 1024
 
@@ -351,14 +352,10 @@ static int pack_sorted(const Sorting *s, const char *from, Archive *out, char *w
 static int write_beside(const Archive *out, const char *to, bool exists, char *why, size_t whylen)
 {
     char tmp[4096];
-    if ((size_t)snprintf(tmp, sizeof tmp, "%s.sorting.XXXXXX", to) >= sizeof tmp) {
-        snprintf(why, whylen, "the folder's name is too long");
-        return -1;
-    }
-    if (!mkdtemp(tmp)) {
-        snprintf(why, whylen, "%.900s: %s", tmp, strerror(errno));
-        return -1;
-    }
+    if ((size_t)snprintf(tmp, sizeof tmp, "%s.sorting.XXXXXX", to) >= sizeof tmp)
+        return kit_fail(why, whylen, "the folder's name is too long");
+    if (!mkdtemp(tmp))
+        return kit_fail(why, whylen, "%.900s: %s", tmp, strerror(errno));
     chmod(tmp, 0755);
     int status = archive_extract(out, tmp, why, whylen);
     if (status == 0 && exists && rmdir(to) != 0) {
