@@ -10,20 +10,18 @@
 #include "../../labs/kit/savefile.h"
 #include "../../labs/kit/textfile.h"
 
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <sys/types.h>
-#include <unistd.h>
 
-/* Makes w fail with reason why (the first failure is kept). */
-static void json_fail(JsonWriter *w, const char *why)
+/* Makes w fail with reason why (the first failure is kept).  Returns -1
+ * for the caller to pass on. */
+static int json_fail(JsonWriter *w, const char *why)
 {
     if (!w->error)
         w->error = why;
+    return -1;
 }
 
 /* Appends n bytes, failing the writer if memory runs out. */
@@ -71,18 +69,12 @@ static int json_before_value(JsonWriter *w)
     if (w->error)
         return -1;
     if (w->depth == 0) {
-        if (w->done) {
-            json_fail(w, "a second top-level value");
-            return -1;
-        }
-        return 0;
+        return w->done ? json_fail(w, "a second top-level value") : 0;
     }
     int level = w->depth - 1;
     if (w->is_object[level]) {
-        if (!w->key_pending) {
-            json_fail(w, "a value in an object without a key");
-            return -1;
-        }
+        if (!w->key_pending)
+            return json_fail(w, "a value in an object without a key");
         w->key_pending = false;
         return 0;
     }
