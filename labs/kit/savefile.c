@@ -30,11 +30,17 @@ int kit_write_all(int fd, const void *data, size_t n)
     return 0;
 }
 
+int kit_save_file(const char *path, const void *data, size_t n, char *err, size_t errlen)
+{
+    return kit_save_file_mode(path, data, n, 0666, err, errlen);
+}
+
 /* Saves data to path: a temporary file beside it (same directory, so the
- * rename cannot cross file systems), given the usual permissions, written,
+ * rename cannot cross file systems), given its permissions, written,
  * closed, then renamed over path.  Returns 0, or -1 with "path: reason" in
  * err and no temporary file left behind. */
-int kit_save_file(const char *path, const void *data, size_t n, char *err, size_t errlen)
+int kit_save_file_mode(const char *path, const void *data, size_t n, unsigned mode, char *err,
+                       size_t errlen)
 {
     const char *slash = strrchr(path, '/');
     size_t dirlen = slash ? (size_t)(slash - path) + 1 : 0;
@@ -52,11 +58,11 @@ int kit_save_file(const char *path, const void *data, size_t n, char *err, size_
         return -1;
     }
     /* mkstemp makes the file private (0600); give it the mode a newly
-     * created file would have (0666 less the umask). */
+     * created file would have (mode less the umask). */
     mode_t mask = umask(022);
     umask(mask);
     const char *what = "cannot write";
-    int failed = fchmod(fd, 0666 & ~mask) != 0 || kit_write_all(fd, data, n) != 0;
+    int failed = fchmod(fd, (mode_t)mode & ~mask) != 0 || kit_write_all(fd, data, n) != 0;
     int saved = errno;
     if (close(fd) != 0 && !failed) {
         failed = 1;

@@ -15,6 +15,10 @@
  * path.  Returns 0, or -1 with "path: reason" in err and no temporary file
  * left behind. */
 int kit_save_file(const char *path, const void *data, size_t n, char *err, size_t errlen);
+/* The same with mode, less the umask, instead of 0666 (0600: the owner's
+ * alone). */
+int kit_save_file_mode(const char *path, const void *data, size_t n, unsigned mode, char *err,
+                       size_t errlen);
 
 /* Writes all n bytes of data to fd, retrying after interruptions and short
  * writes.  Returns 0, or -1 with errno set. */

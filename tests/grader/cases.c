@@ -22,6 +22,7 @@
 #include "grader.h"
 #include "decimal.h"
 #include "../../labs/kit/numtext.h"
+#include "../../labs/kit/savefile.h"
 
 #include <errno.h>
 #include <math.h>
@@ -89,6 +90,28 @@ void appendf(char **s, const char *fmt, ...)
     vsnprintf(t + old, (size_t)n + 1, fmt, ap);
     va_end(ap);
     *s = t;
+}
+
+FILE *save_open(SaveStream *s, const char *path, char *err, size_t errlen)
+{
+    *s = (SaveStream){ 0 };
+    s->f = open_memstream(&s->data, &s->len);
+    if (!s->f)
+        snprintf(err, errlen, "%s: out of memory", path);
+    return s->f;
+}
+
+int save_close(SaveStream *s, const char *path, unsigned mode, char *err, size_t errlen)
+{
+    bool failed = ferror(s->f) != 0;
+    failed = fclose(s->f) != 0 || failed;
+    int status = -1;
+    if (failed)
+        snprintf(err, errlen, "%s: out of memory", path);
+    else
+        status = kit_save_file_mode(path, s->data, s->len, mode, err, errlen);
+    free(s->data);
+    return status;
 }
 
 int part_from_label(const char *label)
@@ -204,13 +227,10 @@ static void put_numbers(FILE *f, const double *v, int n)
 
 int tests_write(const TestList *list, const char *path, const char *header, char *err, size_t errlen)
 {
-    char tmp[4096];
-    snprintf(tmp, sizeof tmp, "%s.tmp", path);
-    FILE *f = fopen(tmp, "w");
-    if (!f) {
-        snprintf(err, errlen, "%s: %s", tmp, strerror(errno));
+    SaveStream out;
+    FILE *f = save_open(&out, path, err, errlen);
+    if (!f)
         return -1;
-    }
     fprintf(f, "%s", header);
     for (int k = 0; k < list->n; k++) {
         const Test *t = &list->tests[k];
@@ -258,17 +278,7 @@ int tests_write(const TestList *list, const char *path, const char *header, char
         }
         fprintf(f, "end\n");
     }
-    if (ferror(f) | fclose(f)) {
-        snprintf(err, errlen, "%s: write failed", tmp);
-        remove(tmp);
-        return -1;
-    }
-    if (rename(tmp, path) != 0) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        remove(tmp);
-        return -1;
-    }
-    return 0;
+    return save_close(&out, path, 0666, err, errlen);
 }
 
 /* ---- reading ------------------------------------------------------------ */

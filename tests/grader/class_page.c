@@ -167,19 +167,8 @@ int class_page_write(const char *path, const ClassView *v, char *err, size_t err
     class_people(&m, v);
     class_changes(&m, v);
     cost(&m, v);
-    if (report_page_end(&m, "Written by the kit's grader (tests/grader) at the end of <code>make grade-all"
-                            "</code>, from what each submission's grading found: the same grading as its "
-                            "results file and its page. This page names every student: it is readable by "
-                            "its owner alone.", path, err, errlen) != 0)
-        return -1;
-    char tmp[PATH_MAX + 32];
-    FILE *f = class_private_open(path, tmp, sizeof tmp);
-    if (!f) {
-        snprintf(err, errlen, "%s: cannot write", path);
-        mk_free(&m);
-        return -1;
-    }
-    fwrite(m.b.data, 1, m.b.len, f);
-    mk_free(&m);
-    return class_private_close(f, tmp, path, err, errlen);
+    return report_page_end(&m, "Written by the kit's grader (tests/grader) at the end of <code>make "
+                               "grade-all</code>, from what each submission's grading found: the same grading "
+                               "as its results file and its page. This page names every student: it is "
+                               "readable by its owner alone.", path, 0600, err, errlen);
 }

@@ -85,11 +85,10 @@ static void put_part(FILE *f, const Grade *g, int p, double timeout)
 
 int class_record_write(const char *path, const Grade *g, double timeout, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        snprintf(err, errlen, "%s: cannot write the class record", path);
+    SaveStream out;
+    FILE *f = save_open(&out, path, err, errlen);
+    if (!f)
         return -1;
-    }
     fprintf(f, "rtclass 1\n");
     for (int p = 0; p < NPARTS; p++)
         if (g->graded[p])
@@ -108,22 +107,20 @@ int class_record_write(const char *path, const Grade *g, double timeout, char *e
         fputc('\n', f);
     }
     fprintf(f, "end\n");
-    if (fclose(f) != 0) {
-        snprintf(err, errlen, "%s: cannot write the class record", path);
-        return -1;
-    }
-    return 0;
+    return save_close(&out, path, 0666, err, errlen);
 }
 
 void class_record_write_error(const char *path, const char *msg)
 {
-    FILE *f = fopen(path, "w");
+    SaveStream out;
+    char err[PATH_MAX + 128];
+    FILE *f = save_open(&out, path, err, sizeof err);
     if (!f)
         return;                     /* the class page says the status alone */
     fprintf(f, "rtclass 1\nerror ");
     put_text(f, msg);
     fprintf(f, "end\n");
-    fclose(f);
+    save_close(&out, path, 0666, err, sizeof err);
 }
 
 /* ---- reading it back ------------------------------------------------------ */

@@ -713,10 +713,11 @@ static void gradebook_row(FILE *f, const GradeConfig *cfg, const AllRun *run, co
 static int write_gradebook(const char *csv, const GradeConfig *cfg, const AllRun *run, const Job *all,
                            int n, Gradebook *gb)
 {
-    char tmp[PATH_MAX + 16], err[PATH_MAX + 64];
-    FILE *f = class_private_open(csv, tmp, sizeof tmp);    /* every grade in it: the owner's alone */
+    char err[PATH_MAX + 128];
+    SaveStream out;
+    FILE *f = save_open(&out, csv, err, sizeof err);
     if (!f)
-        return fail(NULL, "%s: cannot write", csv);
+        return fail(NULL, "%s", err);
     /* One column per graded part (the "parts" line), then the hard-case
      * points, the total and the status. */
     fprintf(f, "submission");
@@ -729,7 +730,7 @@ static int write_gradebook(const char *csv, const GradeConfig *cfg, const AllRun
     fprintf(f, ",hard,total,status\n");
     for (int k = 0; k < n; k++)
         gradebook_row(f, cfg, run, &all[k], k, ncols, gb);
-    if (class_private_close(f, tmp, csv, err, sizeof err) != 0)
+    if (save_close(&out, csv, 0600, err, sizeof err) != 0)   /* every grade in it: the owner's alone */
         return fail(NULL, "%s", err);
     return 0;
 }

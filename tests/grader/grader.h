@@ -12,6 +12,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdio.h>
 
 enum { PART1, PART2, PART3A, PART3B, PART4, PART5, NPARTS };
 
@@ -118,6 +119,18 @@ PointsText points_text(double points);
 /* Appends printf-style text to a malloc'd string (left as it was if memory
  * runs out). */
 void appendf(char **s, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* A file written as a stream: save_open opens one in memory (NULL, with
+ * "path: out of memory" in err, when it cannot), save_close closes it and
+ * saves what was written to path with mode (less the umask,
+ * kit_save_file_mode); 0, or -1 with "path: reason" in err and path as it
+ * was. */
+typedef struct {
+    FILE *f;
+    char *data;
+    size_t len;
+} SaveStream;
+FILE *save_open(SaveStream *s, const char *path, char *err, size_t errlen);
+int save_close(SaveStream *s, const char *path, unsigned mode, char *err, size_t errlen);
 
 Test *testlist_add(TestList *list, int part, Kind kind, const char *name);
 Case *test_add_case(Test *test);

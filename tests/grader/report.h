@@ -74,9 +74,11 @@ extern const char report_style[];
 /* Starts m with a page in that style, up to its <body>: its title (title
  * then name, escaped; name may be NULL) and the style sheet, style after it. */
 void report_page_begin(Markup *m, const char *title, const char *name, const char *style);
-/* Ends m's page with its footer (footer, as it is); 0, or -1 with "path:
- * out of memory" in err, m freed, when memory ran out on the way. */
-int report_page_end(Markup *m, const char *footer, const char *path, char *err, size_t errlen);
+/* Ends m's page with its footer (footer, as it is), saves it to path with
+ * mode (kit_save_file_mode) and frees m; 0, or -1 with "path: reason" in
+ * err ("out of memory" when memory ran out on the way). */
+int report_page_end(Markup *m, const char *footer, const char *path, unsigned mode, char *err,
+                    size_t errlen);
 
 /* The case a failing test's figure shows, and the answer drawn: the first
  * wrong case, else the case where the answers stopped (no answer: *got is

@@ -1,7 +1,7 @@
 /*
  * report_class.c - the class at a glance (report_class.h): the run's
  * submissions, what the page counts over them (the causes, the tests most
- * failed), OUT/causes.csv, and the two files written privately.
+ * failed), and OUT/causes.csv.
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
@@ -12,11 +12,9 @@
 #include "sandbox.h"
 #include "kit/savefile.h"
 
-#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
-#include <unistd.h>
 
 ClassRun *class_begin(const char *out, const char *previous)
 {
@@ -247,32 +245,6 @@ static void count_tests(ClassView *v)
 
 /* ---- the files ------------------------------------------------------------------ */
 
-FILE *class_private_open(const char *path, char *tmp, size_t n)
-{
-    const char *slash = strrchr(path, '/');
-    int dirlen = slash ? (int)(slash - path) + 1 : 0;
-    snprintf(tmp, n, "%.*s.class-XXXXXX", dirlen, path);
-    int fd = mkstemp(tmp);          /* mode 0600: the owner's alone */
-    FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
-    if (!f && fd >= 0) {
-        close(fd);
-        unlink(tmp);
-    }
-    return f;
-}
-
-int class_private_close(FILE *f, const char *tmp, const char *path, char *err, size_t errlen)
-{
-    bool failed = ferror(f) != 0;
-    failed = fclose(f) != 0 || failed;
-    if (failed || rename(tmp, path) != 0) {
-        snprintf(err, errlen, "%s: %s", path, strerror(failed ? EIO : errno));
-        unlink(tmp);
-        return -1;
-    }
-    return 0;
-}
-
 /* The names of row's submissions, as causes.csv lists them: separated by
  * a space, each name's spaces and percent signs written %20 and %25. */
 static void list_names(Markup *m, const ClassView *v, const ClassCauseRow *row)
@@ -294,13 +266,12 @@ static void list_names(Markup *m, const ClassView *v, const ClassCauseRow *row)
  * cause, in the page's order; the text is its sentence's first line. */
 static int write_causes_csv(const ClassView *v, char *err, size_t errlen)
 {
-    char path[PATH_MAX + 16], tmp[PATH_MAX + 32];
+    char path[PATH_MAX + 16];
     snprintf(path, sizeof path, "%s/causes.csv", v->run->out);
-    FILE *f = class_private_open(path, tmp, sizeof tmp);
-    if (!f) {
-        snprintf(err, errlen, "%s: cannot write: %s", path, strerror(errno));
+    SaveStream out;
+    FILE *f = save_open(&out, path, err, errlen);
+    if (!f)
         return -1;
-    }
     fprintf(f, "part,cause,text,count,submissions\n");
     bool ok = true;
     for (int r = 0; r < v->ncauses && ok; r++) {
@@ -322,11 +293,11 @@ static int write_causes_csv(const ClassView *v, char *err, size_t errlen)
     }
     if (!ok) {
         fclose(f);
-        unlink(tmp);
+        free(out.data);
         snprintf(err, errlen, "%s: out of memory", path);
         return -1;
     }
-    return class_private_close(f, tmp, path, err, errlen);
+    return save_close(&out, path, 0600, err, errlen);     /* every name in it: the owner's alone */
 }
 
 /* ---- the end of the run ------------------------------------------------------------ */

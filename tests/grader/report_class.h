@@ -63,10 +63,4 @@ typedef int (*ClassLoadTests)(TestList *list, const GradeConfig *cfg, const bool
  * file was not written; the grades never depend on it. */
 int class_finish(ClassRun *run, const GradeConfig *cfg, ClassLoadTests load_tests);
 
-/* Opens path's temporary file, private to its owner (mode 0600), for
- * writing; tmp (n bytes) receives its name.  class_private_close closes it
- * and renames it to path; 0, or -1 with "path: reason" in err (report_class.c). */
-FILE *class_private_open(const char *path, char *tmp, size_t n);
-int class_private_close(FILE *f, const char *tmp, const char *path, char *err, size_t errlen);
-
 #endif

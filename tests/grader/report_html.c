@@ -12,7 +12,7 @@
  *
  * The renders are PNG data: URIs and the figures inline SVG, so the file
  * can be moved or mailed alone.  It is written to a temporary file and
- * renamed into place (kit_save_file).
+ * renamed into place (report_page_end).
  */
 #define _POSIX_C_SOURCE 200809L
 #define _DARWIN_C_SOURCE        /* macOS: the rest too (mkdtemp, _SC_NPROCESSORS_ONLN...) */
@@ -84,14 +84,17 @@ void report_page_begin(Markup *m, const char *title, const char *name, const cha
     mk_printf(m, "</title>\n<style>\n%s%s</style>\n</head>\n<body>\n", report_style, style);
 }
 
-int report_page_end(Markup *m, const char *footer, const char *path, char *err, size_t errlen)
+int report_page_end(Markup *m, const char *footer, const char *path, unsigned mode, char *err,
+                    size_t errlen)
 {
     mk_printf(m, "<footer>%s</footer>\n</body>\n</html>\n", footer);
+    int status = -1;
     if (mk_ok(m))
-        return 0;
-    snprintf(err, errlen, "%s: out of memory", path);
+        status = kit_save_file_mode(path, m->b.data, m->b.len, mode, err, errlen);
+    else
+        snprintf(err, errlen, "%s: out of memory", path);
     mk_free(m);
-    return -1;
+    return status;
 }
 
 /* How many of a part's graded tests failed, and how many there are. */
@@ -500,12 +503,8 @@ int report_html(const char *path, const Grade *g, const GradeConfig *cfg, const 
         renders(&m, rr);
     failures(&m, g, cfg->hard_is_bonus);
     passed(&m, g);
-    if (report_page_end(&m, "Written by the kit's grader (tests/grader). The pictures are drawn from the "
-                            "numbers of each test: the expected answers, computed independently, and your "
-                            "code's answers.", path, err, errlen) != 0)
-        return -1;
     make_parents(path);
-    int status = kit_save_file(path, m.b.data, m.b.len, err, errlen);
-    mk_free(&m);
-    return status;
+    return report_page_end(&m, "Written by the kit's grader (tests/grader). The pictures are drawn from the "
+                               "numbers of each test: the expected answers, computed independently, and "
+                               "your code's answers.", path, 0666, err, errlen);
 }

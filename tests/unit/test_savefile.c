@@ -1,7 +1,8 @@
 /*
  * Whole files written and read back (labs/kit/savefile.c): kit_save_file
- * leaves the bytes or nothing, kit_load_file gives back any bytes, NULs
- * included, and refuses what is not a regular file of at most max bytes.
+ * leaves the bytes or nothing, with the mode asked for, kit_load_file gives
+ * back any bytes, NULs included, and refuses what is not a regular file of
+ * at most max bytes.
  */
 #include "check.h"            /* first: it sets the POSIX feature level */
 #include <sys/stat.h>
@@ -69,8 +70,24 @@ static void test_save_fails_cleanly(void)
     CHECK(check_remove_tree(dir) == 0);
 }
 
+/* A file gets the mode asked for, less the umask: 0666 unless told. */
+static void test_mode(void)
+{
+    check_temp_dir(dir, sizeof dir, "savefile");
+    char path[128], err[200];
+    snprintf(path, sizeof path, "%s/file", dir);
+    CHECK_EQ_INT(kit_save_file(path, "x", 1, err, sizeof err), 0);
+    CHECK(check_file_is(path, "x", 1, -1));
+    mode_t mask = umask(022);
+    CHECK_EQ_INT(kit_save_file_mode(path, "y", 1, 0640, err, sizeof err), 0);
+    umask(mask);
+    CHECK(check_file_is(path, "y", 1, 0640));
+    CHECK(check_remove_tree(dir) == 0);
+}
+
 static const CheckTest tests[] = {
     CHECK_TEST(test_round_trip), CHECK_TEST(test_refused), CHECK_TEST(test_save_fails_cleanly),
+    CHECK_TEST(test_mode),
 };
 
 int main(int argc, char **argv)
