@@ -104,9 +104,7 @@ int report_json(const char *path, const Grade *g, char *err, size_t errlen)
             test_entry(&j, &g->tests->tests[k], &g->results[k]);
     json_end_array(&j);
     json_end_object(&j);
-    int status = json_write_file(&j, path, err, errlen);
-    json_free(&j);
-    return status;
+    return json_write_file(&j, path, err, errlen);
 }
 
 int report_json_error(const char *path, const char *message, char *err, size_t errlen)
@@ -125,7 +123,5 @@ int report_json_error_end(JsonWriter *j, const char *path, const char *message, 
     json_begin_array(j);
     json_end_array(j);
     json_end_object(j);
-    int status = json_write_file(j, path, err, errlen);
-    json_free(j);
-    return status;
+    return json_write_file(j, path, err, errlen);
 }

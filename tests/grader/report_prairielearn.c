@@ -149,9 +149,7 @@ int report_prairielearn(const char *path, const Grade *g, char *err, size_t errl
         json_init(&j, 2);
         write_results(&j, g, OUTPUT_MAX / 4);
     }
-    int status = json_write_file(&j, path, err, errlen);
-    json_free(&j);
-    return status;
+    return json_write_file(&j, path, err, errlen);
 }
 
 int report_prairielearn_error(const char *path, const char *message, char *err, size_t errlen)

@@ -295,20 +295,24 @@ const char *json_text(JsonWriter *w, size_t *len)
 
 /* The text and a newline into a temporary file beside path (created by
  * mkstemp, then given the mode a new file would get), closed, then renamed
- * over path.  Returns 0, or -1 with "path: reason" in err. */
+ * over path; w freed.  Returns 0, or -1 with "path: reason" in err. */
 int json_write_file(JsonWriter *w, const char *path, char *err, size_t errlen)
 {
     size_t len;
     const char *text = json_text(w, &len);
-    if (!text)
-        return kit_fail(err, errlen, "%s: cannot write JSON: %s", path,
-                        w->error ? w->error : "the document is not finished");
-    char *copy = malloc(len + 1);
-    if (!copy)
-        return kit_fail(err, errlen, "%s: out of memory", path);
-    memcpy(copy, text, len);
-    copy[len] = '\n';
-    int status = kit_save_file(path, copy, len + 1, err, errlen);
+    char *copy = text ? malloc(len + 1) : NULL;
+    int status = -1;
+    if (copy) {
+        memcpy(copy, text, len);
+        copy[len] = '\n';
+        status = kit_save_file(path, copy, len + 1, err, errlen);
+    } else if (text) {
+        snprintf(err, errlen, "%s: out of memory", path);
+    } else {
+        snprintf(err, errlen, "%s: cannot write JSON: %s", path,
+                 w->error ? w->error : "the document is not finished");
+    }
     free(copy);
+    json_free(w);
     return status;
 }

@@ -8,7 +8,6 @@
  *     json_key(&w, "tests");  json_begin_array(&w); ... json_end_array(&w);
  *     json_end_object(&w);
  *     if (json_write_file(&w, "results.json", err, sizeof err) != 0) ...
- *     json_free(&w);
  *
  * The writer places the commas and colons itself.  Strings may hold any
  * bytes (such as the output of untrusted programs): quotes, backslashes and
@@ -78,8 +77,8 @@ const char *json_error(const JsonWriter *w);
 const char *json_text(JsonWriter *w, size_t *len);
 
 /* Writes the finished document and a newline to path, through a temporary
- * file in the same directory renamed over path.  Returns 0, or -1 with
- * "path: reason" in err (and no temporary file left behind). */
+ * file in the same directory renamed over path, and frees w.  Returns 0, or
+ * -1 with "path: reason" in err (and no temporary file left behind). */
 int json_write_file(JsonWriter *w, const char *path, char *err, size_t errlen);
 
 #endif

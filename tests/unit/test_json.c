@@ -406,20 +406,22 @@ static void test_write_file(void)
     json_init(&w, 0);
     run(&w, "{ kscore i3 }");
     CHECK_MSG(json_write_file(&w, path, err, sizeof err) == 0, "%s", err);
+    json_init(&w, 0);                           /* json_write_file freed it */
+    run(&w, "{ kscore i3 }");
     CHECK_MSG(json_write_file(&w, path, err, sizeof err) == 0, "%s", err);   /* replaces it */
     CHECK(check_file_is(path, "{\"score\":3}\n", 12, -1));
     /* failures: a missing directory, an unfinished document */
     char bad[800];
     snprintf(bad, sizeof bad, "%s/missing/results.json", dir);
+    json_init(&w, 0);
+    run(&w, "{ kscore i3 }");
     CHECK_EQ_INT(json_write_file(&w, bad, err, sizeof err), -1);
     CHECK_STR_CONTAINS(err, bad);
-    json_free(&w);
     json_init(&w, 0);
     json_begin_object(&w);
     snprintf(bad, sizeof bad, "%s/unfinished.json", dir);
     CHECK_EQ_INT(json_write_file(&w, bad, err, sizeof err), -1);
     CHECK_STR_CONTAINS(err, bad);
-    json_free(&w);
     CHECK_EQ_INT(check_count_entries(dir), 1);        /* nothing but results.json is left */
     check_remove_tree(dir);
 }
