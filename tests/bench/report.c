@@ -46,8 +46,10 @@ static char *pool(void)
 /* v as text: "0", or in format large from limit up, else in small. */
 static const char *num(double v, double limit, const char *small, const char *large)
 {
+    if (v == 0)
+        return "0";
     char *b = pool();
-    snprintf(b, METHOD_LABEL, v == 0 ? "0" : v >= limit ? large : small, v);
+    snprintf(b, METHOD_LABEL, v >= limit ? large : small, v);
     return b;
 }
 
