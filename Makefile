@@ -76,7 +76,7 @@ $(OUT_ROOT)/%.a:
 	$(Q)rm -f $@ && $(KIT_AR) rcs $@ $^
 
 all: $(BUILD)/kit/libkit.a $(BUILD)/bin/compare $(BUILD)/sub/labs/render \
-     $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render) grader unit-tests
+     $(if $(HAVE_SOLUTIONS),$(BUILD)/sub/solutions/render) grader
 # The student kit (no solutions/) lists only what runs there.
 help:
 	@echo "make render  [SUBMISSION=dir] [SCENE=file] [SIZE=WxH] [OUT=file]"
@@ -391,7 +391,7 @@ selftests:
 	@test -f tests/selftest/mistakes || { echo "make selftests: only the instructor's kit has the self-tests (tests/selftest)"; exit 2; }
 	sh tests/lib/selftests.sh out/selftest
 # What the tests need built (`make -j2 test-build` builds it on two cores).
-test-build: all $(BUILD)/bin/pack $(UNIT_NAMES:%=$(ASAN)/tests/%) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)
+test-build: all unit-tests $(BUILD)/bin/pack $(UNIT_NAMES:%=$(ASAN)/tests/%) $(if $(HAVE_SOLUTIONS),$(ASAN)/bin/render-solutions)
 test: test-build
 	@sh tests/run.sh
 clean:

@@ -263,7 +263,7 @@ else
     root=out/port/$name
     echo "   second compiler: $other ($($other --version 2>/dev/null | head -n 1)), building into $root"
     mkdir -p "$root"
-    ${MAKE:-make} -j2 OUT_ROOT="$root" CC="$other" STD="-std=c11 -Werror" all "$root/build/bin/gentests" \
+    ${MAKE:-make} -j2 OUT_ROOT="$root" CC="$other" STD="-std=c11 -Werror" all unit-tests "$root/build/bin/gentests" \
         >"$tmp/other.log" 2>&1
     status=$?
     check "make all with $other -std=c11 -pedantic -Werror (exit $status): $(grep -E 'error:|warning:' "$tmp/other.log" | head -n 5 | tr '\n' ' ')" \
