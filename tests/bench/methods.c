@@ -56,9 +56,8 @@ Rayf rayf_from(const Ray *r)
 #define NAME(x) x##_f
 #include "methods_body.h"
 
-/* Which test of the reference decides a (sphere, ray) pair: the first
- * lines of solutions/part3a_sphere_intersect.c, the same arithmetic, in
- * double.  REF_STAGE_NX, _NXY and _NN: the partial sum of |f x r|^2 after
+/* Which test of the reference decides a (sphere, ray) pair: stage_d, the
+ * first lines of isect_reference_d (solutions/part3a_sphere_intersect.c).  REF_STAGE_NX, _NXY and _NN: the partial sum of |f x r|^2 after
  * one, two and three terms exceeded T (a miss); REF_STAGE_ROOTS: the line
  * meets the sphere and A R^2 is in range, so the reference goes on to the
  * roots; REF_STAGE_CAREFUL: A R^2 out of range (or NaN), the careful
@@ -66,20 +65,7 @@ Rayf rayf_from(const Ray *r)
 int reference_stage(const Sphere *sphere, const Ray *ray)
 {
     Vec3 r = ray->direction;
-    Vec3 f = vec3_sub(ray->origin, sphere->center);
-    double R2 = sphere->radius * sphere->radius;
-    double A = vec3_dot(r, r);
-    double AR2 = A * R2;
-    Vec3 n = vec3_cross(f, r);
-    double T = AR2 + 2 * DBL_MIN;
-    double nn = n.x * n.x;
-    if (nn > T)
-        return REF_STAGE_NX;
-    nn += n.y * n.y;
-    if (nn > T)
-        return REF_STAGE_NXY;
-    nn += n.z * n.z;
-    if (nn > T)
-        return REF_STAGE_NN;
-    return AR2 > 0x1p-900 && AR2 < 0x1p+900 ? REF_STAGE_ROOTS : REF_STAGE_CAREFUL;
+    Vec3 f = sub_d(ray->origin, sphere->center);
+    double nn;
+    return stage_d(f, r, dot_d(r, r) * (sphere->radius * sphere->radius), &nn);
 }

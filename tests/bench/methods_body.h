@@ -133,14 +133,33 @@ bool NAME(isect_rtg)(const SPHERE *sphere, const RAY *ray, REAL *t)
     return true;
 }
 
+/* The reference's miss test on f = e - c and r, with AR2 = A R^2: adds the
+ * terms of |f x r|^2 one at a time and stops at the first partial sum above
+ * T.  Returns the stage that decides (REF_STAGE_NX, _NXY, _NN: a miss;
+ * REF_STAGE_ROOTS or _CAREFUL: the reference goes on), with *nn the sum. */
+static inline int NAME(stage)(VEC f, VEC r, REAL AR2, REAL *nn)
+{
+    VEC n = { f.y * r.z - f.z * r.y, f.z * r.x - f.x * r.z, f.x * r.y - f.y * r.x };
+    REAL T = AR2 + 2 * TINY;
+    *nn = n.x * n.x;
+    if (*nn > T)
+        return REF_STAGE_NX;
+    *nn += n.y * n.y;
+    if (*nn > T)
+        return REF_STAGE_NXY;
+    *nn += n.z * n.z;
+    if (*nn > T)
+        return REF_STAGE_NN;
+    return AR2 > SAFE_LO && AR2 < SAFE_HI ? REF_STAGE_ROOTS : REF_STAGE_CAREFUL;
+}
+
 /* solutions/part3a_sphere_intersect.c, line by line in REAL.  Compiled as
  * double it must agree bit for bit with the linked sphere_intersect (the
  * benchmark checks, so this copy cannot silently go stale); the float
  * version is the benchmark's "reference, float".  SAFE_LO and SAFE_HI are
  * the reference's 2^-900 and 2^900: where A R^2 and |f x r|^2 are formed
  * without overflow or underflow (2^-100 and 2^100 in float).  The miss
- * test adds the terms of |f x r|^2 one at a time and stops at the first
- * partial sum above T (see the reference). */
+ * test is NAME(stage) (see the reference). */
 bool NAME(isect_reference)(const SPHERE *sphere, const RAY *ray, REAL *t)
 {
     VEC r = ray->direction;
@@ -148,20 +167,13 @@ bool NAME(isect_reference)(const SPHERE *sphere, const RAY *ray, REAL *t)
     REAL R2 = sphere->radius * sphere->radius;
     REAL A = NAME(dot)(r, r);
     REAL AR2 = A * R2;
-    VEC n = { f.y * r.z - f.z * r.y, f.z * r.x - f.x * r.z, f.x * r.y - f.y * r.x };
-    REAL T = AR2 + 2 * TINY;
-    REAL nn = n.x * n.x;
-    if (nn > T)
-        return false;
-    nn += n.y * n.y;
-    if (nn > T)
-        return false;
-    nn += n.z * n.z;
-    if (nn > T)
+    REAL nn;
+    int stage = NAME(stage)(f, r, AR2, &nn);
+    if (stage <= REF_STAGE_NN)
         return false;
 
     REAL sq;
-    if (AR2 > SAFE_LO && AR2 < SAFE_HI) {
+    if (stage == REF_STAGE_ROOTS) {
         sq = SQRT(AR2 - nn);
     } else {
         if (nn - AR2 > TINY)
