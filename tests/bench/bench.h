@@ -44,6 +44,11 @@ bool isect_reference_f(const Spheref *sphere, const Rayf *ray, float *t);
 /* The same transliteration compiled as double: the benchmark checks that it
  * agrees with the linked sphere_intersect (which it times as "reference"). */
 bool isect_reference_d(const Sphere *sphere, const Ray *ray, double *t);
+/* The closest-hit loop over spheres with one of the above (methods_body.h). */
+void closest_d(IsectD fn, const Sphere *spheres, int n, const Ray *rays, int nrays, int *idx,
+               double *t);
+void closest_f(IsectF fn, const Spheref *spheres, int n, const Rayf *rays, int nrays, int *idx,
+               double *t);
 /* Which of the reference's tests decides a pair (methods.c): its miss test
  * sums |f x r|^2 a term at a time and stops after one, two or three terms;
  * the rest go on to the roots, or to the careful branch. */

@@ -199,6 +199,27 @@ bool NAME(isect_reference)(const SPHERE *sphere, const RAY *ray, REAL *t)
     return true;
 }
 
+/* The closest-hit loop (suite.c's method_closest): for each of the nrays
+ * rays, the index of the nearest of the n spheres that fn hits (-1: none)
+ * and its t (infinity: none), in REAL and stored as double. */
+void NAME(closest)(bool (*fn)(const SPHERE *, const RAY *, REAL *), const SPHERE *spheres, int n,
+                   const RAY *rays, int nrays, int *idx, double *t)
+{
+    for (int i = 0; i < nrays; i++) {
+        REAL tmin = INFINITY;
+        int best = -1;
+        for (int k = 0; k < n; k++) {
+            REAL tk;
+            if (fn(&spheres[k], &rays[i], &tk) && tk < tmin) {
+                tmin = tk;
+                best = k;
+            }
+        }
+        idx[i] = best;
+        t[i] = tmin;
+    }
+}
+
 /* Moller-Trumbore (1997), the skeleton's formula: det = 0 a miss, one
  * division. */
 bool NAME(tri_moller_trumbore)(const TRI *tri, const RAY *ray, REAL *t)

@@ -31,46 +31,12 @@ char *method_cells(char *buf, const char *name, Precision p, const char *sep)
 
 /* ---- the closest-hit loops ------------------------------------------------ */
 
-static void closest_scalar_d(IsectD fn, const BenchScene *sc, const RaySet *rs, int *idx, double *t)
-{
-    for (int i = 0; i < rs->n; i++) {
-        double tmin = INFINITY;
-        int best = -1;
-        for (int k = 0; k < sc->n; k++) {
-            double tk;
-            if (fn(&sc->spheres[k], &rs->rays[i], &tk) && tk < tmin) {
-                tmin = tk;
-                best = k;
-            }
-        }
-        idx[i] = best;
-        t[i] = tmin;
-    }
-}
-
-static void closest_scalar_f(IsectF fn, const BenchScene *sc, const RaySet *rs, int *idx, double *t)
-{
-    for (int i = 0; i < rs->n; i++) {
-        float tmin = INFINITY;
-        int best = -1;
-        for (int k = 0; k < sc->n; k++) {
-            float tk;
-            if (fn(&sc->spheresf[k], &rs->raysf[i], &tk) && tk < tmin) {
-                tmin = tk;
-                best = k;
-            }
-        }
-        idx[i] = best;
-        t[i] = tmin;
-    }
-}
-
 void method_closest(const Method *m, const BenchScene *sc, const RaySet *rs, int *idx, double *t)
 {
     if (m->scalar_d)
-        closest_scalar_d(m->scalar_d, sc, rs, idx, t);
+        closest_d(m->scalar_d, sc->spheres, sc->n, rs->rays, rs->n, idx, t);
     else if (m->scalar_f)
-        closest_scalar_f(m->scalar_f, sc, rs, idx, t);
+        closest_f(m->scalar_f, sc->spheresf, sc->n, rs->raysf, rs->n, idx, t);
     else if (m->precision == PREC_DOUBLE)
         fast_closest_d(sc->fast, rs->dx, rs->dy, rs->dz, rs->n, idx, t);
     else if (m->precision == PREC_FLOAT)
