@@ -43,11 +43,8 @@ void rayset_free(RaySet *rs)
     free(rs->raysf);
     free(rs->dx);
     free(rs->fdx);
-    rs->rays = NULL;
-    rs->raysf = NULL;
-    rs->dx = NULL;
-    rs->fdx = NULL;
-    rs->n = 0;
+    RaySet empty = { 0 };
+    *rs = empty;
 }
 
 void rayset_put(RaySet *rs, int i, Ray ray, unsigned layouts)
