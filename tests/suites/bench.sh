@@ -35,6 +35,15 @@ for f in "$csv" "$svg" "$md" "$dir/results_by_family.csv" "$dir/renders.csv"; do
     check "$f was written" test -s "$f"
 done
 
+# renders.csv: the reference in double draws every scene as the exact
+# render does, pixel for pixel (the closest-hit loop that every scalar
+# method's render goes through is checked here).
+check "renders.csv: the reference in double differs from the exact render in no pixel, on every scene" \
+    awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+             $col["method"] == "reference" && $col["precision"] == "double" {
+                 n++; if ($col["differ_pixels"] != 0) bad = 1 }
+             END { exit bad || n < 5 }' "$dir/renders.csv"
+
 # results.csv: header, one row per method, the same number of fields in
 # every row, numbers where numbers belong.
 if [ -s "$csv" ]; then
