@@ -23,20 +23,36 @@ static int split(const char *text, size_t len, int ntests, const char **from, si
     return batch_split(*buf, len, ntests, from, size);
 }
 
+/* Answers cut into ntests pieces, each ending in its "end " line, found
+ * where they are.  NUL bytes are answers like any others (the split is by
+ * length, not by C string), and an "end " line must start a line.  The
+ * same answers cut short, mid-line: refused, and nothing read past. */
 static void test_pieces(void)
 {
-    const char text[] = "0x1p+0 0x0p+0\nend 1\n\nend 0\n0x1p+1\n0x1p+2\nend 2\n";
-    const char *from[3];
-    size_t size[3];
-    char *buf;
-    CHECK_EQ_INT(split(text, sizeof text - 1, 3, from, size, &buf), 3);
-    CHECK_EQ_INT((int)(from[0] - buf), 0);
-    CHECK_EQ_INT((int)size[0], 20);
-    CHECK_EQ_INT((int)(from[1] - buf), 20);
-    CHECK_EQ_INT((int)size[1], 7);
-    CHECK_EQ_INT((int)(from[2] - buf), 27);
-    CHECK_EQ_INT((int)size[2], (int)(sizeof text - 1) - 27);
-    free(buf);
+    static const struct {
+        const char *text;
+        int ntests;
+        size_t size[3];
+    } good[] = {
+        { "0x1p+0 0x0p+0\nend 1\n" "\nend 0\n" "0x1p+1\n0x1p+2\nend 2\n", 3, { 20, 7, 20 } },
+        { "a\0b end 9\nend 1\n" "\0\nend 1\n", 2, { 16, 8 } },
+    };
+    for (int k = 0; k < CHECK_COUNT(good); k++) {
+        size_t len = 0;
+        for (int p = 0; p < good[k].ntests; p++)
+            len += good[k].size[p];
+        const char *from[3];
+        size_t size[3];
+        char *buf;
+        CHECK_EQ_INT(split(good[k].text, len, good[k].ntests, from, size, &buf), good[k].ntests);
+        for (int p = 0, at = 0; p < good[k].ntests; at += (int)good[k].size[p++]) {
+            CHECK_EQ_INT((int)(from[p] - buf), at);
+            CHECK_EQ_INT((int)size[p], (int)good[k].size[p]);
+        }
+        free(buf);
+        CHECK_EQ_INT(split(good[k].text, 12, good[k].ntests, from, size, &buf), -1);
+        free(buf);
+    }
 }
 
 /* Anything but exactly ntests pieces, each ending in an "end " line, with
@@ -66,23 +82,6 @@ static void test_refused(void)
         CHECK_MSG(got == -1, "%s: %d, not -1", bad[k].why, got);
         free(buf);
     }
-}
-
-/* NUL bytes are answers like any others (the split is by length, not by
- * C string), and an "end " line must start a line. */
-static void test_bytes(void)
-{
-    const char text[] = "a\0b end 9\nend 1\n\0\nend 1\n";
-    const char *from[2];
-    size_t size[2];
-    char *buf;
-    CHECK_EQ_INT(split(text, sizeof text - 1, 2, from, size, &buf), 2);
-    CHECK_EQ_INT((int)size[0], 16);
-    CHECK_EQ_INT((int)size[1], (int)(sizeof text - 1) - 16);
-    free(buf);
-    /* The same answers cut short, mid-line: refused, and nothing read past. */
-    CHECK_EQ_INT(split(text, 12, 2, from, size, &buf), -1);
-    free(buf);
 }
 
 /* A triangle case whose answer is a hit at t = 4; with a hint of each
@@ -399,7 +398,6 @@ static void test_hit_not_ahead(void)
 static const CheckTest tests[] = {
     CHECK_TEST(test_pieces),
     CHECK_TEST(test_refused),
-    CHECK_TEST(test_bytes),
     CHECK_TEST(test_two_mistakes_fit),
     CHECK_TEST(test_one_mistake_fits),
     CHECK_TEST(test_core_tolerances),
