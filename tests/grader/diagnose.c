@@ -194,16 +194,20 @@ static void summary_line(char **text, int group, int named, bool after_core, int
                 "probes did not find.\n", these, explained, failing, kind[group]);
 }
 
+/* The answers of test k if it is of the part and ran, else NULL. */
+static const Answers *ran_in_part(int part, const TestList *tests, const TestResult *results, int k)
+{
+    return tests->tests[k].part == part && results[k].ran ? &results[k].answers : NULL;
+}
+
 static void write_diagnosis(Found *f, int part, const TestList *tests, const TestResult *results,
                             Explains explains, const void *ctx, char **text, char **hard_text, char **keys)
 {
     int failing[2] = { 0, 0 }, explained[2] = { 0, 0 };
     for (int k = 0; k < tests->n; k++) {
         const Test *t = &tests->tests[k];
-        const Answers *a = &results[k].answers;
-        if (t->part != part || !results[k].ran)
-            continue;
-        for (int c = 0; c < a->answered; c++) {
+        const Answers *a = ran_in_part(part, tests, results, k);
+        for (int c = 0; a && c < a->answered; c++) {
             if (a->ok[c])
                 continue;
             failing[t->hard]++;
@@ -1483,10 +1487,8 @@ static void flat_unwritten(int part, const TestList *tests, const TestResult *re
     int answered = 0, hits = 0;
     for (int k = 0; k < tests->n; k++) {
         const Test *t = &tests->tests[k];
-        const Answers *a = &results[k].answers;
-        if (t->part != part || !results[k].ran)
-            continue;
-        for (int c = 0; c < a->answered; c++) {
+        const Answers *a = ran_in_part(part, tests, results, k);
+        for (int c = 0; a && c < a->answered; c++) {
             if (a->got[c][0] != 0)
                 return;
             answered++;
@@ -1509,7 +1511,7 @@ void diagnose_part(int part, const TestList *tests, const TestResult *results, c
     *text = *hard_text = *keys = NULL;
     bool failed = false;
     for (int k = 0; k < tests->n; k++)
-        failed = failed || (tests->tests[k].part == part && results[k].ran && !results[k].passed);
+        failed = failed || (ran_in_part(part, tests, results, k) && !results[k].passed);
     if (!failed)
         return;
     if (part > PART3B) {
