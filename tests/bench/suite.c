@@ -86,18 +86,17 @@ bool method_one(const Method *m, const Sphere *sphere, const Ray *ray, double *t
 
 /* name, precision, assumes |r| = 1, the ray layouts it reads, the scalar
  * function (none: the fast path; mixed: its float filter, double solve);
- * in the order of their names in bench.h (TEXTBOOK_D ... FAST_M) */
+ * in the order of their names in bench.h (TEXTBOOK_D ... FAST_M).  A
+ * scalar method is two rows, its double and its float function. */
+#define SCALAR(name, unit, fn_d, fn_f)                          \
+    { name, PREC_DOUBLE, unit, LAYOUT_AOS_D, fn_d, NULL },      \
+    { name, PREC_FLOAT, unit, LAYOUT_AOS_F, NULL, fn_f }
 const Method bench_methods[] = {
-    { "textbook", PREC_DOUBLE, false, LAYOUT_AOS_D, isect_textbook_d, NULL },
-    { "textbook", PREC_FLOAT, false, LAYOUT_AOS_F, NULL, isect_textbook_f },
-    { "unit", PREC_DOUBLE, true, LAYOUT_AOS_D, isect_unit_d, NULL },
-    { "unit", PREC_FLOAT, true, LAYOUT_AOS_F, NULL, isect_unit_f },
-    { "geometric", PREC_DOUBLE, true, LAYOUT_AOS_D, isect_geometric_d, NULL },
-    { "geometric", PREC_FLOAT, true, LAYOUT_AOS_F, NULL, isect_geometric_f },
-    { "rtg", PREC_DOUBLE, false, LAYOUT_AOS_D, isect_rtg_d, NULL },
-    { "rtg", PREC_FLOAT, false, LAYOUT_AOS_F, NULL, isect_rtg_f },
-    { "reference", PREC_DOUBLE, false, LAYOUT_AOS_D, sphere_intersect, NULL },
-    { "reference", PREC_FLOAT, false, LAYOUT_AOS_F, NULL, isect_reference_f },
+    SCALAR("textbook", false, isect_textbook_d, isect_textbook_f),
+    SCALAR("unit", true, isect_unit_d, isect_unit_f),
+    SCALAR("geometric", true, isect_geometric_d, isect_geometric_f),
+    SCALAR("rtg", false, isect_rtg_d, isect_rtg_f),
+    SCALAR("reference", false, sphere_intersect, isect_reference_f),
     { "fast", PREC_DOUBLE, true, LAYOUT_SOA_D, NULL, NULL },
     { "fast", PREC_FLOAT, true, LAYOUT_SOA_F, NULL, NULL },
     { "fast", PREC_MIXED, true, LAYOUT_SOA_D | LAYOUT_SOA_F, NULL, NULL },
