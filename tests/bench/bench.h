@@ -451,21 +451,26 @@ typedef struct {
     int group;              /* 0 double, 1 float, 2 mixed: colour and marker   */
 } PlotPoint;
 
-/* A method's point, its group its precision, labelled by method_cells in
- * label (METHOD_LABEL bytes, to last until the plot is written). */
-PlotPoint method_point(char *label, const char *name, Precision p, double x, double y);
+/* A method in the speed-against-error plot: its throughput y, and its
+ * error x[k] in panel k. */
+typedef struct {
+    const char *name;
+    Precision precision;
+    double y, x[2];
+} MethodPoint;
 
 typedef struct {
-    const PlotPoint *pts;
-    int n;
     const char *title;      /* above the panel                                 */
-    const char *xlabel, *ylabel;
+    const char *xlabel;
 } PlotPanel;
 
-/* Writes the panels, one above the other, to dir/name.  Returns 0, or -1
- * with a reason in err. */
+/* Writes the speed-against-error plot of n methods to dir/name: two panels,
+ * one above the other, panel k with method i at (pts[i].x[k], pts[i].y),
+ * labelled by method_cells and coloured by its precision; both with ylabel.
+ * Returns 0, or -1 with a reason in err. */
 int svg_plot(const char *dir, const char *name, const char *title, const char *subtitle,
-             const PlotPanel *panels, int npanels, char *err, size_t errlen);
+             const MethodPoint *pts, int n, const PlotPanel panels[2], const char *ylabel,
+             char *err, size_t errlen);
 
 /* A line of points, drawn in the colour and marker of its points' group. */
 typedef struct {

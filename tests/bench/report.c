@@ -145,30 +145,23 @@ static const char *subtitle(const BenchResults *br, const char *fmt, ...)
 
 static int write_plot(const BenchResults *br, const char *dir, char *err, size_t errlen)
 {
-    static PlotPoint raw[BENCH_MAX_METHODS], norm[BENCH_MAX_METHODS];
-    static char labels[BENCH_MAX_METHODS][METHOD_LABEL];
-    for (int m = 0; m < bench_nmethods; m++) {
-        const Method *me = &bench_methods[m];
-        raw[m] = method_point(labels[m], me->name, me->precision, br->all[m].max_rel,
-                              br->mtests[m]);
-        norm[m] = raw[m];
-        norm[m].x = br->all[m].max_over_kappa;
-    }
-    PlotPanel panels[2] = {
-        { raw, bench_nmethods, "Worst relative error in t, over the scene and the hard families",
-          "max |t - t_exact| / t_exact (log scale; smaller is better)",
-          "million ray/sphere tests per second" },
-        { norm, bench_nmethods,
-          "The same error in units of what rounding the input alone can cause (u kappa)",
+    MethodPoint pts[BENCH_MAX_METHODS];
+    for (int m = 0; m < bench_nmethods; m++)
+        pts[m] = (MethodPoint){ bench_methods[m].name, bench_methods[m].precision, br->mtests[m],
+                                { br->all[m].max_rel, br->all[m].max_over_kappa } };
+    static const PlotPanel panels[2] = {
+        { "Worst relative error in t, over the scene and the hard families",
+          "max |t - t_exact| / t_exact (log scale; smaller is better)" },
+        { "The same error in units of what rounding the input alone can cause (u kappa)",
           "max |t - t_exact| / (u kappa t_exact), u = 2^-53 (log scale; about 1 is the best "
-          "possible)", "million ray/sphere tests per second" },
+          "possible)" },
     };
     const char *sub = subtitle(br, "-O2; throughput on default.scene (%d rays x %d spheres); "
                                    "errors on %d cases", br->tp_rays, br->tp_spheres,
                                br->family_cases[0] + br->family_cases[1] +
                                    br->family_cases[2] + br->family_cases[3]);
-    return svg_plot(dir, "plot.svg", "Ray/sphere intersection: speed against accuracy", sub,
-                    panels, 2, err, errlen);
+    return svg_plot(dir, "plot.svg", "Ray/sphere intersection: speed against accuracy", sub, pts,
+                    bench_nmethods, panels, "million ray/sphere tests per second", err, errlen);
 }
 
 /* ---- report.md ----------------------------------------------------------------------- */

@@ -27,12 +27,6 @@ static void pareto_front(const PlotPoint *pts, int n, bool *on)
     }
 }
 
-PlotPoint method_point(char *label, const char *name, Precision p, double x, double y)
-{
-    PlotPoint pt = { method_cells(label, name, p, " "), x, y, (int)p };
-    return pt;
-}
-
 /* ---- geometry ---------------------------------------------------------------- */
 
 enum { WIDTH = 980, HEADER = 96, PANEL_H = 560, LEFT = 90, RIGHT = 30, PANEL_TOP = 40,
@@ -252,13 +246,14 @@ static Box place_label(double px, double py, double w, const Axis *ax, const Axi
     return best;
 }
 
-static void draw_panel(FILE *f, const PlotPanel *p, double top)
+/* The n points (at most MAXP) of a panel, its texts p and ylabel. */
+static void draw_panel(FILE *f, const PlotPoint *pts, int n, const PlotPanel *p,
+                       const char *ylabel, double top)
 {
     double xs[MAXP], ys[MAXP];
-    int n = p->n < MAXP ? p->n : MAXP;
     for (int i = 0; i < n; i++) {
-        xs[i] = p->pts[i].x;
-        ys[i] = p->pts[i].y;
+        xs[i] = pts[i].x;
+        ys[i] = pts[i].y;
     }
     Axis ax = { 0, 0, LEFT, WIDTH - RIGHT };
     Axis ay = { 0, 0, top + PANEL_H - PANEL_BOTTOM, top + PANEL_TOP };
@@ -267,12 +262,12 @@ static void draw_panel(FILE *f, const PlotPanel *p, double top)
     fprintf(f, "<text x=\"%d\" y=\"%.1f\" font-size=\"15\" font-weight=\"bold\">", LEFT, top + 24);
     xml_text(f, p->title);
     fprintf(f, "</text>\n");
-    draw_axes(f, &ax, &ay, p->xlabel, p->ylabel);
+    draw_axes(f, &ax, &ay, p->xlabel, ylabel);
     fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" fill=\"#888\" font-style=\"italic\">"
                "better: up and to the left</text>\n", ax.p0 + 8, ay.p1 + 16);
 
     bool on[MAXP];
-    pareto_front(p->pts, n, on);
+    pareto_front(pts, n, on);
     double px[MAXP], py[MAXP];
     for (int i = 0; i < n; i++) {
         px[i] = axis_pos(&ax, xs[i] > X_FLOOR ? xs[i] : X_FLOOR);
@@ -289,10 +284,10 @@ static void draw_panel(FILE *f, const PlotPanel *p, double top)
         if (on[i])
             fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"10\" fill=\"none\" stroke=\"#555\"/>\n",
                     px[i], py[i]);
-        marker(f, p->pts[i].group, px[i], py[i]);
+        marker(f, pts[i].group, px[i], py[i]);
     }
     for (int i = 0; i < n; i++) {
-        double w = FONT_W * (double)strlen(p->pts[i].label), tx, ty;
+        double w = FONT_W * (double)strlen(pts[i].label), tx, ty;
         Box best = place_label(px[i], py[i], w, &ax, &ay, placed, nplaced, &tx, &ty);
         placed[nplaced++] = best;
         /* a label not beside its point gets a thin line to it */
@@ -301,10 +296,10 @@ static void draw_panel(FILE *f, const PlotPanel *p, double top)
         if (hypot(cx - px[i], cy - py[i]) > 16)
             fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\" "
                        "stroke-width=\"0.7\"/>\n", px[i], py[i], cx, cy,
-                    group_color[p->pts[i].group]);
+                    group_color[pts[i].group]);
         fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" fill=\"%s\">", tx, ty,
-                group_color[p->pts[i].group]);
-        xml_text(f, p->pts[i].label);
+                group_color[pts[i].group]);
+        xml_text(f, pts[i].label);
         fprintf(f, "</text>\n");
     }
 }
@@ -339,17 +334,24 @@ static int svg_end(FILE *f, const char *dir, const char *name, char *err, size_t
 }
 
 int svg_plot(const char *dir, const char *name, const char *title, const char *subtitle,
-             const PlotPanel *panels, int npanels, char *err, size_t errlen)
+             const MethodPoint *pts, int n, const PlotPanel panels[2], const char *ylabel,
+             char *err, size_t errlen)
 {
-    FILE *f = svg_begin(dir, name, HEADER + npanels * PANEL_H, title, subtitle, err, errlen);
+    FILE *f = svg_begin(dir, name, HEADER + 2 * PANEL_H, title, subtitle, err, errlen);
     if (!f)
         return -1;
-    /* legend, once, under the title: the groups that have points */
+    /* each panel's points, their group their precision; and the legend,
+     * once, under the title: the groups that have points */
+    char labels[MAXP][METHOD_LABEL];
+    PlotPoint pp[2][MAXP];
     bool present[3] = { false, false, false };
-    for (int k = 0; k < npanels; k++)
-        for (int i = 0; i < panels[k].n; i++)
-            if (panels[k].pts[i].group >= 0 && panels[k].pts[i].group < 3)
-                present[panels[k].pts[i].group] = true;
+    n = n < MAXP ? n : MAXP;
+    for (int i = 0; i < n; i++) {
+        const char *label = method_cells(labels[i], pts[i].name, pts[i].precision, " ");
+        for (int k = 0; k < 2; k++)
+            pp[k][i] = (PlotPoint){ label, pts[i].x[k], pts[i].y, (int)pts[i].precision };
+        present[pts[i].precision] = true;
+    }
     double lx = LEFT, ly = 76;
     for (int g = 0; g < 3; g++) {
         if (!present[g])
@@ -364,8 +366,8 @@ int svg_plot(const char *dir, const char *name, const char *title, const char *s
             lx + 13, ly - 4);
     fprintf(f, "<text x=\"%.1f\" y=\"%.1f\">Pareto front: nothing is both faster and more "
                "accurate</text>\n", lx + 34, ly);
-    for (int k = 0; k < npanels; k++)
-        draw_panel(f, &panels[k], HEADER + k * PANEL_H);
+    for (int k = 0; k < 2; k++)
+        draw_panel(f, pp[k], n, &panels[k], ylabel, HEADER + k * PANEL_H);
     return svg_end(f, dir, name, err, errlen);
 }
 

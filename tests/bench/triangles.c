@@ -393,26 +393,21 @@ int triangles_write(const TriResults *tr, const char *dir, const char *subtitle,
     if (out_write(dir, "results_triangles.csv", csv_triangles, tr, err, errlen) != 0)
         return -1;
     /* The plot: speed against cracks, and speed against the error of t. */
-    static PlotPoint cracks[TRI_MAX_METHODS], errs[TRI_MAX_METHODS];
-    static char labels[TRI_MAX_METHODS][METHOD_LABEL];
-    for (int m = 0; m < tri_nmethods; m++) {
-        const TriMethod *me = &tri_methods[m];
-        cracks[m] = method_point(labels[m], me->name, me->precision,
-                                 fmax(tri_cracks_per_million(tr, m), 0.01), tr->mtests[m]);
-        errs[m] = cracks[m];
-        errs[m].x = tr->hard[m].max_over_kappa;
-    }
-    PlotPanel panels[2] = {
-        { cracks, tri_nmethods, "Rays through closed meshes, aimed at shared edges and vertices",
-          "cracks per million rays (log scale; 0 is drawn at 0.01; smaller is better)",
-          "million ray/triangle tests per second" },
-        { errs, tri_nmethods, "Worst error of t on the hard families, in units of u kappa",
-          "max |t - t_exact| / (u kappa t_exact), u = 2^-53 (log scale; smaller is better)",
-          "million ray/triangle tests per second" },
+    MethodPoint pts[TRI_MAX_METHODS];
+    for (int m = 0; m < tri_nmethods; m++)
+        pts[m] = (MethodPoint){ tri_methods[m].name, tri_methods[m].precision, tr->mtests[m],
+                                { fmax(tri_cracks_per_million(tr, m), 0.01),
+                                  tr->hard[m].max_over_kappa } };
+    static const PlotPanel panels[2] = {
+        { "Rays through closed meshes, aimed at shared edges and vertices",
+          "cracks per million rays (log scale; 0 is drawn at 0.01; smaller is better)" },
+        { "Worst error of t on the hard families, in units of u kappa",
+          "max |t - t_exact| / (u kappa t_exact), u = 2^-53 (log scale; smaller is better)" },
     };
     return svg_plot(dir, "plot_triangles.svg",
                     "Ray/triangle intersection: speed against watertightness and accuracy",
-                    subtitle, panels, 2, err, errlen);
+                    subtitle, pts, tri_nmethods, panels, "million ray/triangle tests per second",
+                    err, errlen);
 }
 
 void triangles_md(FILE *f, const TriResults *tr)
