@@ -685,8 +685,10 @@ static void md_report(FILE *f, const void *data)
     md_renders(f, br);
     fprintf(f, "\n## The ceiling\n\n");
     md_ceiling(f, br);
-    triangles_md(f, &br->tri);
-    scaling_md(f, &br->scale);
+    if (br->tri.ran)
+        triangles_md(f, &br->tri);
+    if (br->scale.ran)
+        scaling_md(f, &br->scale);
     md_method(f, br);
 }
 

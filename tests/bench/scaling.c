@@ -246,8 +246,6 @@ int scaling_write(const ScaleResults *sr, const char *dir, const char *subtitle,
 
 void scaling_md(FILE *f, const ScaleResults *sr)
 {
-    if (!sr->ran)
-        return;
     fprintf(f, "\n## Part 5 at scale: rays per second against triangles\n\n");
     fprintf(f, "The renderer (render_scene, one thread) with the reference, on closed tubes "
                "around a trefoil knot (tests/tools/knot-mesh.sh) in knot.scene's view: with the "

@@ -412,8 +412,6 @@ int triangles_write(const TriResults *tr, const char *dir, const char *subtitle,
 
 void triangles_md(FILE *f, const TriResults *tr)
 {
-    if (!tr->ran)
-        return;
     fprintf(f, "\n## Part 5: ray/triangle\n\n");
     fprintf(f, "Throughput: every method's closest-hit loop over the camera rays of cracks.scene "
                "(%d rays x %d triangles, one thread). Errors: %ld ordinary cases (a triangle "
