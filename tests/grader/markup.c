@@ -72,21 +72,13 @@ void mk_text(Markup *m, const char *text)
     if (!text)
         return;
     const unsigned char *s = (const unsigned char *)text;
-    size_t n = strlen(text), k = 0;
-    while (k < n) {
-        size_t run = k;
-        while (run < n && s[run] < 0x80 && (s[run] >= 0x20 || s[run] == '\n' || s[run] == '\t')
-               && s[run] != 0x7F && !entity[s[run]])
-            run++;
-        mk_raw(m, text + k, run - k);
-        k = run;
-        if (k == n)
-            break;
+    size_t n = strlen(text);
+    for (size_t k = 0; k < n;) {
         unsigned char c = s[k];
         int len = c >= 0x80 ? utf8_sequence(s + k, n - k) : 1;
         if (c < 0x80 && entity[c])
             mk_raw(m, entity[c], strlen(entity[c]));
-        else if (len > 1)
+        else if (len > 1 || (c < 0x7F && (c >= 0x20 || c == '\n' || c == '\t')))
             mk_raw(m, text + k, (size_t)len);
         else
             mk_raw(m, "\xEF\xBF\xBD", 3);              /* U+FFFD */

@@ -138,34 +138,21 @@ static void json_put_string(JsonWriter *w, const unsigned char *s, size_t n)
 {
     static const char hex[] = "0123456789abcdef";
     json_put(w, "\"", 1);
-    size_t k = 0;
-    while (k < n && !w->error) {
-        size_t run = k;                     /* bytes that need no escaping */
-        while (run < n && s[run] >= 0x20 && s[run] < 0x80 && s[run] != '"' && s[run] != '\\')
-            run++;
-        json_put(w, s + k, run - k);
-        k = run;
-        if (k == n)
-            break;
+    for (size_t k = 0; k < n && !w->error;) {
         unsigned char c = s[k];
+        int len = c >= 0x80 ? utf8_sequence(s + k, n - k) : 1;
         if (c == '"' || c == '\\') {
             char esc[2] = {'\\', (char)c};
             json_put(w, esc, 2);
-            k++;
         } else if (c < 0x20) {
             char esc[6] = {'\\', 'u', '0', '0', hex[c >> 4], hex[c & 15]};
             json_put(w, esc, 6);
-            k++;
+        } else if (len > 0) {
+            json_put(w, s + k, (size_t)len);
         } else {
-            int len = utf8_sequence(s + k, n - k);
-            if (len > 0) {
-                json_put(w, s + k, (size_t)len);
-                k += (size_t)len;
-            } else {
-                json_put(w, "\xEF\xBF\xBD", 3);     /* U+FFFD */
-                k += (size_t)-len;
-            }
+            json_put(w, "\xEF\xBF\xBD", 3);     /* U+FFFD */
         }
+        k += (size_t)(len > 0 ? len : -len);
     }
     json_put(w, "\"", 1);
 }
