@@ -194,36 +194,38 @@ static bool ahead(double tt, double *t)
     return true;
 }
 
-static bool moller_trumbore(const Triangle *T, const Ray *R, double *t)
+/* Moller-Trumbore's sums, before the division by det: with e1 = b - a,
+ * e2 = c - a, s = e - a, q = d x e2 and x = s x e1, det = e1.q, u = s.q,
+ * v = d.x and t = e2.x. */
+typedef struct { double det, u, v, t; } MtSums;
+
+static MtSums mt_sums(const Triangle *T, const Ray *R)
 {
     Vec3 e1 = vec3_sub(T->b, T->a), e2 = vec3_sub(T->c, T->a), s = vec3_sub(R->origin, T->a);
-    Vec3 q = vec3_cross(R->direction, e2);
-    double det = vec3_dot(e1, q);
-    if (det == 0)
+    Vec3 q = vec3_cross(R->direction, e2), x = vec3_cross(s, e1);
+    return (MtSums){ vec3_dot(e1, q), vec3_dot(s, q), vec3_dot(R->direction, x), vec3_dot(e2, x) };
+}
+
+static bool moller_trumbore(const Triangle *T, const Ray *R, double *t)
+{
+    MtSums m = mt_sums(T, R);
+    if (m.det == 0)
         return false;
-    double inv = 1 / det, u = vec3_dot(s, q) * inv;
-    if (u < 0 || u > 1)
+    double inv = 1 / m.det, u = m.u * inv, v = m.v * inv;
+    if (u < 0 || u > 1 || v < 0 || u + v > 1)
         return false;
-    Vec3 sx = vec3_cross(s, e1);
-    double v = vec3_dot(R->direction, sx) * inv;
-    if (v < 0 || u + v > 1)
-        return false;
-    return ahead(vec3_dot(e2, sx) * inv, t);
+    return ahead(m.t * inv, t);
 }
 
 /* Moller-Trumbore without the division until t (comparisons with det). */
 static bool mt_no_division(const Triangle *T, const Ray *R, double *t)
 {
-    Vec3 e1 = vec3_sub(T->b, T->a), e2 = vec3_sub(T->c, T->a), s = vec3_sub(R->origin, T->a);
-    Vec3 q = vec3_cross(R->direction, e2);
-    double det = vec3_dot(e1, q);
-    if (det == 0)
+    MtSums m = mt_sums(T, R);
+    if (m.det == 0)
         return false;
-    Vec3 sx = vec3_cross(s, e1);
-    double u = vec3_dot(s, q), v = vec3_dot(R->direction, sx);
-    if (det > 0 ? (u < 0 || v < 0 || u + v > det) : (u > 0 || v > 0 || u + v < det))
+    if (m.det > 0 ? (m.u < 0 || m.v < 0 || m.u + m.v > m.det) : (m.u > 0 || m.v > 0 || m.u + m.v < m.det))
         return false;
-    return ahead(vec3_dot(e2, sx) / det, t);
+    return ahead(m.t / m.det, t);
 }
 
 /* Shirley's textbook: [a - b, a - c, r] [beta gamma t]^T = a - e by Cramer's rule. */
@@ -290,8 +292,7 @@ static bool mt_float(const Triangle *T, const Ray *R, double *t)
 /* Moller-Trumbore with an absolute epsilon on det: must miss small triangles. */
 static bool mt_epsilon(const Triangle *T, const Ray *R, double *t)
 {
-    Vec3 e1 = vec3_sub(T->b, T->a), e2 = vec3_sub(T->c, T->a);
-    if (fabs(vec3_dot(e1, vec3_cross(R->direction, e2))) < 1e-8)
+    if (fabs(mt_sums(T, R).det) < 1e-8)
         return false;
     return moller_trumbore(T, R, t);
 }
@@ -382,15 +383,13 @@ static bool sides_right(uint64_t seed, const char *family, int f, int front_bad,
  * (p5-no-sum-check): right but for a point beyond edge bc. */
 static bool mt_no_sum_check(const Triangle *T, const Ray *R, double *t)
 {
-    Vec3 e1 = vec3_sub(T->b, T->a), e2 = vec3_sub(T->c, T->a), q = vec3_cross(R->direction, e2);
-    double det = vec3_dot(e1, q);
-    if (det == 0)
+    MtSums m = mt_sums(T, R);
+    if (m.det == 0)
         return false;
-    Vec3 sv = vec3_sub(R->origin, T->a), r = vec3_cross(sv, e1);
-    double beta = vec3_dot(sv, q) / det, gamma = vec3_dot(R->direction, r) / det, tt = vec3_dot(e2, r) / det;
+    double beta = m.u / m.det, gamma = m.v / m.det;
     if (beta < 0 || beta > 1 || gamma < 0)
         return false;
-    return ahead(tt, t);
+    return ahead(m.t / m.det, t);
 }
 
 /* The hidden tests hold one round of hard cases: whatever the seed, a
