@@ -6,6 +6,10 @@
 #   fail WHAT                counts one that failed and says so: "FAIL: WHAT"
 #   check WHAT COMMAND...    pass if COMMAND succeeds, else fail WHAT (and
 #                            return 1: `check ... || continue`)
+#   check_has WHAT FILE PATTERN...
+#                            pass if FILE has a line that matches each
+#                            PATTERN (grep's), else fail WHAT, naming the
+#                            first PATTERN that none matches
 #   check_output WHAT COMMAND...
 #                            check WHAT COMMAND, its output kept in
 #                            $tmp/output and, when it fails, its first 20
@@ -33,6 +37,14 @@ failed=0
 pass() { passed=$((passed + 1)); }
 fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
 check() { what=$1; shift; if "$@"; then pass; else fail "$what"; return 1; fi; }
+check_has() {
+    _what=$1 _file=$2
+    shift 2
+    for _pattern in "$@"; do
+        grep -q -e "$_pattern" "$_file" || { fail "$_what (no line matches '$_pattern')"; return 1; }
+    done
+    pass
+}
 check_output() {
     _what=$1
     shift

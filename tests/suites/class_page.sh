@@ -89,15 +89,13 @@ for c in one allfull; do
         awk '/<table/ { rows = 0 } /<tr>|<tr / { rows++ } /<\/table>/ && rows < 2 { bad = 1 } END { exit bad }' \
         "$tmp/$c-out/index.html"
 done
-check "a class of one: the page says 1 submission, its cause and its test" \
-    sh -c "grep -q '<strong>1 submission</strong> graded (Part 1)' '$tmp/one-out/index.html' &&
-           grep -q 'data-cause=\"degrees-as-radians\" data-count=\"1\"' '$tmp/one-out/index.html' &&
-           grep -q 'Passed by <strong>0 of 1</strong>' '$tmp/one-out/index.html'"
-check "a class with no points lost: the page says there is nothing to diagnose, no test failed, no one needs a person" \
-    sh -c "grep -q 'No submission lost points' '$tmp/allfull-out/index.html' &&
-           grep -q 'None: every submission whose files built passed every test' '$tmp/allfull-out/index.html' &&
-           grep -q 'None: every submission.s files were there and built' '$tmp/allfull-out/index.html' &&
-           [ \$(wc -l <'$tmp/allfull-out/causes.csv') -eq 1 ]"
+check_has "a class of one: the page says 1 submission, its cause and its test" "$tmp/one-out/index.html" \
+    '<strong>1 submission</strong> graded (Part 1)' 'data-cause="degrees-as-radians" data-count="1"' \
+    'Passed by <strong>0 of 1</strong>'
+check_has "a class with no points lost: the page says there is nothing to diagnose, no test failed, no one needs a person" \
+    "$tmp/allfull-out/index.html" 'No submission lost points' \
+    'None: every submission whose files built passed every test' 'None: every submission.s files were there and built'
+check "... and causes.csv has its header alone" [ "$(wc -l <"$tmp/allfull-out/causes.csv")" -eq 1 ]
 
 # A cause of the hard cases alone is worded as the students read it, as
 # the others are: on the page, as the most common cause, in causes.csv.

@@ -79,8 +79,7 @@ status=$?
 check "the reference scores full marks on every part (exit $status)" [ "$status" -eq 0 ]
 check "the reference's summary, every part" \
     grep -q "^summary $max1 $max2 $max3a $max3b $max4 $max5 " "$tmp/ref-all.out"
-check "Parts 4 and 5 in results.json when turned on" \
-    sh -c "grep -q '\"Part 4: ' '$tmp/ref-all.json' && grep -q '\"Part 5: ' '$tmp/ref-all.json'"
+check_has "Parts 4 and 5 in results.json when turned on" "$tmp/ref-all.json" '"Part 4: ' '"Part 5: '
 # A name is how a student, Gradescope and the report page tell tests apart.
 grep '"name": ' "$tmp/ref-all.json" | sort | uniq -d >"$tmp/same-names"
 check "no two tests share a name, every part, public and hidden: $(tr -s ' \n' ' ' <"$tmp/same-names")" \
@@ -547,10 +546,9 @@ check "the gradebook has a row for each of the 8 submissions and no more" \
     [ "$(wc -l <"$tmp/grades-names/gradebook.csv")" -eq 9 ]
 check "the results files keep the names as they are" \
     sh -c "[ -f '$tmp/grades-names/=SUM(A1).json' ] && [ -f '$tmp/grades-names/-rf.html' ]"
-check "folders whose names start with . are left out, and the run names them, in order" \
-    sh -c "grep -q '^left out 2 folders of the system.s own (a name starting with \".\", or macOS.s __MACOSX), not taken for a submission: ' '$tmp/names.out' &&
-           grep -q ': \.git, \.github\$' '$tmp/names.out' &&
-           grep -q '^graded 8 submissions' '$tmp/names.out'"
+check_has "folders whose names start with . are left out, and the run names them, in order" "$tmp/names.out" \
+    '^left out 2 folders of the system.s own (a name starting with ".", or macOS.s __MACOSX), not taken for a submission: ' \
+    ': \.git, \.github$' '^graded 8 submissions'
 [ "$failed" -eq 0 ] || sed 's/^/    | /' "$tmp/names.out" "$tmp/grades-names/gradebook.csv"
 # Folder names with escape sequences, in the lists the run prints (the
 # folders left out, those with no stage file): shown as ^[ and ^G, and no
@@ -693,13 +691,11 @@ cp solutions/part1_image_plane.c "$tmp/handed/part1-only/"
 cp solutions/part1_image_plane.c "$tmp/handed/in-labs/labs/"
 chmod -R a+rX "$tmp/handed"
 $grade --all "$tmp/handed" --out "$tmp/grades-handed" --weights "$core" >"$tmp/handed.out" 2>&1
-check "the gradebook's status: 'no stage file' for an empty folder and for one of files under other names" \
-    sh -c "grep -qx 'empty,0,0,0,0,0,0,no stage file' '$tmp/grades-handed/gradebook.csv' &&
-           grep -qx 'renamed,0,0,0,0,0,0,no stage file' '$tmp/grades-handed/gradebook.csv' &&
-           grep -q '^2 submissions hold no stage file (.*): empty, renamed\$' '$tmp/handed.out'"
-check "... and 'points lost' for one with a stage file, in its folder or its labs" \
-    sh -c "grep -q '^part1-only,20,0,0,0,.*,points lost\$' '$tmp/grades-handed/gradebook.csv' &&
-           grep -q '^in-labs,20,0,0,0,.*,points lost\$' '$tmp/grades-handed/gradebook.csv'"
+check_has "the gradebook's status: 'no stage file' for an empty folder and for one of files under other names" \
+    "$tmp/grades-handed/gradebook.csv" '^empty,0,0,0,0,0,0,no stage file$' '^renamed,0,0,0,0,0,0,no stage file$'
+check "... and the run names them" grep -q '^2 submissions hold no stage file (.*): empty, renamed$' "$tmp/handed.out"
+check_has "... and 'points lost' for one with a stage file, in its folder or its labs" "$tmp/grades-handed/gradebook.csv" \
+    '^part1-only,20,0,0,0,.*,points lost$' '^in-labs,20,0,0,0,.*,points lost$'
 check "... and the renamed file is named in its results" \
     grep -q 'it has Part1.c: hand it in as part1_image_plane.c' "$tmp/grades-handed/renamed.json"
 
@@ -714,16 +710,15 @@ done
 # by this grader (make sanitize-grader: the writers under the sanitizers;
 # prairielearn.sh and classroom.sh check the platforms' own rules).
 $grade --submission solutions --format prairielearn --results "$tmp/pl-ref.json" --quiet >/dev/null 2>&1
-check "PrairieLearn: the reference scores 1, gradable" \
-    sh -c "grep -q '\"score\": 1,\$' '$tmp/pl-ref.json' && grep -q '\"gradable\": true' '$tmp/pl-ref.json'"
+check_has "PrairieLearn: the reference scores 1, gradable" "$tmp/pl-ref.json" '"score": 1,$' '"gradable": true'
 mkdir "$tmp/no-factor-2"        # the reference, but for Part 1's factor 2
 cp solutions/part*.c "$tmp/no-factor-2/"
 cp "$class/p1-no-factor-2/part1_image_plane.c" "$tmp/no-factor-2/"
 chmod -R a+rX "$tmp/no-factor-2"
 $grade --submission "$tmp/no-factor-2" --format prairielearn --results "$tmp/pl-bad.json" --quiet \
     >/dev/null 2>&1
-check "PrairieLearn: Part 1 with its factor 2 missing scores between 0 and 1, and says what went wrong" \
-    sh -c "grep -q '\"score\": 0\\.[0-9]*,\$' '$tmp/pl-bad.json' && grep -q 'What went wrong' '$tmp/pl-bad.json'"
+check_has "PrairieLearn: Part 1 with its factor 2 missing scores between 0 and 1, and says what went wrong" \
+    "$tmp/pl-bad.json" '"score": 0\.[0-9]*,$' 'What went wrong'
 : >"$tmp/classroom.out"
 $grade --submission "$class/p1-no-factor-2" --part 1 --classroom "$tmp/classroom.out" --quiet >/dev/null 2>&1
 check "Classroom: one line per Part 1 test and one for the hard cases, each its name = base64" \
