@@ -181,7 +181,7 @@ typedef struct {
     long hits;                 /* both hit, not ambiguous: t compared      */
     long over_tol;             /* of those, error above ORACLE_K_T u kappa
                                   (reported for the spheres)               */
-    long hard_failed;          /* the grader's rule, hard_check5 (triangles) */
+    long hard_failed;          /* the grader's rule, oracle_flat_accepts   */
     double max_rel, median_rel;
     double max_over_kappa;     /* max of error / (u kappa)                 */
     double max_u_well;         /* max error in u where kappa <= 100

@@ -384,7 +384,7 @@ static int step_grader(const Options *o, BenchResults *br, char *err, size_t err
             bool hit = method_one(&bench_methods[m], &cases[i].sphere, &ray, &t);
             if (hit && scale)
                 t /= len;
-            if (!hard_check3a(&cases[i], hit, t))
+            if (!oracle_sphere_accepts(&cases[i].sphere, &cases[i].ray, hit, t))
                 br->grader_failed[m]++;
         }
     }

@@ -419,11 +419,6 @@ int hard_part3a(uint64_t seed, HardCase3a *cases, int max)
     return max > 0 ? max : 0;
 }
 
-bool hard_check3a(const HardCase3a *c, bool hit, double t)
-{
-    return oracle_sphere_accepts(&c->sphere, &c->ray, hit, t);
-}
-
 /* ---- Part 3b ------------------------------------------------------------- */
 
 static const char *const fam3b[HARD_PART3B_FAMILIES] = {

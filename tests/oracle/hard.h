@@ -1,13 +1,15 @@
 /*
  * hard.h - deterministic generators of hard cases for every part, each with
- * its expected answer from the oracle and the rule that judges an answer.
+ * its expected answer from the oracle and the rule that judges an answer
+ * (hard_check1, 2 and 3b; the oracle's own for Parts 3a, 4 and 5).
  *
  *     HardCase3a cases[HARD_PART3A_FAMILIES * 20];
  *     int n = hard_part3a(seed, cases, HARD_PART3A_FAMILIES * 20);
  *     for (int k = 0; k < n; k++) {
  *         double t = 0;
  *         bool hit = sphere_intersect(&cases[k].sphere, &cases[k].ray, &t);
- *         if (!hard_check3a(&cases[k], hit, t)) ...  "Part 3a: " + cases[k].family
+ *         if (!oracle_sphere_accepts(&cases[k].sphere, &cases[k].ray, hit, t))
+ *             ...  "Part 3a: " + cases[k].family
  *     }
  *
  * Case k belongs to family k % HARD_PARTx_FAMILIES and depends only on
@@ -18,7 +20,7 @@
  * used to make the inputs, so the same seed gives the same cases on every
  * IEEE-754 machine (build with -ffp-contract=off).
  *
- * Tolerances (the hard_check functions apply them):
+ * Tolerances (those rules apply them):
  *   Part 1   w and h each within HARD_PART1_REL_TOL = 8 u relative.  The
  *            reference's error is a few u: the rounding of pi / 180 and of
  *            the argument (times tan's condition, at most pi / 2 once the
@@ -39,6 +41,7 @@
  *            (the reference is off by at most about 2.5 u).  ray_color: the
  *            colour of the oracle's closest sphere (or the background), or
  *            when ambiguous that of the alternative.
+ *   Parts 4, 5 oracle_flat_accepts(&c->expect, hit, t) (oracle.h).
  */
 #ifndef HARD_H
 #define HARD_H
@@ -94,7 +97,6 @@ typedef struct {
 } HardCase3a;
 
 int  hard_part3a(uint64_t seed, HardCase3a *cases, int max);
-bool hard_check3a(const HardCase3a *c, bool hit, double t);
 
 /* ---- Part 3b: camera_ray and ray_color --------------------------------- */
 
@@ -134,7 +136,6 @@ typedef struct {
 } HardCase4;
 
 int  hard_part4(uint64_t seed, HardCase4 *cases, int max);
-bool hard_check4(const HardCase4 *c, bool hit, double t);
 
 /* ---- Part 5: triangle_intersect (hard_flat.c) ------------------------------ */
 
@@ -148,7 +149,6 @@ typedef struct {
 } HardCase5;
 
 int  hard_part5(uint64_t seed, HardCase5 *cases, int max);
-bool hard_check5(const HardCase5 *c, bool hit, double t);
 
 /* Closed meshes (convex polyhedra: a cube split into 12 triangles, an
  * octahedron, an icosahedron), each with rays from outside aimed at its

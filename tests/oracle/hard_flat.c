@@ -147,11 +147,6 @@ int hard_part4(uint64_t seed, HardCase4 *cases, int max)
     return max > 0 ? max : 0;
 }
 
-bool hard_check4(const HardCase4 *c, bool hit, double t)
-{
-    return oracle_flat_accepts(&c->expect, hit, t);
-}
-
 /* ---- Part 5: triangles ---------------------------------------------------- */
 
 static const char *const fam5[HARD_PART5_FAMILIES] = {
@@ -353,11 +348,6 @@ int hard_part5(uint64_t seed, HardCase5 *cases, int max)
         c->expect = oracle_triangle(&c->tri, &c->ray);
     }
     return max > 0 ? max : 0;
-}
-
-bool hard_check5(const HardCase5 *c, bool hit, double t)
-{
-    return oracle_flat_accepts(&c->expect, hit, t);
 }
 
 /* ---- closed meshes -------------------------------------------------------- */
