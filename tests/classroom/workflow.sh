@@ -5,7 +5,7 @@
 # tests/grader/report_classroom.h): part<P>test<k> for the k-th core test
 # of each part of tests/weights.conf's "parts" line, in part order and the
 # order of tests/public/part<P>.tests, then "hard".  The student kit has
-# no hidden tests, so these are all its runners; tests/suites/classroom.sh
+# no hidden tests, so these are all its runners; tests/suites/student_kit.sh
 # checks them against what its grader writes.
 #
 # Usage: sh tests/classroom/workflow.sh [TEMPLATE] > classroom.yml

@@ -15,6 +15,11 @@
 #     results file names no page;
 #   - every `make ...` command of the handouts' ```sh blocks (and the
 #     README's) runs as written: status 0 or 1, never 2 or a crash;
+#   - GitHub Classroom: the workflow (the reporter action, the grade step,
+#     one environment variable per runner), and the runners `make grade
+#     CLASSROOM=file` writes for the reference, a partial submission and
+#     the skeleton, read through the workflow and totalled by the reporter's
+#     rules (tests/lib/classroom.sh): both totals are the kit's core score;
 #   - with the reference stage files copied into its labs/: `make grade`
 #     gives full marks (status 0), its page's render is exactly the stored
 #     reference, and `make compare SUBMISSION=labs` reports `identical`
@@ -289,6 +294,133 @@ while IFS= read -r command; do
         pass
     fi
 done <"$tmp/unique"
+
+# ---- GitHub Classroom: the workflow, and its runners' results -------------
+. tests/lib/classroom.sh
+: >"$tmp/out"
+wf="$kit/.github/workflows/classroom.yml"
+check "the student kit has .github/workflows/classroom.yml" [ -s "$wf" ]
+
+check "the workflow has no tab" sh -c "! grep -q '	' '$wf'"
+check "the workflow's indentation is in steps of two spaces" \
+    sh -c "! awk '/^ *[^ #]/ { match(\$0, /^ */); if (RLENGTH % 2) bad = 1 } END { exit !bad }' '$wf'"
+check "the workflow runs on push" grep -q '^  - push$' "$wf"
+check "the workflow names the reporter action" \
+    grep -q '^        uses: classroom-resources/autograding-grading-reporter@v1$' "$wf"
+check "the workflow's grade step has id 'grade'" grep -q '^        id: grade$' "$wf"
+check "the grade step appends to \$GITHUB_OUTPUT" \
+    grep -q '^        run: make grade CLASSROOM="\$GITHUB_OUTPUT"' "$wf"
+runners=$(sed -n 's/^          runners: //p' "$wf")
+check "the workflow has a runners: line" [ -n "$runners" ]
+check "its runner ids are letters and digits, comma-separated (as the action asks)" \
+    sh -c "printf '%s' '$runners' | grep -Eq '^([a-zA-Z0-9]+,)*[a-zA-Z0-9]+\$'"
+# The reporter step's environment: NAME_RESULTS from steps.grade.outputs.id
+sed -n 's/^          \([A-Za-z0-9_-]*\): "\${{ steps\.grade\.outputs\.\([A-Za-z0-9_-]*\) }}"$/\1 \2/p' \
+    "$wf" >"$tmp/envmap"
+nenv=$(wc -l <"$tmp/envmap")
+nrun=$(printf '%s' "$runners" | tr ',' '\n' | grep -c .)
+check "one environment variable per runner ($nenv for $nrun)" [ "$nenv" -eq "$nrun" ]
+check "each runner's variable is its id in capitals with _RESULTS" sh -c "
+    printf '%s' '$runners' | tr ',' '\n' | while read -r id; do
+        up=\$(printf '%s' \"\$id\" | tr 'a-z' 'A-Z')
+        grep -qx \"\${up}_RESULTS \$id\" '$tmp/envmap' || exit 1
+    done"
+# One run of python3 both asks for the module and parses (a python3 started
+# through a version manager's shims can take a second to start).
+have_yaml=no
+if command -v python3 >/dev/null 2>&1; then
+    python3 - "$wf" "$runners" >"$tmp/yaml.out" 2>&1 <<'EOF_PY'
+import sys
+try:
+    import yaml
+except ImportError:
+    sys.exit(0)
+print("yaml module found")
+doc = yaml.safe_load(open(sys.argv[1]))
+runners = sys.argv[2].split(",")
+on = doc.get("on", doc.get(True))
+assert "push" in on, "not run on push"
+steps = [s for job in doc["jobs"].values() for s in job["steps"]]
+grade = [s for s in steps if s.get("id") == "grade"]
+assert len(grade) == 1 and 'CLASSROOM="$GITHUB_OUTPUT"' in grade[0]["run"], "no grade step"
+rep = [s for s in steps if s.get("uses") == "classroom-resources/autograding-grading-reporter@v1"]
+assert len(rep) == 1, "no reporter step"
+assert steps.index(rep[0]) > steps.index(grade[0]), "the reporter runs before grading"
+assert rep[0]["with"]["runners"] == ",".join(runners), "runners differ"
+want = {r.upper() + "_RESULTS": "${{ steps.grade.outputs.%s }}" % r for r in runners}
+assert rep[0]["env"] == want, "env differs"
+print("ok")
+EOF_PY
+    grep -qx 'yaml module found' "$tmp/yaml.out" && have_yaml=yes
+fi
+if [ "$have_yaml" = yes ]; then
+    check "the workflow parses as YAML with the steps, runners and env ($(tail -n 1 "$tmp/yaml.out"))" \
+        grep -qx ok "$tmp/yaml.out"
+else
+    echo "python3 with its yaml module is not installed: skipped parsing the workflow as YAML"
+fi
+
+# reporter_env MAP OUTPUTS: the reporter's environment, "VAR=VALUE" for
+# each "VAR ID" line of MAP, VALUE being what OUTPUTS holds after "ID=" (as
+# the workflow passes the grade step's outputs); one awk for all runners.
+reporter_env() {
+    awk 'NR == FNR { var[++n] = $1; id[n] = $2; next }
+         { k = index($0, "=") }
+         k > 1 { key = substr($0, 1, k - 1)
+                 v = (key in val) ? val[key] "\n" substr($0, k + 1) : substr($0, k + 1)
+                 val[key] = v }
+         END { for (i = 1; i <= n; i++) print var[i] "=" val[id[i]] }' "$1" "$2"
+}
+
+# grade_kit LABEL SUBMISSION CASE WANT_WORKFLOW: make grade in the kit,
+# CLASSROOM standing in for $GITHUB_OUTPUT (with an earlier step's line in
+# it), then the environment the workflow gives the reporter, and the
+# reporter's totals from it (totals CASE ... WANT_WORKFLOW).
+grade_kit() {
+    label=$1 sub=$2
+    printf 'earlier=an output of an earlier step\n' >"$tmp/$label.outputs"
+    (cd "$kit" && make grade SUBMISSION="$sub" CLASSROOM="$tmp/$label.outputs") >"$tmp/$label.kit" 2>&1
+    check "$label: the earlier step's output is kept" \
+        sh -c "head -n 1 '$tmp/$label.outputs' | grep -qx 'earlier=an output of an earlier step'"
+    check "$label: one line per runner of the workflow, in its order" \
+        sh -c "sed -n '2,\$p' '$tmp/$label.outputs' | cut -d= -f1 | paste -s -d, - | grep -qx '$runners'"
+    reporter_env "$tmp/envmap" "$tmp/$label.outputs" >"$tmp/$label.env"
+    longest=$(awk '{ if (length($0) > n) n = length($0) } END { print n + 0 }' "$tmp/$label.outputs")
+    check "$label: every runner's results are under 64 KB (an environment variable may hold 128 KB): $longest bytes" \
+        [ "$longest" -lt 65536 ]
+    decode "$runners" "$tmp/$label.env" >"$tmp/$label.dump"
+    check "$label: every runner decodes" [ "$(grep -c '^[a-z0-9]* {"version":1,' "$tmp/$label.dump")" -eq "$nrun" ]
+    check "$label: no test is a hidden test" sh -c "! grep -q '\"name\":\"[^\"]*hidden' '$tmp/$label.dump'"
+    totals "$3" "$tmp/$1.kit" "$runners" "$tmp/$1.env" "$4"
+}
+grade_kit student-full "$tmp/full" "student kit, reference" pass
+check "student kit, reference: full marks" grep -q '^Score: 100 / 100' "$tmp/student-full.kit"
+grade_kit student-partial "$tmp/partial" "student kit, partial" fail
+check "student kit, partial: partial credit" \
+    sh -c "grep '^Score: ' '$tmp/student-partial.kit' | grep -Eqv '^Score: (0|100) '"
+grade_kit student-zero "$kit/labs" "student kit, skeleton" fail
+check "student kit, skeleton: 0 points" grep -q '^Score: 0 / 100' "$tmp/student-zero.kit"
+
+# With Parts 4 and 5 turned on, the workflow written for that kit lists
+# their runners too, and the totals are out of 140 (the kit's own
+# weights.conf is put back after).
+cp "$kit/tests/weights.conf" "$tmp/weights.kit"
+sed 's/^parts .*/parts 1 2 3a 3b 4 5/' "$tmp/weights.kit" >"$kit/tests/weights.conf"
+(cd "$kit" && sh "$top/tests/classroom/workflow.sh" "$top/tests/classroom/classroom.yml") >"$tmp/all.yml"
+runners_all=$(sed -n 's/^          runners: //p' "$tmp/all.yml")
+check "Parts 4 and 5 on: the workflow lists their runners" \
+    sh -c "printf '%s' '$runners_all' | grep -q 'part4test1,.*part5test1,.*,hard\$'"
+sed -n 's/^          \([A-Za-z0-9_-]*\): "\${{ steps\.grade\.outputs\.\([A-Za-z0-9_-]*\) }}"$/\1 \2/p' \
+    "$tmp/all.yml" >"$tmp/envmap.all"
+: >"$tmp/all.outputs"
+(cd "$kit" && make grade SUBMISSION="$tmp/full" CLASSROOM="$tmp/all.outputs") >"$tmp/all.kit" 2>&1
+check "Parts 4 and 5 on: the grader writes the workflow's runners, in its order" \
+    sh -c "cut -d= -f1 '$tmp/all.outputs' | paste -s -d, - | grep -qx '$runners_all'"
+reporter_env "$tmp/envmap.all" "$tmp/all.outputs" >"$tmp/all.env"
+totals "student kit, Parts 1 to 5, reference" "$tmp/all.kit" "$runners_all" "$tmp/all.env" pass
+check "student kit, Parts 1 to 5, reference: 140 / 140" grep -q '^Score: 140 / 140' "$tmp/all.kit"
+cp "$tmp/weights.kit" "$kit/tests/weights.conf"
+js_checks
 
 # A student who puts a macro in labs/raytracer.h is told that the
 # instructor grades with the kit's own (their stage file would not build
