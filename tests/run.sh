@@ -5,8 +5,7 @@
 # so that a failure in a long log is found at once.
 #
 # The suites run in lanes: a lane runs its suites one after the other.
-# Suites that build the same thing share a lane (student_kit.sh and
-# classroom.sh both make the student kit), and so do the unit tests.  As
+# The unit tests share a lane; each suite is a lane of its own.  As
 # many workers as the machine has cores take lanes in a set order (below)
 # until none is left (more at once would only share the cores).  Each
 # suite's output is kept apart and shown whole, in a fixed order, once
@@ -57,7 +56,6 @@ fi
 lane_of() {
     case $1 in
     unit*) lane=unit ;;
-    student_kit.sh | classroom.sh) lane=kit ;;
     *) lane=$1 ;;
     esac
     case $lane in
@@ -86,11 +84,11 @@ done <"$items"
 # a lane at most once).  The longest, grader.sh, starts first; beside it
 # go the lanes that mostly compute (the unit tests, the benchmark, the
 # second compiler's build, the renders) rather than the other lanes that
-# mostly start processes (the kit lane, PrairieLearn, the report pages):
+# mostly start processes (the student kit, PrairieLearn, the report pages):
 # on a 2-core virtual machine, making and ending processes on both cores
 # at once runs little faster than on one.
 queue=$dir/queue
-first="grader.sh unit bench.sh portability.sh render_cli.sh kit prairielearn.sh report.sh gradescope.sh"
+first="grader.sh unit bench.sh portability.sh render_cli.sh student_kit.sh prairielearn.sh report.sh gradescope.sh"
 for lane in $first; do
     [ -f "$dir/lane.$lane" ] && echo "$dir/lane.$lane"
 done >"$queue"
