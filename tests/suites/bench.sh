@@ -78,8 +78,7 @@ if [ -s "$svg" ]; then
         sh -c "head -n 1 '$svg' | grep -q '^<?xml' && grep -q '<svg xmlns=\"http://www.w3.org/2000/svg\"' '$svg'"
     check "plot.svg ends with </svg>" sh -c "tail -n 1 '$svg' | grep -qx '</svg>'"
     check "plot.svg draws a Pareto front" grep -q 'stroke-dasharray' "$svg"
-    check "plot.svg labels the fast path and the textbook" \
-        sh -c "grep -q '>fast double<' '$svg' && grep -q '>textbook float<' '$svg'"
+    check_has "plot.svg labels the fast path and the textbook" "$svg" '>fast double<' '>textbook float<'
     if command -v xmllint >/dev/null 2>&1; then
         check "plot.svg is well-formed XML" xmllint --noout "$svg"
     fi
@@ -177,9 +176,9 @@ else
 fi
 check "plot_scaling.svg draws the two lines" \
     sh -c "grep -q '>with the hierarchy<' '$dir/plot_scaling.svg' && [ \"\$(grep -c '<path fill=\"none\"' '$dir/plot_scaling.svg')\" -eq 2 ]"
-check "report.md has the section on meshes at scale, with the render program's run" \
-    sh -c "grep -qx '## Part 5 at scale: rays per second against triangles' '$md' &&
-           grep -q 'The render program on the largest mesh (1000 triangles) at 640x480, end to end' '$md'"
+check_has "report.md has the section on meshes at scale, with the render program's run" "$md" \
+    '^## Part 5 at scale: rays per second against triangles$' \
+    'The render program on the largest mesh (1000 triangles) at 640x480, end to end'
 
 # The ratio under a second placement of the code (make bench): --ratio-only
 # prints its one line, and --placement puts that line in the report; a
@@ -190,9 +189,9 @@ if [ -x "$bench" ]; then
         grep -qx 'ratio [0-9.]* q1 [0-9.]* q3 [0-9.]*' "$dir/placement.txt"
     echo 'ratio 1.5 q1 1.4 q3 1.6' >"$dir/placed.txt"
     "$bench" --quick --out "$dir/placed" --placement "$dir/placed.txt" >/dev/null 2>&1
-    check "bench --placement: the report gives the other placement's ratio, and both must meet the target" \
-        sh -c "grep -q 'linked in the reverse order: \*\*1.500x\*\*' '$dir/placed/report.md' &&
-               grep -q 'Under both placements of the code: not met' '$dir/placed/report.md'"
+    check_has "bench --placement: the report gives the other placement's ratio, and both must meet the target" \
+        "$dir/placed/report.md" 'linked in the reverse order: \*\*1.500x\*\*' \
+        'Under both placements of the code: not met'
     echo 'ratio one' >"$dir/bad.txt"
     "$bench" --quick --out "$dir/bad" --placement "$dir/bad.txt" >/dev/null 2>"$dir/bad.err"
     status=$?

@@ -61,7 +61,7 @@ changes_agree() {   # changes_agree BEFORE.csv AFTER.csv PAGE
 check_output "with --previous: each score that changed, from what to what, as the two gradebooks say" \
     changes_agree "$tmp/before/gradebook.csv" "$tmp/after/gradebook.csv" "$tmp/after/index.html"
 check "with --previous: the folder renamed is counted new, and the one gone named" \
-    sh -c "grep -q ' 1 is new\. 1 graded then is not here now: <code>p1-float</code>' '$tmp/after/index.html'"
+    grep -q ' 1 is new\. 1 graded then is not here now: <code>p1-float</code>' "$tmp/after/index.html"
 check_output "with --previous: the page is safe" page_safe "$tmp/after/index.html"
 # A regrade into the previous run's own folder compares with its gradebook
 # as it was before the regrade wrote over it.

@@ -39,8 +39,8 @@ check_output "instructor's kit, partial: the reporter's view is tests/classroom/
 decode "$(cut -d= -f1 "$tmp/i-full.outputs" | paste -s -d, -)" "$tmp/i-full.env" >"$tmp/i-full.dump"
 check "instructor's kit: hidden tests are among the runners" grep -q '"name":"Part 3a: hidden: ' "$tmp/i-full.dump"
 decode part2test1 "$tmp/i-broken.env" >"$tmp/broken.json"
-check "a part that does not build: its runners are errors that say so" \
-    sh -c "grep -q '\"status\":\"error\"' '$tmp/broken.json' && grep -q 'did not build' '$tmp/broken.json'"
+check_has "a part that does not build: its runners are errors that say so" "$tmp/broken.json" \
+    '"status":"error"' 'did not build'
 
 # ---- bad input ---------------------------------------------------------------
 out/build/bin/grade --submission "$tmp/full" --classroom "$tmp/no/such/dir/file" --quiet >"$tmp/bad.out" 2>&1

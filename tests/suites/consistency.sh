@@ -21,8 +21,8 @@ for f in labs/part*.c; do
     outside "solutions/$base" >"$tmp/solutions"
     check "labs/$base and solutions/$base differ outside the function bodies" \
         cmp -s "$tmp/labs" "$tmp/solutions"
-    check "labs/$base has a contract comment with an example and a formula" \
-        sh -c "grep -q ' \* Example:' '$f' && grep -q ' \* Formula:' '$f'"
+    check_has "labs/$base has a contract comment with an example and a formula" "$f" \
+        ' \* Example:' ' \* Formula:'
 done
 
 if [ -x out/build/bin/gentests ]; then

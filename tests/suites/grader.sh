@@ -222,8 +222,7 @@ check "a weights file that starts with a byte-order mark is read (exit $status)"
 # of its 68 tests alone (17 MiB in all instead of 272).
 core=$tmp/core.conf
 sed -e 's/^\(timeout\) .*/\1 0.25/' -e 's/^\(output\) .*/\1 256/' tests/weights.conf >"$core"
-check "the test class's weights set a test's time and output" \
-    sh -c "grep -q '^timeout 0.25\$' '$core' && grep -q '^output 256\$' '$core'"  # portable: text
+check_has "the test class's weights set a test's time and output" "$core" '^timeout 0.25$' '^output 256$'  # portable: text
 classconf=$tmp/class.conf
 sed 's/^parts .*/parts 1 2 3a 3b 4 5/' "$core" >"$classconf"
 class=$tmp/class

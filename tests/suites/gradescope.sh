@@ -44,8 +44,7 @@ cp "$ag/source/tests/weights.conf" "$tmp/weights.default"
 cp "$tmp/weights.conf" "$ag/source/tests/weights.conf"
 rm -f "$ag/results/results.json"
 AUTOGRADER_ROOT="$ag" "$ag/run_autograder" >"$tmp/run45.log" 2>&1
-check "Parts 4 and 5 graded when turned on" \
-    sh -c "grep -q '\"Part 4: ' '$ag/results/results.json' && grep -q '\"Part 5: ' '$ag/results/results.json'"
+check_has "Parts 4 and 5 graded when turned on" "$ag/results/results.json" '"Part 4: ' '"Part 5: '
 check "every test passed with Parts 4 and 5" sh -c "! grep -q '\"status\": \"failed\"' '$ag/results/results.json'"
 cp "$tmp/weights.default" "$ag/source/tests/weights.conf"
 
@@ -61,8 +60,8 @@ ln -s "$PWD/solutions/part1_image_plane.c" "$ag/submission/part1_image_plane.c"
 AUTOGRADER_ROOT="$ag" "$ag/run_autograder" >"$tmp/run-repo.log" 2>&1
 check "a repository uploaded whole: labs/ is graded, not a stale copy elsewhere" \
     grep -q '^found: labs/part1_image_plane.c part2_pixel_coordinates.c labs/part3a' "$tmp/run-repo.log"
-check "... with its scores (Part 1 from labs/, Part 2 the skeleton's at the top)" \
-    sh -c "grep -q 'Part 1: 20 / 20' '$ag/results/results.json' && grep -q 'Part 2: 0 / 20' '$ag/results/results.json'"
+check_has "... with its scores (Part 1 from labs/, Part 2 the skeleton's at the top)" "$ag/results/results.json" \
+    'Part 1: 20 / 20' 'Part 2: 0 / 20'
 [ "$failed" -eq 0 ] || cat "$tmp/run-repo.log"
 
 # An upload whose labs is a link to the kit's reference gets nothing from it.
@@ -108,9 +107,10 @@ cp solutions/part3a_sphere_intersect.c "$ag/submission/part3a.C"
 cp solutions/part1_image_plane.c "$ag/submission/part10.c"
 echo notes >"$ag/submission/part2_notes.txt"
 AUTOGRADER_ROOT="$ag" "$ag/run_autograder" >"$tmp/run-parts.log" 2>&1
-check "a C file named for its part alone is named in the message: 'it has Part1.c', 'it has part3a.C'" \
-    sh -c "grep -q 'the submission has no part1_image_plane.c; it has Part1.c: hand it in as part1_image_plane.c' '$ag/results/results.json' &&
-           grep -q 'it has part3a.C: hand it in as part3a_sphere_intersect.c' '$ag/results/results.json'"
+check_has "a C file named for its part alone is named in the message: 'it has Part1.c', 'it has part3a.C'" \
+    "$ag/results/results.json" \
+    'the submission has no part1_image_plane.c; it has Part1.c: hand it in as part1_image_plane.c' \
+    'it has part3a.C: hand it in as part3a_sphere_intersect.c'
 check "... but not a part10 file, nor a file that is not C" \
     sh -c "! grep -q 'it has part10.c' '$ag/results/results.json' && ! grep -q 'part2_notes' '$ag/results/results.json'"
 

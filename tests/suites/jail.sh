@@ -116,8 +116,8 @@ run_attacks() {
     # Answers left behind for the next run, and for the next submission.
     as_grader --all "$subs/class-leak" --out "$out/leak" --weights "$out/part1.conf" --jobs 1 \
         >"$out/leak.out" 2>&1
-    check "$mode: answers recorded by one submission do not reach the next: it scores 0" \
-        sh -c "grep -q '^a-record,20,' '$out/leak/gradebook.csv' && grep -q '^b-look-up,0,' '$out/leak/gradebook.csv'"
+    check_has "$mode: answers recorded by one submission do not reach the next: it scores 0" \
+        "$out/leak/gradebook.csv" '^a-record,20,' '^b-look-up,0,'
     as_grader --submission "$subs/class-leak/b-look-up" --weights "$out/part1.conf" --summary \
         >"$out/look-up.out" 2>&1
     check "$mode: ... nor the same submission graded again" grep -q '^summary 0 ' "$out/look-up.out"

@@ -534,8 +534,8 @@ refused "compare (a missing image)" "$COMPARE" "$tmp/ref.png" "$tmp/missing.png"
 refused "compare (-o without a name)" "$COMPARE" "$tmp/ref.png" "$tmp/ref.png" -o
 refused "compare (unwritable -o)" "$COMPARE" "$tmp/ref.png" "$tmp/ref.png" -o "$tmp/no/such/side.png"
 run "$COMPARE"
-check "compare: the usage does not explain the exit status" \
-    sh -c "grep -q 'usage: compare' '$tmp/stderr' && grep -q 'exit status: 0 identical, 1 .*differ, 2 error' '$tmp/stderr'"
+check_has "compare: the usage does not explain the exit status" "$tmp/stderr" \
+    'usage: compare' 'exit status: 0 identical, 1 .*differ, 2 error'
 
 # ---- the same bad scenes against the address-sanitized renderer -----------
 if [ -x "$RENDER_ASAN" ]; then

@@ -64,10 +64,10 @@ check "a file not named as a download names them is named, and not sorted" \
     sh -c "grep -q 'not sorted.*: README.txt\$' '$tmp/out' && [ ! -e '$tmp/sorted/README.txt' ]"
 check "the system's own files are left out" \
     sh -c "grep -q 'left out 2 files of the system' '$tmp/out' && ! grep -rq . '$tmp/sorted/__MACOSX' 2>/dev/null"
-check "sorted.txt says where each file came from" \
-    sh -c "grep -q '^smithbob_340934/part2_pixel_coordinates.c	smithbob_340934_208490284_part2_pixel_coordinates.c\$' '$tmp/sorted/sorted.txt' &&
-           grep -q '^(left out)	wellslane_LATE_334244_394803489_part1_image_plane.c	(late)	(an earlier upload' '$tmp/sorted/sorted.txt' &&
-           grep -q '^(not sorted)	README.txt\$' '$tmp/sorted/sorted.txt'"
+check_has "sorted.txt says where each file came from" "$tmp/sorted/sorted.txt" \
+    '^smithbob_340934/part2_pixel_coordinates.c	smithbob_340934_208490284_part2_pixel_coordinates.c$' \
+    '^(left out)	wellslane_LATE_334244_394803489_part1_image_plane.c	(late)	(an earlier upload' \
+    '^(not sorted)	README.txt$'
 check "it ends with the next step, the command that grades them" \
     sh -c "tail -n 1 '$tmp/out' | grep -qx 'to grade them: make grade-all SUBMISSIONS=$tmp/sorted'"
 check "no temporary folder is left beside it" sh -c "! ls -d '$tmp'/sorted.sorting.* >/dev/null 2>&1"
@@ -93,8 +93,8 @@ check "a Canvas download graded anonymously: a folder per anonymous id, the file
 # Graded as a class.
 make -s --no-print-directory grade-all SUBMISSIONS="$tmp/sorted" OUT="$tmp/grades" >"$tmp/grade.out" 2>&1
 book=$tmp/grades/gradebook.csv
-check "grade-all grades the sorted folders: the reference and the later upload keep full marks" \
-    sh -c "grep -q '^smithbob_340934,20,20,30,30,.*full marks\$' '$book' && grep -q '^wellslane_334244,20,20,30,30,.*full marks\$' '$book'"
+check_has "grade-all grades the sorted folders: the reference and the later upload keep full marks" "$book" \
+    '^smithbob_340934,20,20,30,30,.*full marks$' '^wellslane_334244,20,20,30,30,.*full marks$'
 check "grade-all grades the sorted folders: a Part 2 mistake loses Part 2 alone, the missing parts theirs" \
     sh -c "grep -q '^leeann_77,0,[0-9.]*,0,0,' '$book' && ! grep -q '^leeann_77,0,20,' '$book'"
 
@@ -228,8 +228,8 @@ check "MAX_MB that is not a number: the usage (make fails)" sh -c "[ $status -ne
 # ---- grade-all given the download itself names the sorter ------------------
 $grade --all "$dl" --out "$tmp/g2" >"$tmp/out" 2>&1
 check "grade-all on a Canvas download's folder (its __MACOSX left out, not graded): names make sort-submissions" \
-    sh -c "grep -q 'named as a Canvas, Moodle or Blackboard download names a class.s files: make sort-submissions FROM=$dl TO=new-folder' '$tmp/out'"
+    grep -q "named as a Canvas, Moodle or Blackboard download names a class.s files: make sort-submissions FROM=$dl TO=new-folder" "$tmp/out"
 $grade --all "$tmp/canvas.zip" --out "$tmp/g2" >"$tmp/out" 2>&1
 check "grade-all on the download's zip: names make sort-submissions" \
-    sh -c "grep -q 'canvas.zip is a file, not a folder of submissions: .*make sort-submissions FROM=' '$tmp/out'"
+    grep -q 'canvas.zip is a file, not a folder of submissions: .*make sort-submissions FROM=' "$tmp/out"
 finish
