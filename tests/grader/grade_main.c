@@ -780,7 +780,7 @@ static int grade_all(const char *self, const char *dir, const char *out, const c
     int n = s.n;
     if (n == 0)
         return no_submissions(dir, &s);
-    if (mkdir(out, 0755) != 0 && errno != EEXIST)
+    if (mkdir(out, 0700) != 0 && errno != EEXIST)
         return fail(NULL, "%s: cannot make the output directory", out);
     char here[PATH_MAX];
     if (!getcwd(here, sizeof here) || jail_make_private(here, err, sizeof err) != 0 ||

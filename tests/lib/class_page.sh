@@ -252,6 +252,8 @@ check_class_page() {
     csv=$out/causes.csv
     check "it says where the class page is" grep -q "^the class at a glance: $out/index.html" "$log"
     check "the class page and causes.csv are written" test -f "$page" -a -f "$csv"
+    check "OUT, made by grade --all, is its owner's alone ($(ls -ld "$out" | cut -c1-10))" \
+        sh -c "ls -ld '$out' | grep -q '^drwx------'"
     for f in "$page" "$csv" "$out/gradebook.csv"; do
         check "${f##*/} is readable by its owner alone ($(ls -l "$f" | cut -c1-10))" \
             sh -c "ls -l '$f' | grep -q '^-rw-------'"
